@@ -1,0 +1,132 @@
+package io.rtaware.core.data;
+
+import java.util.concurrent.locks.StampedLock;
+
+/**
+ * One key's state in the store: the newest value, its generation counter and commit time, and
+ * the feed statistics of its commits.
+ *
+ * <p>Thread-safe: any number of consumers copy out under the shared read lock while the single
+ * producer commits under the exclusive write lock (the paper's locking scheme, with
+ * {@link StampedLock}, whose read lock keeps no per-thread hold count). Neither path allocates.
+ *
+ * @param <T> the value type
+ */
+public final class StateVariable<T extends StateValue<T>> {
+
+    private final Key<T> key;
+    private final T value;
+    private final StampedLock lock = new StampedLock();
+
+    private volatile long generation;
+    private long commitTimeNs;
+    private long firstCommitNs;
+    private long minIntervalNs = Long.MAX_VALUE;
+    private long maxIntervalNs;
+
+    /**
+     * @param key the variable's key; its factory allocates the stored buffer now
+     */
+    public StateVariable(Key<T> key) {
+        this.key = key;
+        this.value = key.newBuffer();
+    }
+
+    /** @return the key */
+    public Key<T> key() {
+        return key;
+    }
+
+    /**
+     * Copies the producer's buffer in, under the write lock, and counts the commit.
+     *
+     * @param source the producer's buffer
+     * @param nowNs world time of the commit
+     */
+    public void commit(T source, long nowNs) {
+        long stamp = lock.writeLock();
+        try {
+            value.copyFrom(source);
+            long gen = generation;
+            if (gen == 0) {
+                firstCommitNs = nowNs;
+            } else {
+                long interval = nowNs - commitTimeNs;
+                if (interval < minIntervalNs) {
+                    minIntervalNs = interval;
+                }
+                if (interval > maxIntervalNs) {
+                    maxIntervalNs = interval;
+                }
+            }
+            commitTimeNs = nowNs;
+            generation = gen + 1;
+        } finally {
+            lock.unlockWrite(stamp);
+        }
+    }
+
+    /**
+     * Copies the newest value into a consumer's buffer if it is newer than the generation the
+     * consumer already holds. Called at the start of the consumer's cycle.
+     *
+     * @param target the consumer's buffer
+     * @param heldGeneration the generation the consumer's buffer holds (0 if none)
+     * @param cursor receives the generation and commit time of the value now in {@code target}
+     */
+    public void copyTo(T target, long heldGeneration, ReadCursor cursor) {
+        if (generation == heldGeneration) {
+            // Volatile read: nothing newer is committed, the consumer's copy is current.
+            cursor.set(heldGeneration, cursor.commitTimeNs());
+            return;
+        }
+        long stamp = lock.readLock();
+        try {
+            target.copyFrom(value);
+            cursor.set(generation, commitTimeNs);
+        } finally {
+            lock.unlockRead(stamp);
+        }
+    }
+
+    /** @return how many commits were made */
+    public long generation() {
+        return generation;
+    }
+
+    /** @return a consistent snapshot of the feed statistics */
+    public FeedStats feedStats() {
+        long stamp = lock.readLock();
+        try {
+            long gen = generation;
+            return new FeedStats(gen, gen == 0 ? 0 : firstCommitNs, gen == 0 ? 0 : commitTimeNs,
+                    gen < 2 ? 0 : minIntervalNs, gen < 2 ? 0 : maxIntervalNs);
+        } finally {
+            lock.unlockRead(stamp);
+        }
+    }
+
+    /**
+     * Mutable holder of what a copy-out found; one per consumer input, reused every cycle.
+     * Not thread-safe.
+     */
+    public static final class ReadCursor {
+        private long generation;
+        private long commitTimeNs;
+
+        void set(long gen, long commitNs) {
+            this.generation = gen;
+            this.commitTimeNs = commitNs;
+        }
+
+        /** @return the generation copied */
+        public long generation() {
+            return generation;
+        }
+
+        /** @return the commit time of the generation copied */
+        public long commitTimeNs() {
+            return commitTimeNs;
+        }
+    }
+}

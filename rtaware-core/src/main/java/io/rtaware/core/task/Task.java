@@ -1,0 +1,46 @@
+package io.rtaware.core.task;
+
+/**
+ * A behavior: the unit the monitor schedules. A task goes through the paper's three states:
+ * <ol>
+ *   <li><b>Initialization</b>: {@link #initialize(TaskSetup)} declares the keys it produces and
+ *   consumes and allocates everything it will need; the monitor verifies the whole data graph
+ *   before the first release.</li>
+ *   <li><b>Execution</b>: {@link #execute(long)} runs once per release. The framework has just
+ *   copied the task's inputs into its buffers; outputs it publishes are committed when the
+ *   cycle returns.</li>
+ *   <li><b>Termination</b>: {@link #terminate()} releases resources once all task threads have
+ *   stopped.</li>
+ * </ol>
+ * A task does not know which thread or executor runs it. Its name and schedule are given when
+ * it is registered with the monitor. A task is called by one thread at a time.
+ */
+public interface Task {
+
+    /**
+     * Declares produced and consumed keys and allocates the task's working memory.
+     *
+     * @param setup the declarations interface, valid only during this call
+     * @throws Exception if the task cannot be initialized; the monitor reports it and does not
+     *     start
+     */
+    void initialize(TaskSetup setup) throws Exception;
+
+    /**
+     * One cycle of work.
+     *
+     * @param nowNs world time at the start of the cycle (read once by the framework)
+     * @throws Exception any failure; the monitor catches it, counts it and applies the task's
+     *     {@link ErrorPolicy}
+     */
+    void execute(long nowNs) throws Exception;
+
+    /**
+     * Releases what the task holds. Called once, after every task thread has stopped, in
+     * registration order. The default does nothing.
+     *
+     * @throws Exception if cleaning up fails; reported, never propagated
+     */
+    default void terminate() throws Exception {
+    }
+}
