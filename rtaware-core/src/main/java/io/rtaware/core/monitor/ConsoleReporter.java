@@ -38,6 +38,8 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
     private final long[] lastLineWallNs;
     private final Thread printer;
     private volatile boolean closed;
+    /** World time when the first task started running: the origin of printed times. */
+    private volatile long originNs = Long.MIN_VALUE;
 
     /**
      * @param out where lines go
@@ -59,6 +61,13 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         this.printer = new Thread(this::printLoop, "rtaware-console");
         this.printer.setDaemon(true);
         this.printer.start();
+    }
+
+    @Override
+    public void onStateChange(TaskInfo task, TaskState state, long nowNs) {
+        if (state == TaskState.RUNNING && originNs == Long.MIN_VALUE) {
+            originNs = nowNs;
+        }
     }
 
     @Override
@@ -137,8 +146,9 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
                 sb.append(" (").append(skipped).append(" skipped releases)");
             }
             if (misses > 0) {
-                sb.append(String.format(Locale.ROOT, ", last at %.3fs (deadline %.3fs)",
-                        lastMissDetectedNs.get(i) / 1e9, lastMissDeadlineNs.get(i) / 1e9));
+                long origin = originNs == Long.MIN_VALUE ? 0 : originNs;
+                sb.append(String.format(Locale.ROOT, ", last detected at t=%.3fs (deadline t=%.3fs)",
+                        (lastMissDetectedNs.get(i) - origin) / 1e9, (lastMissDeadlineNs.get(i) - origin) / 1e9));
             }
         }
         if (stale > 0) {

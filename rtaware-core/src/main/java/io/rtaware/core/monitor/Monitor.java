@@ -55,6 +55,7 @@ public final class Monitor {
     private final Map<String, List<String>> consumers;
     private final List<String> keyNames;
     private final List<Consumer<Report>> terminationHandlers = new CopyOnWriteArrayList<>();
+    private final List<MonitorListener> listeners;
     private final CountDownLatch terminated = new CountDownLatch(1);
     private final Object lifecycle = new Object();
     private Phase phase = Phase.READY;
@@ -72,8 +73,10 @@ public final class Monitor {
     }
 
     private Monitor(Clock clock, List<TaskRuntime> runtimes, List<StateVariable<?>> variables,
-                    Map<String, String> producers, Map<String, List<String>> consumers) {
+                    Map<String, String> producers, Map<String, List<String>> consumers,
+                    List<MonitorListener> listeners) {
         this.clock = clock;
+        this.listeners = new ArrayList<>(listeners);
         this.runtimes = runtimes;
         this.variables = variables;
         this.producers = producers;
@@ -138,6 +141,22 @@ public final class Monitor {
     }
 
     /**
+     * Adds a listener after building, e.g. one that needs {@link #tasks()} to size itself.
+     *
+     * @param listener receives every event from the start on
+     * @throws IllegalStateException if the monitor has already started
+     */
+    public void addListener(MonitorListener listener) {
+        Objects.requireNonNull(listener, "listener");
+        synchronized (lifecycle) {
+            if (phase != Phase.READY) {
+                throw new IllegalStateException("listeners must be added before the monitor starts");
+            }
+            listeners.add(listener);
+        }
+    }
+
+    /**
      * Registers a handler that receives the report once, after every task has stopped and
      * terminated. Handlers run on the thread that completes {@link #stop()}.
      *
@@ -180,6 +199,8 @@ public final class Monitor {
             }
             phase = Phase.RUNNING;
             executor = newExecutor;
+            MonitorListener[] all = listeners.toArray(new MonitorListener[0]);
+            runtimes.forEach(r -> r.listeners(all));
             startNs = clock.nanos();
         }
         executor.start(startNs);
@@ -383,7 +404,6 @@ public final class Monitor {
                 checkSchedule(spec, violations);
             }
 
-            MonitorListener[] listenerArray = listeners.toArray(new MonitorListener[0]);
             List<Setup> setups = new ArrayList<>();
             for (TaskSpec spec : specs) {
                 Setup setup = new Setup(spec, clock);
@@ -451,10 +471,10 @@ public final class Monitor {
                 for (InputHandle<?> in : setup.inputs) {
                     in.bind(byName.get(in.key().name()));
                 }
-                runtimes.add(new TaskRuntime(setup.spec, runtimes.size(), clock, listenerArray,
+                runtimes.add(new TaskRuntime(setup.spec, runtimes.size(), clock, new MonitorListener[0],
                         setup.inputs.toArray(new InputHandle<?>[0]), setup.outputs.toArray(new OutputHandle<?>[0])));
             }
-            return new Monitor(clock, List.copyOf(runtimes), List.copyOf(variables), producers, consumersOf);
+            return new Monitor(clock, List.copyOf(runtimes), List.copyOf(variables), producers, consumersOf, listeners);
         }
 
         private static <T extends StateValue<T>> StateVariable<T> newVariable(Key<T> key) {

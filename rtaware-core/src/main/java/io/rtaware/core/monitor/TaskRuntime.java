@@ -39,7 +39,7 @@ final class TaskRuntime implements TaskInfo {
     private final TaskSpec spec;
     private final int index;
     private final Clock clock;
-    private final MonitorListener[] listeners;
+    private MonitorListener[] listeners;
     private final InputHandle<?>[] inputs;
     private final OutputHandle<?>[] outputs;
     private final boolean periodic;
@@ -102,6 +102,11 @@ final class TaskRuntime implements TaskInfo {
     @Override
     public Schedule schedule() {
         return spec.schedule();
+    }
+
+    /** Replaces the listeners; only before the task's thread starts (the start publishes it). */
+    void listeners(MonitorListener[] all) {
+        this.listeners = all;
     }
 
     TaskSpec spec() {

@@ -27,8 +27,10 @@ public record Percentiles(double p50, double p90, double p99, double max, double
         if (n == 0) {
             return EMPTY;
         }
-        return new Percentiles(us(histogramNs.getValueAtPercentile(50)), us(histogramNs.getValueAtPercentile(90)),
-                us(histogramNs.getValueAtPercentile(99)), us(exactMaxNs), us(exactSumNs / n));
+        // Histogram buckets report their upper bound; no percentile can exceed the exact maximum.
+        return new Percentiles(us(Math.min(histogramNs.getValueAtPercentile(50), exactMaxNs)),
+                us(Math.min(histogramNs.getValueAtPercentile(90), exactMaxNs)),
+                us(Math.min(histogramNs.getValueAtPercentile(99), exactMaxNs)), us(exactMaxNs), us(exactSumNs / n));
     }
 
     private static double us(double ns) {
