@@ -134,6 +134,39 @@ public final class Monitor {
                 .feedStats();
     }
 
+    /**
+     * Reads a key's newest value from outside the task set, for observers such as a run
+     * supervisor or a live view: copies it into {@code target} under the key's read lock, like a
+     * consumer's copy-in, without being a task (so it appears in no report). Any thread.
+     *
+     * @param key the key
+     * @param target receives the value
+     * @param <T> the value type
+     * @return the generation copied (0 if never written: {@code target} then holds the empty value)
+     * @throws IllegalArgumentException if no task produces the key or its type differs
+     */
+    public <T extends StateValue<T>> long read(Key<T> key, T target) {
+        StateVariable<?> variable = variables.stream().filter(v -> v.key().name().equals(key.name())).findFirst()
+                .orElseThrow(() -> new IllegalArgumentException("no key '" + key.name() + "'; keys: " + keyNames));
+        if (!variable.key().type().equals(key.type())) {
+            throw new IllegalArgumentException("key '" + key.name() + "' holds " + variable.key().type().getSimpleName()
+                    + ", not " + key.type().getSimpleName());
+        }
+        @SuppressWarnings("unchecked")
+        StateVariable<T> typed = (StateVariable<T>) variable;
+        StateVariable.ReadCursor cursor = new StateVariable.ReadCursor();
+        typed.copyTo(target, -1, cursor);
+        return cursor.generation();
+    }
+
+    /**
+     * @param key a key's name
+     * @return true if some task produces it
+     */
+    public boolean hasKey(String key) {
+        return keyNames.contains(key);
+    }
+
     private TaskRuntime runtime(String task) {
         return runtimes.stream().filter(r -> r.name().equals(task)).findFirst()
                 .orElseThrow(() -> new IllegalArgumentException("no task '" + task + "'; tasks: "
