@@ -403,6 +403,9 @@ public final class Monitor {
                 for (OutputHandle<?> out : setup.outputs) {
                     String key = out.key().name();
                     Setup other = producerOf.get(key);
+                    if (other == setup) {
+                        continue; // declared twice by one task: already reported by its setup
+                    }
                     if (other != null) {
                         violations.add("key '" + key + "' is produced by tasks '" + other.spec.name() + "' and '"
                                 + setup.spec.name() + "'; a key has exactly one producer");
