@@ -390,7 +390,8 @@ public final class Monitor {
                 try {
                     spec.task().initialize(setup);
                 } catch (Exception e) {
-                    violations.add("task '" + spec.name() + "' failed to initialize: " + e.getMessage());
+                    violations.add("task '" + spec.name() + "' failed to initialize: " + e.getClass().getSimpleName()
+                            + (e.getMessage() == null ? "" : ": " + e.getMessage()));
                 }
                 setup.closed = true;
                 setup.violations.forEach(violations::add);
