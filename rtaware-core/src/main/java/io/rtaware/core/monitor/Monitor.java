@@ -99,7 +99,10 @@ public final class Monitor {
         return Collections.unmodifiableList(runtimes);
     }
 
-    /** @return key names by key index (see {@link MonitorListener#onCommit}) */
+    /**
+     * @return key names by key index (see {@link MonitorListener#onCommit}), in the order the
+     *     producing tasks declared them
+     */
     public List<String> keyNames() {
         return keyNames;
     }
@@ -398,8 +401,9 @@ public final class Monitor {
                 setups.add(setup);
             }
 
-            Map<String, Setup> producerOf = new TreeMap<>();
-            Map<String, Key<?>> producedKey = new TreeMap<>();
+            // Declaration order: error messages list produced keys as the tasks declared them.
+            Map<String, Setup> producerOf = new LinkedHashMap<>();
+            Map<String, Key<?>> producedKey = new LinkedHashMap<>();
             for (Setup setup : setups) {
                 for (OutputHandle<?> out : setup.outputs) {
                     String key = out.key().name();
