@@ -102,7 +102,10 @@ public final class Monitor {
         return Collections.unmodifiableList(runtimes);
     }
 
-    /** @return key names by key index (see {@link MonitorListener#onCommit}) */
+    /**
+     * @return key names by key index (see {@link MonitorListener#onCommit}), in the order the
+     *     producing tasks declared them
+     */
     public List<String> keyNames() {
         return keyNames;
     }
@@ -443,19 +446,24 @@ public final class Monitor {
                 try {
                     spec.task().initialize(setup);
                 } catch (Exception e) {
-                    violations.add("task '" + spec.name() + "' failed to initialize: " + e.getMessage());
+                    violations.add("task '" + spec.name() + "' failed to initialize: " + e.getClass().getSimpleName()
+                            + (e.getMessage() == null ? "" : ": " + e.getMessage()));
                 }
                 setup.closed = true;
                 setup.violations.forEach(violations::add);
                 setups.add(setup);
             }
 
-            Map<String, Setup> producerOf = new TreeMap<>();
-            Map<String, Key<?>> producedKey = new TreeMap<>();
+            // Declaration order: error messages list produced keys as the tasks declared them.
+            Map<String, Setup> producerOf = new LinkedHashMap<>();
+            Map<String, Key<?>> producedKey = new LinkedHashMap<>();
             for (Setup setup : setups) {
                 for (OutputHandle<?> out : setup.outputs) {
                     String key = out.key().name();
                     Setup other = producerOf.get(key);
+                    if (other == setup) {
+                        continue; // declared twice by one task: already reported by its setup
+                    }
                     if (other != null) {
                         violations.add("key '" + key + "' is produced by tasks '" + other.spec.name() + "' and '"
                                 + setup.spec.name() + "'; a key has exactly one producer");

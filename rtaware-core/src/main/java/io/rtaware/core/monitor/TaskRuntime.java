@@ -59,6 +59,8 @@ final class TaskRuntime implements TaskInfo {
     private final AtomicLong errors = new AtomicLong();
     private final AtomicLong expiredReads = new AtomicLong();
     private volatile TaskState state = TaskState.INITIALIZED;
+    /** Called on the task thread once a periodic cycle is marked running; null if none. */
+    private Runnable cycleStarted;
 
     private final Histogram execNs = new Histogram(1, HIGHEST_TRACKABLE_NS, 2);
     private final Histogram latenessNs = new Histogram(1, HIGHEST_TRACKABLE_NS, 2);
@@ -125,6 +127,16 @@ final class TaskRuntime implements TaskInfo {
         return periodic;
     }
 
+    /**
+     * Sets the hook run on the task thread right after a periodic cycle is marked running (the
+     * threaded executor wakes its watchdog there). Call before the task's thread starts.
+     *
+     * @param hook must not allocate or block
+     */
+    void onCycleStart(Runnable hook) {
+        this.cycleStarted = hook;
+    }
+
     /** Fixes the grid: release k of a periodic task is at {@code startNs + offset + k * period}. */
     void begin(long startNs) {
         baseNs = startNs + offsetNs;
@@ -168,6 +180,9 @@ final class TaskRuntime implements TaskInfo {
         }
         if (periodic) {
             cycleToken.set(2 * k + 1);
+            if (cycleStarted != null) {
+                cycleStarted.run();
+            }
         }
 
         boolean anyNew = false;
