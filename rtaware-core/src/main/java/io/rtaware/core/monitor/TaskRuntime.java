@@ -67,6 +67,8 @@ final class TaskRuntime implements TaskInfo {
     private long execMaxNs;
     private double execSumNs;
     private long latenessMaxNs;
+    /** End of the latest cycle; task thread only. */
+    private long lastCycleEndNs;
     private double latenessSumNs;
 
     TaskRuntime(TaskSpec spec, int index, Clock clock, MonitorListener[] listeners,
@@ -239,6 +241,7 @@ final class TaskRuntime implements TaskInfo {
                 }
             }
         }
+        lastCycleEndNs = endNs;
         long exec = endNs - startNs;
         record(execNs, exec);
         execSumNs += exec;
@@ -315,6 +318,11 @@ final class TaskRuntime implements TaskInfo {
             next = first;
         }
         return next;
+    }
+
+    /** @return world time at which the latest cycle ended (task thread only) */
+    long lastCycleEndNs() {
+        return lastCycleEndNs;
     }
 
     void setState(TaskState newState, long nowNs) {

@@ -74,7 +74,7 @@ final class ThreadedExecutor implements Monitor.Executor {
             if (!handle(runtime, outcome)) {
                 return;
             }
-            k = runtime.nextIndexAfter(k, clock.nanos());
+            k = runtime.nextIndexAfter(k, runtime.lastCycleEndNs());
         }
     }
 
