@@ -136,6 +136,18 @@ public final class PlayerFrameReader {
         return reader.reset(buf, PlayerHeader.SIZE_BYTES, header.size(), frameStart + PlayerHeader.SIZE_BYTES);
     }
 
+    /**
+     * @return a copy of the raw bytes (header and body) of the message {@link #read} returned
+     *     last (allocates; for tools, tests and relays)
+     * @throws IllegalStateException if no message is complete
+     */
+    public byte[] copyMessage() {
+        if (!complete) {
+            throw new IllegalStateException("no complete message");
+        }
+        return Arrays.copyOf(buf, frameBytes);
+    }
+
     /** @return the stream offset of the message {@link #read} returned last */
     public long messageOffset() {
         return frameStart;

@@ -53,6 +53,16 @@ public final class XdrReader {
         return this;
     }
 
+    /** @return the array this reader reads from (not a copy) */
+    public byte[] array() {
+        return buf;
+    }
+
+    /** @return the index in {@link #array()} of the region's first byte */
+    public int start() {
+        return start;
+    }
+
     /** @return the stream position of the region's first byte */
     public long baseOffset() {
         return baseOffset;
