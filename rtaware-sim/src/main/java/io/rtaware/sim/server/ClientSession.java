@@ -119,6 +119,9 @@ final class ClientSession {
     void reply(byte[] message) {
         boolean overflow;
         synchronized (this) {
+            if (closed) {
+                return;
+            }
             outbox.add(new Outgoing(message, 0, 0, 0, 0));
             overflow = outbox.size() > queueLimit + REPLY_SLACK;
             notifyAll();
@@ -130,9 +133,19 @@ final class ClientSession {
         }
     }
 
-    /** The ACK of REQ DATA, then the held round and a SYNCH (or the SYNCH after the next data). */
+    /**
+     * The ACK of REQ DATA, then (in PULL mode) the held round and a SYNCH, or the SYNCH after
+     * the next data if nothing is held. In PUSH mode only the ACK.
+     */
     synchronized void pullRound(byte[] ack) {
+        if (closed) {
+            return;
+        }
         outbox.add(new Outgoing(ack, 0, 0, 0, 0));
+        if (!pull) {
+            notifyAll();
+            return;
+        }
         if (held.isEmpty()) {
             roundOwed = true;
         } else {
