@@ -1,7 +1,7 @@
 package io.rtaware.core.time;
 
+import java.util.Arrays;
 import java.util.Objects;
-import java.util.concurrent.CopyOnWriteArrayList;
 
 /**
  * A clock that only moves when a test moves it, for exact tests of timing rules.
@@ -26,7 +26,8 @@ public final class ManualClock implements Clock {
     }
 
     private volatile long nowNs;
-    private final CopyOnWriteArrayList<AdvanceObserver> observers = new CopyOnWriteArrayList<>();
+    /** Copy-on-write array: advancing iterates it without allocating. */
+    private volatile AdvanceObserver[] observers = new AdvanceObserver[0];
 
     /** Starts at world time zero. */
     public ManualClock() {
@@ -76,7 +77,16 @@ public final class ManualClock implements Clock {
      * @return a handle that removes the observer when run
      */
     public Runnable onAdvance(AdvanceObserver observer) {
-        observers.add(Objects.requireNonNull(observer, "observer"));
-        return () -> observers.remove(observer);
+        Objects.requireNonNull(observer, "observer");
+        synchronized (this) {
+            AdvanceObserver[] grown = Arrays.copyOf(observers, observers.length + 1);
+            grown[grown.length - 1] = observer;
+            observers = grown;
+        }
+        return () -> {
+            synchronized (this) {
+                observers = Arrays.stream(observers).filter(o -> o != observer).toArray(AdvanceObserver[]::new);
+            }
+        };
     }
 }

@@ -1,0 +1,53 @@
+package io.rtaware.app;
+
+import io.rtaware.app.bench.BenchCommand;
+import java.io.PrintWriter;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+
+/**
+ * The {@code rtaware} command: entry point and composition root. User errors end with one line
+ * and exit status 2; anything else is a bug and shows its stack trace with status 1.
+ */
+@Command(name = "rtaware", mixinStandardHelpOptions = true, version = "rtaware 0.1.0",
+        description = "Run robot controllers whose tasks are aware of time.",
+        subcommands = {BenchCommand.class, CommandLine.HelpCommand.class})
+public final class RtawareCli {
+
+    /** Exit status for a mistake in the user's input. */
+    public static final int EXIT_USER_ERROR = 2;
+
+    private RtawareCli() {
+    }
+
+    /**
+     * @param args command-line arguments
+     */
+    public static void main(String[] args) {
+        System.exit(execute(args));
+    }
+
+    /**
+     * Runs one command line without exiting the JVM.
+     *
+     * @param args command-line arguments
+     * @return the exit status
+     */
+    public static int execute(String... args) {
+        CommandLine cli = new CommandLine(new RtawareCli());
+        cli.setParameterExceptionHandler((ex, a) -> {
+            PrintWriter err = ex.getCommandLine().getErr();
+            err.println("rtaware: " + ex.getMessage().lines().findFirst().orElse("invalid arguments")
+                    + " (see: rtaware " + ex.getCommandLine().getCommandName() + " --help)");
+            return EXIT_USER_ERROR;
+        });
+        cli.setExecutionExceptionHandler((ex, cmd, parseResult) -> {
+            if (ex instanceof UserError) {
+                cmd.getErr().println("rtaware: " + ex.getMessage());
+                return EXIT_USER_ERROR;
+            }
+            throw ex;
+        });
+        return cli.execute(args);
+    }
+}

@@ -1,0 +1,146 @@
+package io.rtaware.app.bench;
+
+import io.rtaware.app.UserError;
+import io.rtaware.app.cli.DurationConverter;
+import io.rtaware.core.monitor.ConfigurationException;
+import io.rtaware.core.monitor.ConsoleReporter;
+import io.rtaware.core.monitor.Monitor;
+import io.rtaware.core.report.Report;
+import io.rtaware.core.report.ReportDocument;
+import io.rtaware.core.report.SummaryTable;
+import io.rtaware.core.task.Schedule;
+import io.rtaware.core.time.Clock;
+import io.rtaware.core.time.Durations;
+import io.rtaware.core.time.ScaledClock;
+import io.rtaware.core.time.SystemClock;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code rtaware bench}: runs a synthetic task set on the real threaded executor and prints the
+ * termination summary, so a user sees how this machine copes with N tasks of a given period and
+ * CPU work.
+ */
+@Command(name = "bench", mixinStandardHelpOptions = true,
+        description = {"Run a synthetic task set and report misses, lateness and execution times.",
+                "Work is real CPU work (a busy loop calibrated at start-up), not sleep.",
+                "Examples:",
+                "  rtaware bench --tasks 4 --period 10ms --work 2ms --duration 10s --json r.json",
+                "  rtaware bench --spec \"a:10ms:2ms,b:50ms:20ms\" --chain"})
+public final class BenchCommand implements Callable<Integer> {
+
+    @Option(names = "--tasks", description = "Number of identical tasks (default: ${DEFAULT-VALUE}).", defaultValue = "4")
+    int tasks;
+
+    @Option(names = "--period", converter = DurationConverter.class, defaultValue = "10ms",
+            description = "Period of each task, e.g. 10ms (default: ${DEFAULT-VALUE}).")
+    long periodNs;
+
+    @Option(names = "--work", converter = DurationConverter.class, defaultValue = "2ms",
+            description = "CPU work per cycle, e.g. 2ms; 0 for none (default: ${DEFAULT-VALUE}).")
+    long workNs;
+
+    @Option(names = "--spec", description = "Mixed task set name:period:work,..., e.g. a:10ms:2ms,b:50ms:20ms (overrides --tasks/--period/--work).")
+    String spec;
+
+    @Option(names = "--chain", description = "Each task consumes the previous task's output key.")
+    boolean chain;
+
+    @Option(names = "--duration", converter = DurationConverter.class, defaultValue = "10s",
+            description = "How long to run, in world time (default: ${DEFAULT-VALUE}).")
+    long durationNs;
+
+    @Option(names = "--time-scale", defaultValue = "1", description = "World time runs K times faster than wall time (default: ${DEFAULT-VALUE}).")
+    double timeScale;
+
+    @Option(names = "--json", description = "Write the JSON report (schema rtaware.report/1) to FILE.", paramLabel = "FILE")
+    Path json;
+
+    @Option(names = "--quiet", description = "Do not print live miss reports.")
+    boolean quiet;
+
+    @Override
+    public Integer call() throws IOException, InterruptedException {
+        List<BenchSpec> specs = taskSet();
+        if (durationNs <= 0) {
+            throw new UserError("--duration must be positive, got " + Durations.format(durationNs));
+        }
+        if (!(timeScale > 0) || Double.isInfinite(timeScale)) {
+            throw new UserError("--time-scale must be a positive number, got " + timeScale);
+        }
+        PrintStream out = System.out;
+        BusyWork work = BusyWork.calibrate();
+        Clock clock = timeScale == 1.0 ? new SystemClock() : new ScaledClock(timeScale);
+
+        Monitor.Builder builder = Monitor.builder(clock);
+        String previous = null;
+        for (BenchSpec s : specs) {
+            builder.task(s.name(), Schedule.periodic(s.periodNs()),
+                    new BenchTask(s.name(), s.workNs(), chain ? previous : null, work));
+            previous = s.name();
+        }
+        Monitor monitor = buildOrExplain(builder);
+        ConsoleReporter console = quiet ? null : new ConsoleReporter(System.err, monitor.tasks(), false);
+        if (console != null) {
+            monitor.addListener(console);
+        }
+        out.printf("rtaware bench: %d task(s)%s for %s of world time (time scale x%s)%n", specs.size(),
+                chain ? " in a chain" : "", Durations.format(durationNs), timeScale);
+        Thread hook = monitor.installShutdownHook();
+        monitor.onTermination(report -> finish(report, console, out));
+        monitor.start();
+        long wallNs = clock.toWallNanos(durationNs);
+        monitor.awaitTermination(java.time.Duration.ofNanos(wallNs));
+        monitor.stop();
+        try {
+            Runtime.getRuntime().removeShutdownHook(hook);
+        } catch (IllegalStateException shuttingDown) {
+            // Already shutting down: the hook is running or has run.
+        }
+        return 0;
+    }
+
+    private void finish(Report report, ConsoleReporter console, PrintStream out) {
+        if (console != null) {
+            console.close();
+        }
+        out.println();
+        out.print(SummaryTable.format(report));
+        if (json != null) {
+            try {
+                new ReportDocument(report).write(json);
+                out.println("report written to " + json);
+            } catch (IOException e) {
+                System.err.println("rtaware: could not write " + json + ": " + e.getMessage());
+            }
+        }
+    }
+
+    private static Monitor buildOrExplain(Monitor.Builder builder) {
+        try {
+            return builder.build();
+        } catch (ConfigurationException e) {
+            throw new UserError(String.join("; ", e.violations()));
+        }
+    }
+
+    private List<BenchSpec> taskSet() {
+        if (spec != null) {
+            return BenchSpec.parseList(spec);
+        }
+        if (tasks < 1) {
+            throw new UserError("--tasks must be at least 1, got " + tasks);
+        }
+        List<BenchSpec> specs = new ArrayList<>();
+        for (int i = 1; i <= tasks; i++) {
+            specs.add(BenchSpec.of("t" + i, periodNs, workNs));
+        }
+        return specs;
+    }
+}

@@ -1,0 +1,66 @@
+package io.rtaware.app.bench;
+
+import io.rtaware.app.UserError;
+import io.rtaware.core.time.Durations;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+
+/**
+ * One synthetic task of a bench set.
+ *
+ * @param name task name
+ * @param periodNs period in world nanoseconds
+ * @param workNs CPU work per cycle in wall nanoseconds
+ */
+public record BenchSpec(String name, long periodNs, long workNs) {
+
+    /**
+     * Parses {@code --spec "a:10ms:2ms,b:50ms:20ms"}.
+     *
+     * @param text the spec list
+     * @return the tasks, in order
+     * @throws UserError naming the bad entry
+     */
+    public static List<BenchSpec> parseList(String text) {
+        List<BenchSpec> specs = new ArrayList<>();
+        Set<String> names = new HashSet<>();
+        for (String entry : text.split(",")) {
+            String[] parts = entry.trim().split(":");
+            if (parts.length != 3 || parts[0].isBlank()) {
+                throw new UserError("--spec entry '" + entry.trim() + "' is not name:period:work (example: a:10ms:2ms)");
+            }
+            if (!names.add(parts[0])) {
+                throw new UserError("--spec names task '" + parts[0] + "' twice");
+            }
+            specs.add(of(parts[0], parse(parts[1], "period", entry), parse(parts[2], "work", entry)));
+        }
+        return specs;
+    }
+
+    /**
+     * @param name task name
+     * @param periodNs period
+     * @param workNs work
+     * @return the validated spec
+     * @throws UserError if the period is not positive or the work negative
+     */
+    public static BenchSpec of(String name, long periodNs, long workNs) {
+        if (periodNs <= 0) {
+            throw new UserError("period of task '" + name + "' must be positive, got " + Durations.format(periodNs));
+        }
+        if (workNs < 0) {
+            throw new UserError("work of task '" + name + "' cannot be negative, got " + workNs + "ns");
+        }
+        return new BenchSpec(name, periodNs, workNs);
+    }
+
+    private static long parse(String value, String what, String entry) {
+        try {
+            return Durations.parseNanos(value);
+        } catch (IllegalArgumentException e) {
+            throw new UserError("--spec entry '" + entry.trim() + "': " + what + " " + e.getMessage());
+        }
+    }
+}

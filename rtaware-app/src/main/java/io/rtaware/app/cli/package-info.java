@@ -1,0 +1,2 @@
+/** Command-line plumbing shared by the commands: converters and error handling. */
+package io.rtaware.app.cli;

@@ -1,0 +1,180 @@
+package io.rtaware.core.monitor;
+
+import io.rtaware.core.task.ErrorPolicy;
+import java.io.PrintStream;
+import java.util.List;
+import java.util.Locale;
+import java.util.Objects;
+import java.util.concurrent.atomic.AtomicLongArray;
+import java.util.concurrent.atomic.AtomicReferenceArray;
+
+/**
+ * Prints live deadline misses, stale runs, expired reads and task errors, at most one line per
+ * second per task, each line carrying the count of everything folded into it since the
+ * previous line: counts are never dropped.
+ *
+ * <p>Events only bump counters (no allocation, no I/O on task threads); a daemon thread of
+ * the reporter's own prints every {@value #POLL_MS} ms. {@link #flush()} prints what is left,
+ * e.g. before the termination summary. Thread-safe.
+ */
+public final class ConsoleReporter implements MonitorListener, AutoCloseable {
+
+    private static final int POLL_MS = 100;
+    private static final long LINE_INTERVAL_NS = 1_000_000_000L;
+    private static final int MISSES = 0;
+    private static final int SKIPPED = 1;
+    private static final int STALE = 2;
+    private static final int EXPIRED = 3;
+    private static final int ERRORS = 4;
+    private static final int KINDS = 5;
+
+    private final PrintStream out;
+    private final List<TaskInfo> tasks;
+    private final boolean includeStale;
+    private final AtomicLongArray pending;
+    private final AtomicLongArray lastMissDetectedNs;
+    private final AtomicLongArray lastMissDeadlineNs;
+    private final AtomicReferenceArray<Throwable> lastError;
+    private final long[] lastLineWallNs;
+    private final Thread printer;
+    private volatile boolean closed;
+    /** World time when the first task started running: the origin of printed times. */
+    private volatile long originNs = Long.MIN_VALUE;
+
+    /**
+     * @param out where lines go
+     * @param monitor the monitor whose tasks are reported (register this reporter as its listener
+     *     through the builder, then pass the built monitor here)
+     * @param includeStale whether stale runs are reported live (they are always in the summary)
+     */
+    public ConsoleReporter(PrintStream out, List<TaskInfo> monitor, boolean includeStale) {
+        this.out = Objects.requireNonNull(out, "out");
+        this.tasks = List.copyOf(monitor);
+        this.includeStale = includeStale;
+        int n = tasks.size();
+        this.pending = new AtomicLongArray(n * KINDS);
+        this.lastMissDetectedNs = new AtomicLongArray(n);
+        this.lastMissDeadlineNs = new AtomicLongArray(n);
+        this.lastError = new AtomicReferenceArray<>(n);
+        this.lastLineWallNs = new long[n];
+        java.util.Arrays.fill(lastLineWallNs, Long.MIN_VALUE / 2);
+        this.printer = new Thread(this::printLoop, "rtaware-console");
+        this.printer.setDaemon(true);
+        this.printer.start();
+    }
+
+    @Override
+    public void onStateChange(TaskInfo task, TaskState state, long nowNs) {
+        if (state == TaskState.RUNNING && originNs == Long.MIN_VALUE) {
+            originNs = nowNs;
+        }
+    }
+
+    @Override
+    public void onDeadlineMiss(TaskInfo task, long releaseNs, long deadlineNs, long detectedNs, boolean stillRunning) {
+        int i = task.index();
+        pending.incrementAndGet(i * KINDS + MISSES);
+        lastMissDetectedNs.set(i, detectedNs);
+        lastMissDeadlineNs.set(i, deadlineNs);
+    }
+
+    @Override
+    public void onSkippedReleases(TaskInfo task, long skipped, long nowNs) {
+        pending.addAndGet(task.index() * KINDS + SKIPPED, skipped);
+    }
+
+    @Override
+    public void onStaleRun(TaskInfo task, long nowNs) {
+        if (includeStale) {
+            pending.incrementAndGet(task.index() * KINDS + STALE);
+        }
+    }
+
+    @Override
+    public void onExpiredInput(TaskInfo task, String key, long ageNs, long maxAgeNs, long nowNs) {
+        pending.incrementAndGet(task.index() * KINDS + EXPIRED);
+    }
+
+    @Override
+    public void onTaskError(TaskInfo task, Throwable error, ErrorPolicy policy, long nowNs) {
+        pending.incrementAndGet(task.index() * KINDS + ERRORS);
+        lastError.set(task.index(), error);
+    }
+
+    private void printLoop() {
+        while (!closed) {
+            printDue(false);
+            try {
+                Thread.sleep(POLL_MS);
+            } catch (InterruptedException e) {
+                return;
+            }
+        }
+    }
+
+    /** Prints every task's folded counts now, regardless of the one-line-per-second limit. */
+    public void flush() {
+        printDue(true);
+    }
+
+    private synchronized void printDue(boolean force) {
+        long wallNs = System.nanoTime();
+        for (TaskInfo task : tasks) {
+            int i = task.index();
+            if (!force && wallNs - lastLineWallNs[i] < LINE_INTERVAL_NS) {
+                continue;
+            }
+            long misses = pending.getAndSet(i * KINDS + MISSES, 0);
+            long skipped = pending.getAndSet(i * KINDS + SKIPPED, 0);
+            long stale = pending.getAndSet(i * KINDS + STALE, 0);
+            long expired = pending.getAndSet(i * KINDS + EXPIRED, 0);
+            long errors = pending.getAndSet(i * KINDS + ERRORS, 0);
+            if (misses + skipped + stale + expired + errors == 0) {
+                continue;
+            }
+            lastLineWallNs[i] = wallNs;
+            out.println(line(task, misses, skipped, stale, expired, errors));
+        }
+    }
+
+    private String line(TaskInfo task, long misses, long skipped, long stale, long expired, long errors) {
+        int i = task.index();
+        StringBuilder sb = new StringBuilder("[rtaware] ").append(task.name()).append(':');
+        if (misses + skipped > 0) {
+            sb.append(' ').append(misses + skipped).append(misses + skipped == 1 ? " deadline miss" : " deadline misses");
+            if (skipped > 0) {
+                sb.append(" (").append(skipped).append(" skipped releases)");
+            }
+            if (misses > 0) {
+                long origin = originNs == Long.MIN_VALUE ? 0 : originNs;
+                sb.append(String.format(Locale.ROOT, ", last detected at t=%.3fs (deadline t=%.3fs)",
+                        (lastMissDetectedNs.get(i) - origin) / 1e9, (lastMissDeadlineNs.get(i) - origin) / 1e9));
+            }
+        }
+        if (stale > 0) {
+            sb.append(' ').append(stale).append(stale == 1 ? " stale run" : " stale runs").append(" (no new input)");
+        }
+        if (expired > 0) {
+            sb.append(' ').append(expired).append(" expired reads (input older than its max age)");
+        }
+        if (errors > 0) {
+            Throwable t = lastError.get(i);
+            sb.append(' ').append(errors).append(errors == 1 ? " error" : " errors");
+            if (t != null) {
+                sb.append(", last: ").append(t.getClass().getSimpleName());
+                if (t.getMessage() != null) {
+                    sb.append(": ").append(t.getMessage());
+                }
+            }
+        }
+        return sb.toString();
+    }
+
+    /** Stops the printer thread after printing what is left. */
+    @Override
+    public void close() {
+        closed = true;
+        printer.interrupt();
+        flush();
+    }
+}

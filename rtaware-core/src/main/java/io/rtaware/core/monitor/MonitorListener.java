@@ -1,0 +1,100 @@
+package io.rtaware.core.monitor;
+
+/**
+ * Receives the monitor's events as they happen. Every method has a no-op default.
+ *
+ * <p>Methods are called on task threads and on the monitor's watchdog thread, concurrently:
+ * implementations must be thread-safe, fast, and must not block or allocate on the common
+ * paths ({@link #onCycle}, {@link #onStaleRun}, {@link #onCommit}); hand slow work such as
+ * printing to a thread of their own.
+ */
+public interface MonitorListener {
+
+    /**
+     * A release did not finish by its deadline. Reported at the deadline while the task is still
+     * running ({@code stillRunning}), or when a late cycle returns if the watchdog had not seen it.
+     *
+     * @param task the task
+     * @param releaseNs scheduled release
+     * @param deadlineNs absolute deadline
+     * @param detectedNs world time of detection
+     * @param stillRunning true if the cycle was still running when detected
+     */
+    default void onDeadlineMiss(TaskInfo task, long releaseNs, long deadlineNs, long detectedNs,
+                                boolean stillRunning) {
+    }
+
+    /**
+     * Releases were skipped because the task was still running when they came due; each is a miss.
+     *
+     * @param task the task
+     * @param skipped how many releases were skipped
+     * @param nowNs world time
+     */
+    default void onSkippedReleases(TaskInfo task, long skipped, long nowNs) {
+    }
+
+    /**
+     * The task ran although none of its inputs had new data since its previous cycle.
+     *
+     * @param task the task
+     * @param nowNs cycle start
+     */
+    default void onStaleRun(TaskInfo task, long nowNs) {
+    }
+
+    /**
+     * The task read an input older than the maximum age it declared.
+     *
+     * @param task the task
+     * @param key the input's key name
+     * @param ageNs the value's age
+     * @param maxAgeNs the declared maximum age
+     * @param nowNs cycle start
+     */
+    default void onExpiredInput(TaskInfo task, String key, long ageNs, long maxAgeNs, long nowNs) {
+    }
+
+    /**
+     * A cycle threw.
+     *
+     * @param task the task
+     * @param error what was thrown
+     * @param policy the policy now applied
+     * @param nowNs world time
+     */
+    default void onTaskError(TaskInfo task, Throwable error, io.rtaware.core.task.ErrorPolicy policy, long nowNs) {
+    }
+
+    /**
+     * A task changed state.
+     *
+     * @param task the task
+     * @param state the new state
+     * @param nowNs world time
+     */
+    default void onStateChange(TaskInfo task, TaskState state, long nowNs) {
+    }
+
+    /**
+     * A cycle completed (successfully or not).
+     *
+     * @param task the task
+     * @param releaseNs the scheduled release (the start, for continuous tasks)
+     * @param startNs cycle start
+     * @param endNs cycle end
+     */
+    default void onCycle(TaskInfo task, long releaseNs, long startNs, long endNs) {
+    }
+
+    /**
+     * A produced value was committed to the store.
+     *
+     * @param producer the producing task
+     * @param keyIndex dense index of the key (see {@link Monitor#keyNames()})
+     * @param generation the new generation
+     * @param nowNs commit time
+     */
+    default void onCommit(TaskInfo producer, int keyIndex, long generation, long nowNs) {
+    }
+}

@@ -1,0 +1,16 @@
+package io.rtaware.core.monitor;
+
+/**
+ * A task's counters at one moment (see {@link io.rtaware.core.report.TaskReport} for meanings).
+ *
+ * @param releases releases so far
+ * @param runs cycles run
+ * @param misses deadline misses including skipped releases
+ * @param skipped skipped releases
+ * @param staleRuns cycles without new input data
+ * @param errors cycles that threw
+ * @param expiredReads reads of inputs older than their declared maximum age
+ */
+public record TaskCounters(long releases, long runs, long misses, long skipped, long staleRuns,
+                           long errors, long expiredReads) {
+}

@@ -1,0 +1,194 @@
+package io.rtaware.core.monitor;
+
+import io.rtaware.core.time.Clock;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.LockSupport;
+
+/**
+ * One named platform thread per task, as in the paper, plus a watchdog thread that reports
+ * deadline misses at the deadline. Periodic tasks wait for their absolute release time with
+ * {@link LockSupport#parkNanos} (never {@code Thread.sleep}, which rounds to whole
+ * milliseconds on JDK 17); lateness is measured against the scheduled release.
+ *
+ * <p>Thread-safe: started once, stopped once, by the monitor.
+ */
+final class ThreadedExecutor implements Monitor.Executor {
+
+    private static final long JOIN_TIMEOUT_MS = 5_000;
+
+    private final Clock clock;
+    private final List<TaskRuntime> runtimes;
+    private final Runnable stopAllRequest;
+    private final List<Thread> threads = new ArrayList<>();
+    private volatile boolean running;
+    private Thread watchdog;
+    /** The world time the watchdog sleeps until; task threads wake it for an earlier deadline. */
+    private volatile long watchdogWakeNs = Long.MAX_VALUE;
+
+    ThreadedExecutor(Clock clock, List<TaskRuntime> runtimes, Runnable stopAllRequest) {
+        this.clock = clock;
+        this.runtimes = runtimes;
+        this.stopAllRequest = stopAllRequest;
+    }
+
+    @Override
+    public void start(long startNs) {
+        running = true;
+        watchdog = new Thread(this::watch, "rtaware-monitor");
+        watchdog.setDaemon(true);
+        watchdog.setPriority(Thread.MAX_PRIORITY);
+        for (TaskRuntime runtime : runtimes) {
+            runtime.begin(startNs);
+            Thread thread = new Thread(() -> runTask(runtime), "rtaware-" + runtime.name());
+            thread.setDaemon(true);
+            threads.add(thread);
+        }
+        watchdog.start();
+        threads.forEach(Thread::start);
+    }
+
+    private void runTask(TaskRuntime runtime) {
+        try {
+            switch (runtime.schedule().kind()) {
+                case "periodic" -> runPeriodic(runtime);
+                case "continuous" -> runContinuous(runtime);
+                default -> runOnce(runtime);
+            }
+        } catch (VirtualMachineError fatal) {
+            System.err.println("rtaware: task '" + runtime.name() + "' hit a fatal VM error: " + fatal);
+            stopAllRequest.run();
+        }
+    }
+
+    private void runPeriodic(TaskRuntime runtime) {
+        long k = 0;
+        while (running) {
+            long releaseNs = runtime.releaseTimeNs(k);
+            if (!waitUntil(releaseNs)) {
+                return;
+            }
+            long deadlineNs = runtime.deadlineOf(k);
+            if (deadlineNs < watchdogWakeNs) {
+                LockSupport.unpark(watchdog);
+            }
+            TaskRuntime.Outcome outcome = runtime.runCycle(k, releaseNs);
+            if (!handle(runtime, outcome)) {
+                return;
+            }
+            k = runtime.nextIndexAfter(k, clock.nanos());
+        }
+    }
+
+    private void runContinuous(TaskRuntime runtime) {
+        long k = 0;
+        while (running) {
+            TaskRuntime.Outcome outcome = runtime.runCycle(k++, clock.nanos());
+            if (!handle(runtime, outcome)) {
+                return;
+            }
+        }
+    }
+
+    private void runOnce(TaskRuntime runtime) {
+        long releaseNs = runtime.releaseTimeNs(0);
+        if (waitUntil(releaseNs) && handle(runtime, runtime.runCycle(0, releaseNs))) {
+            runtime.setState(TaskState.FINISHED, clock.nanos());
+        }
+    }
+
+    /** @return true if the task goes on */
+    private boolean handle(TaskRuntime runtime, TaskRuntime.Outcome outcome) {
+        switch (outcome) {
+            case DISABLE -> {
+                runtime.setState(TaskState.DISABLED, clock.nanos());
+                return false;
+            }
+            case STOP_ALL -> {
+                stopAllRequest.run();
+                return false;
+            }
+            default -> {
+                return true;
+            }
+        }
+    }
+
+    /** Parks until the world clock reaches {@code targetNs}; false if stopped meanwhile. */
+    private boolean waitUntil(long targetNs) {
+        while (running) {
+            long remainingNs = targetNs - clock.nanos();
+            if (remainingNs <= 0) {
+                return true;
+            }
+            LockSupport.parkNanos(clock.toWallNanos(remainingNs));
+        }
+        return false;
+    }
+
+    private void watch() {
+        while (running) {
+            long now = clock.nanos();
+            long earliest = Long.MAX_VALUE;
+            for (TaskRuntime runtime : runtimes) {
+                runtime.checkDeadline(now);
+                long deadline = runtime.runningDeadlineNs();
+                if (deadline < earliest) {
+                    earliest = deadline;
+                }
+            }
+            watchdogWakeNs = earliest;
+            // Re-check after publishing the wake time: a cycle may have started meanwhile.
+            for (TaskRuntime runtime : runtimes) {
+                long deadline = runtime.runningDeadlineNs();
+                if (deadline < earliest) {
+                    earliest = deadline;
+                }
+            }
+            watchdogWakeNs = earliest;
+            if (earliest == Long.MAX_VALUE) {
+                LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(100));
+            } else {
+                long remaining = earliest - clock.nanos();
+                if (remaining > 0) {
+                    // Wake just after the deadline: a miss is a cycle still running past it.
+                    LockSupport.parkNanos(clock.toWallNanos(remaining) + 1_000);
+                }
+            }
+        }
+    }
+
+    @Override
+    public void stopAndJoin() {
+        running = false;
+        threads.forEach(LockSupport::unpark);
+        if (watchdog != null) {
+            LockSupport.unpark(watchdog);
+        }
+        for (Thread thread : threads) {
+            if (thread == Thread.currentThread()) {
+                continue;
+            }
+            try {
+                thread.join(JOIN_TIMEOUT_MS);
+                if (thread.isAlive()) {
+                    System.err.println("rtaware: " + thread.getName() + " did not return within "
+                            + JOIN_TIMEOUT_MS + " ms of stop; interrupting it");
+                    thread.interrupt();
+                    thread.join(JOIN_TIMEOUT_MS);
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return;
+            }
+        }
+        try {
+            if (watchdog != null) {
+                watchdog.join(JOIN_TIMEOUT_MS);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}

@@ -1,0 +1,117 @@
+package io.rtaware.core.report;
+
+import com.fasterxml.jackson.databind.DeserializationFeature;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.PropertyNamingStrategies;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.Objects;
+
+/**
+ * A report as written to {@code report.json}: the core {@link Report} plus named sections that
+ * other layers add ({@code run}, {@code advice}, {@code schedulability}, ...), each any value
+ * Jackson can write. Not thread-safe.
+ */
+public final class ReportDocument {
+
+    private static final ObjectMapper MAPPER = new ObjectMapper()
+            .setPropertyNamingStrategy(PropertyNamingStrategies.SNAKE_CASE)
+            .enable(SerializationFeature.INDENT_OUTPUT)
+            .disable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES);
+
+    private final Report report;
+    private final Map<String, Object> sections = new LinkedHashMap<>();
+
+    /** @param report the core report */
+    public ReportDocument(Report report) {
+        this.report = Objects.requireNonNull(report, "report");
+    }
+
+    /** @return the core report */
+    public Report report() {
+        return report;
+    }
+
+    /**
+     * Adds or replaces a section written beside the core fields.
+     *
+     * @param name the section's JSON name, e.g. {@code run}
+     * @param value a record, map or JsonNode
+     * @return this document
+     */
+    public ReportDocument section(String name, Object value) {
+        sections.put(Objects.requireNonNull(name, "name"), Objects.requireNonNull(value, "value"));
+        return this;
+    }
+
+    /** @return the sections added, in order */
+    public Map<String, Object> sections() {
+        return Collections.unmodifiableMap(sections);
+    }
+
+    /** @return the document as a JSON tree */
+    public ObjectNode toJson() {
+        ObjectNode root = MAPPER.valueToTree(report);
+        sections.forEach((name, value) -> root.set(name, MAPPER.valueToTree(value)));
+        return root;
+    }
+
+    /** @return the document as indented JSON text */
+    public String toJsonString() {
+        try {
+            return MAPPER.writeValueAsString(toJson());
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /**
+     * @param file where to write the JSON (parent folders are created)
+     * @throws IOException if writing fails
+     */
+    public void write(Path file) throws IOException {
+        Path parent = file.toAbsolutePath().getParent();
+        if (parent != null) {
+            Files.createDirectories(parent);
+        }
+        Files.writeString(file, toJsonString() + "\n");
+    }
+
+    /**
+     * Reads a report written by {@link #write(Path)}; sections come back as JSON trees.
+     *
+     * @param file a report.json
+     * @return the document
+     * @throws IOException if the file cannot be read or is not a report
+     */
+    public static ReportDocument read(Path file) throws IOException {
+        JsonNode root = MAPPER.readTree(file.toFile());
+        if (root == null || !root.isObject() || !Report.SCHEMA.equals(root.path("schema").asText())) {
+            throw new IOException(file + ": not an rtaware report (schema is not " + Report.SCHEMA + ")");
+        }
+        Report report = MAPPER.treeToValue(root, Report.class);
+        ReportDocument doc = new ReportDocument(report);
+        for (Map.Entry<String, JsonNode> field : (Iterable<Map.Entry<String, JsonNode>>) root::fields) {
+            if (!CORE_FIELDS.contains(field.getKey())) {
+                doc.section(field.getKey(), field.getValue());
+            }
+        }
+        return doc;
+    }
+
+    /** @return the mapper configured for rtaware's JSON (snake_case names, indented) */
+    public static ObjectMapper mapper() {
+        return MAPPER.copy();
+    }
+
+    private static final java.util.Set<String> CORE_FIELDS =
+            java.util.Set.of("schema", "time_scale", "duration_s", "misses_total_pct", "tasks", "data");
+}
