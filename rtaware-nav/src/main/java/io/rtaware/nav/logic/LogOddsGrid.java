@@ -17,7 +17,8 @@ import io.rtaware.robot.msg.OccupancyGrid;
  * <p>Cost: one scan of {@code n} beams of range {@code r} touches about {@code n * r / resolution}
  * cells (683 beams of 5.6 m: 77 000 at 0.05 m, 7 700 at 0.5 m). Memory: 9 bytes per cell.
  *
- * <p>Not thread-safe; allocates nothing after construction.
+ * <p>Not thread-safe; allocates nothing after construction except once, when the first scan
+ * (or a scan with more beams than any before) arrives.
  */
 public final class LogOddsGrid {
 
@@ -39,6 +40,8 @@ public final class LogOddsGrid {
     private final byte[] state;
     private final int[] scanStamp;
     private int scanId;
+    private double[] beamEndXM = new double[0];
+    private double[] beamEndYM = new double[0];
     private long scansIntegrated;
 
     /**
@@ -138,23 +141,30 @@ public final class LogOddsGrid {
     public void integrate(LaserScan scan, double xM, double yM, double yawRad) {
         nextScan();
         int n = scan.count();
+        if (beamEndXM.length < n) {
+            // Grows once, to the largest scan seen.
+            beamEndXM = new double[n];
+            beamEndYM = new double[n];
+        }
         double maxRange = scan.maxRangeM > 0 ? scan.maxRangeM : Double.MAX_VALUE;
         for (int i = 0; i < n; i++) {
             double r = scan.rangesM[i];
-            if (r > 0 && r < maxRange && Double.isFinite(r)) {
-                double a = yawRad + scan.bearingRad(i);
-                markHit(xM + r * Math.cos(a), yM + r * Math.sin(a));
+            if (!(r > 0) || !Double.isFinite(r)) {
+                beamEndXM[i] = Double.NaN;
+                continue;
+            }
+            double len = Math.min(r, maxRange);
+            double a = yawRad + scan.bearingRad(i);
+            beamEndXM[i] = xM + len * Math.cos(a);
+            beamEndYM[i] = yM + len * Math.sin(a);
+            if (r < maxRange) {
+                markHit(beamEndXM[i], beamEndYM[i]);
             }
         }
         for (int i = 0; i < n; i++) {
-            double r = scan.rangesM[i];
-            if (!(r > 0) || !Double.isFinite(r)) {
-                continue;
+            if (!Double.isNaN(beamEndXM[i])) {
+                traceFree(xM, yM, beamEndXM[i], beamEndYM[i], scan.rangesM[i] < maxRange);
             }
-            boolean hit = r < maxRange;
-            double len = hit ? r : maxRange;
-            double a = yawRad + scan.bearingRad(i);
-            traceFree(xM, yM, xM + len * Math.cos(a), yM + len * Math.sin(a), hit);
         }
         scansIntegrated++;
     }
