@@ -22,8 +22,8 @@ import java.util.Objects;
  *     the obstacle and waypoint periods)
  * @param gridResolutionM cell edge of the occupancy grid in metres (default 0.05). Cost on the
  *     paper's 9.6 m x 6.2 m room (NavBench, one loaded 2-core machine): at 0.05 m one 683-beam
- *     scan takes about 0.3-0.6 ms to integrate and a plan across the room 2-5 ms; at the
- *     paper's 0.5 m, about 0.1 ms and 5-11 us, but the room's gaps then vanish into whole cells
+ *     scan takes about 0.2-0.35 ms to integrate and a plan across the room 2-5 ms; at the
+ *     paper's 0.5 m, about 0.07-0.11 ms and 5-11 us, but the room's gaps then vanish into whole cells
  * @param gridOriginXM x of the grid's lower-left corner in metres (default -10)
  * @param gridOriginYM y of the grid's lower-left corner in metres (default -10)
  * @param gridWidthM extent of the grid along x in metres (default 20)
