@@ -263,7 +263,7 @@ public final class PlayerSimServer implements AutoCloseable {
             world.step(dtNs);
             double t = world.timeS();
             simTimeS = t;
-            if (world.odometryFresh()) {
+            if (world.odometryFresh() && anySubscribed(POSITION)) {
                 XdrWriter w = new XdrWriter(128);
                 int at = PlayerCodec.beginMessage(w, addr(Interfaces.POSITION2D), MessageType.DATA,
                         Subtypes.POSITION2D_DATA_STATE, t);
@@ -272,13 +272,18 @@ public final class PlayerSimServer implements AutoCloseable {
                 keys[batch.size()] = POSITION;
                 batch.add(data(w, Interfaces.POSITION2D, Subtypes.POSITION2D_DATA_STATE));
             }
-            if (world.scanFresh()) {
-                LaserScan scan = world.scan();
-                int n = scan.count();
+            boolean ranger = world.scanFresh() && anySubscribed(RANGER);
+            boolean laser = world.scanFresh() && anySubscribed(LASER);
+            LaserScan scan = world.scan();
+            int n = scan.count();
+            if (ranger || laser) {
+                for (int i = 0; i < n; i++) {
+                    intensities[i] = (byte) (scan.rangesM[i] < scan.maxRangeM ? 1 : 0);
+                }
+            }
+            if (ranger) {
                 rangerData.count = n;
                 for (int i = 0; i < n; i++) {
-                    boolean hit = scan.rangesM[i] < scan.maxRangeM;
-                    intensities[i] = (byte) (hit ? 1 : 0);
                     rangerData.values[i] = scan.rangesM[i];
                 }
                 XdrWriter w = new XdrWriter(16 * n + 128);
@@ -298,9 +303,12 @@ public final class PlayerSimServer implements AutoCloseable {
                 PlayerCodec.endMessage(w, at);
                 keys[batch.size()] = RANGER;
                 batch.add(data(w, Interfaces.RANGER, Subtypes.RANGER_DATA_INTNS));
+            }
+            if (laser) {
                 fillLaserData(scan);
-                w = new XdrWriter(5 * n + 128);
-                at = PlayerCodec.beginMessage(w, addr(Interfaces.LASER), MessageType.DATA, Subtypes.LASER_DATA_SCAN, t);
+                XdrWriter w = new XdrWriter(5 * n + 128);
+                int at = PlayerCodec.beginMessage(w, addr(Interfaces.LASER), MessageType.DATA,
+                        Subtypes.LASER_DATA_SCAN, t);
                 PlayerCodec.writeLaserScan(w, laserData);
                 PlayerCodec.endMessage(w, at);
                 keys[batch.size()] = LASER;
@@ -313,6 +321,15 @@ public final class PlayerSimServer implements AutoCloseable {
         for (ClientSession s : sessions) {
             s.deliver(batch, keys);
         }
+    }
+
+    private boolean anySubscribed(int deviceKey) {
+        for (ClientSession s : sessions) {
+            if (s.subscribed(deviceKey)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     private void fillLaserData(LaserScan scan) {
