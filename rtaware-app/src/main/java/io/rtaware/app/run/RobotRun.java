@@ -62,6 +62,8 @@ public final class RobotRun {
     private static final long SAMPLE_PERIOD_NS = 100_000_000L;
     private static final double STUCK_MIN_MOVE_M = 0.05;
     private static final double LOST_SERVER_AFTER_S = 5.0;
+    /** Also required, so a loaded machine that stalls the scaled world briefly is not a lost server. */
+    private static final double LOST_SERVER_AFTER_WALL_S = 3.0;
 
     private final RunOptions options;
     private final PrintStream out;
@@ -122,7 +124,7 @@ public final class RobotRun {
             throws IOException {
         NavConfig navConfig = navConfig(scenario);
         NavController nav = new NavController(navConfig);
-        PlayerDataTask player = new PlayerDataTask(PlayerConfig.of(host, port));
+        PlayerDataTask player = new PlayerDataTask(PlayerConfig.of(host, port).withReconnect(true, 500, 8000));
 
         AtomicLong missEvents = new AtomicLong();
         Monitor.Builder builder = Monitor.builder(clock)
@@ -202,8 +204,13 @@ public final class RobotRun {
         VelocityCommand motor = new VelocityCommand();
         boolean wasStalled = false;
         boolean tty = System.console() != null;
-        while (!monitor.isTerminated()) {
+        long lastOdometryGeneration = -1;
+        long lastOdometryWallNs = System.nanoTime();
+        while (true) {
             LockSupport.parkNanos(pollWallNs);
+            if (monitor.isStopping()) {
+                return; // Ctrl-C, SIGTERM or a STOP_ALL error: the termination handler records the outcome.
+            }
             double elapsedS = (clock.nanos() - startNs) / 1e9;
             monitor.read(nav.keys().course(), course);
             long odometryGeneration = monitor.read(RobotKeys.ODOMETRY, odometry);
@@ -212,6 +219,10 @@ public final class RobotRun {
                 stallEdges.incrementAndGet();
             }
             wasStalled = odometry.stall;
+            if (odometryGeneration != lastOdometryGeneration) {
+                lastOdometryGeneration = odometryGeneration;
+                lastOdometryWallNs = System.nanoTime();
+            }
             String end = null;
             String why = null;
             if (course.done) {
@@ -224,9 +235,11 @@ public final class RobotRun {
                 end = "stuck";
                 why = String.format(Locale.ROOT, "moved less than %.2f m in %.0f s while commanded to move",
                         STUCK_MIN_MOVE_M, options.stuckAfterS());
-            } else if (elapsedS > LOST_SERVER_AFTER_S && lostServer(monitor, clock, odometryGeneration)) {
+            } else if (elapsedS > LOST_SERVER_AFTER_S && lostServer(monitor, clock, odometryGeneration)
+                    && (System.nanoTime() - lastOdometryWallNs) / 1e9 > LOST_SERVER_AFTER_WALL_S) {
                 end = "error";
-                why = "no odometry from the robot server for " + LOST_SERVER_AFTER_S + " s: connection lost";
+                why = String.format(Locale.ROOT, "no odometry from the robot server for %.0f s of world time "
+                        + "(%.0f s of wall time): connection lost", LOST_SERVER_AFTER_S, LOST_SERVER_AFTER_WALL_S);
             }
             if (end != null) {
                 outcome.compareAndSet(null, end);

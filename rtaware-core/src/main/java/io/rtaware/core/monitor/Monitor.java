@@ -322,6 +322,16 @@ public final class Monitor {
         return terminated.await(timeout.toNanos(), TimeUnit.NANOSECONDS);
     }
 
+    /**
+     * @return true once termination has begun (by {@link #stop()}, a shutdown hook or a STOP_ALL
+     *     error): observers should stop drawing conclusions from data that is about to stop
+     */
+    public boolean isStopping() {
+        synchronized (lifecycle) {
+            return phase == Phase.TERMINATED;
+        }
+    }
+
     /** @return true once the termination handlers have run */
     public boolean isTerminated() {
         return terminated.getCount() == 0;
