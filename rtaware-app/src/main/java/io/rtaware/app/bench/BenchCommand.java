@@ -50,7 +50,7 @@ public final class BenchCommand implements Callable<Integer> {
     /** Exit status when the run ended before its duration (a task hit a fatal VM error). */
     public static final int EXIT_ENDED_EARLY = 1;
     /** Exit status of {@code --fail-on-alloc} when the framework allocated in steady state. */
-    public static final int EXIT_ALLOCATED = 3;
+    public static final int EXIT_ALLOCATED = 4;
 
     @Option(names = "--tasks", description = "Number of identical tasks (default: ${DEFAULT-VALUE}).", defaultValue = "4")
     int tasks;
@@ -82,7 +82,7 @@ public final class BenchCommand implements Callable<Integer> {
     @Option(names = "--quiet", description = "Do not print live miss reports.")
     boolean quiet;
 
-    @Option(names = "--fail-on-alloc", description = "Exit with status 3 if the framework's threads (tasks and "
+    @Option(names = "--fail-on-alloc", description = "Exit with status 4 if the framework's threads (tasks and "
             + "watchdog) allocated any byte in the steady state (the last two thirds of the run).")
     boolean failOnAlloc;
 

@@ -8,9 +8,11 @@ import java.util.concurrent.locks.LockSupport;
 
 /**
  * The floor for a Java thread: one thread per task parking until the absolute release
- * {@code t0 + k * period} with {@link LockSupport#parkNanos}, then doing the work. Nothing
- * else: no monitoring, no skipping (after an overrun the loop runs the late releases back to
- * back, which shows up as bursts).
+ * {@code t0 + k * period} with {@link LockSupport#parkNanos}, then doing the work. After a run
+ * that ended past later releases it skips to the first grid point at or after its end, the same
+ * rule as rtaware (without it, every release of a stall's backlog would run late back to back
+ * and the floor's lateness would measure the backlog, not the wake-up). Nothing else: no
+ * monitoring, no data, no watchdog, so the difference to rtaware is the framework's cost.
  */
 final class ParkLoopSegment implements SegmentExecutor {
 
@@ -44,7 +46,8 @@ final class ParkLoopSegment implements SegmentExecutor {
     }
 
     private void loop(long t0Ns, long periodNs, long workNs, ReleaseStats stats) {
-        for (long k = 0; running; k++) {
+        long k = 0;
+        while (running) {
             long releaseNs = t0Ns + k * periodNs;
             long remainingNs;
             while ((remainingNs = releaseNs - System.nanoTime()) > 0 && running) {
@@ -55,7 +58,13 @@ final class ParkLoopSegment implements SegmentExecutor {
             }
             long startNs = System.nanoTime();
             work.burn(workNs);
-            stats.onRun(releaseNs, startNs, System.nanoTime());
+            long endNs = System.nanoTime();
+            stats.onRun(releaseNs, startNs, endNs);
+            long next = Math.max(k + 1, Math.floorDiv(endNs - t0Ns + periodNs - 1, periodNs));
+            if (next > k + 1) {
+                stats.onSkipped(next - k - 1, endNs);
+            }
+            k = next;
         }
     }
 
