@@ -16,6 +16,7 @@ import java.util.concurrent.TimeUnit;
 final class StpeSegment implements SegmentExecutor {
 
     private static final long STOP_TIMEOUT_S = 10;
+    private static final long START_AHEAD_NS = 10_000_000;
 
     private final BusyWork work;
     private final List<ScheduledThreadPoolExecutor> pools = new ArrayList<>();
@@ -31,17 +32,20 @@ final class StpeSegment implements SegmentExecutor {
 
     @Override
     public void start(List<BenchSpec> specs, List<ReleaseStats> stats) {
-        long t0 = System.nanoTime();
-        for (int i = 0; i < specs.size(); i++) {
-            BenchSpec spec = specs.get(i);
-            ScheduledThreadPoolExecutor pool = new ScheduledThreadPoolExecutor(1, r -> {
+        for (BenchSpec spec : specs) {
+            pools.add(new ScheduledThreadPoolExecutor(1, r -> {
                 Thread thread = new Thread(r, "stpe-" + spec.name());
                 thread.setDaemon(true);
                 return thread;
-            });
-            pools.add(pool);
+            }));
+        }
+        // The pools exist; t0 lies just ahead, so every task's first run is intended at the same t0.
+        long t0 = System.nanoTime() + START_AHEAD_NS;
+        for (int i = 0; i < specs.size(); i++) {
+            BenchSpec spec = specs.get(i);
             FixedRateRun run = new FixedRateRun(t0, spec.periodNs(), spec.workNs(), work, stats.get(i));
-            pool.scheduleAtFixedRate(run, Math.max(0, t0 - System.nanoTime()), spec.periodNs(), TimeUnit.NANOSECONDS);
+            pools.get(i).scheduleAtFixedRate(run, Math.max(0, t0 - System.nanoTime()), spec.periodNs(),
+                    TimeUnit.NANOSECONDS);
         }
     }
 
