@@ -1,6 +1,10 @@
 package io.rtaware.app;
 
 import io.rtaware.app.bench.BenchCommand;
+import io.rtaware.app.player.PlayerProbeCommand;
+import io.rtaware.app.run.RunCommand;
+import io.rtaware.app.sim.SimCommand;
+import io.rtaware.app.sim.WorldCommand;
 import java.io.PrintWriter;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -17,7 +21,7 @@ import picocli.CommandLine.Command;
                 "(plus -XX:+ZGenerational on JDK 21-23). ZGC is the measured choice: G1",
                 "pauses of 15-28 ms under garbage load go straight into release lateness",
                 "(README, Performance: rtaware bench --compare --gc-pressure 200)."},
-        subcommands = {BenchCommand.class, CommandLine.HelpCommand.class})
+        subcommands = {RunCommand.class, SimCommand.class, WorldCommand.class, BenchCommand.class, PlayerProbeCommand.class, CommandLine.HelpCommand.class})
 public final class RtawareCli {
 
     /** Exit status for a mistake in the user's input. */
