@@ -1,6 +1,10 @@
 package io.rtaware.app.bench;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.bench.compare.CompareReport;
+import io.rtaware.app.bench.compare.CompareRun;
+import io.rtaware.app.bench.compare.Goal;
+import io.rtaware.app.bench.compare.RunResult;
 import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.core.monitor.ConfigurationException;
 import io.rtaware.core.monitor.ConsoleReporter;
@@ -18,6 +22,7 @@ import java.io.PrintStream;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -32,8 +37,20 @@ import picocli.CommandLine.Option;
                 "Work is real CPU work (a busy loop calibrated at start-up), not sleep.",
                 "Examples:",
                 "  rtaware bench --tasks 4 --period 10ms --work 2ms --duration 10s --json r.json",
-                "  rtaware bench --spec \"a:10ms:2ms,b:50ms:20ms\" --chain"})
+                "  rtaware bench --spec \"a:10ms:2ms,b:50ms:20ms\" --chain",
+                "  rtaware bench --compare --tasks 8 --period 10ms --work 1ms --duration 30s --json c.json",
+                "",
+                "--compare runs the same task set on rtaware, on ScheduledThreadPoolExecutor (one",
+                "thread per task) and on a bare parkNanos loop (the floor for a Java thread),",
+                "interleaved in segments so all three see the same machine noise, and prints",
+                "lateness, misses, bursts, CPU and bytes allocated per release side by side",
+                "(JSON schema rtaware.bench-compare/1 with --json)."})
 public final class BenchCommand implements Callable<Integer> {
+
+    /** Exit status when the run ended before its duration (a task hit a fatal VM error). */
+    public static final int EXIT_ENDED_EARLY = 1;
+    /** Exit status of {@code --fail-on-alloc} when the framework allocated in steady state. */
+    public static final int EXIT_ALLOCATED = 4;
 
     @Option(names = "--tasks", description = "Number of identical tasks (default: ${DEFAULT-VALUE}).", defaultValue = "4")
     int tasks;
@@ -65,6 +82,27 @@ public final class BenchCommand implements Callable<Integer> {
     @Option(names = "--quiet", description = "Do not print live miss reports.")
     boolean quiet;
 
+    @Option(names = "--fail-on-alloc", description = "Exit with status 4 if the framework's threads (tasks and "
+            + "watchdog) allocated any byte in the steady state (the last two thirds of the run).")
+    boolean failOnAlloc;
+
+    @Option(names = "--compare", description = "Run the task set on rtaware, ScheduledThreadPoolExecutor and a bare "
+            + "parkNanos loop, interleaved, and compare them; --duration is the measured time per executor.")
+    boolean compare;
+
+    @Option(names = "--segment", converter = DurationConverter.class, defaultValue = "2s",
+            description = "With --compare: length of one executor's turn (default: ${DEFAULT-VALUE}).")
+    long segmentNs;
+
+    @Option(names = "--load", paramLabel = "N", defaultValue = "0",
+            description = "Start N busy threads competing for the cores (default: ${DEFAULT-VALUE}).")
+    int loadThreads;
+
+    @Option(names = "--gc-pressure", paramLabel = "MBps", defaultValue = "0",
+            description = "Allocate short- and medium-lived garbage at MBps megabytes per second on a "
+                    + "helper thread (default: ${DEFAULT-VALUE}).")
+    double gcPressureMbps;
+
     @Override
     public Integer call() throws IOException, InterruptedException {
         List<BenchSpec> specs = taskSet();
@@ -74,8 +112,41 @@ public final class BenchCommand implements Callable<Integer> {
         if (!(timeScale > 0) || Double.isInfinite(timeScale)) {
             throw new UserError("--time-scale must be a positive number, got " + timeScale);
         }
-        PrintStream out = System.out;
+        if (loadThreads < 0) {
+            throw new UserError("--load must be 0 or more, got " + loadThreads);
+        }
+        if (!(gcPressureMbps >= 0) || Double.isInfinite(gcPressureMbps)) {
+            throw new UserError("--gc-pressure must be 0 or more MB/s, got " + gcPressureMbps);
+        }
+        if (compare && (spec != null || chain || timeScale != 1.0)) {
+            throw new UserError("--compare takes --tasks, --period and --work (not --spec, --chain or --time-scale)");
+        }
+        if (compare && segmentNs < 2 * specs.stream().mapToLong(BenchSpec::periodNs).max().orElse(0)) {
+            throw new UserError("--segment must be at least two periods, got " + Durations.format(segmentNs));
+        }
         BusyWork work = BusyWork.calibrate();
+        try (CpuLoad load = CpuLoad.start(loadThreads); GarbageLoad garbage = GarbageLoad.start(gcPressureMbps)) {
+            return compare ? compare(specs, work) : bench(specs, work);
+        }
+    }
+
+    private int compare(List<BenchSpec> specs, BusyWork work) throws IOException, InterruptedException {
+        PrintStream out = System.out;
+        CompareRun run = new CompareRun(specs, work, durationNs, segmentNs, System.err);
+        List<RunResult> runs = run.run();
+        CompareReport report = new CompareReport(CompareReport.SCHEMA, specs.size(), specs.get(0).periodNs() / 1e6,
+                specs.get(0).workNs() / 1e6, run.measuredNs() / 1e9, segmentNs / 1e9, loadThreads, gcPressureMbps,
+                System.getProperty("java.vm.version"), CompareRun.collectors(), runs, Goal.check(runs));
+        out.print(report.table());
+        if (json != null) {
+            report.write(json);
+            out.println("comparison written to " + json);
+        }
+        return 0;
+    }
+
+    private int bench(List<BenchSpec> specs, BusyWork work) throws InterruptedException {
+        PrintStream out = System.out;
         Clock clock = timeScale == 1.0 ? new SystemClock() : new ScaledClock(timeScale);
 
         Monitor.Builder builder = Monitor.builder(clock);
@@ -96,14 +167,41 @@ public final class BenchCommand implements Callable<Integer> {
         monitor.onTermination(report -> finish(report, console, out));
         monitor.start();
         long wallNs = clock.toWallNanos(durationNs);
-        monitor.awaitTermination(java.time.Duration.ofNanos(wallNs));
+        // Steady state: the last two thirds of the run (the first third warms up the JIT).
+        long warmUpNs = wallNs / 3;
+        boolean endedEarly = monitor.awaitTermination(java.time.Duration.ofNanos(warmUpNs));
+        ThreadAllocation allocation = endedEarly ? null : ThreadAllocation.ofFrameworkThreads();
+        long releasesBefore = totalReleases(monitor);
+        endedEarly |= monitor.awaitTermination(java.time.Duration.ofNanos(wallNs - warmUpNs));
+        long allocatedBytes = endedEarly ? -1 : allocation.allocatedSince();
+        long releases = totalReleases(monitor) - releasesBefore;
         monitor.stop();
         try {
             Runtime.getRuntime().removeShutdownHook(hook);
         } catch (IllegalStateException shuttingDown) {
             // Already shutting down: the hook is running or has run.
         }
+        if (endedEarly) {
+            System.err.println("rtaware: the run ended before its duration (a task hit a fatal error, see above)");
+            return EXIT_ENDED_EARLY;
+        }
+        out.printf(Locale.ROOT, "steady state (last 2/3 of the run): %d bytes allocated on %d framework thread(s)"
+                        + " (tasks + watchdog) over %d releases = %.2f B/release%n", allocatedBytes,
+                allocation.threads(), releases, releases == 0 ? 0.0 : (double) allocatedBytes / releases);
+        if (failOnAlloc && allocatedBytes != 0) {
+            System.err.println("rtaware: --fail-on-alloc: the framework allocated " + allocatedBytes
+                    + " bytes in steady state");
+            return EXIT_ALLOCATED;
+        }
         return 0;
+    }
+
+    private static long totalReleases(Monitor monitor) {
+        long sum = 0;
+        for (int i = 0; i < monitor.tasks().size(); i++) {
+            sum += monitor.counters(i).releases();
+        }
+        return sum;
     }
 
     private void finish(Report report, ConsoleReporter console, PrintStream out) {

@@ -20,6 +20,8 @@ final class ThreadedExecutor implements Monitor.Executor {
 
     private final Clock clock;
     private final List<TaskRuntime> runtimes;
+    /** The same tasks as an array: the watchdog loops over it on every wake without an iterator. */
+    private final TaskRuntime[] watched;
     private final Runnable stopAllRequest;
     private final List<Thread> threads = new ArrayList<>();
     private volatile boolean running;
@@ -30,6 +32,7 @@ final class ThreadedExecutor implements Monitor.Executor {
     ThreadedExecutor(Clock clock, List<TaskRuntime> runtimes, Runnable stopAllRequest) {
         this.clock = clock;
         this.runtimes = runtimes;
+        this.watched = runtimes.toArray(new TaskRuntime[0]);
         this.stopAllRequest = stopAllRequest;
     }
 
@@ -139,7 +142,7 @@ final class ThreadedExecutor implements Monitor.Executor {
         while (running) {
             long now = clock.nanos();
             long earliest = Long.MAX_VALUE;
-            for (TaskRuntime runtime : runtimes) {
+            for (TaskRuntime runtime : watched) {
                 runtime.checkDeadline(now);
                 long deadline = runtime.runningDeadlineNs();
                 if (deadline < earliest) {
@@ -148,7 +151,7 @@ final class ThreadedExecutor implements Monitor.Executor {
             }
             watchdogWakeNs = earliest;
             // Re-check after publishing the wake time: a cycle may have started meanwhile.
-            for (TaskRuntime runtime : runtimes) {
+            for (TaskRuntime runtime : watched) {
                 long deadline = runtime.runningDeadlineNs();
                 if (deadline < earliest) {
                     earliest = deadline;
