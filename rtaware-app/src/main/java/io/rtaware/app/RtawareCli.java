@@ -1,5 +1,6 @@
 package io.rtaware.app;
 
+import io.rtaware.app.analyze.AnalyzeCommand;
 import io.rtaware.app.bench.BenchCommand;
 import java.io.PrintWriter;
 import picocli.CommandLine;
@@ -11,7 +12,7 @@ import picocli.CommandLine.Command;
  */
 @Command(name = "rtaware", mixinStandardHelpOptions = true, version = "rtaware 0.1.0",
         description = "Run robot controllers whose tasks are aware of time.",
-        subcommands = {BenchCommand.class, CommandLine.HelpCommand.class})
+        subcommands = {BenchCommand.class, AnalyzeCommand.class, CommandLine.HelpCommand.class})
 public final class RtawareCli {
 
     /** Exit status for a mistake in the user's input. */

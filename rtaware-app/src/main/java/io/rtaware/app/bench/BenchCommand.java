@@ -2,6 +2,7 @@ package io.rtaware.app.bench;
 
 import io.rtaware.app.UserError;
 import io.rtaware.app.cli.DurationConverter;
+import io.rtaware.app.report.ReportSections;
 import io.rtaware.core.monitor.ConfigurationException;
 import io.rtaware.core.monitor.ConsoleReporter;
 import io.rtaware.core.monitor.Monitor;
@@ -112,9 +113,12 @@ public final class BenchCommand implements Callable<Integer> {
         }
         out.println();
         out.print(SummaryTable.format(report));
+        ReportDocument doc = new ReportDocument(report);
+        out.println();
+        out.print(ReportSections.enrich(doc, Runtime.getRuntime().availableProcessors()).text());
         if (json != null) {
             try {
-                new ReportDocument(report).write(json);
+                doc.write(json);
                 out.println("report written to " + json);
             } catch (IOException e) {
                 System.err.println("rtaware: could not write " + json + ": " + e.getMessage());
