@@ -63,6 +63,8 @@ public final class Monitor {
     private long startNs;
     private long stopNs;
     private volatile Report report;
+    /** Set once every task thread has returned: their own state may then be read. */
+    private volatile boolean tasksStopped;
 
     /** An executor: how task cycles get onto threads. */
     interface Executor {
@@ -278,6 +280,7 @@ public final class Monitor {
             if (executor != null) {
                 executor.stopAndJoin();
             }
+            tasksStopped = true;
             stopNs = clock.nanos();
             for (TaskRuntime runtime : runtimes) {
                 try {
@@ -339,6 +342,22 @@ public final class Monitor {
         }
     }
 
+    /**
+     * The period changes of adaptive tasks, in the order each task made them.
+     *
+     * @return every task's changes, tasks in registration order; empty without adaptive periods
+     * @throws IllegalStateException before the task threads have stopped (the history is theirs);
+     *     termination handlers may call it
+     */
+    public List<PeriodChange> periodHistory() {
+        if (!tasksStopped) {
+            throw new IllegalStateException("the period history is complete only after the monitor has stopped");
+        }
+        List<PeriodChange> all = new ArrayList<>();
+        runtimes.forEach(r -> all.addAll(r.periodHistory()));
+        return all;
+    }
+
     /** @return the final report, or null before termination */
     public Report report() {
         return report;
@@ -375,6 +394,7 @@ public final class Monitor {
         private final List<TaskSpec> specs = new ArrayList<>();
         private final List<MonitorListener> listeners = new ArrayList<>();
         private ErrorPolicy defaultPolicy = ErrorPolicy.CONTINUE;
+        private AdaptivePolicy adaptivePolicy;
 
         private Builder(Clock clock) {
             this.clock = Objects.requireNonNull(clock, "clock");
@@ -405,6 +425,19 @@ public final class Monitor {
          */
         public Builder task(TaskSpec spec) {
             specs.add(Objects.requireNonNull(spec, "spec"));
+            return this;
+        }
+
+        /**
+         * Enables adaptive periods: tasks whose periodic schedule declares a period range
+         * ({@link Schedule#adaptive}) have their period moved inside it by {@code policy}. Off by
+         * default, when such tasks run at their initial period.
+         *
+         * @param policy the rule, e.g. {@link AdaptivePolicy#defaults()}; null turns it off
+         * @return this builder
+         */
+        public Builder adaptivePeriods(AdaptivePolicy policy) {
+            this.adaptivePolicy = policy;
             return this;
         }
 
@@ -504,8 +537,12 @@ public final class Monitor {
                 for (InputHandle<?> in : setup.inputs) {
                     in.bind(byName.get(in.key().name()));
                 }
-                runtimes.add(new TaskRuntime(setup.spec, runtimes.size(), clock, new MonitorListener[0],
-                        setup.inputs.toArray(new InputHandle<?>[0]), setup.outputs.toArray(new OutputHandle<?>[0])));
+                TaskRuntime runtime = new TaskRuntime(setup.spec, runtimes.size(), clock, new MonitorListener[0],
+                        setup.inputs.toArray(new InputHandle<?>[0]), setup.outputs.toArray(new OutputHandle<?>[0]));
+                if (adaptivePolicy != null) {
+                    runtime.adaptive(adaptivePolicy);
+                }
+                runtimes.add(runtime);
             }
             return new Monitor(clock, List.copyOf(runtimes), List.copyOf(variables), producers, consumersOf, listeners);
         }
@@ -522,6 +559,11 @@ public final class Monitor {
                 } else if (p.deadlineNs() <= 0 || p.deadlineNs() > p.periodNs()) {
                     violations.add(task + " has deadline " + Durations.format(p.deadlineNs())
                             + "; it must be positive and at most the period " + Durations.format(p.periodNs()));
+                }
+                if (p.minPeriodNs() <= 0 || p.minPeriodNs() > p.periodNs() || p.periodNs() > p.maxPeriodNs()) {
+                    violations.add(task + " has period range " + Durations.format(p.minPeriodNs()) + ".."
+                            + Durations.format(p.maxPeriodNs()) + " and period " + Durations.format(p.periodNs())
+                            + "; it needs 0 < min <= period <= max");
                 }
                 if (p.offsetNs() < 0) {
                     violations.add(task + " has offset " + Durations.format(p.offsetNs()) + "; an offset cannot be negative");
