@@ -56,6 +56,7 @@ public final class Monitor {
     private final List<String> keyNames;
     private final List<Consumer<Report>> terminationHandlers = new CopyOnWriteArrayList<>();
     private final List<MonitorListener> listeners;
+    private final ThreadSetup threadSetup;
     private final CountDownLatch terminated = new CountDownLatch(1);
     private final Object lifecycle = new Object();
     private Phase phase = Phase.READY;
@@ -76,8 +77,9 @@ public final class Monitor {
 
     private Monitor(Clock clock, List<TaskRuntime> runtimes, List<StateVariable<?>> variables,
                     Map<String, String> producers, Map<String, List<String>> consumers,
-                    List<MonitorListener> listeners) {
+                    List<MonitorListener> listeners, ThreadSetup threadSetup) {
         this.clock = clock;
+        this.threadSetup = threadSetup;
         this.listeners = new ArrayList<>(listeners);
         this.runtimes = runtimes;
         this.variables = variables;
@@ -202,13 +204,14 @@ public final class Monitor {
     }
 
     /**
-     * Starts every task on its own platform thread, named {@code rtaware-<task>}. Periodic tasks
+     * Starts every task on its own platform thread, named {@code rtaware-<task>}, with
+     * rate-monotonic Java priorities and the builder's {@link ThreadSetup}. Periodic tasks
      * are released on an absolute grid from now.
      *
      * @throws IllegalStateException if already started
      */
     public void start() {
-        begin(new ThreadedExecutor(clock, runtimes, this::requestStopFromTask));
+        begin(new ThreadedExecutor(clock, runtimes, this::requestStopFromTask, threadSetup));
     }
 
     /**
@@ -395,6 +398,7 @@ public final class Monitor {
         private final List<MonitorListener> listeners = new ArrayList<>();
         private ErrorPolicy defaultPolicy = ErrorPolicy.CONTINUE;
         private AdaptivePolicy adaptivePolicy;
+        private ThreadSetup threadSetup;
 
         private Builder(Clock clock) {
             this.clock = Objects.requireNonNull(clock, "clock");
@@ -438,6 +442,16 @@ public final class Monitor {
          */
         public Builder adaptivePeriods(AdaptivePolicy policy) {
             this.adaptivePolicy = policy;
+            return this;
+        }
+
+        /**
+         * @param setup called on each task thread at its start (e.g. to set SCHED_FIFO); null for
+         *     none. The step executor does not call it.
+         * @return this builder
+         */
+        public Builder threadSetup(ThreadSetup setup) {
+            this.threadSetup = setup;
             return this;
         }
 
@@ -544,7 +558,8 @@ public final class Monitor {
                 }
                 runtimes.add(runtime);
             }
-            return new Monitor(clock, List.copyOf(runtimes), List.copyOf(variables), producers, consumersOf, listeners);
+            return new Monitor(clock, List.copyOf(runtimes), List.copyOf(variables), producers, consumersOf, listeners,
+                    threadSetup);
         }
 
         private static <T extends StateValue<T>> StateVariable<T> newVariable(Key<T> key) {
