@@ -15,6 +15,8 @@ public final class ReportSections {
 
     /** Name of the advice section in {@code report.json}. */
     public static final String ADVICE = "advice";
+    /** Name of the adaptive period history section in {@code report.json}. */
+    public static final String PERIOD_HISTORY = "period_history";
     /** Name of the schedulability section in {@code report.json}. */
     public static final String SCHEDULABILITY = "schedulability";
 
@@ -43,5 +45,21 @@ public final class ReportSections {
         doc.section(ADVICE, analysis.advice());
         doc.section(SCHEDULABILITY, analysis.schedulability());
         return analysis;
+    }
+
+    /**
+     * Adds the {@code period_history} section when the monitor has tasks with a period range.
+     *
+     * @param doc the document to write
+     * @param monitor a monitor whose task threads have stopped (e.g. in a termination handler)
+     * @return the text to print after the summary, or "" when no task is adaptive
+     */
+    public static String addPeriodHistory(ReportDocument doc, io.rtaware.core.monitor.Monitor monitor) {
+        java.util.List<PeriodHistory> histories = PeriodHistory.of(monitor);
+        if (histories.isEmpty()) {
+            return "";
+        }
+        doc.section(PERIOD_HISTORY, histories);
+        return PeriodHistory.text(histories);
     }
 }
