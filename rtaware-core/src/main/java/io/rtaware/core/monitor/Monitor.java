@@ -106,7 +106,10 @@ public final class Monitor {
         return Collections.unmodifiableList(runtimes);
     }
 
-    /** @return key names by key index (see {@link MonitorListener#onCommit}) */
+    /**
+     * @return key names by key index (see {@link MonitorListener#onCommit}), in the order the
+     *     producing tasks declared them
+     */
     public List<String> keyNames() {
         return keyNames;
     }
@@ -490,19 +493,24 @@ public final class Monitor {
                 try {
                     spec.task().initialize(setup);
                 } catch (Exception e) {
-                    violations.add("task '" + spec.name() + "' failed to initialize: " + e.getMessage());
+                    violations.add("task '" + spec.name() + "' failed to initialize: " + e.getClass().getSimpleName()
+                            + (e.getMessage() == null ? "" : ": " + e.getMessage()));
                 }
                 setup.closed = true;
                 setup.violations.forEach(violations::add);
                 setups.add(setup);
             }
 
-            Map<String, Setup> producerOf = new TreeMap<>();
-            Map<String, Key<?>> producedKey = new TreeMap<>();
+            // Declaration order: error messages list produced keys as the tasks declared them.
+            Map<String, Setup> producerOf = new LinkedHashMap<>();
+            Map<String, Key<?>> producedKey = new LinkedHashMap<>();
             for (Setup setup : setups) {
                 for (OutputHandle<?> out : setup.outputs) {
                     String key = out.key().name();
                     Setup other = producerOf.get(key);
+                    if (other == setup) {
+                        continue; // declared twice by one task: already reported by its setup
+                    }
                     if (other != null) {
                         violations.add("key '" + key + "' is produced by tasks '" + other.spec.name() + "' and '"
                                 + setup.spec.name() + "'; a key has exactly one producer");
@@ -575,7 +583,8 @@ public final class Monitor {
                     violations.add(task + " has deadline " + Durations.format(p.deadlineNs())
                             + "; it must be positive and at most the period " + Durations.format(p.periodNs()));
                 }
-                if (p.minPeriodNs() <= 0 || p.minPeriodNs() > p.periodNs() || p.periodNs() > p.maxPeriodNs()) {
+                if (p.isAdaptive() && p.periodNs() > 0
+                        && (p.minPeriodNs() <= 0 || p.minPeriodNs() > p.periodNs() || p.periodNs() > p.maxPeriodNs())) {
                     violations.add(task + " has period range " + Durations.format(p.minPeriodNs()) + ".."
                             + Durations.format(p.maxPeriodNs()) + " and period " + Durations.format(p.periodNs())
                             + "; it needs 0 < min <= period <= max");

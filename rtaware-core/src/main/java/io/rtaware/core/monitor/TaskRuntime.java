@@ -87,12 +87,16 @@ final class TaskRuntime implements TaskInfo {
     private final AtomicLong errors = new AtomicLong();
     private final AtomicLong expiredReads = new AtomicLong();
     private volatile TaskState state = TaskState.INITIALIZED;
+    /** Called on the task thread once a periodic cycle is marked running; null if none. */
+    private Runnable cycleStarted;
 
     private final Histogram execNs = new Histogram(1, HIGHEST_TRACKABLE_NS, 2);
     private final Histogram latenessNs = new Histogram(1, HIGHEST_TRACKABLE_NS, 2);
     private long execMaxNs;
     private double execSumNs;
     private long latenessMaxNs;
+    /** End of the latest cycle; task thread only. */
+    private long lastCycleEndNs;
     private double latenessSumNs;
 
     TaskRuntime(TaskSpec spec, int index, Clock clock, MonitorListener[] listeners,
@@ -161,6 +165,16 @@ final class TaskRuntime implements TaskInfo {
         }
     }
 
+    /**
+     * Sets the hook run on the task thread right after a periodic cycle is marked running (the
+     * threaded executor wakes its watchdog there). Call before the task's thread starts.
+     *
+     * @param hook must not allocate or block
+     */
+    void onCycleStart(Runnable hook) {
+        this.cycleStarted = hook;
+    }
+
     /** Fixes the grid: release k of a periodic task is at {@code startNs + offset + k * period}. */
     void begin(long startNs) {
         this.startNs = startNs;
@@ -218,6 +232,9 @@ final class TaskRuntime implements TaskInfo {
         }
         if (periodic) {
             cycleToken.set(2 * k + 1);
+            if (cycleStarted != null) {
+                cycleStarted.run();
+            }
         }
 
         boolean anyNew = false;
@@ -274,6 +291,7 @@ final class TaskRuntime implements TaskInfo {
                 }
             }
         }
+        lastCycleEndNs = endNs;
         long exec = endNs - startNs;
         if (exec > windowExecMaxNs) {
             windowExecMaxNs = exec;
@@ -415,6 +433,11 @@ final class TaskRuntime implements TaskInfo {
 
     private static long roundToMicros(double ns) {
         return Math.max(1_000, Math.round(ns / 1_000) * 1_000);
+    }
+
+    /** @return world time at which the latest cycle ended (task thread only) */
+    long lastCycleEndNs() {
+        return lastCycleEndNs;
     }
 
     void setState(TaskState newState, long nowNs) {
