@@ -6,13 +6,16 @@ import io.rtaware.app.bench.compare.CompareRun;
 import io.rtaware.app.bench.compare.Goal;
 import io.rtaware.app.bench.compare.RunResult;
 import io.rtaware.app.cli.DurationConverter;
+import io.rtaware.app.report.ReportSections;
 import io.rtaware.core.monitor.ConfigurationException;
 import io.rtaware.core.monitor.ConsoleReporter;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
 import io.rtaware.core.report.SummaryTable;
-import io.rtaware.core.task.Schedule;
+import io.rtaware.app.rt.RealtimeThreads;
+import io.rtaware.core.monitor.AdaptivePolicy;
+import io.rtaware.core.trace.TraceRecorder;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.Durations;
 import io.rtaware.core.time.ScaledClock;
@@ -21,8 +24,10 @@ import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -37,7 +42,9 @@ import picocli.CommandLine.Option;
                 "Work is real CPU work (a busy loop calibrated at start-up), not sleep.",
                 "Examples:",
                 "  rtaware bench --tasks 4 --period 10ms --work 2ms --duration 10s --json r.json",
-                "  rtaware bench --spec \"a:10ms:2ms,b:50ms:20ms\" --chain",
+                "  rtaware bench --spec \"a:10ms:2ms,b:50ms:20ms\" --chain --trace trace.json",
+                "  rtaware bench --spec \"a:10ms:2ms,b:2ms..50ms:1ms\" --chain --adaptive",
+                "  rtaware bench --tasks 2 --period 1ms --work 100us --realtime",
                 "  rtaware bench --compare --tasks 8 --period 10ms --work 1ms --duration 30s --json c.json",
                 "",
                 "--compare runs the same task set on rtaware, on ScheduledThreadPoolExecutor (one",
@@ -103,6 +110,30 @@ public final class BenchCommand implements Callable<Integer> {
                     + "helper thread (default: ${DEFAULT-VALUE}).")
     double gcPressureMbps;
 
+    @Option(names = "--trace", paramLabel = "FILE",
+            description = "Write a Chrome trace event file (open it in https://ui.perfetto.dev).")
+    Path trace;
+
+    @Option(names = "--trace-capacity", paramLabel = "N", defaultValue = "1048576",
+            description = "Events kept by --trace; older ones are dropped and counted (default: ${DEFAULT-VALUE}).")
+    int traceCapacity;
+
+    @Option(names = "--adaptive",
+            description = "Move the period of tasks declared with a range (a:5ms..50ms:1ms) from run-time evidence.")
+    boolean adaptive;
+
+    @Option(names = "--realtime",
+            description = "SCHED_FIFO task threads in rate-monotonic order and 1 ns timer slack (Linux, root or CAP_SYS_NICE).")
+    boolean realtime;
+
+    @Option(names = "--rt-priority", paramLabel = "P", defaultValue = "80",
+            description = "SCHED_FIFO priority of the shortest-period task with --realtime (default: ${DEFAULT-VALUE}).")
+    int rtPriority;
+
+    @Option(names = "--affinity", paramLabel = "TASK=CPU,...", split = ",",
+            description = "With --realtime, pin task threads to CPUs, e.g. a=1,b=0.")
+    Map<String, Integer> affinity = new LinkedHashMap<>();
+
     @Override
     public Integer call() throws IOException, InterruptedException {
         List<BenchSpec> specs = taskSet();
@@ -149,10 +180,28 @@ public final class BenchCommand implements Callable<Integer> {
         PrintStream out = System.out;
         Clock clock = timeScale == 1.0 ? new SystemClock() : new ScaledClock(timeScale);
 
+        if (traceCapacity < 1) {
+            throw new UserError("--trace-capacity must be at least 1, got " + traceCapacity);
+        }
+        if (rtPriority < 2 || rtPriority > 99) {
+            throw new UserError("--rt-priority must be 2..99, got " + rtPriority);
+        }
+        for (String task : affinity.keySet()) {
+            if (specs.stream().noneMatch(s -> s.name().equals(task))) {
+                throw new UserError("--affinity names task '" + task + "' but there is none; tasks: "
+                        + String.join(", ", specs.stream().map(BenchSpec::name).toList()));
+            }
+        }
         Monitor.Builder builder = Monitor.builder(clock);
+        if (adaptive) {
+            builder.adaptivePeriods(AdaptivePolicy.defaults());
+        }
+        if (realtime) {
+            builder.threadSetup(RealtimeThreads.configure(rtPriority, affinity, System.err));
+        }
         String previous = null;
         for (BenchSpec s : specs) {
-            builder.task(s.name(), Schedule.periodic(s.periodNs()),
+            builder.task(s.name(), s.schedule(),
                     new BenchTask(s.name(), s.workNs(), chain ? previous : null, work));
             previous = s.name();
         }
@@ -161,10 +210,11 @@ public final class BenchCommand implements Callable<Integer> {
         if (console != null) {
             monitor.addListener(console);
         }
+        TraceRecorder recorder = trace == null ? null : TraceRecorder.attach(monitor, traceCapacity);
         out.printf("rtaware bench: %d task(s)%s for %s of world time (time scale x%s)%n", specs.size(),
                 chain ? " in a chain" : "", Durations.format(durationNs), timeScale);
         Thread hook = monitor.installShutdownHook();
-        monitor.onTermination(report -> finish(report, console, out));
+        monitor.onTermination(report -> finish(monitor, report, console, recorder, out));
         monitor.start();
         long wallNs = clock.toWallNanos(durationNs);
         // Steady state: the last two thirds of the run (the first third warms up the JIT).
@@ -204,15 +254,33 @@ public final class BenchCommand implements Callable<Integer> {
         return sum;
     }
 
-    private void finish(Report report, ConsoleReporter console, PrintStream out) {
+    private void finish(Monitor monitor, Report report, ConsoleReporter console, TraceRecorder recorder,
+                        PrintStream out) {
         if (console != null) {
             console.close();
         }
         out.println();
         out.print(SummaryTable.format(report));
+        ReportDocument doc = new ReportDocument(report);
+        out.println();
+        out.print(ReportSections.enrich(doc, Runtime.getRuntime().availableProcessors()).text());
+        String history = ReportSections.addPeriodHistory(doc, monitor);
+        if (!history.isEmpty()) {
+            out.println();
+            out.print(history);
+        }
+        if (recorder != null) {
+            try {
+                recorder.write(trace);
+                out.println("trace written to " + trace + " (" + recorder.recorded() + " events, "
+                        + recorder.dropped() + " dropped; open it in https://ui.perfetto.dev)");
+            } catch (IOException e) {
+                System.err.println("rtaware: could not write " + trace + ": " + e.getMessage());
+            }
+        }
         if (json != null) {
             try {
-                new ReportDocument(report).write(json);
+                doc.write(json);
                 out.println("report written to " + json);
             } catch (IOException e) {
                 System.err.println("rtaware: could not write " + json + ": " + e.getMessage());

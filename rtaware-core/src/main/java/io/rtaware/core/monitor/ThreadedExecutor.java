@@ -12,6 +12,11 @@ import java.util.concurrent.locks.LockSupport;
  * {@link LockSupport#parkNanos} (never {@code Thread.sleep}, which rounds to whole
  * milliseconds on JDK 17); lateness is measured against the scheduled release.
  *
+ * <p>Task threads get rate-monotonic Java priorities as a hint to the JVM (shorter period,
+ * higher priority: rank 0 gets {@code MAX_PRIORITY - 1}, down to {@code NORM_PRIORITY}; tasks
+ * without a period get {@code NORM_PRIORITY}; the watchdog has {@code MAX_PRIORITY}). An
+ * optional {@link ThreadSetup} runs on each task thread before its first release.
+ *
  * <p>Thread-safe: started once, stopped once, by the monitor.
  */
 final class ThreadedExecutor implements Monitor.Executor {
@@ -23,17 +28,34 @@ final class ThreadedExecutor implements Monitor.Executor {
     /** The same tasks as an array: the watchdog loops over it on every wake without an iterator. */
     private final TaskRuntime[] watched;
     private final Runnable stopAllRequest;
+    private final ThreadSetup threadSetup;
     private final List<Thread> threads = new ArrayList<>();
     private volatile boolean running;
     private Thread watchdog;
     /** The world time the watchdog sleeps until; task threads wake it for an earlier deadline. */
     private volatile long watchdogWakeNs = Long.MAX_VALUE;
 
-    ThreadedExecutor(Clock clock, List<TaskRuntime> runtimes, Runnable stopAllRequest) {
+    ThreadedExecutor(Clock clock, List<TaskRuntime> runtimes, Runnable stopAllRequest, ThreadSetup threadSetup) {
         this.clock = clock;
         this.runtimes = runtimes;
         this.watched = runtimes.toArray(new TaskRuntime[0]);
         this.stopAllRequest = stopAllRequest;
+        this.threadSetup = threadSetup;
+    }
+
+    /**
+     * @param runtimes the tasks
+     * @return each task's rate-monotonic rank by task index (see {@link ThreadSetup})
+     */
+    static int[] rateMonotonicRanks(List<TaskRuntime> runtimes) {
+        List<TaskRuntime> order = new ArrayList<>(runtimes);
+        // Stable sort: equal periods keep registration order; tasks without a period go last.
+        order.sort(java.util.Comparator.comparingLong(r -> r.isPeriodic() ? r.periodNs() : Long.MAX_VALUE));
+        int[] ranks = new int[runtimes.size()];
+        for (int rank = 0; rank < order.size(); rank++) {
+            ranks[order.get(rank).index()] = rank;
+        }
+        return ranks;
     }
 
     @Override
@@ -42,18 +64,29 @@ final class ThreadedExecutor implements Monitor.Executor {
         watchdog = new Thread(this::watch, "rtaware-monitor");
         watchdog.setDaemon(true);
         watchdog.setPriority(Thread.MAX_PRIORITY);
+        int[] ranks = rateMonotonicRanks(runtimes);
         for (TaskRuntime runtime : runtimes) {
             runtime.begin(startNs);
             runtime.onCycleStart(() -> wakeWatchdogFor(runtime));
-            Thread thread = new Thread(() -> runTask(runtime), "rtaware-" + runtime.name());
+            int rank = ranks[runtime.index()];
+            Thread thread = new Thread(() -> runTask(runtime, rank), "rtaware-" + runtime.name());
             thread.setDaemon(true);
+            thread.setPriority(runtime.isPeriodic()
+                    ? Math.max(Thread.NORM_PRIORITY, Thread.MAX_PRIORITY - 1 - rank) : Thread.NORM_PRIORITY);
             threads.add(thread);
         }
         watchdog.start();
         threads.forEach(Thread::start);
     }
 
-    private void runTask(TaskRuntime runtime) {
+    private void runTask(TaskRuntime runtime, int rank) {
+        if (threadSetup != null) {
+            try {
+                threadSetup.onTaskThreadStart(runtime, rank, runtimes.size());
+            } catch (RuntimeException e) {
+                System.err.println("rtaware: thread setup failed for task '" + runtime.name() + "': " + e);
+            }
+        }
         try {
             switch (runtime.schedule().kind()) {
                 case "periodic" -> runPeriodic(runtime);
