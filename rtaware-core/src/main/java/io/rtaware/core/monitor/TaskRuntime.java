@@ -205,6 +205,32 @@ final class TaskRuntime implements TaskInfo {
         return java.util.List.copyOf(periodHistory);
     }
 
+    /** Index of the release the task's thread waits for next; -1 before the first. */
+    private volatile long pendingIndex = -1;
+
+    /**
+     * Publishes the release the task's thread is about to wait for, so the watchdog can sleep
+     * until the earliest deadline that could be missed instead of being woken at every cycle start.
+     *
+     * @param k the next release index
+     */
+    void pending(long k) {
+        pendingIndex = k;
+    }
+
+    /**
+     * @return the deadline of the running cycle, or else of the release the task waits for; or
+     *     {@link Long#MAX_VALUE} if not periodic or not yet waiting
+     */
+    long pendingDeadlineNs() {
+        long running = runningDeadlineNs();
+        if (running != Long.MAX_VALUE) {
+            return running;
+        }
+        long k = pendingIndex;
+        return k < 0 ? Long.MAX_VALUE : deadlineOf(k);
+    }
+
     /**
      * @return the absolute deadline of the cycle running now, or {@link Long#MAX_VALUE} if none
      */

@@ -103,6 +103,7 @@ final class ThreadedExecutor implements Monitor.Executor {
         long k = 0;
         while (running) {
             long releaseNs = runtime.releaseTimeNs(k);
+            runtime.pending(k);
             if (!waitUntil(releaseNs)) {
                 return;
             }
@@ -171,34 +172,30 @@ final class ThreadedExecutor implements Monitor.Executor {
         return false;
     }
 
+    /**
+     * Sleeps until the earliest deadline any periodic task could miss (of a running cycle, or of
+     * the release an idle task waits for), then claims the misses of cycles still running past
+     * their deadline. Tasks released on time never wake it, so tasks sharing a period cost one
+     * scan per period, not one per cycle start.
+     */
     private void watch() {
         while (running) {
             long now = clock.nanos();
             long earliest = Long.MAX_VALUE;
             for (TaskRuntime runtime : watched) {
                 runtime.checkDeadline(now);
-                long deadline = runtime.runningDeadlineNs();
-                if (deadline < earliest) {
+                long deadline = runtime.pendingDeadlineNs();
+                // A deadline already past belongs to a task between cycles, about to publish its next.
+                if (deadline > now && deadline < earliest) {
                     earliest = deadline;
                 }
             }
             watchdogWakeNs = earliest;
-            // Re-check after publishing the wake time: a cycle may have started meanwhile.
-            for (TaskRuntime runtime : watched) {
-                long deadline = runtime.runningDeadlineNs();
-                if (deadline < earliest) {
-                    earliest = deadline;
-                }
-            }
-            watchdogWakeNs = earliest;
-            if (earliest == Long.MAX_VALUE) {
-                LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(100));
-            } else {
-                long remaining = earliest - clock.nanos();
-                if (remaining > 0) {
-                    // Wake just after the deadline: a miss is a cycle still running past it.
-                    LockSupport.parkNanos(clock.toWallNanos(remaining) + 1_000);
-                }
+            long remaining = earliest == Long.MAX_VALUE ? TimeUnit.MILLISECONDS.toNanos(100)
+                    : clock.toWallNanos(earliest - clock.nanos()) + 1_000;
+            if (remaining > 0) {
+                // Wake just after the deadline: a miss is a cycle still running past it.
+                LockSupport.parkNanos(remaining);
             }
         }
     }
