@@ -6,6 +6,8 @@ import io.rtaware.app.bench.compare.CompareRun;
 import io.rtaware.app.bench.compare.Goal;
 import io.rtaware.app.bench.compare.RunResult;
 import io.rtaware.app.cli.DurationConverter;
+import io.rtaware.app.live.LiveMixin;
+import io.rtaware.app.live.LiveView;
 import io.rtaware.app.report.ReportSections;
 import io.rtaware.core.monitor.ConfigurationException;
 import io.rtaware.core.monitor.ConsoleReporter;
@@ -30,6 +32,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -134,6 +137,9 @@ public final class BenchCommand implements Callable<Integer> {
             description = "With --realtime, pin task threads to CPUs, e.g. a=1,b=0.")
     Map<String, Integer> affinity = new LinkedHashMap<>();
 
+    @Mixin
+    LiveMixin live;
+
     @Override
     public Integer call() throws IOException, InterruptedException {
         List<BenchSpec> specs = taskSet();
@@ -149,8 +155,8 @@ public final class BenchCommand implements Callable<Integer> {
         if (!(gcPressureMbps >= 0) || Double.isInfinite(gcPressureMbps)) {
             throw new UserError("--gc-pressure must be 0 or more MB/s, got " + gcPressureMbps);
         }
-        if (compare && (spec != null || chain || timeScale != 1.0)) {
-            throw new UserError("--compare takes --tasks, --period and --work (not --spec, --chain or --time-scale)");
+        if (compare && (spec != null || chain || timeScale != 1.0 || live.options().enabled())) {
+            throw new UserError("--compare takes --tasks, --period and --work (not --spec, --chain, --time-scale or --live)");
         }
         if (compare && segmentNs < 2 * specs.stream().mapToLong(BenchSpec::periodNs).max().orElse(0)) {
             throw new UserError("--segment must be at least two periods, got " + Durations.format(segmentNs));
@@ -176,7 +182,7 @@ public final class BenchCommand implements Callable<Integer> {
         return 0;
     }
 
-    private int bench(List<BenchSpec> specs, BusyWork work) throws InterruptedException {
+    private int bench(List<BenchSpec> specs, BusyWork work) throws IOException, InterruptedException {
         PrintStream out = System.out;
         Clock clock = timeScale == 1.0 ? new SystemClock() : new ScaledClock(timeScale);
 
@@ -213,8 +219,10 @@ public final class BenchCommand implements Callable<Integer> {
         TraceRecorder recorder = trace == null ? null : TraceRecorder.attach(monitor, traceCapacity);
         out.printf("rtaware bench: %d task(s)%s for %s of world time (time scale x%s)%n", specs.size(),
                 chain ? " in a chain" : "", Durations.format(durationNs), timeScale);
+        LiveView liveView = LiveView.start(live.options(), monitor, out);
         Thread hook = monitor.installShutdownHook();
         monitor.onTermination(report -> finish(monitor, report, console, recorder, out));
+        monitor.onTermination(report -> liveView.finish(report, null));
         monitor.start();
         long wallNs = clock.toWallNanos(durationNs);
         // Steady state: the last two thirds of the run (the first third warms up the JIT).
@@ -231,6 +239,7 @@ public final class BenchCommand implements Callable<Integer> {
         } catch (IllegalStateException shuttingDown) {
             // Already shutting down: the hook is running or has run.
         }
+        liveView.close();
         if (endedEarly) {
             System.err.println("rtaware: the run ended before its duration (a task hit a fatal error, see above)");
             return EXIT_ENDED_EARLY;

@@ -1,6 +1,8 @@
 package io.rtaware.app.run;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.live.LiveView;
+import io.rtaware.app.live.RunScene;
 import io.rtaware.core.monitor.ConfigurationException;
 import io.rtaware.core.monitor.ConsoleReporter;
 import io.rtaware.core.monitor.Monitor;
@@ -148,6 +150,8 @@ public final class RobotRun {
         CourseStatus course = new CourseStatus();
         long[] startNs = new long[1];
         RunArtifacts artifacts = new RunArtifacts(options, scenario, navConfig, out);
+        LiveView live = LiveView.start(options.live(), monitor, new RunScene(scenario.name(), scenario.map().orElse(null),
+                scenario.waypoints(), nav.keys(), nav::mediatorCounts, outcome::get), out);
         monitor.onTermination(report -> {
             if (console != null) {
                 console.close();
@@ -162,6 +166,7 @@ public final class RobotRun {
             long collisions = server != null ? server.withWorld(World::contactCount) : stallEdges.get();
             RunSection run = runSection(scenario, report, nav, course, referee, outcome.get(), reason.get(),
                     clock.nanos() - startNs[0], collisions, server != null);
+            live.finish(report, run);
             artifacts.write(report, run, referee, nav.finalMap().orElse(null),
                     scenario.map().orElse(null));
         });
@@ -172,6 +177,7 @@ public final class RobotRun {
         Referee referee = new Referee(clock, startNs[0], SAMPLE_PERIOD_NS,
                 poseSource(host, port, monitor), missEvents);
         refereeHolder.add(referee);
+        live.truePose(referee::latest, referee.kind());
         if (!options.quiet()) {
             err.printf(Locale.ROOT, "rtaware run: scenario %s, periods %s, time scale x%s, robot %s:%d (%s), ground truth from %s%n",
                     scenario.name(), options.periods(), trim(options.timeScale()), host, port,
@@ -185,6 +191,7 @@ public final class RobotRun {
         } catch (IllegalStateException shuttingDown) {
             // The JVM is already exiting; the hook has done or is doing the same work.
         }
+        live.close();
         return switch (outcome.get()) {
             case "error" -> 1;
             case "interrupted" -> 130;

@@ -168,6 +168,29 @@ public final class Monitor {
 
     /**
      * @param key a key's name
+     * @return the name of the task that produces it
+     * @throws IllegalArgumentException if no task produces it
+     */
+    public String producer(String key) {
+        String task = producers.get(key);
+        if (task == null) {
+            throw new IllegalArgumentException("no key '" + key + "'; keys: " + keyNames);
+        }
+        return task;
+    }
+
+    /**
+     * @param key a key's name
+     * @return the names of the tasks that consume it, empty if none
+     * @throws IllegalArgumentException if no task produces it
+     */
+    public List<String> consumers(String key) {
+        producer(key);
+        return List.copyOf(consumers.getOrDefault(key, List.of()));
+    }
+
+    /**
+     * @param key a key's name
      * @return true if some task produces it
      */
     public boolean hasKey(String key) {

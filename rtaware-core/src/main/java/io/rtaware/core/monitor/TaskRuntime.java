@@ -6,7 +6,9 @@ import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Clock;
+import java.util.Arrays;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.AtomicLongArray;
 import org.HdrHistogram.Histogram;
 
 /**
@@ -40,6 +42,8 @@ final class TaskRuntime implements TaskInfo {
     enum Outcome { CONTINUE, DISABLE, STOP_ALL }
 
     private static final long HIGHEST_TRACKABLE_NS = 3_600_000_000_000L;
+    /** Cycles whose execution times {@link #counters()} summarizes as a live p99. */
+    static final int RECENT_EXEC_CYCLES = 128;
 
     private final TaskSpec spec;
     private final int index;
@@ -94,6 +98,10 @@ final class TaskRuntime implements TaskInfo {
     private final Histogram latenessNs = new Histogram(1, HIGHEST_TRACKABLE_NS, 2);
     private long execMaxNs;
     private double execSumNs;
+    /** Execution times of the latest cycles, a ring written by the task thread, read by anyone. */
+    private final AtomicLongArray recentExecNs = new AtomicLongArray(RECENT_EXEC_CYCLES);
+    /** Next slot of {@link #recentExecNs}; task thread only. */
+    private int recentExecSlot;
     private long latenessMaxNs;
     /** End of the latest cycle; task thread only. */
     private long lastCycleEndNs;
@@ -323,6 +331,8 @@ final class TaskRuntime implements TaskInfo {
             windowExecMaxNs = exec;
         }
         record(execNs, exec);
+        recentExecNs.setRelease(recentExecSlot, Math.max(exec, 1));
+        recentExecSlot = (recentExecSlot + 1) % RECENT_EXEC_CYCLES;
         execSumNs += exec;
         if (exec > execMaxNs) {
             execMaxNs = exec;
@@ -489,10 +499,27 @@ final class TaskRuntime implements TaskInfo {
         histogram.recordValue(Math.min(Math.max(valueNs, 1), HIGHEST_TRACKABLE_NS));
     }
 
-    /** Live counters, safe at any time. */
+    /** Live counters, safe at any time from any thread; allocates (not for task threads). */
     TaskCounters counters() {
         return new TaskCounters(releases.get(), runs.get(), misses.get(), skipped.get(), staleRuns.get(),
-                errors.get(), expiredReads.get());
+                errors.get(), expiredReads.get(), recentExecP99Ns());
+    }
+
+    /** p99 (nearest rank) of the execution times in the ring, 0 before the first cycle. */
+    private long recentExecP99Ns() {
+        long[] values = new long[RECENT_EXEC_CYCLES];
+        int n = 0;
+        for (int i = 0; i < RECENT_EXEC_CYCLES; i++) {
+            long v = recentExecNs.getAcquire(i);
+            if (v > 0) {
+                values[n++] = v;
+            }
+        }
+        if (n == 0) {
+            return 0;
+        }
+        Arrays.sort(values, 0, n);
+        return values[(int) Math.ceil(0.99 * n) - 1];
     }
 
     /** Builds the report; call only after the task thread has stopped. */
