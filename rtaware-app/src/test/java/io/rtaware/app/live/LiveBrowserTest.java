@@ -1,0 +1,117 @@
+package io.rtaware.app.live;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import io.rtaware.app.RtawareCli;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Objects;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * End to end in a real browser: {@code rtaware run --live} on the short course, headless
+ * Chromium (driven over the DevTools protocol) opens the page, the robot and the task rows
+ * appear, the numbers move, a screenshot is saved to {@code target/live-view.png}, and after the
+ * run the page shows the final summary, also on reload. Skipped, saying so, without Chromium
+ * ({@code apt-get install -y chromium}).
+ */
+class LiveBrowserTest {
+
+    private static final Pattern URL = Pattern.compile("live view: (http://127\\.0\\.0\\.1:\\d+/)");
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void pageShowsTheRobotAndLiveTaskRowsThenTheFinalSummary() throws Exception {
+        Path chromium = Cdp.chromium();
+        Assumptions.assumeTrue(chromium != null,
+                "SKIPPED: headless Chromium not found (/usr/bin/chromium); install it with apt-get install -y chromium");
+        Path scenario = Path.of(Objects.requireNonNull(getClass().getResource("/scenarios/short-leg.yaml")).toURI());
+        ByteArrayOutputStream stdout = new ByteArrayOutputStream();
+        PrintStream saved = System.out;
+        System.setOut(new PrintStream(stdout, true, StandardCharsets.UTF_8));
+        CompletableFuture<Integer> run;
+        try {
+            // Time scale 2: slow enough (about 8 s of wall time) for two looks while the robot drives.
+            run = CompletableFuture.supplyAsync(() -> RtawareCli.execute("run", "--scenario", scenario.toString(),
+                    "--time-scale", "2", "--out", dir.resolve("run").toString(), "--quiet", "--seed", "7",
+                    "--live", "--live-linger", "30s"));
+            String url = awaitUrl(stdout, run);
+            try (Cdp browser = Cdp.launch(chromium, dir.resolve("profile"))) {
+                browser.navigate(url);
+                JsonNode first = awaitPage(browser, "rows.length === 6 && document.getElementById('map').dataset.robot",
+                        15);
+                assertEquals("running", first.path("state").asText(), "the run is still going: " + first);
+                Thread.sleep(1_500);
+                JsonNode second = state(browser);
+                assertTrue(second.path("runs").asLong() > first.path("runs").asLong(),
+                        "task runs grow between two looks: " + first + " then " + second);
+                assertTrue(!second.path("robot").asText().equals(first.path("robot").asText())
+                        || second.path("state").asText().equals("finished"), "the robot moves: " + first + " " + second);
+                Path shot = Path.of("target", "live-view.png");
+                Files.createDirectories(shot.getParent());
+                browser.screenshot(shot);
+                assertTrue(Files.size(shot) > 10_000, "a screenshot of the page");
+
+                JsonNode end = awaitPage(browser, "!!latest && latest.state === 'finished'", 60);
+                assertTrue(end.path("final").asText().contains("Final summary"), "final summary shown: " + end);
+                browser.call("Page.reload", null);
+                JsonNode reloaded = awaitPage(browser, "!!latest && latest.state === 'finished' && rows.length === 6", 15);
+                assertTrue(reloaded.path("final").asText().contains("completed"), "the same summary after a reload: "
+                        + reloaded);
+                browser.screenshot(Path.of("target", "live-view-final.png"));
+            }
+            assertEquals(0, run.get(60, TimeUnit.SECONDS), "exit status; output:\n" + stdout);
+        } finally {
+            System.setOut(saved);
+        }
+    }
+
+    private static String awaitUrl(ByteArrayOutputStream stdout, CompletableFuture<Integer> run) throws Exception {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        while (System.nanoTime() < deadline && !run.isDone()) {
+            Matcher m = URL.matcher(stdout.toString(StandardCharsets.UTF_8));
+            if (m.find()) {
+                return m.group(1);
+            }
+            Thread.sleep(20);
+        }
+        throw new AssertionError("no 'live view: URL' line; output:\n" + stdout);
+    }
+
+    private static final String STATE = "(() => { const rows = document.querySelectorAll('#tasks tbody tr');"
+            + " let runs = 0; rows.forEach(r => runs += Number(r.children[2].textContent));"
+            + " return { rows: rows.length, runs: runs, state: document.getElementById('state').textContent,"
+            + " robot: document.getElementById('map').dataset.robot || '',"
+            + " final: document.getElementById('final').style.display === 'block'"
+            + " ? document.getElementById('final').innerText : '' }; })()";
+
+    private static JsonNode state(Cdp browser) throws Exception {
+        return browser.eval(STATE);
+    }
+
+    private static JsonNode awaitPage(Cdp browser, String condition, int seconds) throws Exception {
+        String test = "(() => { const rows = document.querySelectorAll('#tasks tbody tr');"
+                + " try { return !!(" + condition + "); } catch (e) { return false; } })()";
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
+        while (System.nanoTime() < deadline) {
+            if (browser.eval(test).asBoolean()) {
+                return state(browser);
+            }
+            Thread.sleep(100);
+        }
+        throw new AssertionError("page never met: " + condition + "; page: " + state(browser));
+    }
+}
