@@ -93,7 +93,7 @@ public final class ExperimentRunner {
             progress.finished(result, finished, total);
         }
         progress.close();
-        return ResultsCsv.read(csv);
+        return Files.exists(csv) ? ResultsCsv.read(csv) : List.of();
     }
 
     /**

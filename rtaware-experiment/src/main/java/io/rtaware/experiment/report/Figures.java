@@ -234,7 +234,7 @@ public final class Figures {
         chart.getStyler().setYAxisMin(0.0);
         chart.getStyler().setLabelsVisible(true);
         chart.getStyler().setLabelsFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
-        chart.getStyler().setLabelsPosition(1.02);
+        chart.getStyler().setLabelsPosition(1.0);
         chart.getStyler().setLabelsFontColorAutomaticEnabled(false);
         chart.getStyler().setLabelsFontColor(Color.DARK_GRAY);
         chart.getStyler().setDecimalPattern("0.0#");
