@@ -1,6 +1,8 @@
 package io.rtaware.app;
 
 import io.rtaware.app.bench.BenchCommand;
+import io.rtaware.app.experiment.ExperimentCommand;
+import io.rtaware.app.experiment.ReportCommand;
 import java.io.PrintWriter;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -11,7 +13,8 @@ import picocli.CommandLine.Command;
  */
 @Command(name = "rtaware", mixinStandardHelpOptions = true, version = "rtaware 0.1.0",
         description = "Run robot controllers whose tasks are aware of time.",
-        subcommands = {BenchCommand.class, CommandLine.HelpCommand.class})
+        subcommands = {BenchCommand.class, ExperimentCommand.class, ReportCommand.class,
+                CommandLine.HelpCommand.class})
 public final class RtawareCli {
 
     /** Exit status for a mistake in the user's input. */
