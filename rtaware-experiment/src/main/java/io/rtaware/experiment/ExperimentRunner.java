@@ -26,6 +26,8 @@ public final class ExperimentRunner {
     public static final String LOG_FILE = "run.log";
 
     private static final long STOP_GRACE_S = 10;
+    private static final int EXIT_SIGINT = 130;
+    private static final int EXIT_SIGTERM = 143;
 
     private final ExperimentPlan plan;
     private final RunCommand command;
@@ -138,7 +140,9 @@ public final class ExperimentRunner {
         } finally {
             current = null;
         }
-        if (interrupted) {
+        if (interrupted || exit == EXIT_SIGINT || exit == EXIT_SIGTERM) {
+            // Ctrl-C reaches the run too (same process group): an interrupted run is not a result.
+            interrupted = true;
             return null;
         }
         if (exit == 2) {
