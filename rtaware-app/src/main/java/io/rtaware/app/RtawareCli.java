@@ -3,6 +3,10 @@ package io.rtaware.app;
 import io.rtaware.app.bench.BenchCommand;
 import io.rtaware.app.experiment.ExperimentCommand;
 import io.rtaware.app.experiment.ReportCommand;
+import io.rtaware.app.player.PlayerProbeCommand;
+import io.rtaware.app.run.RunCommand;
+import io.rtaware.app.sim.SimCommand;
+import io.rtaware.app.sim.WorldCommand;
 import java.io.PrintWriter;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -13,8 +17,8 @@ import picocli.CommandLine.Command;
  */
 @Command(name = "rtaware", mixinStandardHelpOptions = true, version = "rtaware 0.1.0",
         description = "Run robot controllers whose tasks are aware of time.",
-        subcommands = {BenchCommand.class, ExperimentCommand.class, ReportCommand.class,
-                CommandLine.HelpCommand.class})
+        subcommands = {RunCommand.class, SimCommand.class, WorldCommand.class, BenchCommand.class,
+                ExperimentCommand.class, ReportCommand.class, PlayerProbeCommand.class, CommandLine.HelpCommand.class})
 public final class RtawareCli {
 
     /** Exit status for a mistake in the user's input. */

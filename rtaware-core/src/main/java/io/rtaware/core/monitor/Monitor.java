@@ -102,7 +102,10 @@ public final class Monitor {
         return Collections.unmodifiableList(runtimes);
     }
 
-    /** @return key names by key index (see {@link MonitorListener#onCommit}) */
+    /**
+     * @return key names by key index (see {@link MonitorListener#onCommit}), in the order the
+     *     producing tasks declared them
+     */
     public List<String> keyNames() {
         return keyNames;
     }
@@ -132,6 +135,39 @@ public final class Monitor {
         return variables.stream().filter(v -> v.key().name().equals(key)).findFirst()
                 .orElseThrow(() -> new IllegalArgumentException("no key '" + key + "'; keys: " + keyNames))
                 .feedStats();
+    }
+
+    /**
+     * Reads a key's newest value from outside the task set, for observers such as a run
+     * supervisor or a live view: copies it into {@code target} under the key's read lock, like a
+     * consumer's copy-in, without being a task (so it appears in no report). Any thread.
+     *
+     * @param key the key
+     * @param target receives the value
+     * @param <T> the value type
+     * @return the generation copied (0 if never written: {@code target} then holds the empty value)
+     * @throws IllegalArgumentException if no task produces the key or its type differs
+     */
+    public <T extends StateValue<T>> long read(Key<T> key, T target) {
+        StateVariable<?> variable = variables.stream().filter(v -> v.key().name().equals(key.name())).findFirst()
+                .orElseThrow(() -> new IllegalArgumentException("no key '" + key.name() + "'; keys: " + keyNames));
+        if (!variable.key().type().equals(key.type())) {
+            throw new IllegalArgumentException("key '" + key.name() + "' holds " + variable.key().type().getSimpleName()
+                    + ", not " + key.type().getSimpleName());
+        }
+        @SuppressWarnings("unchecked")
+        StateVariable<T> typed = (StateVariable<T>) variable;
+        StateVariable.ReadCursor cursor = new StateVariable.ReadCursor();
+        typed.copyTo(target, -1, cursor);
+        return cursor.generation();
+    }
+
+    /**
+     * @param key a key's name
+     * @return true if some task produces it
+     */
+    public boolean hasKey(String key) {
+        return keyNames.contains(key);
     }
 
     private TaskRuntime runtime(String task) {
@@ -410,19 +446,24 @@ public final class Monitor {
                 try {
                     spec.task().initialize(setup);
                 } catch (Exception e) {
-                    violations.add("task '" + spec.name() + "' failed to initialize: " + e.getMessage());
+                    violations.add("task '" + spec.name() + "' failed to initialize: " + e.getClass().getSimpleName()
+                            + (e.getMessage() == null ? "" : ": " + e.getMessage()));
                 }
                 setup.closed = true;
                 setup.violations.forEach(violations::add);
                 setups.add(setup);
             }
 
-            Map<String, Setup> producerOf = new TreeMap<>();
-            Map<String, Key<?>> producedKey = new TreeMap<>();
+            // Declaration order: error messages list produced keys as the tasks declared them.
+            Map<String, Setup> producerOf = new LinkedHashMap<>();
+            Map<String, Key<?>> producedKey = new LinkedHashMap<>();
             for (Setup setup : setups) {
                 for (OutputHandle<?> out : setup.outputs) {
                     String key = out.key().name();
                     Setup other = producerOf.get(key);
+                    if (other == setup) {
+                        continue; // declared twice by one task: already reported by its setup
+                    }
                     if (other != null) {
                         violations.add("key '" + key + "' is produced by tasks '" + other.spec.name() + "' and '"
                                 + setup.spec.name() + "'; a key has exactly one producer");

@@ -108,6 +108,7 @@ public final class StepExecutor implements Monitor.Executor {
         long k = nextIndex[i];
         long releaseNs = nextReleaseNs[i];
         clock.advanceTo(releaseNs);
+        long startNs = clock.nanos(); // later than the release if another cycle ran past it
         current = runtime;
         TaskRuntime.Outcome outcome;
         try {
@@ -138,7 +139,9 @@ public final class StepExecutor implements Monitor.Executor {
             }
             case "continuous" -> {
                 nextIndex[i] = k + 1;
-                nextReleaseNs[i] = endNs > releaseNs ? endNs : releaseNs + idleStepNs();
+                // Compare with the start, not the release: a zero-duration cycle that started late
+                // must still wait one idle step, or it would run twice at the same instant.
+                nextReleaseNs[i] = endNs > startNs ? endNs : endNs + idleStepNs();
             }
             default -> {
                 runtime.setState(TaskState.FINISHED, endNs);

@@ -59,12 +59,16 @@ final class TaskRuntime implements TaskInfo {
     private final AtomicLong errors = new AtomicLong();
     private final AtomicLong expiredReads = new AtomicLong();
     private volatile TaskState state = TaskState.INITIALIZED;
+    /** Called on the task thread once a periodic cycle is marked running; null if none. */
+    private Runnable cycleStarted;
 
     private final Histogram execNs = new Histogram(1, HIGHEST_TRACKABLE_NS, 2);
     private final Histogram latenessNs = new Histogram(1, HIGHEST_TRACKABLE_NS, 2);
     private long execMaxNs;
     private double execSumNs;
     private long latenessMaxNs;
+    /** End of the latest cycle; task thread only. */
+    private long lastCycleEndNs;
     private double latenessSumNs;
 
     TaskRuntime(TaskSpec spec, int index, Clock clock, MonitorListener[] listeners,
@@ -125,6 +129,16 @@ final class TaskRuntime implements TaskInfo {
         return periodic;
     }
 
+    /**
+     * Sets the hook run on the task thread right after a periodic cycle is marked running (the
+     * threaded executor wakes its watchdog there). Call before the task's thread starts.
+     *
+     * @param hook must not allocate or block
+     */
+    void onCycleStart(Runnable hook) {
+        this.cycleStarted = hook;
+    }
+
     /** Fixes the grid: release k of a periodic task is at {@code startNs + offset + k * period}. */
     void begin(long startNs) {
         baseNs = startNs + offsetNs;
@@ -168,6 +182,9 @@ final class TaskRuntime implements TaskInfo {
         }
         if (periodic) {
             cycleToken.set(2 * k + 1);
+            if (cycleStarted != null) {
+                cycleStarted.run();
+            }
         }
 
         boolean anyNew = false;
@@ -224,6 +241,7 @@ final class TaskRuntime implements TaskInfo {
                 }
             }
         }
+        lastCycleEndNs = endNs;
         long exec = endNs - startNs;
         record(execNs, exec);
         execSumNs += exec;
@@ -300,6 +318,11 @@ final class TaskRuntime implements TaskInfo {
             next = first;
         }
         return next;
+    }
+
+    /** @return world time at which the latest cycle ended (task thread only) */
+    long lastCycleEndNs() {
+        return lastCycleEndNs;
     }
 
     void setState(TaskState newState, long nowNs) {

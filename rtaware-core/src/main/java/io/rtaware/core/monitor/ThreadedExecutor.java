@@ -41,6 +41,7 @@ final class ThreadedExecutor implements Monitor.Executor {
         watchdog.setPriority(Thread.MAX_PRIORITY);
         for (TaskRuntime runtime : runtimes) {
             runtime.begin(startNs);
+            runtime.onCycleStart(() -> wakeWatchdogFor(runtime));
             Thread thread = new Thread(() -> runTask(runtime), "rtaware-" + runtime.name());
             thread.setDaemon(true);
             threads.add(thread);
@@ -69,15 +70,11 @@ final class ThreadedExecutor implements Monitor.Executor {
             if (!waitUntil(releaseNs)) {
                 return;
             }
-            long deadlineNs = runtime.deadlineOf(k);
-            if (deadlineNs < watchdogWakeNs) {
-                LockSupport.unpark(watchdog);
-            }
             TaskRuntime.Outcome outcome = runtime.runCycle(k, releaseNs);
             if (!handle(runtime, outcome)) {
                 return;
             }
-            k = runtime.nextIndexAfter(k, clock.nanos());
+            k = runtime.nextIndexAfter(k, runtime.lastCycleEndNs());
         }
     }
 
@@ -95,6 +92,17 @@ final class ThreadedExecutor implements Monitor.Executor {
         long releaseNs = runtime.releaseTimeNs(0);
         if (waitUntil(releaseNs) && handle(runtime, runtime.runCycle(0, releaseNs))) {
             runtime.setState(TaskState.FINISHED, clock.nanos());
+        }
+    }
+
+    /**
+     * Runs on the task thread after its cycle is marked running. The cycle must be visible to the
+     * watchdog before the wake time is read: then either the watchdog's re-check sees the cycle,
+     * or this thread sees the watchdog's new wake time and unparks it if its deadline is earlier.
+     */
+    private void wakeWatchdogFor(TaskRuntime runtime) {
+        if (runtime.runningDeadlineNs() < watchdogWakeNs) {
+            LockSupport.unpark(watchdog);
         }
     }
 

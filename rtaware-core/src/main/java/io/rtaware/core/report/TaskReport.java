@@ -14,7 +14,7 @@ package io.rtaware.core.report;
  * @param skipped releases skipped because the task was still running
  * @param staleRuns cycles in which none of the task's inputs had new data
  * @param errors cycles that threw
- * @param expiredReads cycles that read an input older than its declared maximum age
+ * @param expiredReads reads of an input older than its declared maximum age (one per input per cycle)
  * @param execUs execution time per cycle, microseconds
  * @param latenessUs start of the cycle minus its scheduled release, microseconds
  */

@@ -56,9 +56,13 @@ public final class Durations {
 
     /**
      * @param ns a duration in nanoseconds
-     * @return a short human form: {@code 10ms}, {@code 2.5ms}, {@code 750us}, {@code 2s}
+     * @return a short human form: {@code 10ms}, {@code 2.5ms}, {@code 750us}, {@code 2s};
+     *     negative spans get a minus sign ({@code -5ms})
      */
     public static String format(long ns) {
+        if (ns < 0 && ns != Long.MIN_VALUE) {
+            return "-" + format(-ns);
+        }
         if (ns % 1_000_000_000L == 0 && ns != 0) {
             return ns / 1_000_000_000L + "s";
         }

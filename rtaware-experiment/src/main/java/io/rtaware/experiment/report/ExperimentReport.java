@@ -106,10 +106,11 @@ public final class ExperimentReport {
         Blocks b = new Blocks();
         ExperimentProfile p = s.profile();
         b.heading(1, "rtaware experiment report");
-        b.text("Profile: scenario `" + p.scenario() + "`, time scale x" + num(p.timeScale(), 3)
-                + " (world time runs " + num(p.timeScale(), 3) + " times faster than wall time, so each task's computation weighs "
-                + num(p.timeScale(), 3) + " times more against its period), grid resolution "
-                + (p.gridResolutionM() == null ? "`run`'s default" : num(p.gridResolutionM(), 3) + " m")
+        String k = plain(p.timeScale());
+        b.text("Profile: scenario `" + p.scenario() + "`, time scale x" + k + " (world time runs " + k
+                + " times faster than wall time, so each task's computation weighs " + k
+                + " times more against its period), grid resolution "
+                + (p.gridResolutionM() == null ? "`run`'s default" : plain(p.gridResolutionM()) + " m")
                 + ", seed " + p.seed() + " (run j uses seed + j - 1), " + p.runsPerSet() + " run(s) per set planned.");
         b.text("Machine: " + (p.machine() == null ? "not recorded (no experiment.json)" : p.machine())
                 + ". The paper's runs: " + s.paper().source() + ".");
@@ -220,6 +221,10 @@ public final class ExperimentReport {
 
     private static String missCell(Misses m) {
         return num(m.missPct(), 2) + " (" + m.misses() + " / " + m.releases() + ")";
+    }
+
+    private static String plain(double v) {
+        return java.math.BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
     }
 
     private static String num(Double v, int decimals) {

@@ -233,10 +233,9 @@ public final class Figures {
         chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNE);
         chart.getStyler().setYAxisMin(0.0);
         chart.getStyler().setLabelsVisible(true);
-        chart.getStyler().setLabelsFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
+        chart.getStyler().setLabelsFont(new Font(Font.SANS_SERIF, Font.BOLD, 11));
         chart.getStyler().setLabelsPosition(1.0);
-        chart.getStyler().setLabelsFontColorAutomaticEnabled(false);
-        chart.getStyler().setLabelsFontColor(Color.DARK_GRAY);
+        chart.getStyler().setLabelsFontColorAutomaticEnabled(true);
         chart.getStyler().setDecimalPattern("0.0#");
         return chart;
     }

@@ -1,0 +1,2 @@
+/** {@code rtaware bench}: synthetic task sets with real CPU work, run on the threaded monitor. */
+package io.rtaware.app.bench;

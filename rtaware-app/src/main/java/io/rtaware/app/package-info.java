@@ -1,0 +1,2 @@
+/** The {@code rtaware} command line: the composition root that wires every program. */
+package io.rtaware.app;

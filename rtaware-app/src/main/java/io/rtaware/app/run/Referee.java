@@ -1,0 +1,178 @@
+package io.rtaware.app.run;
+
+import io.rtaware.core.time.Clock;
+import io.rtaware.robot.geometry.Point2d;
+import io.rtaware.robot.geometry.Pose2d;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+import java.util.concurrent.atomic.AtomicLong;
+
+/**
+ * Watches the robot from outside the controller, as the paper's ground-truth sensors did: samples
+ * the true pose at a fixed world-time rate on a thread of its own, records the trajectory, the
+ * distance travelled and where deadline misses happened, and tells whether the robot is stuck.
+ * Thread-safe: sampled by its own thread, read by any.
+ */
+final class Referee implements AutoCloseable {
+
+    /** Where the true pose comes from. */
+    interface PoseSource extends AutoCloseable {
+        /** @return the robot's pose now, or null if none is known yet */
+        Pose2d pose() throws Exception;
+
+        /** @return {@code ground_truth} or {@code odometry}, as the report says */
+        String kind();
+
+        @Override
+        default void close() throws Exception {
+        }
+    }
+
+    /**
+     * One sample of the path.
+     *
+     * @param tS world seconds since the run started
+     * @param pose the pose
+     */
+    record Sample(double tS, Pose2d pose) {
+    }
+
+    private final Clock clock;
+    private final long startNs;
+    private final long samplePeriodNs;
+    private final PoseSource source;
+    private final AtomicLong missEvents;
+    private final List<Sample> samples = new ArrayList<>();
+    private final List<Point2d> missMarkers = new ArrayList<>();
+    private final Thread thread;
+    private volatile boolean running = true;
+    private double travelledM;
+    private long lastMissEvents;
+    private String lastError;
+
+    /**
+     * @param clock world clock
+     * @param startNs world time of the run's start
+     * @param samplePeriodNs world time between samples
+     * @param source the pose source; closed with the referee
+     * @param missEvents a counter of deadline-miss events; a marker is recorded where it grows
+     */
+    Referee(Clock clock, long startNs, long samplePeriodNs, PoseSource source, AtomicLong missEvents) {
+        this.clock = clock;
+        this.startNs = startNs;
+        this.samplePeriodNs = samplePeriodNs;
+        this.source = Objects.requireNonNull(source, "source");
+        this.missEvents = missEvents;
+        this.thread = new Thread(this::loop, "rtaware-referee");
+        this.thread.setDaemon(true);
+        this.thread.start();
+    }
+
+    private void loop() {
+        long next = clock.nanos();
+        while (running) {
+            sampleOnce();
+            next += samplePeriodNs;
+            long waitNs = next - clock.nanos();
+            if (waitNs > 0) {
+                java.util.concurrent.locks.LockSupport.parkNanos(clock.toWallNanos(waitNs));
+            } else {
+                next = clock.nanos();
+            }
+        }
+    }
+
+    private void sampleOnce() {
+        Pose2d pose;
+        try {
+            pose = source.pose();
+        } catch (Exception e) {
+            synchronized (this) {
+                lastError = e.getMessage();
+            }
+            return;
+        }
+        if (pose == null) {
+            return;
+        }
+        double tS = (clock.nanos() - startNs) / 1e9;
+        long misses = missEvents.get();
+        synchronized (this) {
+            if (!samples.isEmpty()) {
+                travelledM += samples.get(samples.size() - 1).pose().distanceTo(pose);
+            }
+            samples.add(new Sample(tS, pose));
+            if (misses > lastMissEvents) {
+                missMarkers.add(pose.position());
+                lastMissEvents = misses;
+            }
+        }
+    }
+
+    /** @return {@code ground_truth} or {@code odometry} */
+    String kind() {
+        return source.kind();
+    }
+
+    /** @return the latest pose, or null if none yet */
+    synchronized Pose2d latest() {
+        return samples.isEmpty() ? null : samples.get(samples.size() - 1).pose();
+    }
+
+    /** @return metres travelled so far */
+    synchronized double travelledM() {
+        return travelledM;
+    }
+
+    /** @return a copy of the samples so far */
+    synchronized List<Sample> samples() {
+        return new ArrayList<>(samples);
+    }
+
+    /** @return where deadline misses happened */
+    synchronized List<Point2d> missMarkers() {
+        return new ArrayList<>(missMarkers);
+    }
+
+    /** @return the last error of the pose source, or null */
+    synchronized String lastError() {
+        return lastError;
+    }
+
+    /**
+     * @param windowS world seconds to look back
+     * @return how far the robot moved in the last {@code windowS} seconds (straight line), or
+     *     {@link Double#NaN} if the run is younger than the window
+     */
+    synchronized double displacementOverLastM(double windowS) {
+        if (samples.isEmpty()) {
+            return Double.NaN;
+        }
+        Sample last = samples.get(samples.size() - 1);
+        for (int i = samples.size() - 1; i >= 0; i--) {
+            if (last.tS() - samples.get(i).tS() >= windowS) {
+                return samples.get(i).pose().distanceTo(last.pose());
+            }
+        }
+        return Double.NaN;
+    }
+
+    /** Takes a last sample, stops sampling and closes the source. */
+    @Override
+    public void close() {
+        running = false;
+        thread.interrupt();
+        try {
+            thread.join(2_000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        sampleOnce();
+        try {
+            source.close();
+        } catch (Exception ignored) {
+            // The run is over; a failing close of the observer's connection changes nothing.
+        }
+    }
+}

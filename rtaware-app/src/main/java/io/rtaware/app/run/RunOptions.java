@@ -1,0 +1,28 @@
+package io.rtaware.app.run;
+
+import java.nio.file.Path;
+
+/**
+ * Everything {@code rtaware run} was asked to do, validated.
+ *
+ * @param scenario {@code paper-room} or a scenario file
+ * @param periods the four behaviors' periods
+ * @param timeScale world seconds per wall second
+ * @param playerHost external Player server host, or null for the built-in simulator
+ * @param playerPort external Player server port
+ * @param seed the simulator's seed
+ * @param outDir where the report goes
+ * @param quiet no live status or miss lines
+ * @param stuckAfterS world seconds without progress after which the robot counts as stuck
+ * @param gridResolutionM occupancy grid resolution
+ * @param modelName the robot's model name for {@code simulation:0} ground truth
+ */
+public record RunOptions(String scenario, TaskPeriods periods, double timeScale, String playerHost, int playerPort,
+                         long seed, Path outDir, boolean quiet, double stuckAfterS, double gridResolutionM,
+                         String modelName) {
+
+    /** @return true when the robot is the built-in simulator */
+    public boolean builtInSimulator() {
+        return playerHost == null;
+    }
+}

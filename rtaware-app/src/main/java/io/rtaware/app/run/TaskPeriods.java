@@ -1,0 +1,108 @@
+package io.rtaware.app.run;
+
+import io.rtaware.app.UserError;
+import io.rtaware.core.time.Durations;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * The periods of the paper's four behaviors, as given by {@code --periods
+ * waypoint=100,obstacle=50,occupancy=100,planner=100} (bare numbers are milliseconds; units such
+ * as {@code 50ms} or {@code 0.1s} are accepted). Tasks not named keep their default. Immutable.
+ */
+public final class TaskPeriods {
+
+    /** The behaviors whose periods can be set, in the paper's order (Table I). */
+    public static final List<String> TASKS = List.of("waypoint", "obstacle", "occupancy", "planner");
+
+    private final Map<String, Long> periodsNs;
+
+    private TaskPeriods(Map<String, Long> periodsNs) {
+        this.periodsNs = Collections.unmodifiableMap(periodsNs);
+    }
+
+    /** @return the paper's Set 4 (100/50/100/100 ms), the default of {@code run} */
+    public static TaskPeriods paperSet4() {
+        return of(100, 50, 100, 100);
+    }
+
+    /**
+     * @param waypointMs waypoint planner period in ms
+     * @param obstacleMs obstacle avoider period in ms
+     * @param occupancyMs occupancy grid period in ms
+     * @param plannerMs path planner period in ms
+     * @return the periods
+     */
+    public static TaskPeriods of(double waypointMs, double obstacleMs, double occupancyMs, double plannerMs) {
+        Map<String, Long> m = new LinkedHashMap<>();
+        m.put("waypoint", Math.round(waypointMs * 1e6));
+        m.put("obstacle", Math.round(obstacleMs * 1e6));
+        m.put("occupancy", Math.round(occupancyMs * 1e6));
+        m.put("planner", Math.round(plannerMs * 1e6));
+        return new TaskPeriods(m);
+    }
+
+    /**
+     * Parses the {@code --periods} value over the defaults.
+     *
+     * @param text e.g. {@code waypoint=100,obstacle=50}
+     * @param defaults periods of tasks the text does not name
+     * @return the periods
+     * @throws UserError naming the unknown task or the bad period
+     */
+    public static TaskPeriods parse(String text, TaskPeriods defaults) {
+        Map<String, Long> m = new LinkedHashMap<>(defaults.periodsNs);
+        if (text == null || text.isBlank()) {
+            throw new UserError("--periods is empty; example: --periods waypoint=100,obstacle=50,occupancy=100,planner=100");
+        }
+        for (String entry : text.split(",")) {
+            String[] kv = entry.split("=", 2);
+            String task = kv[0].trim();
+            if (kv.length != 2 || task.isEmpty()) {
+                throw new UserError("--periods entry '" + entry.trim() + "' is not task=period (example: obstacle=50)");
+            }
+            if (!TASKS.contains(task)) {
+                throw new UserError("unknown task '" + task + "' in --periods; tasks: " + String.join(", ", TASKS));
+            }
+            long ns;
+            try {
+                ns = Durations.parseNanos(kv[1].trim());
+            } catch (IllegalArgumentException e) {
+                throw new UserError("period of '" + task + "' in --periods: " + e.getMessage());
+            }
+            if (ns <= 0) {
+                throw new UserError("period of '" + task + "' in --periods must be positive, got '" + kv[1].trim() + "'");
+            }
+            m.put(task, ns);
+        }
+        return new TaskPeriods(m);
+    }
+
+    /**
+     * @param task one of {@link #TASKS}
+     * @return its period in nanoseconds
+     */
+    public long periodNs(String task) {
+        Long ns = periodsNs.get(task);
+        if (ns == null) {
+            throw new IllegalArgumentException("unknown task '" + task + "'; tasks: " + String.join(", ", TASKS));
+        }
+        return ns;
+    }
+
+    /** @return periods in ms by task, in the paper's order (the report's {@code periods_ms}) */
+    public Map<String, Double> millis() {
+        Map<String, Double> m = new LinkedHashMap<>();
+        periodsNs.forEach((k, v) -> m.put(k, v / 1e6));
+        return m;
+    }
+
+    @Override
+    public String toString() {
+        StringBuilder sb = new StringBuilder();
+        periodsNs.forEach((k, v) -> sb.append(sb.length() == 0 ? "" : ",").append(k).append('=').append(Durations.format(v)));
+        return sb.toString();
+    }
+}

@@ -1,0 +1,49 @@
+package io.rtaware.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import org.junit.jupiter.api.Test;
+
+/** User errors end with exit status 2 and exactly one line on stderr, never a stack trace. */
+class CliErrorsTest {
+
+    private static String[] runCapturingErr(String... args) {
+        PrintStream saved = System.err;
+        ByteArrayOutputStream buffer = new ByteArrayOutputStream();
+        System.setErr(new PrintStream(buffer, true, StandardCharsets.UTF_8));
+        int status;
+        try {
+            status = RtawareCli.execute(args);
+        } finally {
+            System.setErr(saved);
+        }
+        return new String[] {Integer.toString(status), buffer.toString(StandardCharsets.UTF_8)};
+    }
+
+    private static void assertOneLineUserError(String[] result, String expectedFragment) {
+        assertEquals("2", result[0], "exit status of a user error");
+        String err = result[1].strip();
+        assertEquals(1, err.lines().count(), "exactly one line on stderr, got:\n" + err);
+        assertTrue(err.contains(expectedFragment), "message names the problem: " + err);
+        assertTrue(!err.contains("\tat "), "no stack trace: " + err);
+    }
+
+    @Test
+    void badPeriodInBenchIsOneLineWithStatus2() {
+        assertOneLineUserError(runCapturingErr("bench", "--period", "fast"), "'fast' is not a duration");
+    }
+
+    @Test
+    void zeroPeriodInSpecIsOneLineWithStatus2() {
+        assertOneLineUserError(runCapturingErr("bench", "--spec", "a:0ms:1ms"), "period of task 'a' must be positive");
+    }
+
+    @Test
+    void unknownOptionIsOneLineWithStatus2() {
+        assertOneLineUserError(runCapturingErr("bench", "--frobnicate"), "--frobnicate");
+    }
+}

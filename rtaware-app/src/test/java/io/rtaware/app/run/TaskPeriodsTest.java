@@ -1,0 +1,36 @@
+package io.rtaware.app.run;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+
+import io.rtaware.app.UserError;
+import org.junit.jupiter.api.Test;
+
+class TaskPeriodsTest {
+
+    @Test
+    void namedTasksOverrideDefaultsAndBareNumbersAreMilliseconds() {
+        TaskPeriods p = TaskPeriods.parse("obstacle=10,planner=0.2s", TaskPeriods.paperSet4());
+        assertEquals(100_000_000L, p.periodNs("waypoint"), "waypoint keeps Set 4's 100 ms");
+        assertEquals(10_000_000L, p.periodNs("obstacle"));
+        assertEquals(100_000_000L, p.periodNs("occupancy"));
+        assertEquals(200_000_000L, p.periodNs("planner"));
+        assertEquals("waypoint=100ms,obstacle=10ms,occupancy=100ms,planner=200ms", p.toString());
+    }
+
+    @Test
+    void unknownTaskIsNamedWithTheKnownOnes() {
+        UserError e = assertThrows(UserError.class, () -> TaskPeriods.parse("mapper=10", TaskPeriods.paperSet4()));
+        assertEquals("unknown task 'mapper' in --periods; tasks: waypoint, obstacle, occupancy, planner", e.getMessage());
+    }
+
+    @Test
+    void zeroNegativeAndNonDurationPeriodsAreRejectedWithTheValue() {
+        assertEquals("period of 'obstacle' in --periods must be positive, got '0'",
+                assertThrows(UserError.class, () -> TaskPeriods.parse("obstacle=0", TaskPeriods.paperSet4())).getMessage());
+        String bad = assertThrows(UserError.class, () -> TaskPeriods.parse("obstacle=fast", TaskPeriods.paperSet4())).getMessage();
+        assertEquals("period of 'obstacle' in --periods: 'fast' is not a duration (examples: 10ms, 2.5ms, 500us, 1s)", bad);
+        assertThrows(UserError.class, () -> TaskPeriods.parse("obstacle=-5", TaskPeriods.paperSet4()));
+        assertThrows(UserError.class, () -> TaskPeriods.parse("obstacle", TaskPeriods.paperSet4()));
+    }
+}

@@ -1,0 +1,49 @@
+package io.rtaware.core.time;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+
+import org.junit.jupiter.api.Test;
+
+class DurationsTest {
+
+    @Test
+    void parsesEveryUnitAndBareNumbersAsMilliseconds() {
+        assertEquals(10_000_000L, Durations.parseNanos("10ms"), "10ms");
+        assertEquals(2_500_000L, Durations.parseNanos("2.5ms"), "2.5ms");
+        assertEquals(500_000L, Durations.parseNanos("500us"), "500us");
+        assertEquals(500_000L, Durations.parseNanos("500µs"), "500µs");
+        assertEquals(1_000_000_000L, Durations.parseNanos("1s"), "1s");
+        assertEquals(250L, Durations.parseNanos("250ns"), "250ns");
+        assertEquals(120_000_000_000L, Durations.parseNanos("2m"), "2m is minutes");
+        assertEquals(120_000_000_000L, Durations.parseNanos("2min"), "2min");
+        assertEquals(10_000_000L, Durations.parseNanos("10"), "a bare number is milliseconds");
+        assertEquals(1_500_000L, Durations.parseNanos(" 1.5 MS "), "spaces and case are tolerated");
+        assertEquals(500_000L, Durations.parseNanos(".5ms"), "leading dot");
+    }
+
+    @Test
+    void garbageIsRejectedWithAMessageNamingTheText() {
+        for (String text : new String[] {"ten ms", "10 parsecs", "", "-5ms", "1.2.3ms", "ms"}) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> Durations.parseNanos(text), text);
+            assertEquals("'" + text + "' is not a duration (examples: 10ms, 2.5ms, 500us, 1s)", e.getMessage(),
+                    "message for '" + text + "'");
+        }
+        assertEquals("missing duration",
+                assertThrows(IllegalArgumentException.class, () -> Durations.parseNanos(null)).getMessage(), "null");
+        assertEquals("'9999999999999s' is too long a duration",
+                assertThrows(IllegalArgumentException.class, () -> Durations.parseNanos("9999999999999s")).getMessage(),
+                "overflow");
+    }
+
+    @Test
+    void formatsShortHumanForms() {
+        assertEquals("10ms", Durations.format(10_000_000L), "ms");
+        assertEquals("2.5ms", Durations.format(2_500_000L), "fractional ms");
+        assertEquals("750us", Durations.format(750_000L), "us");
+        assertEquals("2s", Durations.format(2_000_000_000L), "s");
+        assertEquals("0ns", Durations.format(0), "zero");
+        assertEquals("-5ms", Durations.format(-5_000_000L), "negative spans keep their unit");
+        assertEquals(Durations.parseNanos("2.5ms"), Durations.parseNanos(Durations.format(2_500_000L)), "round trip");
+    }
+}

@@ -1,0 +1,2 @@
+/** Writing the occupancy grid the robot built in the formats other tools read. */
+package io.rtaware.nav.map;

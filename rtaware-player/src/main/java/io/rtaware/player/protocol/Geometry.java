@@ -1,0 +1,11 @@
+package io.rtaware.player.protocol;
+
+/**
+ * Reply to position2d or laser REQ GET_GEOM: the device's pose on the robot and its size
+ * (72 bytes). Immutable and thread-safe.
+ *
+ * @param pose pose of the device relative to the robot
+ * @param size the device's extent
+ */
+public record Geometry(Pose3d pose, Bbox3d size) {
+}

@@ -1,0 +1,300 @@
+package io.rtaware.player.task;
+
+import io.rtaware.core.data.Input;
+import io.rtaware.core.data.Output;
+import io.rtaware.core.task.Task;
+import io.rtaware.core.task.TaskSetup;
+import io.rtaware.player.client.PlayerClient;
+import io.rtaware.player.client.PlayerConnectionException;
+import io.rtaware.player.client.PlayerCounters;
+import io.rtaware.player.client.PlayerStats;
+import io.rtaware.player.client.PlayerTimeoutException;
+import io.rtaware.player.protocol.DeviceAddress;
+import io.rtaware.player.protocol.Interfaces;
+import io.rtaware.player.protocol.ReplaceRule;
+import io.rtaware.player.protocol.Subtypes;
+import io.rtaware.robot.msg.LaserScan;
+import io.rtaware.robot.msg.Odometry;
+import io.rtaware.robot.msg.RobotKeys;
+import io.rtaware.robot.msg.VelocityCommand;
+import java.io.IOException;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * The task that connects a Player server to the data store; run it with
+ * {@code Schedule.continuous()}. It owns the connection: {@link #initialize} connects,
+ * subscribes to position2d and the scan source and declares that it produces
+ * {@link RobotKeys#ODOMETRY} and {@link RobotKeys#LASER} and consumes {@link RobotKeys#MOTOR}.
+ * Each {@link #execute} waits at most {@link PlayerConfig#pollWaitMs()} of wall time for data,
+ * publishes the newest odometry and scan when new ones arrived, and sends CMD VEL when the
+ * motor command has a new generation with a changed value, or again after
+ * {@link PlayerConfig#keepAliveMs()} of world time. A lost connection (or no message for
+ * {@link PlayerConfig#readTimeoutMs()}) is thrown from {@code execute}, so the monitor
+ * counts it and the keys go stale; with reconnection enabled, later cycles reconnect with
+ * exponential back-off. {@link #terminate} sends a zero velocity first, then unsubscribes and
+ * closes.
+ *
+ * <p>Called by one thread at a time, as every task; {@link #stats()} may be called from any
+ * thread.
+ */
+public final class PlayerDataTask implements Task {
+
+    private final PlayerConfig config;
+    private final PlayerCounters counters = new PlayerCounters();
+    private final DeviceAddress position2d;
+
+    private Output<Odometry> odometryOut;
+    private Output<LaserScan> laserOut;
+    private Input<VelocityCommand> motorIn;
+
+    private PlayerClient client;
+    private volatile String serverVersion = "";
+    private long seenOdometry;
+    private long seenScans;
+    private boolean pullPending;
+    private long lastMessageNs = Long.MIN_VALUE;
+
+    private long motorGeneration = -1;
+    private boolean commandSent;
+    private double sentVxMps;
+    private double sentOmegaRadPerSec;
+    private long sentAtNs;
+
+    private long backoffMs;
+    private long nextAttemptNs;
+    private int failedAttempts;
+
+    /**
+     * @param config connection settings (validated when built)
+     */
+    public PlayerDataTask(PlayerConfig config) {
+        this.config = config;
+        this.position2d = DeviceAddress.of(Interfaces.POSITION2D, config.position2dIndex());
+        this.backoffMs = config.reconnectInitialBackoffMs();
+    }
+
+    /**
+     * Declares the keys and connects. Without reconnection a failure to connect fails the
+     * initialization; with it, the first attempt's failure is counted and later cycles retry.
+     *
+     * @param setup the declarations interface
+     * @throws IOException if the server cannot be reached and reconnection is disabled
+     */
+    @Override
+    public void initialize(TaskSetup setup) throws IOException {
+        odometryOut = setup.produce(RobotKeys.ODOMETRY);
+        laserOut = setup.produce(RobotKeys.LASER);
+        motorIn = setup.consume(RobotKeys.MOTOR);
+        try {
+            open();
+        } catch (IOException e) {
+            counters.connectionLost();
+            if (!config.reconnect()) {
+                throw e;
+            }
+            nextAttemptNs = setup.clock().nanos();
+        }
+    }
+
+    private void open() throws IOException {
+        PlayerClient c = PlayerClient.connect(config.host(), config.port(), config.clientOptions(), counters);
+        try {
+            if (config.dataMode() == DataMode.PULL) {
+                c.setDataMode(Subtypes.DATAMODE_PULL);
+            } else {
+                c.setDataMode(Subtypes.DATAMODE_PUSH);
+                c.addReplaceRule(ReplaceRule.latestDataOnly());
+            }
+            c.subscribe(position2d);
+            c.subscribe(config.scanSource());
+            if (config.scanSource().interf() == Interfaces.RANGER) {
+                c.rangerConfig(config.scanSource().index());
+            }
+        } catch (IOException | RuntimeException e) {
+            c.close();
+            throw e;
+        }
+        client = c;
+        serverVersion = c.serverVersion();
+        seenOdometry = 0;
+        seenScans = 0;
+        pullPending = false;
+        lastMessageNs = Long.MIN_VALUE;
+        sentAtNs = Long.MIN_VALUE;
+    }
+
+    /**
+     * One cycle: reconnect if due, send the motor command if needed, read, publish.
+     *
+     * @param nowNs world time at the start of the cycle
+     * @throws IOException if the connection is lost, times out, is broken, or a reconnection
+     *     attempt fails; or if it is down and reconnection is disabled
+     * @throws InterruptedException if interrupted while waiting to reconnect
+     */
+    @Override
+    public void execute(long nowNs) throws IOException, InterruptedException {
+        if (client == null && !reconnectIfDue(nowNs)) {
+            return;
+        }
+        try {
+            sendMotor(nowNs);
+            int n;
+            if (config.dataMode() == DataMode.PULL) {
+                if (!pullPending) {
+                    client.requestData();
+                    pullPending = true;
+                }
+                long synchs = client.synchs();
+                n = client.poll(config.pollWaitMs(), true);
+                if (client.synchs() != synchs) {
+                    pullPending = false;
+                }
+            } else {
+                n = client.poll(config.pollWaitMs(), false);
+            }
+            checkReadTimeout(nowNs, n);
+            publish();
+        } catch (IOException e) {
+            drop(nowNs);
+            throw e;
+        }
+    }
+
+    private boolean reconnectIfDue(long nowNs) throws IOException, InterruptedException {
+        if (!config.reconnect()) {
+            throw new PlayerConnectionException("not connected to Player server " + config.host() + ":"
+                    + config.port() + " (reconnection disabled)", null);
+        }
+        if (nowNs - nextAttemptNs < 0) {
+            long waitMs = Math.min(config.pollWaitMs(), TimeUnit.NANOSECONDS.toMillis(nextAttemptNs - nowNs) + 1);
+            Thread.sleep(waitMs);
+            return false;
+        }
+        try {
+            open();
+            failedAttempts = 0;
+            backoffMs = config.reconnectInitialBackoffMs();
+            return true;
+        } catch (IOException e) {
+            failedAttempts++;
+            counters.connectionLost();
+            long waitMs = backoffMs;
+            nextAttemptNs = nowNs + TimeUnit.MILLISECONDS.toNanos(waitMs);
+            backoffMs = Math.min(backoffMs * 2, config.reconnectMaxBackoffMs());
+            throw new PlayerConnectionException("reconnection attempt " + failedAttempts + " to " + config.host() + ":"
+                    + config.port() + " failed, next in " + waitMs + " ms: " + e.getMessage(), e);
+        }
+    }
+
+    private void checkReadTimeout(long nowNs, int messages) throws PlayerTimeoutException {
+        if (messages > 0 || lastMessageNs == Long.MIN_VALUE) {
+            lastMessageNs = nowNs;
+            return;
+        }
+        long silentNs = nowNs - lastMessageNs;
+        if (silentNs > TimeUnit.MILLISECONDS.toNanos(config.readTimeoutMs())) {
+            throw new PlayerTimeoutException("no message from Player server " + client.server() + " for "
+                    + TimeUnit.NANOSECONDS.toMillis(silentNs) + " ms (read timeout " + config.readTimeoutMs() + " ms)");
+        }
+    }
+
+    private void sendMotor(long nowNs) throws IOException {
+        if (motorIn.hasValue() && motorIn.generation() != motorGeneration) {
+            motorGeneration = motorIn.generation();
+            VelocityCommand cmd = motorIn.value();
+            if (!commandSent || cmd.vxMps != sentVxMps || cmd.omegaRadPerSec != sentOmegaRadPerSec) {
+                sendVelocity(cmd.vxMps, cmd.omegaRadPerSec, nowNs);
+                return;
+            }
+        }
+        if (commandSent && (sentAtNs == Long.MIN_VALUE
+                || nowNs - sentAtNs >= TimeUnit.MILLISECONDS.toNanos(config.keepAliveMs()))) {
+            sendVelocity(sentVxMps, sentOmegaRadPerSec, nowNs);
+        }
+    }
+
+    private void sendVelocity(double vxMps, double omegaRadPerSec, long nowNs) throws IOException {
+        client.sendVelocity(config.position2dIndex(), vxMps, 0.0, omegaRadPerSec, 1);
+        commandSent = true;
+        sentVxMps = vxMps;
+        sentOmegaRadPerSec = omegaRadPerSec;
+        sentAtNs = nowNs;
+    }
+
+    private void publish() {
+        if (client.odometryUpdates() != seenOdometry) {
+            seenOdometry = client.odometryUpdates();
+            odometryOut.value().copyFrom(client.odometry());
+            odometryOut.publish();
+        }
+        boolean ranger = config.scanSource().interf() == Interfaces.RANGER;
+        long scans = ranger ? client.rangerUpdates() : client.laserUpdates();
+        if (scans != seenScans) {
+            seenScans = scans;
+            laserOut.value().copyFrom(ranger ? client.rangerScan() : client.laserScan());
+            laserOut.publish();
+        }
+    }
+
+    private void drop(long nowNs) {
+        counters.connectionLost();
+        try {
+            client.close();
+        } catch (IOException ignored) {
+            // the connection is already unusable; closing is best effort
+        }
+        client = null;
+        nextAttemptNs = nowNs + TimeUnit.MILLISECONDS.toNanos(backoffMs);
+    }
+
+    /**
+     * Stops the robot and leaves: sends a zero velocity command first, then unsubscribes from
+     * the scan source and position2d, then closes the connection.
+     *
+     * @throws IOException the first failure, after every step was attempted
+     */
+    @Override
+    public void terminate() throws IOException {
+        if (client == null) {
+            return;
+        }
+        IOException first = null;
+        try {
+            client.sendVelocity(config.position2dIndex(), 0.0, 0.0, 0.0, 1);
+        } catch (IOException e) {
+            first = e;
+        }
+        if (first == null) {
+            try {
+                client.unsubscribe(config.scanSource());
+                client.unsubscribe(position2d);
+            } catch (IOException e) {
+                first = e;
+            }
+        }
+        try {
+            client.close();
+        } catch (IOException e) {
+            first = first == null ? e : first;
+        }
+        client = null;
+        if (first != null) {
+            throw first;
+        }
+    }
+
+    /** @return a snapshot of the counters of every connection this task made */
+    public PlayerStats stats() {
+        return counters.snapshot();
+    }
+
+    /** @return the version the server announced ("" before the first connection) */
+    public String serverVersion() {
+        return serverVersion;
+    }
+
+    /** @return the configuration */
+    public PlayerConfig config() {
+        return config;
+    }
+}

@@ -1,0 +1,56 @@
+package io.rtaware.sim.scenario;
+
+import io.rtaware.robot.geometry.Point2d;
+import io.rtaware.robot.geometry.Pose2d;
+import io.rtaware.sim.map.OccupancyMap;
+import java.util.List;
+import java.util.Objects;
+import java.util.Optional;
+
+/**
+ * One run's course: where the robot starts, the waypoints it must reach in order (the last
+ * one is the finish), how close counts as reached and how long it may take. Poses are in the
+ * frame the robot server reports. Immutable and thread-safe.
+ *
+ * @param name the scenario's name (file name without extension, or the built-in name)
+ * @param map the world map; empty when the robot is an external Player server
+ * @param start the start pose
+ * @param waypoints the waypoints in order, at least one; the last is the finish
+ * @param goalToleranceM distance in metres within which a waypoint counts as reached
+ * @param timeLimitS the time limit in seconds
+ */
+public record Scenario(String name, Optional<OccupancyMap> map, Pose2d start, List<Point2d> waypoints,
+                       double goalToleranceM, double timeLimitS) {
+
+    /**
+     * @throws IllegalArgumentException naming the field and value if anything is out of range
+     */
+    public Scenario {
+        Objects.requireNonNull(name, "name");
+        Objects.requireNonNull(map, "map");
+        Objects.requireNonNull(start, "start");
+        if (!Double.isFinite(start.xM()) || !Double.isFinite(start.yM()) || !Double.isFinite(start.yawRad())) {
+            throw new IllegalArgumentException("start must be finite, got " + start);
+        }
+        waypoints = List.copyOf(waypoints);
+        if (waypoints.isEmpty()) {
+            throw new IllegalArgumentException("waypoints must not be empty, got []");
+        }
+        for (Point2d p : waypoints) {
+            if (!Double.isFinite(p.xM()) || !Double.isFinite(p.yM())) {
+                throw new IllegalArgumentException("waypoints must be finite, got " + p);
+            }
+        }
+        if (!(goalToleranceM > 0) || Double.isInfinite(goalToleranceM)) {
+            throw new IllegalArgumentException("goal_tolerance_m must be positive, got " + goalToleranceM);
+        }
+        if (!(timeLimitS > 0) || Double.isInfinite(timeLimitS)) {
+            throw new IllegalArgumentException("time_limit_s must be positive, got " + timeLimitS);
+        }
+    }
+
+    /** @return the last waypoint */
+    public Point2d finish() {
+        return waypoints.get(waypoints.size() - 1);
+    }
+}

@@ -1,0 +1,180 @@
+package io.rtaware.sim.scenario;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.dataformat.yaml.YAMLFactory;
+import io.rtaware.robot.geometry.Point2d;
+import io.rtaware.robot.geometry.Pose2d;
+import io.rtaware.sim.map.MapException;
+import io.rtaware.sim.map.MapLoader;
+import io.rtaware.sim.map.OccupancyMap;
+import java.io.FileNotFoundException;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+
+/**
+ * Loads scenarios: {@link #load(String)} takes a built-in name ({@value #PAPER_ROOM}) or a
+ * path to a YAML file with the fields {@code map} (optional, a map_server YAML relative to the
+ * scenario file), {@code start: {x, y, yaw}}, {@code waypoints: [{x, y}, ...]},
+ * {@code goal_tolerance_m} and {@code time_limit_s}. Unknown fields are ignored. Failures are a
+ * {@link ScenarioException} with a one-line message naming the file, the field and the value.
+ * Stateless and thread-safe.
+ */
+public final class ScenarioLoader {
+
+    /** The built-in scenario: the paper's experiment room. */
+    public static final String PAPER_ROOM = "paper-room";
+
+    private static final String RESOURCE_DIR = "/io/rtaware/sim/scenario/";
+    private static final ObjectMapper YAML = new ObjectMapper(new YAMLFactory());
+
+    private ScenarioLoader() {
+    }
+
+    /**
+     * @param nameOrPath {@value #PAPER_ROOM} or a path to a scenario YAML file
+     * @return the scenario, with its map loaded
+     * @throws ScenarioException if the file is missing or malformed
+     */
+    public static Scenario load(String nameOrPath) {
+        if (PAPER_ROOM.equals(nameOrPath)) {
+            return builtIn(PAPER_ROOM);
+        }
+        return load(Path.of(nameOrPath));
+    }
+
+    /**
+     * @param file a scenario YAML file
+     * @return the scenario, with its map loaded
+     * @throws ScenarioException if the file is missing or malformed
+     */
+    public static Scenario load(Path file) {
+        String name = file.getFileName().toString().replaceFirst("\\.(ya?ml)$", "");
+        Path dir = file.toAbsolutePath().getParent();
+        try (InputStream in = Files.newInputStream(file)) {
+            return parse(file.toString(), name, in, map -> MapLoader.load(dir.resolve(map)));
+        } catch (NoSuchFileException e) {
+            throw new ScenarioException(file + ": file not found");
+        } catch (IOException e) {
+            throw new ScenarioException(file + ": cannot read: " + e.getMessage(), e);
+        }
+    }
+
+    /**
+     * @param name the built-in scenario's name
+     * @return the built-in scenario
+     * @throws ScenarioException if there is no built-in scenario of that name
+     */
+    public static Scenario builtIn(String name) {
+        if (!PAPER_ROOM.equals(name)) {
+            throw new ScenarioException("built-in scenarios: " + PAPER_ROOM + "; got '" + name + "'");
+        }
+        String resource = RESOURCE_DIR + name + ".scenario.yaml";
+        try (InputStream in = open(resource)) {
+            return parse("classpath:" + resource, name, in, ScenarioLoader::loadMapResource);
+        } catch (IOException e) {
+            throw new ScenarioException("classpath:" + resource + ": cannot read: " + e.getMessage(), e);
+        }
+    }
+
+    private static OccupancyMap loadMapResource(String mapName) {
+        String resource = RESOURCE_DIR + mapName;
+        try (InputStream in = open(resource)) {
+            return MapLoader.load("classpath:" + resource, in, image -> open(RESOURCE_DIR + image));
+        } catch (IOException e) {
+            throw new MapException("classpath:" + resource + ": cannot read: " + e.getMessage(), e);
+        }
+    }
+
+    private static InputStream open(String resource) throws IOException {
+        InputStream in = ScenarioLoader.class.getResourceAsStream(resource);
+        if (in == null) {
+            throw new FileNotFoundException("missing resource " + resource);
+        }
+        return in;
+    }
+
+    @FunctionalInterface
+    private interface MapResolver {
+        OccupancyMap load(String mapField);
+    }
+
+    private static Scenario parse(String source, String name, InputStream in, MapResolver maps) {
+        JsonNode root;
+        try {
+            root = YAML.readTree(in);
+        } catch (IOException e) {
+            String msg = e.getMessage() == null ? "" : e.getMessage().replaceAll("\\s*\\R\\s*", " ").trim();
+            throw new ScenarioException(source + ": not valid YAML: " + msg, e);
+        }
+        if (root == null || !root.isObject()) {
+            throw new ScenarioException(source + ": expected a YAML mapping, got " + root);
+        }
+        Optional<OccupancyMap> map = Optional.empty();
+        JsonNode mapNode = root.get("map");
+        if (mapNode != null && !mapNode.isNull()) {
+            if (!mapNode.isTextual() || mapNode.asText().isBlank()) {
+                throw new ScenarioException(source + ": field 'map' must be a file name, got " + mapNode);
+            }
+            try {
+                map = Optional.of(maps.load(mapNode.asText()));
+            } catch (MapException e) {
+                throw new ScenarioException(source + ": field 'map' (" + mapNode.asText() + "): " + e.getMessage(), e);
+            }
+        }
+        JsonNode startNode = required(source, root, "start");
+        Pose2d start = new Pose2d(number(source, startNode, "start.x", "x"),
+                number(source, startNode, "start.y", "y"),
+                startNode.has("yaw") ? number(source, startNode, "start.yaw", "yaw") : 0.0);
+        JsonNode wpNode = required(source, root, "waypoints");
+        if (!wpNode.isArray() || wpNode.isEmpty()) {
+            throw new ScenarioException(source + ": field 'waypoints' must be a non-empty list of {x, y}, got " + wpNode);
+        }
+        List<Point2d> waypoints = new ArrayList<>();
+        for (int i = 0; i < wpNode.size(); i++) {
+            JsonNode wp = wpNode.get(i);
+            String field = "waypoints[" + i + "]";
+            if (!wp.isObject()) {
+                throw new ScenarioException(source + ": field '" + field + "' must be {x, y}, got " + wp);
+            }
+            waypoints.add(new Point2d(number(source, wp, field + ".x", "x"), number(source, wp, field + ".y", "y")));
+        }
+        double tolerance = number(source, root, "goal_tolerance_m", "goal_tolerance_m");
+        if (!(tolerance > 0)) {
+            throw new ScenarioException(source + ": field 'goal_tolerance_m' must be positive, got " + tolerance);
+        }
+        double limit = number(source, root, "time_limit_s", "time_limit_s");
+        if (!(limit > 0)) {
+            throw new ScenarioException(source + ": field 'time_limit_s' must be positive, got " + limit);
+        }
+        return new Scenario(name, map, start, waypoints, tolerance, limit);
+    }
+
+    private static JsonNode required(String source, JsonNode parent, String field) {
+        JsonNode n = parent.get(field);
+        if (n == null || n.isNull()) {
+            throw new ScenarioException(source + ": field '" + field + "' is missing");
+        }
+        return n;
+    }
+
+    private static double number(String source, JsonNode parent, String path, String field) {
+        if (!parent.isObject()) {
+            throw new ScenarioException(source + ": field '" + path + "' needs a mapping, got " + parent);
+        }
+        JsonNode n = parent.get(field);
+        if (n == null || n.isNull()) {
+            throw new ScenarioException(source + ": field '" + path + "' is missing");
+        }
+        if (!n.isNumber() || !Double.isFinite(n.asDouble())) {
+            throw new ScenarioException(source + ": field '" + path + "' must be a finite number, got " + n);
+        }
+        return n.asDouble();
+    }
+}

@@ -1,0 +1,74 @@
+package io.rtaware.sim.server;
+
+import io.rtaware.core.time.Clock;
+import io.rtaware.core.time.ScaledClock;
+import io.rtaware.sim.map.OccupancyMap;
+import io.rtaware.sim.scenario.Scenario;
+import io.rtaware.sim.scenario.ScenarioLoader;
+import io.rtaware.sim.world.LaserConfig;
+import io.rtaware.sim.world.RobotConfig;
+import io.rtaware.sim.world.World;
+import java.io.IOException;
+import java.io.PrintStream;
+
+/**
+ * One-call wiring for the command line: {@code rtaware sim} ({@link #serveUntilInterrupted})
+ * and an in-process robot for {@code rtaware run} ({@link #start(Scenario, Clock, ServerConfig,
+ * long)}). Uses the Koala robot and the URG-04LX laser defaults. Stateless and thread-safe.
+ */
+public final class SimCommandSupport {
+
+    private SimCommandSupport() {
+    }
+
+    /**
+     * Builds the world of a scenario and serves it, stepping on {@code clock}.
+     *
+     * @param scenario the scenario; it must have a map
+     * @param clock world time (share it with the controller in the same process)
+     * @param config address, port and limits
+     * @param seed seed of all sensor noise
+     * @return the running server; close it when done
+     * @throws IOException if the port cannot be bound
+     * @throws IllegalArgumentException if the scenario has no map
+     */
+    public static PlayerSimServer start(Scenario scenario, Clock clock, ServerConfig config, long seed)
+            throws IOException {
+        OccupancyMap map = scenario.map().orElseThrow(() -> new IllegalArgumentException(
+                "scenario '" + scenario.name() + "' has no map: the simulator needs one"));
+        World world = new World(map, scenario.start(), RobotConfig.KOALA, LaserConfig.URG_04LX, seed);
+        return PlayerSimServer.start(world, clock, config);
+    }
+
+    /**
+     * {@code rtaware sim --scenario S --port P --time-scale K --seed N --bind ADDR}: serves until
+     * the thread is interrupted (or the JVM exits), then closes the server.
+     *
+     * @param scenario {@code paper-room} or a scenario file
+     * @param port TCP port (0 = any free port; the bound port is printed)
+     * @param timeScale world seconds per wall second, positive
+     * @param seed seed of all sensor noise
+     * @param bindAddress listen address (use {@link ServerConfig#LOOPBACK} unless told otherwise)
+     * @param out where the one-line start message goes
+     * @throws IOException if the port cannot be bound
+     * @throws io.rtaware.sim.scenario.ScenarioException if the scenario cannot be loaded
+     */
+    public static void serveUntilInterrupted(String scenario, int port, double timeScale, long seed,
+                                             String bindAddress, PrintStream out) throws IOException {
+        Scenario s = ScenarioLoader.load(scenario);
+        ScaledClock clock = new ScaledClock(timeScale);
+        try (PlayerSimServer server = start(s, clock, ServerConfig.defaults(port).withBindAddress(bindAddress), seed)) {
+            out.println("rtaware-sim: scenario " + s.name() + " served on " + bindAddress + ":" + server.port()
+                    + " (time scale " + timeScale + ", seed " + seed + "); Ctrl-C to stop");
+            out.flush();
+            Object forever = new Object();
+            synchronized (forever) {
+                while (true) {
+                    forever.wait();
+                }
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}
