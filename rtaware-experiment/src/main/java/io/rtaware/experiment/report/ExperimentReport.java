@@ -61,6 +61,9 @@ public final class ExperimentReport {
         if (rows.isEmpty()) {
             throw new ExperimentInputException(csv + " has no runs yet: nothing to report");
         }
+        // No disk cache: its clean-up registers a shutdown hook, which fails when the report is
+        // written after Ctrl-C, during shutdown.
+        javax.imageio.ImageIO.setUseCache(false);
         ExperimentProfile profile = ExperimentProfile.read(dir).orElse(ExperimentProfile.fromResults(rows));
         ExperimentSummary summary = ExperimentSummary.of(rows, profile);
         ObjectMapper mapper = ReportDocument.mapper();

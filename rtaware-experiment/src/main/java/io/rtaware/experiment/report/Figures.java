@@ -165,8 +165,7 @@ public final class Figures {
         int height = (int) Math.round(HEIGHT + pxPerMx * frame.heightM() - plotHeightPx);
         height = Math.max(300, Math.min(2000, height));
         chart = trajectoryChart(summary, paths, background, frame, height);
-        VectorGraphicsEncoder.saveVectorGraphic(chart, dir.resolve(TRAJECTORIES + ".svg").toString(),
-                VectorGraphicsEncoder.VectorGraphicsFormat.SVG);
+        saveSvg(chart, dir, TRAJECTORIES);
         BufferedImage out = new BufferedImage(WIDTH, height, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = out.createGraphics();
         g.setColor(Color.WHITE);
@@ -268,8 +267,21 @@ public final class Figures {
 
     private static void save(Chart<?, ?> chart, Path dir, String name) throws IOException {
         BitmapEncoder.saveBitmap(chart, dir.resolve(name + ".png").toString(), BitmapEncoder.BitmapFormat.PNG);
-        VectorGraphicsEncoder.saveVectorGraphic(chart, dir.resolve(name + ".svg").toString(),
-                VectorGraphicsEncoder.VectorGraphicsFormat.SVG);
+        saveSvg(chart, dir, name);
+    }
+
+    /**
+     * The SVG is a courtesy copy: when it cannot be written (as while the JVM shuts down after
+     * Ctrl-C, when the vector library cannot start) the PNG stands alone and a stale SVG is removed.
+     */
+    private static void saveSvg(Chart<?, ?> chart, Path dir, String name) throws IOException {
+        Path svg = dir.resolve(name + ".svg");
+        try {
+            VectorGraphicsEncoder.saveVectorGraphic(chart, svg.toString(), VectorGraphicsEncoder.VectorGraphicsFormat.SVG);
+        } catch (IOException | RuntimeException | LinkageError e) {
+            java.nio.file.Files.deleteIfExists(svg);
+            System.err.println("rtaware: " + svg.getFileName() + " not written (" + e + "); the PNG has the same figure");
+        }
     }
 
     private static void noData(String title, Path dir, String name) throws IOException {
