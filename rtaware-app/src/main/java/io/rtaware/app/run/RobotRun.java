@@ -14,6 +14,8 @@ import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.ScaledClock;
 import io.rtaware.core.time.SystemClock;
+import io.rtaware.core.trace.TraceRecorder;
+import io.rtaware.app.rt.RealtimeThreads;
 import io.rtaware.nav.NavConfig;
 import io.rtaware.nav.NavController;
 import io.rtaware.player.client.PlayerClient;
@@ -102,6 +104,8 @@ public final class RobotRun {
             server = SimCommandSupport.start(scenario, clock, ServerConfig.defaults(0), options.seed());
             host = ServerConfig.LOOPBACK;
             port = server.port();
+        } else {
+            checkReachable(host, port);
         }
         try {
             return runAgainst(scenario, clock, host, port, server);
@@ -109,6 +113,18 @@ public final class RobotRun {
             if (server != null) {
                 server.close();
             }
+        }
+    }
+
+    /**
+     * The data task reconnects with back-off once running; a server that cannot be reached at the
+     * start is the user's mistake (a wrong address or a server not started) and ends the command.
+     */
+    private static void checkReachable(String host, int port) {
+        try (PlayerClient probe = PlayerClient.connect(host, port, PlayerClientOptions.defaults(), new PlayerCounters())) {
+            probe.serverVersion();
+        } catch (IOException e) {
+            throw new UserError(e.getMessage());
         }
     }
 
@@ -131,6 +147,9 @@ public final class RobotRun {
                 .task(new TaskSpec(PLAYER_TASK, Schedule.continuous(), ErrorPolicy.CONTINUE, player))
                 .listener(new MissCounter(missEvents));
         nav.taskSpecs().forEach(builder::task);
+        if (options.realtime()) {
+            builder.threadSetup(RealtimeThreads.configure(RealtimeThreads.DEFAULT_TOP_PRIORITY, Map.of(), err));
+        }
         Monitor monitor;
         try {
             monitor = builder.build();
@@ -141,6 +160,7 @@ public final class RobotRun {
         if (console != null) {
             monitor.addListener(console);
         }
+        TraceRecorder trace = options.traceFile() == null ? null : TraceRecorder.attach(monitor, options.traceCapacity());
 
         AtomicReference<String> outcome = new AtomicReference<>();
         AtomicReference<String> reason = new AtomicReference<>();
@@ -164,6 +184,15 @@ public final class RobotRun {
                     clock.nanos() - startNs[0], collisions, server != null);
             artifacts.write(report, run, referee, nav.finalMap().orElse(null),
                     scenario.map().orElse(null));
+            if (trace != null) {
+                try {
+                    trace.write(options.traceFile());
+                    out.println("trace written to " + options.traceFile() + " (" + trace.recorded() + " events, "
+                            + trace.dropped() + " dropped; open it in https://ui.perfetto.dev)");
+                } catch (IOException e) {
+                    err.println("rtaware: could not write " + options.traceFile() + ": " + e.getMessage());
+                }
+            }
         });
         Thread hook = monitor.installShutdownHook();
 

@@ -59,6 +59,18 @@ public final class RunCommand implements Callable<Integer> {
             description = "Robot model name for ground truth through simulation:0 (default: ${DEFAULT-VALUE}).")
     String model;
 
+    @Option(names = "--trace", paramLabel = "FILE",
+            description = "Write a Chrome trace event file of the run (open it in https://ui.perfetto.dev).")
+    Path trace;
+
+    @Option(names = "--trace-capacity", paramLabel = "N", defaultValue = "1048576",
+            description = "Events kept by --trace; older ones are dropped and counted (default: ${DEFAULT-VALUE}).")
+    int traceCapacity;
+
+    @Option(names = "--realtime",
+            description = "SCHED_FIFO task threads in rate-monotonic order and 1 ns timer slack (Linux, root or CAP_SYS_NICE); one line and normal threads otherwise.")
+    boolean realtime;
+
     @Override
     public Integer call() throws IOException {
         return new RobotRun(options(), System.out, System.err).execute();
@@ -95,7 +107,10 @@ public final class RunCommand implements Callable<Integer> {
         }
         Path dir = out != null ? out
                 : Path.of("runs", LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
+        if (traceCapacity < 1) {
+            throw new UserError("--trace-capacity must be at least 1, got " + traceCapacity);
+        }
         return new RunOptions(scenario, taskPeriods, timeScale, host, port, seed, dir, quiet, stuckAfterS,
-                gridResolutionM, model);
+                gridResolutionM, model, trace, traceCapacity, realtime);
     }
 }
