@@ -160,7 +160,7 @@ public final class RobotRun {
         if (console != null) {
             monitor.addListener(console);
         }
-        TraceRecorder trace = options.traceFile() == null ? null : TraceRecorder.attach(monitor, options.traceCapacity());
+        TraceRecorder trace = options.trace().attach(monitor);
 
         AtomicReference<String> outcome = new AtomicReference<>();
         AtomicReference<String> reason = new AtomicReference<>();
@@ -184,15 +184,7 @@ public final class RobotRun {
                     clock.nanos() - startNs[0], collisions, server != null);
             artifacts.write(report, run, referee, nav.finalMap().orElse(null),
                     scenario.map().orElse(null));
-            if (trace != null) {
-                try {
-                    trace.write(options.traceFile());
-                    out.println("trace written to " + options.traceFile() + " (" + trace.recorded() + " events, "
-                            + trace.dropped() + " dropped; open it in https://ui.perfetto.dev)");
-                } catch (IOException e) {
-                    err.println("rtaware: could not write " + options.traceFile() + ": " + e.getMessage());
-                }
-            }
+            options.trace().write(trace, out, err);
         });
         Thread hook = monitor.installShutdownHook();
 

@@ -1,12 +1,14 @@
 package io.rtaware.app.run;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.cli.TraceOptions;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -59,13 +61,8 @@ public final class RunCommand implements Callable<Integer> {
             description = "Robot model name for ground truth through simulation:0 (default: ${DEFAULT-VALUE}).")
     String model;
 
-    @Option(names = "--trace", paramLabel = "FILE",
-            description = "Write a Chrome trace event file of the run (open it in https://ui.perfetto.dev).")
-    Path trace;
-
-    @Option(names = "--trace-capacity", paramLabel = "N", defaultValue = "1048576",
-            description = "Events kept by --trace; older ones are dropped and counted (default: ${DEFAULT-VALUE}).")
-    int traceCapacity;
+    @Mixin
+    TraceOptions trace;
 
     @Option(names = "--realtime",
             description = "SCHED_FIFO task threads in rate-monotonic order and 1 ns timer slack (Linux, root or CAP_SYS_NICE); one line and normal threads otherwise.")
@@ -107,10 +104,7 @@ public final class RunCommand implements Callable<Integer> {
         }
         Path dir = out != null ? out
                 : Path.of("runs", LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
-        if (traceCapacity < 1) {
-            throw new UserError("--trace-capacity must be at least 1, got " + traceCapacity);
-        }
         return new RunOptions(scenario, taskPeriods, timeScale, host, port, seed, dir, quiet, stuckAfterS,
-                gridResolutionM, model, trace, traceCapacity, realtime);
+                gridResolutionM, model, trace, realtime);
     }
 }
