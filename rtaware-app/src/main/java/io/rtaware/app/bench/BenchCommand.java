@@ -1,14 +1,22 @@
 package io.rtaware.app.bench;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.bench.compare.CompareReport;
+import io.rtaware.app.bench.compare.CompareRun;
+import io.rtaware.app.bench.compare.Goal;
+import io.rtaware.app.bench.compare.RunResult;
 import io.rtaware.app.cli.DurationConverter;
+import io.rtaware.app.cli.TraceOptions;
+import io.rtaware.app.report.ReportSections;
 import io.rtaware.core.monitor.ConfigurationException;
 import io.rtaware.core.monitor.ConsoleReporter;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
 import io.rtaware.core.report.SummaryTable;
-import io.rtaware.core.task.Schedule;
+import io.rtaware.app.rt.RealtimeThreads;
+import io.rtaware.core.monitor.AdaptivePolicy;
+import io.rtaware.core.trace.TraceRecorder;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.Durations;
 import io.rtaware.core.time.ScaledClock;
@@ -17,9 +25,13 @@ import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -32,8 +44,22 @@ import picocli.CommandLine.Option;
                 "Work is real CPU work (a busy loop calibrated at start-up), not sleep.",
                 "Examples:",
                 "  rtaware bench --tasks 4 --period 10ms --work 2ms --duration 10s --json r.json",
-                "  rtaware bench --spec \"a:10ms:2ms,b:50ms:20ms\" --chain"})
+                "  rtaware bench --spec \"a:10ms:2ms,b:50ms:20ms\" --chain --trace trace.json",
+                "  rtaware bench --spec \"a:10ms:2ms,b:2ms..50ms:1ms\" --chain --adaptive",
+                "  rtaware bench --tasks 2 --period 1ms --work 100us --realtime",
+                "  rtaware bench --compare --tasks 8 --period 10ms --work 1ms --duration 30s --json c.json",
+                "",
+                "--compare runs the same task set on rtaware, on ScheduledThreadPoolExecutor (one",
+                "thread per task) and on a bare parkNanos loop (the floor for a Java thread),",
+                "interleaved in segments so all three see the same machine noise, and prints",
+                "lateness, misses, bursts, CPU and bytes allocated per release side by side",
+                "(JSON schema rtaware.bench-compare/1 with --json)."})
 public final class BenchCommand implements Callable<Integer> {
+
+    /** Exit status when the run ended before its duration (a task hit a fatal VM error). */
+    public static final int EXIT_ENDED_EARLY = 1;
+    /** Exit status of {@code --fail-on-alloc} when the framework allocated in steady state. */
+    public static final int EXIT_ALLOCATED = 4;
 
     @Option(names = "--tasks", description = "Number of identical tasks (default: ${DEFAULT-VALUE}).", defaultValue = "4")
     int tasks;
@@ -65,6 +91,46 @@ public final class BenchCommand implements Callable<Integer> {
     @Option(names = "--quiet", description = "Do not print live miss reports.")
     boolean quiet;
 
+    @Option(names = "--fail-on-alloc", description = "Exit with status 4 if the framework's threads (tasks and "
+            + "watchdog) allocated any byte in the steady state (the last two thirds of the run).")
+    boolean failOnAlloc;
+
+    @Option(names = "--compare", description = "Run the task set on rtaware, ScheduledThreadPoolExecutor and a bare "
+            + "parkNanos loop, interleaved, and compare them; --duration is the measured time per executor.")
+    boolean compare;
+
+    @Option(names = "--segment", converter = DurationConverter.class, defaultValue = "2s",
+            description = "With --compare: length of one executor's turn (default: ${DEFAULT-VALUE}).")
+    long segmentNs;
+
+    @Option(names = "--load", paramLabel = "N", defaultValue = "0",
+            description = "Start N busy threads competing for the cores (default: ${DEFAULT-VALUE}).")
+    int loadThreads;
+
+    @Option(names = "--gc-pressure", paramLabel = "MBps", defaultValue = "0",
+            description = "Allocate short- and medium-lived garbage at MBps megabytes per second on a "
+                    + "helper thread (default: ${DEFAULT-VALUE}).")
+    double gcPressureMbps;
+
+    @Mixin
+    TraceOptions trace;
+
+    @Option(names = "--adaptive",
+            description = "Move the period of tasks declared with a range (a:5ms..50ms:1ms) from run-time evidence.")
+    boolean adaptive;
+
+    @Option(names = "--realtime",
+            description = "SCHED_FIFO task threads in rate-monotonic order and 1 ns timer slack (Linux, root or CAP_SYS_NICE).")
+    boolean realtime;
+
+    @Option(names = "--rt-priority", paramLabel = "P", defaultValue = "80",
+            description = "SCHED_FIFO priority of the shortest-period task with --realtime (default: ${DEFAULT-VALUE}).")
+    int rtPriority;
+
+    @Option(names = "--affinity", paramLabel = "TASK=CPU,...", split = ",",
+            description = "With --realtime, pin task threads to CPUs, e.g. a=1,b=0.")
+    Map<String, Integer> affinity = new LinkedHashMap<>();
+
     @Override
     public Integer call() throws IOException, InterruptedException {
         List<BenchSpec> specs = taskSet();
@@ -74,14 +140,62 @@ public final class BenchCommand implements Callable<Integer> {
         if (!(timeScale > 0) || Double.isInfinite(timeScale)) {
             throw new UserError("--time-scale must be a positive number, got " + timeScale);
         }
-        PrintStream out = System.out;
+        if (loadThreads < 0) {
+            throw new UserError("--load must be 0 or more, got " + loadThreads);
+        }
+        if (!(gcPressureMbps >= 0) || Double.isInfinite(gcPressureMbps)) {
+            throw new UserError("--gc-pressure must be 0 or more MB/s, got " + gcPressureMbps);
+        }
+        if (compare && (spec != null || chain || timeScale != 1.0)) {
+            throw new UserError("--compare takes --tasks, --period and --work (not --spec, --chain or --time-scale)");
+        }
+        if (compare && segmentNs < 2 * specs.stream().mapToLong(BenchSpec::periodNs).max().orElse(0)) {
+            throw new UserError("--segment must be at least two periods, got " + Durations.format(segmentNs));
+        }
         BusyWork work = BusyWork.calibrate();
+        try (CpuLoad load = CpuLoad.start(loadThreads); GarbageLoad garbage = GarbageLoad.start(gcPressureMbps)) {
+            return compare ? compare(specs, work) : bench(specs, work);
+        }
+    }
+
+    private int compare(List<BenchSpec> specs, BusyWork work) throws IOException, InterruptedException {
+        PrintStream out = System.out;
+        CompareRun run = new CompareRun(specs, work, durationNs, segmentNs, System.err);
+        List<RunResult> runs = run.run();
+        CompareReport report = new CompareReport(CompareReport.SCHEMA, specs.size(), specs.get(0).periodNs() / 1e6,
+                specs.get(0).workNs() / 1e6, run.measuredNs() / 1e9, segmentNs / 1e9, loadThreads, gcPressureMbps,
+                System.getProperty("java.vm.version"), CompareRun.collectors(), runs, Goal.check(runs));
+        out.print(report.table());
+        if (json != null) {
+            report.write(json);
+            out.println("comparison written to " + json);
+        }
+        return 0;
+    }
+
+    private int bench(List<BenchSpec> specs, BusyWork work) throws InterruptedException {
+        PrintStream out = System.out;
         Clock clock = timeScale == 1.0 ? new SystemClock() : new ScaledClock(timeScale);
 
+        if (rtPriority < 2 || rtPriority > 99) {
+            throw new UserError("--rt-priority must be 2..99, got " + rtPriority);
+        }
+        for (String task : affinity.keySet()) {
+            if (specs.stream().noneMatch(s -> s.name().equals(task))) {
+                throw new UserError("--affinity names task '" + task + "' but there is none; tasks: "
+                        + String.join(", ", specs.stream().map(BenchSpec::name).toList()));
+            }
+        }
         Monitor.Builder builder = Monitor.builder(clock);
+        if (adaptive) {
+            builder.adaptivePeriods(AdaptivePolicy.defaults());
+        }
+        if (realtime) {
+            builder.threadSetup(RealtimeThreads.configure(rtPriority, affinity, System.err));
+        }
         String previous = null;
         for (BenchSpec s : specs) {
-            builder.task(s.name(), Schedule.periodic(s.periodNs()),
+            builder.task(s.name(), s.schedule(),
                     new BenchTask(s.name(), s.workNs(), chain ? previous : null, work));
             previous = s.name();
         }
@@ -90,31 +204,69 @@ public final class BenchCommand implements Callable<Integer> {
         if (console != null) {
             monitor.addListener(console);
         }
+        TraceRecorder recorder = trace.attach(monitor);
         out.printf("rtaware bench: %d task(s)%s for %s of world time (time scale x%s)%n", specs.size(),
                 chain ? " in a chain" : "", Durations.format(durationNs), timeScale);
         Thread hook = monitor.installShutdownHook();
-        monitor.onTermination(report -> finish(report, console, out));
+        monitor.onTermination(report -> finish(monitor, report, console, recorder, out));
         monitor.start();
         long wallNs = clock.toWallNanos(durationNs);
-        monitor.awaitTermination(java.time.Duration.ofNanos(wallNs));
+        // Steady state: the last two thirds of the run (the first third warms up the JIT).
+        long warmUpNs = wallNs / 3;
+        boolean endedEarly = monitor.awaitTermination(java.time.Duration.ofNanos(warmUpNs));
+        ThreadAllocation allocation = endedEarly ? null : ThreadAllocation.ofFrameworkThreads();
+        long releasesBefore = totalReleases(monitor);
+        endedEarly |= monitor.awaitTermination(java.time.Duration.ofNanos(wallNs - warmUpNs));
+        long allocatedBytes = endedEarly ? -1 : allocation.allocatedSince();
+        long releases = totalReleases(monitor) - releasesBefore;
         monitor.stop();
         try {
             Runtime.getRuntime().removeShutdownHook(hook);
         } catch (IllegalStateException shuttingDown) {
             // Already shutting down: the hook is running or has run.
         }
+        if (endedEarly) {
+            System.err.println("rtaware: the run ended before its duration (a task hit a fatal error, see above)");
+            return EXIT_ENDED_EARLY;
+        }
+        out.printf(Locale.ROOT, "steady state (last 2/3 of the run): %d bytes allocated on %d framework thread(s)"
+                        + " (tasks + watchdog) over %d releases = %.2f B/release%n", allocatedBytes,
+                allocation.threads(), releases, releases == 0 ? 0.0 : (double) allocatedBytes / releases);
+        if (failOnAlloc && allocatedBytes != 0) {
+            System.err.println("rtaware: --fail-on-alloc: the framework allocated " + allocatedBytes
+                    + " bytes in steady state");
+            return EXIT_ALLOCATED;
+        }
         return 0;
     }
 
-    private void finish(Report report, ConsoleReporter console, PrintStream out) {
+    private static long totalReleases(Monitor monitor) {
+        long sum = 0;
+        for (int i = 0; i < monitor.tasks().size(); i++) {
+            sum += monitor.counters(i).releases();
+        }
+        return sum;
+    }
+
+    private void finish(Monitor monitor, Report report, ConsoleReporter console, TraceRecorder recorder,
+                        PrintStream out) {
         if (console != null) {
             console.close();
         }
         out.println();
         out.print(SummaryTable.format(report));
+        ReportDocument doc = new ReportDocument(report);
+        out.println();
+        out.print(ReportSections.enrich(doc, Runtime.getRuntime().availableProcessors()).text());
+        String history = ReportSections.addPeriodHistory(doc, monitor);
+        if (!history.isEmpty()) {
+            out.println();
+            out.print(history);
+        }
+        trace.write(recorder, out, System.err);
         if (json != null) {
             try {
-                new ReportDocument(report).write(json);
+                doc.write(json);
                 out.println("report written to " + json);
             } catch (IOException e) {
                 System.err.println("rtaware: could not write " + json + ": " + e.getMessage());

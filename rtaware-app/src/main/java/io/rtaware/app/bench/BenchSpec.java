@@ -11,13 +11,33 @@ import java.util.Set;
  * One synthetic task of a bench set.
  *
  * @param name task name
- * @param periodNs period in world nanoseconds
+ * @param periodNs period in world nanoseconds (the initial one, if a range is given)
  * @param workNs CPU work per cycle in wall nanoseconds
+ * @param minPeriodNs shortest period with {@code --adaptive} ({@code periodNs} if fixed)
+ * @param maxPeriodNs longest period with {@code --adaptive} ({@code periodNs} if fixed)
  */
-public record BenchSpec(String name, long periodNs, long workNs) {
+public record BenchSpec(String name, long periodNs, long workNs, long minPeriodNs, long maxPeriodNs) {
 
     /**
-     * Parses {@code --spec "a:10ms:2ms,b:50ms:20ms"}.
+     * A fixed period.
+     *
+     * @param name task name
+     * @param periodNs period
+     * @param workNs work per cycle
+     */
+    public BenchSpec(String name, long periodNs, long workNs) {
+        this(name, periodNs, workNs, periodNs, periodNs);
+    }
+
+    /** @return the task's schedule: periodic, with the period range if one was given */
+    public io.rtaware.core.task.Schedule.Periodic schedule() {
+        return new io.rtaware.core.task.Schedule.Periodic(periodNs, 0, periodNs, minPeriodNs, maxPeriodNs);
+    }
+
+    /**
+     * Parses {@code --spec "a:10ms:2ms,b:50ms:20ms"}; a period may be a range
+     * {@code min..max} (e.g. {@code b:20ms..100ms:20ms}), which starts at min and moves only with
+     * {@code --adaptive}.
      *
      * @param text the spec list
      * @return the tasks, in order
@@ -34,7 +54,19 @@ public record BenchSpec(String name, long periodNs, long workNs) {
             if (!names.add(parts[0])) {
                 throw new UserError("--spec names task '" + parts[0] + "' twice");
             }
-            specs.add(of(parts[0], parse(parts[1], "period", entry), parse(parts[2], "work", entry)));
+            String[] range = parts[1].split("\\.\\.", -1);
+            if (range.length == 2) {
+                long min = parse(range[0], "period", entry);
+                long max = parse(range[1], "period", entry);
+                BenchSpec fixed = of(parts[0], min, parse(parts[2], "work", entry));
+                if (max < min) {
+                    throw new UserError("--spec entry '" + entry.trim() + "': period range " + parts[1]
+                            + " has its maximum below its minimum");
+                }
+                specs.add(new BenchSpec(fixed.name(), min, fixed.workNs(), min, max));
+            } else {
+                specs.add(of(parts[0], parse(parts[1], "period", entry), parse(parts[2], "work", entry)));
+            }
         }
         return specs;
     }

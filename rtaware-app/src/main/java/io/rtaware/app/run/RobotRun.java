@@ -14,6 +14,8 @@ import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.ScaledClock;
 import io.rtaware.core.time.SystemClock;
+import io.rtaware.core.trace.TraceRecorder;
+import io.rtaware.app.rt.RealtimeThreads;
 import io.rtaware.nav.NavConfig;
 import io.rtaware.nav.NavController;
 import io.rtaware.player.client.PlayerClient;
@@ -62,6 +64,8 @@ public final class RobotRun {
     private static final long SAMPLE_PERIOD_NS = 100_000_000L;
     private static final double STUCK_MIN_MOVE_M = 0.05;
     private static final double LOST_SERVER_AFTER_S = 5.0;
+    /** Also required, so a loaded machine that stalls the scaled world briefly is not a lost server. */
+    private static final double LOST_SERVER_AFTER_WALL_S = 3.0;
 
     private final RunOptions options;
     private final PrintStream out;
@@ -100,6 +104,8 @@ public final class RobotRun {
             server = SimCommandSupport.start(scenario, clock, ServerConfig.defaults(0), options.seed());
             host = ServerConfig.LOOPBACK;
             port = server.port();
+        } else {
+            checkReachable(host, port);
         }
         try {
             return runAgainst(scenario, clock, host, port, server);
@@ -107,6 +113,18 @@ public final class RobotRun {
             if (server != null) {
                 server.close();
             }
+        }
+    }
+
+    /**
+     * The data task reconnects with back-off once running; a server that cannot be reached at the
+     * start is the user's mistake (a wrong address or a server not started) and ends the command.
+     */
+    private static void checkReachable(String host, int port) {
+        try (PlayerClient probe = PlayerClient.connect(host, port, PlayerClientOptions.defaults(), new PlayerCounters())) {
+            probe.serverVersion();
+        } catch (IOException e) {
+            throw new UserError(e.getMessage());
         }
     }
 
@@ -122,13 +140,16 @@ public final class RobotRun {
             throws IOException {
         NavConfig navConfig = navConfig(scenario);
         NavController nav = new NavController(navConfig);
-        PlayerDataTask player = new PlayerDataTask(PlayerConfig.of(host, port));
+        PlayerDataTask player = new PlayerDataTask(PlayerConfig.of(host, port).withReconnect(true, 500, 8000));
 
         AtomicLong missEvents = new AtomicLong();
         Monitor.Builder builder = Monitor.builder(clock)
                 .task(new TaskSpec(PLAYER_TASK, Schedule.continuous(), ErrorPolicy.CONTINUE, player))
                 .listener(new MissCounter(missEvents));
         nav.taskSpecs().forEach(builder::task);
+        if (options.realtime()) {
+            builder.threadSetup(RealtimeThreads.configure(RealtimeThreads.DEFAULT_TOP_PRIORITY, Map.of(), err));
+        }
         Monitor monitor;
         try {
             monitor = builder.build();
@@ -139,6 +160,7 @@ public final class RobotRun {
         if (console != null) {
             monitor.addListener(console);
         }
+        TraceRecorder trace = options.trace().attach(monitor);
 
         AtomicReference<String> outcome = new AtomicReference<>();
         AtomicReference<String> reason = new AtomicReference<>();
@@ -162,6 +184,7 @@ public final class RobotRun {
                     clock.nanos() - startNs[0], collisions, server != null);
             artifacts.write(report, run, referee, nav.finalMap().orElse(null),
                     scenario.map().orElse(null));
+            options.trace().write(trace, out, err);
         });
         Thread hook = monitor.installShutdownHook();
 
@@ -202,8 +225,13 @@ public final class RobotRun {
         VelocityCommand motor = new VelocityCommand();
         boolean wasStalled = false;
         boolean tty = System.console() != null;
-        while (!monitor.isTerminated()) {
+        long lastOdometryGeneration = -1;
+        long lastOdometryWallNs = System.nanoTime();
+        while (true) {
             LockSupport.parkNanos(pollWallNs);
+            if (monitor.isStopping()) {
+                return; // Ctrl-C, SIGTERM or a STOP_ALL error: the termination handler records the outcome.
+            }
             double elapsedS = (clock.nanos() - startNs) / 1e9;
             monitor.read(nav.keys().course(), course);
             long odometryGeneration = monitor.read(RobotKeys.ODOMETRY, odometry);
@@ -212,6 +240,10 @@ public final class RobotRun {
                 stallEdges.incrementAndGet();
             }
             wasStalled = odometry.stall;
+            if (odometryGeneration != lastOdometryGeneration) {
+                lastOdometryGeneration = odometryGeneration;
+                lastOdometryWallNs = System.nanoTime();
+            }
             String end = null;
             String why = null;
             if (course.done) {
@@ -224,9 +256,11 @@ public final class RobotRun {
                 end = "stuck";
                 why = String.format(Locale.ROOT, "moved less than %.2f m in %.0f s while commanded to move",
                         STUCK_MIN_MOVE_M, options.stuckAfterS());
-            } else if (elapsedS > LOST_SERVER_AFTER_S && lostServer(monitor, clock, odometryGeneration)) {
+            } else if (elapsedS > LOST_SERVER_AFTER_S && lostServer(monitor, clock, odometryGeneration)
+                    && (System.nanoTime() - lastOdometryWallNs) / 1e9 > LOST_SERVER_AFTER_WALL_S) {
                 end = "error";
-                why = "no odometry from the robot server for " + LOST_SERVER_AFTER_S + " s: connection lost";
+                why = String.format(Locale.ROOT, "no odometry from the robot server for %.0f s of world time "
+                        + "(%.0f s of wall time): connection lost", LOST_SERVER_AFTER_S, LOST_SERVER_AFTER_WALL_S);
             }
             if (end != null) {
                 outcome.compareAndSet(null, end);

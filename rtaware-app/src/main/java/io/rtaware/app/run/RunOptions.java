@@ -1,5 +1,6 @@
 package io.rtaware.app.run;
 
+import io.rtaware.app.cli.TraceOptions;
 import java.nio.file.Path;
 
 /**
@@ -16,10 +17,12 @@ import java.nio.file.Path;
  * @param stuckAfterS world seconds without progress after which the robot counts as stuck
  * @param gridResolutionM occupancy grid resolution
  * @param modelName the robot's model name for {@code simulation:0} ground truth
+ * @param trace the {@code --trace} options
+ * @param realtime SCHED_FIFO task threads in rate-monotonic order, when permitted
  */
 public record RunOptions(String scenario, TaskPeriods periods, double timeScale, String playerHost, int playerPort,
                          long seed, Path outDir, boolean quiet, double stuckAfterS, double gridResolutionM,
-                         String modelName) {
+                         String modelName, TraceOptions trace, boolean realtime) {
 
     /** @return true when the robot is the built-in simulator */
     public boolean builtInSimulator() {

@@ -9,7 +9,8 @@ import java.util.concurrent.atomic.AtomicLongArray;
 import java.util.concurrent.atomic.AtomicReferenceArray;
 
 /**
- * Prints live deadline misses, stale runs, expired reads and task errors, at most one line per
+ * Prints live deadline misses, stale runs, expired reads, task errors and adaptive period
+ * changes, at most one line per
  * second per task, each line carrying the count of everything folded into it since the
  * previous line: counts are never dropped.
  *
@@ -26,7 +27,8 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
     private static final int STALE = 2;
     private static final int EXPIRED = 3;
     private static final int ERRORS = 4;
-    private static final int KINDS = 5;
+    private static final int PERIOD_CHANGES = 5;
+    private static final int KINDS = 6;
 
     private final PrintStream out;
     private final List<TaskInfo> tasks;
@@ -35,6 +37,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
     private final AtomicLongArray lastMissDetectedNs;
     private final AtomicLongArray lastMissDeadlineNs;
     private final AtomicReferenceArray<Throwable> lastError;
+    private final AtomicReferenceArray<PeriodChange> lastPeriodChange;
     private final long[] lastLineWallNs;
     private final Thread printer;
     private volatile boolean closed;
@@ -56,6 +59,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         this.lastMissDetectedNs = new AtomicLongArray(n);
         this.lastMissDeadlineNs = new AtomicLongArray(n);
         this.lastError = new AtomicReferenceArray<>(n);
+        this.lastPeriodChange = new AtomicReferenceArray<>(n);
         this.lastLineWallNs = new long[n];
         java.util.Arrays.fill(lastLineWallNs, Long.MIN_VALUE / 2);
         this.printer = new Thread(this::printLoop, "rtaware-console");
@@ -101,6 +105,12 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         lastError.set(task.index(), error);
     }
 
+    @Override
+    public void onPeriodChange(TaskInfo task, PeriodChange change, long nowNs) {
+        lastPeriodChange.set(task.index(), change);
+        pending.incrementAndGet(task.index() * KINDS + PERIOD_CHANGES);
+    }
+
     private void printLoop() {
         while (!closed) {
             printDue(false);
@@ -129,11 +139,12 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
             long stale = pending.getAndSet(i * KINDS + STALE, 0);
             long expired = pending.getAndSet(i * KINDS + EXPIRED, 0);
             long errors = pending.getAndSet(i * KINDS + ERRORS, 0);
-            if (misses + skipped + stale + expired + errors == 0) {
+            long changes = pending.getAndSet(i * KINDS + PERIOD_CHANGES, 0);
+            if (misses + skipped + stale + expired + errors + changes == 0) {
                 continue;
             }
             lastLineWallNs[i] = wallNs;
-            out.println(line(task, misses, skipped, stale, expired, errors));
+            out.println(line(task, misses, skipped, stale, expired, errors) + periodLine(i, changes));
         }
     }
 
@@ -168,6 +179,19 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
             }
         }
         return sb.toString();
+    }
+
+    private String periodLine(int i, long changes) {
+        PeriodChange c = lastPeriodChange.get(i);
+        if (changes == 0 || c == null) {
+            return "";
+        }
+        return String.format(Locale.ROOT, " period %s -> %s (%s: %d misses, %d/%d stale runs, exec max %s in the last"
+                        + " %d releases)%s", io.rtaware.core.time.Durations.format(c.fromPeriodNs()),
+                io.rtaware.core.time.Durations.format(c.toPeriodNs()), c.reason().name().toLowerCase(Locale.ROOT),
+                c.windowMisses(), c.windowStaleRuns(), c.windowRuns(),
+                io.rtaware.core.time.Durations.format(c.windowExecMaxNs()), c.windowReleases(),
+                changes > 1 ? " [" + changes + " changes since the last line]" : "");
     }
 
     /** Stops the printer thread after printing what is left. */

@@ -56,6 +56,7 @@ public final class Monitor {
     private final List<String> keyNames;
     private final List<Consumer<Report>> terminationHandlers = new CopyOnWriteArrayList<>();
     private final List<MonitorListener> listeners;
+    private final ThreadSetup threadSetup;
     private final CountDownLatch terminated = new CountDownLatch(1);
     private final Object lifecycle = new Object();
     private Phase phase = Phase.READY;
@@ -63,6 +64,8 @@ public final class Monitor {
     private long startNs;
     private long stopNs;
     private volatile Report report;
+    /** Set once every task thread has returned: their own state may then be read. */
+    private volatile boolean tasksStopped;
 
     /** An executor: how task cycles get onto threads. */
     interface Executor {
@@ -74,8 +77,9 @@ public final class Monitor {
 
     private Monitor(Clock clock, List<TaskRuntime> runtimes, List<StateVariable<?>> variables,
                     Map<String, String> producers, Map<String, List<String>> consumers,
-                    List<MonitorListener> listeners) {
+                    List<MonitorListener> listeners, ThreadSetup threadSetup) {
         this.clock = clock;
+        this.threadSetup = threadSetup;
         this.listeners = new ArrayList<>(listeners);
         this.runtimes = runtimes;
         this.variables = variables;
@@ -203,13 +207,14 @@ public final class Monitor {
     }
 
     /**
-     * Starts every task on its own platform thread, named {@code rtaware-<task>}. Periodic tasks
+     * Starts every task on its own platform thread, named {@code rtaware-<task>}, with
+     * rate-monotonic Java priorities and the builder's {@link ThreadSetup}. Periodic tasks
      * are released on an absolute grid from now.
      *
      * @throws IllegalStateException if already started
      */
     public void start() {
-        begin(new ThreadedExecutor(clock, runtimes, this::requestStopFromTask));
+        begin(new ThreadedExecutor(clock, runtimes, this::requestStopFromTask, threadSetup));
     }
 
     /**
@@ -281,6 +286,7 @@ public final class Monitor {
             if (executor != null) {
                 executor.stopAndJoin();
             }
+            tasksStopped = true;
             stopNs = clock.nanos();
             for (TaskRuntime runtime : runtimes) {
                 try {
@@ -322,6 +328,16 @@ public final class Monitor {
         return terminated.await(timeout.toNanos(), TimeUnit.NANOSECONDS);
     }
 
+    /**
+     * @return true once termination has begun (by {@link #stop()}, a shutdown hook or a STOP_ALL
+     *     error): observers should stop drawing conclusions from data that is about to stop
+     */
+    public boolean isStopping() {
+        synchronized (lifecycle) {
+            return phase == Phase.TERMINATED;
+        }
+    }
+
     /** @return true once the termination handlers have run */
     public boolean isTerminated() {
         return terminated.getCount() == 0;
@@ -340,6 +356,22 @@ public final class Monitor {
         if (interrupted) {
             Thread.currentThread().interrupt();
         }
+    }
+
+    /**
+     * The period changes of adaptive tasks, in the order each task made them.
+     *
+     * @return every task's changes, tasks in registration order; empty without adaptive periods
+     * @throws IllegalStateException before the task threads have stopped (the history is theirs);
+     *     termination handlers may call it
+     */
+    public List<PeriodChange> periodHistory() {
+        if (!tasksStopped) {
+            throw new IllegalStateException("the period history is complete only after the monitor has stopped");
+        }
+        List<PeriodChange> all = new ArrayList<>();
+        runtimes.forEach(r -> all.addAll(r.periodHistory()));
+        return all;
     }
 
     /** @return the final report, or null before termination */
@@ -378,6 +410,8 @@ public final class Monitor {
         private final List<TaskSpec> specs = new ArrayList<>();
         private final List<MonitorListener> listeners = new ArrayList<>();
         private ErrorPolicy defaultPolicy = ErrorPolicy.CONTINUE;
+        private AdaptivePolicy adaptivePolicy;
+        private ThreadSetup threadSetup;
 
         private Builder(Clock clock) {
             this.clock = Objects.requireNonNull(clock, "clock");
@@ -408,6 +442,29 @@ public final class Monitor {
          */
         public Builder task(TaskSpec spec) {
             specs.add(Objects.requireNonNull(spec, "spec"));
+            return this;
+        }
+
+        /**
+         * Enables adaptive periods: tasks whose periodic schedule declares a period range
+         * ({@link Schedule#adaptive}) have their period moved inside it by {@code policy}. Off by
+         * default, when such tasks run at their initial period.
+         *
+         * @param policy the rule, e.g. {@link AdaptivePolicy#defaults()}; null turns it off
+         * @return this builder
+         */
+        public Builder adaptivePeriods(AdaptivePolicy policy) {
+            this.adaptivePolicy = policy;
+            return this;
+        }
+
+        /**
+         * @param setup called on each task thread at its start (e.g. to set SCHED_FIFO); null for
+         *     none. The step executor does not call it.
+         * @return this builder
+         */
+        public Builder threadSetup(ThreadSetup setup) {
+            this.threadSetup = setup;
             return this;
         }
 
@@ -512,10 +569,15 @@ public final class Monitor {
                 for (InputHandle<?> in : setup.inputs) {
                     in.bind(byName.get(in.key().name()));
                 }
-                runtimes.add(new TaskRuntime(setup.spec, runtimes.size(), clock, new MonitorListener[0],
-                        setup.inputs.toArray(new InputHandle<?>[0]), setup.outputs.toArray(new OutputHandle<?>[0])));
+                TaskRuntime runtime = new TaskRuntime(setup.spec, runtimes.size(), clock, new MonitorListener[0],
+                        setup.inputs.toArray(new InputHandle<?>[0]), setup.outputs.toArray(new OutputHandle<?>[0]));
+                if (adaptivePolicy != null) {
+                    runtime.adaptive(adaptivePolicy);
+                }
+                runtimes.add(runtime);
             }
-            return new Monitor(clock, List.copyOf(runtimes), List.copyOf(variables), producers, consumersOf, listeners);
+            return new Monitor(clock, List.copyOf(runtimes), List.copyOf(variables), producers, consumersOf, listeners,
+                    threadSetup);
         }
 
         private static <T extends StateValue<T>> StateVariable<T> newVariable(Key<T> key) {
@@ -530,6 +592,12 @@ public final class Monitor {
                 } else if (p.deadlineNs() <= 0 || p.deadlineNs() > p.periodNs()) {
                     violations.add(task + " has deadline " + Durations.format(p.deadlineNs())
                             + "; it must be positive and at most the period " + Durations.format(p.periodNs()));
+                }
+                if (p.isAdaptive() && p.periodNs() > 0
+                        && (p.minPeriodNs() <= 0 || p.minPeriodNs() > p.periodNs() || p.periodNs() > p.maxPeriodNs())) {
+                    violations.add(task + " has period range " + Durations.format(p.minPeriodNs()) + ".."
+                            + Durations.format(p.maxPeriodNs()) + " and period " + Durations.format(p.periodNs())
+                            + "; it needs 0 < min <= period <= max");
                 }
                 if (p.offsetNs() < 0) {
                     violations.add(task + " has offset " + Durations.format(p.offsetNs()) + "; an offset cannot be negative");

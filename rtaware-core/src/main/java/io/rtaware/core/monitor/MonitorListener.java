@@ -97,4 +97,15 @@ public interface MonitorListener {
      */
     default void onCommit(TaskInfo producer, int keyIndex, long generation, long nowNs) {
     }
+
+    /**
+     * An adaptive task's period changed (only with adaptive periods enabled). Called on the
+     * task's thread between cycles; rare (at most once per evaluation window).
+     *
+     * @param task the task
+     * @param change the change and the evidence behind it
+     * @param nowNs world time of the decision (the end of the window's last cycle)
+     */
+    default void onPeriodChange(TaskInfo task, PeriodChange change, long nowNs) {
+    }
 }

@@ -21,13 +21,18 @@ import org.HdrHistogram.Histogram;
  *   <li>a cycle that returns after later releases came due skips to the first grid point at or
  *   after its end; every skipped release counts as a release and a miss, and is never run
  *   (no catch-up bursts);</li>
- *   <li>a cycle whose inputs had no new data is a stale run (tasks without inputs never are).</li>
+ *   <li>a cycle whose inputs had no new data is a stale run (tasks without inputs never are);</li>
+ *   <li>with an {@link AdaptivePolicy} and a period range, the period moves at the end of an
+ *   evaluation window ({@link #nextIndexAfter}); the grid is then re-anchored at the next
+ *   release n on the old grid: release {@code n + j} is at {@code t_n + j * newPeriod}.</li>
  * </ul>
  *
  * <p>Thread-safety: {@link #runCycle} and {@link #nextIndexAfter} are called by the task's own
  * thread only; {@link #checkDeadline(long)} by the watchdog, concurrently, coordinated with the
  * task thread through one atomic cycle token. Counters are safe to read at any time; the
- * histograms only after the task thread has stopped.
+ * histograms and the period history only after the task thread has stopped. The grid is one
+ * immutable object in a volatile field, replaced only between cycles by the task's thread, so
+ * the watchdog always sees a consistent grid.
  */
 final class TaskRuntime implements TaskInfo {
 
@@ -43,10 +48,33 @@ final class TaskRuntime implements TaskInfo {
     private final InputHandle<?>[] inputs;
     private final OutputHandle<?>[] outputs;
     private final boolean periodic;
-    private final long periodNs;
-    private final long deadlineNs;
     private final long offsetNs;
-    private long baseNs;
+    private long startNs;
+
+    /**
+     * The release grid: release k is at {@code baseNs + (k - baseIndex) * periodNs}.
+     *
+     * @param baseIndex the release index at {@code baseNs}
+     * @param baseNs the grid's anchor in world time
+     * @param periodNs the period
+     * @param deadlineNs the relative deadline
+     */
+    private record Grid(long baseIndex, long baseNs, long periodNs, long deadlineNs) {
+        long releaseNs(long k) {
+            return baseNs + (k - baseIndex) * periodNs;
+        }
+    }
+
+    private volatile Grid grid;
+
+    /** Adaptive periods: null unless enabled on the monitor and the schedule has a range. */
+    private AdaptivePolicy adaptive;
+    private final java.util.List<PeriodChange> periodHistory = new java.util.ArrayList<>();
+    private long windowReleases;
+    private long windowMisses;
+    private long windowRuns;
+    private long windowStale;
+    private long windowExecMaxNs;
 
     /** Odd {@code 2k+1}: cycle k is running. Even: no cycle running (claims move it to 2k+2). */
     private final AtomicLong cycleToken = new AtomicLong(0);
@@ -82,14 +110,12 @@ final class TaskRuntime implements TaskInfo {
         Schedule schedule = spec.schedule();
         if (schedule instanceof Schedule.Periodic p) {
             periodic = true;
-            periodNs = p.periodNs();
-            deadlineNs = p.deadlineNs();
             offsetNs = p.offsetNs();
+            grid = new Grid(0, 0, p.periodNs(), p.deadlineNs());
         } else {
             periodic = false;
-            periodNs = 0;
-            deadlineNs = 0;
             offsetNs = schedule instanceof Schedule.Once o ? o.offsetNs() : 0;
+            grid = new Grid(0, 0, 0, 0);
         }
     }
 
@@ -130,6 +156,16 @@ final class TaskRuntime implements TaskInfo {
     }
 
     /**
+     * Enables adaptive periods for this task if its schedule declares a range; only before the
+     * task's thread starts.
+     */
+    void adaptive(AdaptivePolicy policy) {
+        if (spec.schedule() instanceof Schedule.Periodic p && p.isAdaptive()) {
+            this.adaptive = policy;
+        }
+    }
+
+    /**
      * Sets the hook run on the task thread right after a periodic cycle is marked running (the
      * threaded executor wakes its watchdog there). Call before the task's thread starts.
      *
@@ -141,18 +177,58 @@ final class TaskRuntime implements TaskInfo {
 
     /** Fixes the grid: release k of a periodic task is at {@code startNs + offset + k * period}. */
     void begin(long startNs) {
-        baseNs = startNs + offsetNs;
+        this.startNs = startNs;
+        Grid g = grid;
+        grid = new Grid(0, startNs + offsetNs, g.periodNs(), g.deadlineNs());
         setState(TaskState.RUNNING, startNs);
     }
 
     /** @return the world time of release k (periodic), or of the single run (once/continuous) */
     long releaseTimeNs(long k) {
-        return periodic ? baseNs + k * periodNs : baseNs;
+        Grid g = grid;
+        return periodic ? g.releaseNs(k) : g.baseNs();
     }
 
     /** @return the absolute deadline of release k, or {@link Long#MAX_VALUE} if not periodic */
     long deadlineOf(long k) {
-        return periodic ? baseNs + k * periodNs + deadlineNs : Long.MAX_VALUE;
+        Grid g = grid;
+        return periodic ? g.releaseNs(k) + g.deadlineNs() : Long.MAX_VALUE;
+    }
+
+    /** @return the current period in world nanoseconds (0 unless periodic) */
+    long periodNs() {
+        return grid.periodNs();
+    }
+
+    /** @return every period change so far; call only after the task thread has stopped */
+    java.util.List<PeriodChange> periodHistory() {
+        return java.util.List.copyOf(periodHistory);
+    }
+
+    /** Index of the release the task's thread waits for next; -1 before the first. */
+    private volatile long pendingIndex = -1;
+
+    /**
+     * Publishes the release the task's thread is about to wait for, so the watchdog can sleep
+     * until the earliest deadline that could be missed instead of being woken at every cycle start.
+     *
+     * @param k the next release index
+     */
+    void pending(long k) {
+        pendingIndex = k;
+    }
+
+    /**
+     * @return the deadline of the running cycle, or else of the release the task waits for; or
+     *     {@link Long#MAX_VALUE} if not periodic or not yet waiting
+     */
+    long pendingDeadlineNs() {
+        long running = runningDeadlineNs();
+        if (running != Long.MAX_VALUE) {
+            return running;
+        }
+        long k = pendingIndex;
+        return k < 0 ? Long.MAX_VALUE : deadlineOf(k);
     }
 
     /**
@@ -243,6 +319,9 @@ final class TaskRuntime implements TaskInfo {
         }
         lastCycleEndNs = endNs;
         long exec = endNs - startNs;
+        if (exec > windowExecMaxNs) {
+            windowExecMaxNs = exec;
+        }
         record(execNs, exec);
         execSumNs += exec;
         if (exec > execMaxNs) {
@@ -297,17 +376,21 @@ final class TaskRuntime implements TaskInfo {
     /**
      * The release to run after release {@code k} whose cycle ended at {@code endNs}: the next grid
      * point, or, if the cycle overran, the first grid point at or after its end. Each grid point
-     * passed over is counted as a release, a skipped release and a miss.
+     * passed over is counted as a release, a skipped release and a miss. With adaptive periods,
+     * this is also where an evaluation window ends and the grid may be re-anchored.
      *
      * @param k the release just run
      * @param endNs when its cycle ended
      * @return the index of the next release to run
      */
     long nextIndexAfter(long k, long endNs) {
+        Grid g = grid;
+        long periodNs = g.periodNs();
         long next = k + 1;
-        long since = endNs - baseNs;
-        if (since > next * periodNs) {
-            long first = Math.floorDiv(since + periodNs - 1, periodNs); // ceil: first grid point >= end
+        long since = endNs - g.baseNs();
+        if (since > (next - g.baseIndex()) * periodNs) {
+            // ceil: first grid point >= end
+            long first = g.baseIndex() + Math.floorDiv(since + periodNs - 1, periodNs);
             long passed = first - next;
             releases.addAndGet(passed);
             skipped.addAndGet(passed);
@@ -317,7 +400,65 @@ final class TaskRuntime implements TaskInfo {
             }
             next = first;
         }
+        if (adaptive != null) {
+            adapt(next, endNs);
+        }
         return next;
+    }
+
+    /**
+     * Ends an evaluation window when it is full and applies the {@link AdaptivePolicy}; a change
+     * re-anchors the grid at release {@code next}, which stays where the old grid put it.
+     */
+    private void adapt(long next, long endNs) {
+        long rel = releases.get() - windowReleases;
+        if (rel < adaptive.windowReleases()) {
+            return;
+        }
+        long miss = misses.get() - windowMisses;
+        long ran = runs.get() - windowRuns;
+        long stale = staleRuns.get() - windowStale;
+        long execMax = windowExecMaxNs;
+        windowReleases += rel;
+        windowMisses += miss;
+        windowRuns += ran;
+        windowStale += stale;
+        windowExecMaxNs = 0;
+
+        Schedule.Periodic declared = (Schedule.Periodic) spec.schedule();
+        Grid g = grid;
+        long period = g.periodNs();
+        long longer = Math.min(declared.maxPeriodNs(), roundToMicros(period * adaptive.stepFactor()));
+        long shorter = Math.max(declared.minPeriodNs(), roundToMicros(period / adaptive.stepFactor()));
+        long target = period;
+        PeriodChange.Reason reason = null;
+        if (miss > 0) {
+            target = longer;
+            reason = PeriodChange.Reason.MISSES;
+        } else if (inputs.length > 0 && stale * 100.0 >= adaptive.staleLongerPct() * ran) {
+            target = longer;
+            reason = PeriodChange.Reason.STALE;
+        } else if ((inputs.length == 0 || stale * 100.0 <= adaptive.staleShorterPct() * ran)
+                && execMax * 100.0 <= adaptive.headroomPct() * shorter) {
+            target = shorter;
+            reason = PeriodChange.Reason.FRESH_WITH_HEADROOM;
+        }
+        if (target == period) {
+            return;
+        }
+        long anchorNs = g.releaseNs(next);
+        long deadline = declared.withPeriod(target).deadlineNs();
+        grid = new Grid(next, anchorNs, target, deadline);
+        PeriodChange change = new PeriodChange(name(), anchorNs - startNs, period, target, reason, rel, miss, ran,
+                stale, execMax);
+        periodHistory.add(change);
+        for (MonitorListener l : listeners) {
+            l.onPeriodChange(this, change, endNs);
+        }
+    }
+
+    private static long roundToMicros(double ns) {
+        return Math.max(1_000, Math.round(ns / 1_000) * 1_000);
     }
 
     /** @return world time at which the latest cycle ended (task thread only) */
@@ -358,8 +499,9 @@ final class TaskRuntime implements TaskInfo {
     TaskReport report() {
         long rel = releases.get();
         long miss = misses.get();
-        Double period = periodic ? periodNs / 1e6 : null;
-        Double deadline = periodic ? deadlineNs / 1e6 : null;
+        Grid g = grid;
+        Double period = periodic ? g.periodNs() / 1e6 : null;
+        Double deadline = periodic ? g.deadlineNs() / 1e6 : null;
         return new TaskReport(name(), spec.schedule().kind(), period, deadline, rel, runs.get(), miss,
                 rel == 0 ? 0.0 : round2(100.0 * miss / rel), skipped.get(), staleRuns.get(), errors.get(),
                 expiredReads.get(), Percentiles.ofNanos(execNs, execMaxNs, execSumNs),

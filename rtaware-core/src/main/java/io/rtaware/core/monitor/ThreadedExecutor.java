@@ -12,6 +12,11 @@ import java.util.concurrent.locks.LockSupport;
  * {@link LockSupport#parkNanos} (never {@code Thread.sleep}, which rounds to whole
  * milliseconds on JDK 17); lateness is measured against the scheduled release.
  *
+ * <p>Task threads get rate-monotonic Java priorities as a hint to the JVM (shorter period,
+ * higher priority: rank 0 gets {@code MAX_PRIORITY - 1}, down to {@code NORM_PRIORITY}; tasks
+ * without a period get {@code NORM_PRIORITY}; the watchdog has {@code MAX_PRIORITY}). An
+ * optional {@link ThreadSetup} runs on each task thread before its first release.
+ *
  * <p>Thread-safe: started once, stopped once, by the monitor.
  */
 final class ThreadedExecutor implements Monitor.Executor {
@@ -20,17 +25,37 @@ final class ThreadedExecutor implements Monitor.Executor {
 
     private final Clock clock;
     private final List<TaskRuntime> runtimes;
+    /** The same tasks as an array: the watchdog loops over it on every wake without an iterator. */
+    private final TaskRuntime[] watched;
     private final Runnable stopAllRequest;
+    private final ThreadSetup threadSetup;
     private final List<Thread> threads = new ArrayList<>();
     private volatile boolean running;
     private Thread watchdog;
     /** The world time the watchdog sleeps until; task threads wake it for an earlier deadline. */
     private volatile long watchdogWakeNs = Long.MAX_VALUE;
 
-    ThreadedExecutor(Clock clock, List<TaskRuntime> runtimes, Runnable stopAllRequest) {
+    ThreadedExecutor(Clock clock, List<TaskRuntime> runtimes, Runnable stopAllRequest, ThreadSetup threadSetup) {
         this.clock = clock;
         this.runtimes = runtimes;
+        this.watched = runtimes.toArray(new TaskRuntime[0]);
         this.stopAllRequest = stopAllRequest;
+        this.threadSetup = threadSetup;
+    }
+
+    /**
+     * @param runtimes the tasks
+     * @return each task's rate-monotonic rank by task index (see {@link ThreadSetup})
+     */
+    static int[] rateMonotonicRanks(List<TaskRuntime> runtimes) {
+        List<TaskRuntime> order = new ArrayList<>(runtimes);
+        // Stable sort: equal periods keep registration order; tasks without a period go last.
+        order.sort(java.util.Comparator.comparingLong(r -> r.isPeriodic() ? r.periodNs() : Long.MAX_VALUE));
+        int[] ranks = new int[runtimes.size()];
+        for (int rank = 0; rank < order.size(); rank++) {
+            ranks[order.get(rank).index()] = rank;
+        }
+        return ranks;
     }
 
     @Override
@@ -39,18 +64,29 @@ final class ThreadedExecutor implements Monitor.Executor {
         watchdog = new Thread(this::watch, "rtaware-monitor");
         watchdog.setDaemon(true);
         watchdog.setPriority(Thread.MAX_PRIORITY);
+        int[] ranks = rateMonotonicRanks(runtimes);
         for (TaskRuntime runtime : runtimes) {
             runtime.begin(startNs);
             runtime.onCycleStart(() -> wakeWatchdogFor(runtime));
-            Thread thread = new Thread(() -> runTask(runtime), "rtaware-" + runtime.name());
+            int rank = ranks[runtime.index()];
+            Thread thread = new Thread(() -> runTask(runtime, rank), "rtaware-" + runtime.name());
             thread.setDaemon(true);
+            thread.setPriority(runtime.isPeriodic()
+                    ? Math.max(Thread.NORM_PRIORITY, Thread.MAX_PRIORITY - 1 - rank) : Thread.NORM_PRIORITY);
             threads.add(thread);
         }
         watchdog.start();
         threads.forEach(Thread::start);
     }
 
-    private void runTask(TaskRuntime runtime) {
+    private void runTask(TaskRuntime runtime, int rank) {
+        if (threadSetup != null) {
+            try {
+                threadSetup.onTaskThreadStart(runtime, rank, runtimes.size());
+            } catch (RuntimeException e) {
+                System.err.println("rtaware: thread setup failed for task '" + runtime.name() + "': " + e);
+            }
+        }
         try {
             switch (runtime.schedule().kind()) {
                 case "periodic" -> runPeriodic(runtime);
@@ -67,6 +103,7 @@ final class ThreadedExecutor implements Monitor.Executor {
         long k = 0;
         while (running) {
             long releaseNs = runtime.releaseTimeNs(k);
+            runtime.pending(k);
             if (!waitUntil(releaseNs)) {
                 return;
             }
@@ -135,34 +172,30 @@ final class ThreadedExecutor implements Monitor.Executor {
         return false;
     }
 
+    /**
+     * Sleeps until the earliest deadline any periodic task could miss (of a running cycle, or of
+     * the release an idle task waits for), then claims the misses of cycles still running past
+     * their deadline. Tasks released on time never wake it, so tasks sharing a period cost one
+     * scan per period, not one per cycle start.
+     */
     private void watch() {
         while (running) {
             long now = clock.nanos();
             long earliest = Long.MAX_VALUE;
-            for (TaskRuntime runtime : runtimes) {
+            for (TaskRuntime runtime : watched) {
                 runtime.checkDeadline(now);
-                long deadline = runtime.runningDeadlineNs();
-                if (deadline < earliest) {
+                long deadline = runtime.pendingDeadlineNs();
+                // A deadline already past belongs to a task between cycles, about to publish its next.
+                if (deadline > now && deadline < earliest) {
                     earliest = deadline;
                 }
             }
             watchdogWakeNs = earliest;
-            // Re-check after publishing the wake time: a cycle may have started meanwhile.
-            for (TaskRuntime runtime : runtimes) {
-                long deadline = runtime.runningDeadlineNs();
-                if (deadline < earliest) {
-                    earliest = deadline;
-                }
-            }
-            watchdogWakeNs = earliest;
-            if (earliest == Long.MAX_VALUE) {
-                LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(100));
-            } else {
-                long remaining = earliest - clock.nanos();
-                if (remaining > 0) {
-                    // Wake just after the deadline: a miss is a cycle still running past it.
-                    LockSupport.parkNanos(clock.toWallNanos(remaining) + 1_000);
-                }
+            long remaining = earliest == Long.MAX_VALUE ? TimeUnit.MILLISECONDS.toNanos(100)
+                    : clock.toWallNanos(earliest - clock.nanos()) + 1_000;
+            if (remaining > 0) {
+                // Wake just after the deadline: a miss is a cycle still running past it.
+                LockSupport.parkNanos(remaining);
             }
         }
     }

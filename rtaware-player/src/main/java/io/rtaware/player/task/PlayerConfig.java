@@ -16,8 +16,9 @@ import io.rtaware.player.protocol.PlayerFrameReader;
  * @param dataMode PUSH (default, with a replace rule) or PULL
  * @param connectTimeoutMs TCP connect and banner timeout
  * @param requestTimeoutMs reply timeout of each request
- * @param readTimeoutMs world time without any message after which the connection counts as
- *     lost
+ * @param readTimeoutMs wall time without any message after which the connection counts as
+ *     lost (measured on the monitor's clock and converted to wall time, so a scaled world does
+ *     not shorten it)
  * @param pollWaitMs longest wall time one {@code execute} waits for data, so the executor can
  *     stop the task
  * @param reconnect whether to reconnect after a loss

@@ -4,6 +4,7 @@ import io.rtaware.core.data.Input;
 import io.rtaware.core.data.Output;
 import io.rtaware.core.task.Task;
 import io.rtaware.core.task.TaskSetup;
+import io.rtaware.core.time.Clock;
 import io.rtaware.player.client.PlayerClient;
 import io.rtaware.player.client.PlayerConnectionException;
 import io.rtaware.player.client.PlayerCounters;
@@ -67,6 +68,9 @@ public final class PlayerDataTask implements Task {
     /**
      * @param config connection settings (validated when built)
      */
+    /** World clock of the monitor, to turn world-time silence into the wall time a socket sees. */
+    private Clock clock;
+
     public PlayerDataTask(PlayerConfig config) {
         this.config = config;
         this.position2d = DeviceAddress.of(Interfaces.POSITION2D, config.position2dIndex());
@@ -82,6 +86,7 @@ public final class PlayerDataTask implements Task {
      */
     @Override
     public void initialize(TaskSetup setup) throws IOException {
+        clock = setup.clock();
         odometryOut = setup.produce(RobotKeys.ODOMETRY);
         laserOut = setup.produce(RobotKeys.LASER);
         motorIn = setup.consume(RobotKeys.MOTOR);
@@ -162,6 +167,9 @@ public final class PlayerDataTask implements Task {
 
     private boolean reconnectIfDue(long nowNs) throws IOException, InterruptedException {
         if (!config.reconnect()) {
+            // Wait one poll period so that a task released continuously does not spin a core
+            // throwing this error.
+            Thread.sleep(config.pollWaitMs());
             throw new PlayerConnectionException("not connected to Player server " + config.host() + ":"
                     + config.port() + " (reconnection disabled)", null);
         }
@@ -191,10 +199,13 @@ public final class PlayerDataTask implements Task {
             lastMessageNs = nowNs;
             return;
         }
-        long silentNs = nowNs - lastMessageNs;
-        if (silentNs > TimeUnit.MILLISECONDS.toNanos(config.readTimeoutMs())) {
+        // A socket's silence is a wall-time fact: with a scaled clock, 2 s of world time may be
+        // only a short stall of a loaded machine.
+        long silentWallNs = clock.toWallNanos(nowNs - lastMessageNs);
+        if (silentWallNs > TimeUnit.MILLISECONDS.toNanos(config.readTimeoutMs())) {
             throw new PlayerTimeoutException("no message from Player server " + client.server() + " for "
-                    + TimeUnit.NANOSECONDS.toMillis(silentNs) + " ms (read timeout " + config.readTimeoutMs() + " ms)");
+                    + TimeUnit.NANOSECONDS.toMillis(silentWallNs) + " ms of wall time (read timeout "
+                    + config.readTimeoutMs() + " ms)");
         }
     }
 

@@ -1,0 +1,44 @@
+package io.rtaware.app.analyze;
+
+import io.rtaware.app.UserError;
+import io.rtaware.app.report.ReportSections;
+import io.rtaware.core.report.ReportDocument;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/**
+ * {@code rtaware analyze report.json}: prints the period advice and the schedulability analysis
+ * of a saved report, exactly as the run's summary printed them.
+ */
+@Command(name = "analyze", mixinStandardHelpOptions = true,
+        description = {"Print period advice and schedulability for a saved report (rtaware.report/1).",
+                "Example:", "  rtaware analyze report.json"})
+public final class AnalyzeCommand implements Callable<Integer> {
+
+    @Parameters(index = "0", paramLabel = "REPORT", description = "A report.json written by --json.")
+    Path file;
+
+    @Option(names = "--cores", paramLabel = "N",
+            description = "Core count for the per-core utilization (default: this machine's, ${DEFAULT-VALUE}).")
+    int cores = Runtime.getRuntime().availableProcessors();
+
+    @Override
+    public Integer call() {
+        if (cores < 1) {
+            throw new UserError("--cores must be at least 1, got " + cores);
+        }
+        ReportDocument doc;
+        try {
+            doc = ReportDocument.read(file);
+        } catch (IOException | RuntimeException e) {
+            String why = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage().lines().findFirst().orElse("");
+            throw new UserError("cannot read report " + file + ": " + why);
+        }
+        System.out.print(ReportSections.analyze(doc.report(), cores).text());
+        return 0;
+    }
+}

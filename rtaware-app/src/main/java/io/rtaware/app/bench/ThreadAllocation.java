@@ -1,0 +1,66 @@
+package io.rtaware.app.bench;
+
+import java.lang.management.ManagementFactory;
+import java.util.Arrays;
+import java.util.Set;
+
+/**
+ * Bytes allocated by a fixed set of live threads, read from
+ * {@code com.sun.management.ThreadMXBean#getThreadAllocatedBytes}: take a snapshot at the start
+ * of the steady state and ask it, at the end, how much those threads allocated since. Immutable.
+ */
+public final class ThreadAllocation {
+
+    /** Threads of the monitor that are not on the per-release path (they print, or stop). */
+    private static final Set<String> OFF_PATH = Set.of("rtaware-console", "rtaware-shutdown", "rtaware-stop");
+
+    private final com.sun.management.ThreadMXBean bean;
+    private final long[] ids;
+    private final long[] bytes;
+
+    private ThreadAllocation(com.sun.management.ThreadMXBean bean, long[] ids) {
+        this.bean = bean;
+        this.ids = ids;
+        this.bytes = bean.getThreadAllocatedBytes(ids);
+    }
+
+    /**
+     * Snapshots the monitor's threads on the per-release path: every live thread named
+     * {@code rtaware-*} (the task threads and the watchdog {@code rtaware-monitor}) except the
+     * console printer and the stop helpers.
+     *
+     * @return the snapshot
+     */
+    public static ThreadAllocation ofFrameworkThreads() {
+        com.sun.management.ThreadMXBean bean = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        if (bean.isThreadAllocatedMemorySupported()) {
+            bean.setThreadAllocatedMemoryEnabled(true);
+        }
+        long[] ids = Thread.getAllStackTraces().keySet().stream()
+                .filter(t -> t.getName().startsWith("rtaware-") && !OFF_PATH.contains(t.getName()))
+                .mapToLong(Thread::getId).sorted().toArray();
+        return new ThreadAllocation(bean, ids);
+    }
+
+    /** @return how many threads are watched */
+    public int threads() {
+        return ids.length;
+    }
+
+    /** @return bytes the watched threads allocated since the snapshot (threads gone meanwhile are left out) */
+    public long allocatedSince() {
+        long[] now = bean.getThreadAllocatedBytes(ids);
+        long sum = 0;
+        for (int i = 0; i < ids.length; i++) {
+            if (bytes[i] >= 0 && now[i] >= 0) {
+                sum += now[i] - bytes[i];
+            }
+        }
+        return sum;
+    }
+
+    @Override
+    public String toString() {
+        return "ThreadAllocation" + Arrays.toString(ids);
+    }
+}

@@ -1,0 +1,181 @@
+package io.rtaware.app.bench.compare;
+
+import io.rtaware.app.bench.BenchSpec;
+import io.rtaware.app.bench.BusyWork;
+import java.io.PrintStream;
+import java.lang.management.GarbageCollectorMXBean;
+import java.lang.management.ManagementFactory;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Supplier;
+import java.util.concurrent.locks.LockSupport;
+import java.util.stream.Collectors;
+
+/**
+ * Runs the same task set on rtaware, on {@code ScheduledThreadPoolExecutor} and on a bare
+ * parkNanos loop, <b>interleaved in segments</b>: round r runs one segment of each executor, in
+ * an order rotated by r, so every executor sees the same machine noise (on a shared host, back
+ * to back runs of a minute differ by up to 10x in the tail). Round 0 is a warm-up (JIT) and is
+ * not counted. Each segment starts fresh threads; its first {@link #settleNs} are not counted
+ * (thread start-up), and its measurement window is {@code [start + settle, start + segment)}.
+ * CPU time and allocation of the executor's threads are read from the
+ * {@code com.sun.management.ThreadMXBean} at both ends of the window.
+ *
+ * <p>Not thread-safe: one thread runs the comparison.
+ */
+public final class CompareRun {
+
+    private final List<BenchSpec> specs;
+    private final BusyWork work;
+    private final long segmentNs;
+    private final long settleNs;
+    private final int rounds;
+    private final PrintStream progress;
+    private final com.sun.management.ThreadMXBean threads;
+
+    /**
+     * @param specs the tasks (the same set for every executor)
+     * @param work the calibrated busy loop
+     * @param measuredNs measured time wanted per executor; rounded up to whole segments
+     * @param segmentNs length of one executor's turn
+     * @param progress where to print one line per round
+     */
+    public CompareRun(List<BenchSpec> specs, BusyWork work, long measuredNs, long segmentNs, PrintStream progress) {
+        this.specs = List.copyOf(specs);
+        this.work = work;
+        this.segmentNs = segmentNs;
+        this.settleNs = settleNs(specs, segmentNs);
+        this.rounds = (int) Math.max(1, (measuredNs + (segmentNs - settleNs) - 1) / (segmentNs - settleNs));
+        this.progress = progress;
+        this.threads = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+    }
+
+    /**
+     * The part of a segment not measured: 200 ms or three of the longest period, whichever is
+     * longer, but at most half the segment.
+     *
+     * @param specs the tasks
+     * @param segmentNs the segment length
+     * @return the settle time in ns
+     */
+    static long settleNs(List<BenchSpec> specs, long segmentNs) {
+        long longest = specs.stream().mapToLong(BenchSpec::periodNs).max().orElse(0);
+        return Math.min(segmentNs / 2, Math.max(200_000_000L, 3 * longest));
+    }
+
+    /** @return measured time per executor, ns */
+    public long measuredNs() {
+        return rounds * (segmentNs - settleNs);
+    }
+
+    /**
+     * Runs warm-up and measured rounds.
+     *
+     * @return one row per executor: rtaware, stpe, park-loop
+     * @throws InterruptedException if interrupted
+     */
+    public List<RunResult> run() throws InterruptedException {
+        if (threads.isThreadCpuTimeSupported()) {
+            threads.setThreadCpuTimeEnabled(true);
+        }
+        if (threads.isThreadAllocatedMemorySupported()) {
+            threads.setThreadAllocatedMemoryEnabled(true);
+        }
+        Map<String, Supplier<SegmentExecutor>> executors = new LinkedHashMap<>();
+        executors.put("rtaware", () -> new RtawareSegment(work));
+        executors.put("stpe", () -> new StpeSegment(work));
+        executors.put("park-loop", () -> new ParkLoopSegment(work));
+        Map<String, ExecutorTotals> totals = new LinkedHashMap<>();
+        executors.keySet().forEach(name -> totals.put(name, new ExecutorTotals(name)));
+        List<ReleaseStats> stats = new ArrayList<>();
+        for (BenchSpec spec : specs) {
+            stats.add(new ReleaseStats(spec.periodNs()));
+        }
+        List<String> names = new ArrayList<>(executors.keySet());
+        for (int round = 0; round <= rounds; round++) {
+            progress.printf("compare: round %d/%d%s%n", round, rounds, round == 0 ? " (warm-up, not counted)" : "");
+            for (int i = 0; i < names.size(); i++) {
+                String name = names.get((round + i) % names.size());
+                runSegment(executors.get(name).get(), stats, round == 0 ? null : totals.get(name));
+            }
+        }
+        return totals.values().stream().map(ExecutorTotals::result).toList();
+    }
+
+    private void runSegment(SegmentExecutor executor, List<ReleaseStats> stats, ExecutorTotals totals)
+            throws InterruptedException {
+        long startNs = System.nanoTime();
+        long fromNs = startNs + settleNs;
+        long untilNs = startNs + segmentNs;
+        stats.forEach(s -> s.reset(fromNs, untilNs));
+        executor.start(specs, stats);
+        parkUntil(fromNs);
+        long[] ids = threadIds(executor, stats);
+        long cpu0 = cpuNs(ids);
+        long[] alloc0 = threads.getThreadAllocatedBytes(ids);
+        parkUntil(untilNs);
+        long cpu1 = cpuNs(ids);
+        long[] alloc1 = threads.getThreadAllocatedBytes(ids);
+        executor.stop();
+        if (totals != null) {
+            stats.forEach(totals::add);
+            totals.addCost(cpu1 - cpu0, allocatedBetween(alloc0, alloc1));
+        }
+    }
+
+    /** Task threads (known once each task has run) plus the executor's helper threads. */
+    private static long[] threadIds(SegmentExecutor executor, List<ReleaseStats> stats) {
+        long[] helpers = executor.helperThreadIds();
+        long[] ids = new long[stats.size() + helpers.length];
+        int n = 0;
+        for (ReleaseStats s : stats) {
+            if (s.threadId() != 0) {
+                ids[n++] = s.threadId();
+            }
+        }
+        for (long id : helpers) {
+            ids[n++] = id;
+        }
+        return java.util.Arrays.copyOf(ids, n);
+    }
+
+    private long cpuNs(long[] ids) {
+        long sum = 0;
+        for (long id : ids) {
+            long t = threads.getThreadCpuTime(id);
+            if (t > 0) {
+                sum += t;
+            }
+        }
+        return sum;
+    }
+
+    /** Sums per-thread differences; a thread gone by the second read (-1) is left out. */
+    static long allocatedBetween(long[] before, long[] after) {
+        long sum = 0;
+        for (int i = 0; i < before.length; i++) {
+            if (before[i] >= 0 && after[i] >= 0) {
+                sum += after[i] - before[i];
+            }
+        }
+        return sum;
+    }
+
+    private static void parkUntil(long deadlineNs) throws InterruptedException {
+        long remaining;
+        while ((remaining = deadlineNs - System.nanoTime()) > 0) {
+            LockSupport.parkNanos(remaining);
+            if (Thread.interrupted()) {
+                throw new InterruptedException();
+            }
+        }
+    }
+
+    /** @return the names of the collectors this JVM runs, e.g. {@code G1 Young Generation, G1 Old Generation} */
+    public static String collectors() {
+        return ManagementFactory.getGarbageCollectorMXBeans().stream()
+                .map(GarbageCollectorMXBean::getName).collect(Collectors.joining(", "));
+    }
+}

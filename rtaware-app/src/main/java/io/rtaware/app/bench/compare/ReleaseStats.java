@@ -1,0 +1,142 @@
+package io.rtaware.app.bench.compare;
+
+import org.HdrHistogram.Histogram;
+
+/**
+ * The comparison's bookkeeping for one task under one executor, fed with every run's intended
+ * release, start and end (all in {@link System#nanoTime()} nanoseconds), and with the releases
+ * an executor skipped. The same rules apply to every executor:
+ * <ul>
+ *   <li><b>lateness</b> = start - intended release (never start - previous start, so a stall is
+ *   not hidden), clamped at 0;</li>
+ *   <li><b>miss</b> = a run that finished after {@code release + period}, plus every skipped
+ *   release;</li>
+ *   <li><b>burst</b> = a run that started less than half a period after the previous run of the
+ *   same task.</li>
+ * </ul>
+ * Only releases inside the measurement window {@code [fromNs, untilNs)} are counted, so thread
+ * start-up and shutdown stay out of the numbers.
+ *
+ * <p>Allocation-free after construction. Written by one task thread at a time; read by the
+ * coordinator after that thread has stopped (the join publishes the values). The thread id is
+ * volatile so the coordinator can find the thread while it runs.
+ */
+public final class ReleaseStats {
+
+    /** Lowest lateness told apart: 1 us. Lateness is reported in microseconds. */
+    static final long LOWEST_DISCERNIBLE_NS = 1_000;
+    /** Largest lateness recorded exactly; larger values are clamped (the exact max is kept). */
+    static final long HIGHEST_TRACKABLE_NS = 60_000_000_000L;
+    private static final long NO_START = Long.MIN_VALUE;
+
+    private final long periodNs;
+    private final Histogram latenessNs = new Histogram(LOWEST_DISCERNIBLE_NS, HIGHEST_TRACKABLE_NS, 2);
+    private long fromNs = Long.MIN_VALUE;
+    private long untilNs = Long.MAX_VALUE;
+    private long previousStartNs = NO_START;
+    private long releases;
+    private long misses;
+    private long bursts;
+    private long maxLatenessNs;
+    private volatile long threadId;
+
+    /** @param periodNs the task's period (its deadline too) */
+    public ReleaseStats(long periodNs) {
+        if (periodNs <= 0) {
+            throw new IllegalArgumentException("period must be positive, got " + periodNs + " ns");
+        }
+        this.periodNs = periodNs;
+    }
+
+    /**
+     * Clears every count and sets the measurement window for the next segment.
+     *
+     * @param windowFromNs first intended release counted
+     * @param windowUntilNs releases at or after this are not counted
+     */
+    public void reset(long windowFromNs, long windowUntilNs) {
+        latenessNs.reset();
+        fromNs = windowFromNs;
+        untilNs = windowUntilNs;
+        previousStartNs = NO_START;
+        releases = 0;
+        misses = 0;
+        bursts = 0;
+        maxLatenessNs = 0;
+        threadId = 0;
+    }
+
+    /**
+     * Records one run; call on the thread that ran it.
+     *
+     * @param releaseNs the intended release
+     * @param startNs when the run started
+     * @param endNs when it finished
+     */
+    public void onRun(long releaseNs, long startNs, long endNs) {
+        if (threadId == 0) {
+            threadId = Thread.currentThread().getId();
+        }
+        boolean burst = previousStartNs != NO_START && startNs - previousStartNs < periodNs / 2;
+        previousStartNs = startNs;
+        if (releaseNs < fromNs || releaseNs >= untilNs) {
+            return;
+        }
+        releases++;
+        if (burst) {
+            bursts++;
+        }
+        long lateness = Math.max(0, startNs - releaseNs);
+        latenessNs.recordValue(Math.min(Math.max(lateness, LOWEST_DISCERNIBLE_NS), HIGHEST_TRACKABLE_NS));
+        if (lateness > maxLatenessNs) {
+            maxLatenessNs = lateness;
+        }
+        if (endNs > releaseNs + periodNs) {
+            misses++;
+        }
+    }
+
+    /**
+     * Records releases the executor passed over without running them; each is a release and a
+     * miss.
+     *
+     * @param count how many
+     * @param nowNs when they were skipped (decides whether they fall in the window)
+     */
+    public void onSkipped(long count, long nowNs) {
+        if (nowNs >= fromNs && nowNs < untilNs) {
+            releases += count;
+            misses += count;
+        }
+    }
+
+    /** @return releases counted in the window */
+    public long releases() {
+        return releases;
+    }
+
+    /** @return misses counted in the window */
+    public long misses() {
+        return misses;
+    }
+
+    /** @return bursts counted in the window */
+    public long bursts() {
+        return bursts;
+    }
+
+    /** @return the exact largest lateness in the window, ns */
+    public long maxLatenessNs() {
+        return maxLatenessNs;
+    }
+
+    /** @return the id of the thread that last ran the task, or 0 before its first run */
+    public long threadId() {
+        return threadId;
+    }
+
+    /** @return the lateness histogram (ns, 1 us resolution, 2 significant digits) */
+    Histogram latenessNs() {
+        return latenessNs;
+    }
+}

@@ -1,0 +1,76 @@
+package io.rtaware.app.bench.compare;
+
+import io.rtaware.app.bench.BenchSpec;
+import io.rtaware.app.bench.BenchTask;
+import io.rtaware.app.bench.BusyWork;
+import io.rtaware.core.monitor.Monitor;
+import io.rtaware.core.monitor.MonitorListener;
+import io.rtaware.core.monitor.TaskInfo;
+import io.rtaware.core.task.Schedule;
+import io.rtaware.core.time.SystemClock;
+import java.util.List;
+
+/**
+ * rtaware's threaded executor: a {@link Monitor} with one {@link BenchTask} per task. Lateness is
+ * the monitor's own measurement (the release and start it reports in
+ * {@link MonitorListener#onCycle}), skipped releases are the ones it reports. The monitor's
+ * watchdog thread counts as framework cost.
+ */
+final class RtawareSegment implements SegmentExecutor {
+
+    private static final String WATCHDOG_THREAD = "rtaware-monitor";
+
+    private final BusyWork work;
+    private Monitor monitor;
+
+    RtawareSegment(BusyWork work) {
+        this.work = work;
+    }
+
+    @Override
+    public String name() {
+        return "rtaware";
+    }
+
+    @Override
+    public void start(List<BenchSpec> specs, List<ReleaseStats> stats) {
+        Monitor.Builder builder = Monitor.builder(new SystemClock());
+        for (BenchSpec s : specs) {
+            builder.task(s.name(), Schedule.periodic(s.periodNs()), new BenchTask(s.name(), s.workNs(), null, work));
+        }
+        builder.listener(new StatsListener(stats.toArray(new ReleaseStats[0])));
+        monitor = builder.build();
+        monitor.start();
+    }
+
+    @Override
+    public long[] helperThreadIds() {
+        return Thread.getAllStackTraces().keySet().stream()
+                .filter(t -> t.getName().equals(WATCHDOG_THREAD))
+                .mapToLong(Thread::getId).toArray();
+    }
+
+    @Override
+    public void stop() {
+        monitor.stop();
+    }
+
+    /** Forwards the monitor's per-cycle measurements; allocation-free. */
+    private static final class StatsListener implements MonitorListener {
+        private final ReleaseStats[] stats;
+
+        StatsListener(ReleaseStats[] stats) {
+            this.stats = stats;
+        }
+
+        @Override
+        public void onCycle(TaskInfo task, long releaseNs, long startNs, long endNs) {
+            stats[task.index()].onRun(releaseNs, startNs, endNs);
+        }
+
+        @Override
+        public void onSkippedReleases(TaskInfo task, long skipped, long nowNs) {
+            stats[task.index()].onSkipped(skipped, nowNs);
+        }
+    }
+}

@@ -1,0 +1,90 @@
+package io.rtaware.app.analyze;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import io.rtaware.app.RtawareCli;
+import io.rtaware.app.report.ReportSections;
+import io.rtaware.core.report.DataReport;
+import io.rtaware.core.report.Percentiles;
+import io.rtaware.core.report.Report;
+import io.rtaware.core.report.ReportDocument;
+import io.rtaware.core.report.TaskReport;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class AnalyzeCommandTest {
+
+    @TempDir
+    Path dir;
+
+    private static Report chainReport() {
+        Percentiles aExec = new Percentiles(2000, 2000, 2100, 2500, 2000);
+        Percentiles bExec = new Percentiles(20000, 20000, 20500, 21000, 20000);
+        return new Report(Report.SCHEMA, 1.0, 5.0, 0.0, List.of(
+                new TaskReport("a", "periodic", 10.0, 10.0, 500, 500, 0, 0, 0, 0, 0, 0, aExec, Percentiles.EMPTY),
+                new TaskReport("b", "periodic", 50.0, 50.0, 100, 100, 0, 0, 0, 0, 0, 0, bExec, Percentiles.EMPTY)),
+                List.of(new DataReport("a.out", "a", List.of("b"), 500, 100.0, new DataReport.Interval(10, 10, 10)),
+                        new DataReport("b.out", "b", List.of(), 100, 20.0, new DataReport.Interval(50, 50, 50))));
+    }
+
+    private static String[] run(String... args) {
+        PrintStream out = System.out;
+        PrintStream err = System.err;
+        ByteArrayOutputStream o = new ByteArrayOutputStream();
+        ByteArrayOutputStream e = new ByteArrayOutputStream();
+        System.setOut(new PrintStream(o, true, StandardCharsets.UTF_8));
+        System.setErr(new PrintStream(e, true, StandardCharsets.UTF_8));
+        int status;
+        try {
+            status = RtawareCli.execute(args);
+        } finally {
+            System.setOut(out);
+            System.setErr(err);
+        }
+        return new String[] {Integer.toString(status), o.toString(StandardCharsets.UTF_8),
+                e.toString(StandardCharsets.UTF_8)};
+    }
+
+    @Test
+    void enrichWritesSectionsAndAnalyzePrintsTheSameFromTheSavedFile() throws Exception {
+        ReportDocument doc = new ReportDocument(chainReport());
+        String printed = ReportSections.enrich(doc, 2).text();
+        Path file = dir.resolve("report.json");
+        doc.write(file);
+
+        JsonNode root = ReportDocument.mapper().readTree(file.toFile());
+        assertEquals("nyquist", root.path("advice").get(0).path("rule").asText());
+        assertEquals("b", root.path("advice").get(0).path("task").asText());
+        assertEquals(5.0, root.path("advice").get(0).path("suggested_period_ms").asDouble());
+        assertEquals(100.0, root.path("advice").get(0).path("evidence").path("input_rate_hz").asDouble());
+        assertEquals(2, root.path("schedulability").path("cores").asInt());
+        assertEquals(0.62, root.path("schedulability").path("utilization_p99").asDouble(), 1e-9);
+        assertTrue(root.path("schedulability").path("rta_schedulable_p99").asBoolean());
+
+        String[] result = run("analyze", file.toString(), "--cores", "2");
+        assertEquals("0", result[0], result[2]);
+        assertEquals(printed, result[1]);
+    }
+
+    @Test
+    void badFileIsOneLineWithStatus2() throws Exception {
+        Path bad = dir.resolve("bad.json");
+        Files.writeString(bad, "{\"schema\": \"something-else\"}");
+        String[] result = run("analyze", bad.toString());
+        assertEquals("2", result[0]);
+        assertEquals(1, result[2].strip().lines().count(), result[2]);
+        assertTrue(result[2].contains("not an rtaware report"), result[2]);
+
+        String[] missing = run("analyze", dir.resolve("missing.json").toString());
+        assertEquals("2", missing[0]);
+        assertEquals(1, missing[2].strip().lines().count(), missing[2]);
+    }
+}

@@ -1,0 +1,103 @@
+package io.rtaware.app.bench.compare;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/** The JSON names of issue 8, the totals and the goal lines, from fixed numbers. */
+class CompareReportTest {
+
+    private static final long PERIOD = 10_000_000;
+
+    private static RunResult row(String executor, double p99, long bursts, double alloc) {
+        return new RunResult(executor, new RunResult.Lateness(50, p99, 2 * p99, 3 * p99), 1000, 0, bursts, 1.5, alloc);
+    }
+
+    @Test
+    void jsonKeepsTheSchemaOfTheIssue() throws Exception {
+        List<RunResult> runs = List.of(row("rtaware", 110, 0, 0), row("stpe", 120, 0, 24), row("park-loop", 100, 0, 0));
+        CompareReport report = new CompareReport(CompareReport.SCHEMA, 8, 10, 1, 30, 2, 0, 0, "17", "G1",
+                runs, Goal.check(runs));
+        JsonNode json = new ObjectMapper().readTree(report.toJson());
+        assertEquals("rtaware.bench-compare/1", json.get("schema").asText());
+        assertEquals(8, json.get("tasks").asInt());
+        assertEquals(10.0, json.get("period_ms").asDouble());
+        assertEquals(1.0, json.get("work_ms").asDouble());
+        assertEquals(3, json.get("runs").size());
+        assertEquals("rtaware", json.get("runs").get(0).get("executor").asText());
+        assertEquals("stpe", json.get("runs").get(1).get("executor").asText());
+        assertEquals("park-loop", json.get("runs").get(2).get("executor").asText());
+        JsonNode r = json.get("runs").get(1);
+        for (String key : List.of("p50", "p99", "p999", "max")) {
+            assertTrue(r.get("lateness_us").has(key), key);
+        }
+        assertEquals(240.0, r.get("lateness_us").get("p999").asDouble());
+        for (String key : List.of("releases", "misses", "bursts", "cpu_us_per_release", "alloc_bytes_per_release")) {
+            assertTrue(r.has(key), key);
+        }
+        assertEquals(24.0, r.get("alloc_bytes_per_release").asDouble());
+    }
+
+    @Test
+    void goalsCompareRtawareWithTheFloorAndWithStpe() {
+        List<Goal> goals = Goal.check(List.of(row("rtaware", 110, 0, 0), row("stpe", 100, 0, 0),
+                row("park-loop", 100, 0, 0)));
+        assertEquals(4, goals.size());
+        assertTrue(goals.get(0).pass(), "1.10 <= 1.25");
+        assertEquals("1.10 (110.0 / 100.0 us)", goals.get(0).value());
+        assertFalse(goals.get(1).pass(), "110 > 100");
+        assertTrue(goals.get(2).pass());
+        assertTrue(goals.get(3).pass());
+
+        List<Goal> bad = Goal.check(List.of(row("rtaware", 126, 2, 8), row("park-loop", 100, 0, 0)));
+        assertEquals(3, bad.size(), "no stpe row, no stpe goal");
+        assertFalse(bad.get(0).pass());
+        assertFalse(bad.get(1).pass());
+        assertFalse(bad.get(2).pass());
+    }
+
+    @Test
+    void tablePrintsOneRowPerExecutorAndPassOrMissPerGoal() {
+        List<RunResult> runs = List.of(row("rtaware", 110, 1, 0), row("park-loop", 100, 0, 0));
+        String table = new CompareReport(CompareReport.SCHEMA, 2, 1, 0, 4, 2, 1, 200, "17", "ZGC", runs,
+                Goal.check(runs)).table();
+        assertTrue(table.contains("rtaware"));
+        assertTrue(table.contains("park-loop"));
+        assertTrue(table.contains("PASS goal: rtaware p99 / park-loop p99 <= 1.25: 1.10"));
+        assertTrue(table.contains("MISS goal: zero bursts (rtaware): 1"));
+    }
+
+    @Test
+    void totalsMergeTasksAndDivideCostsByReleases() {
+        ReleaseStats a = new ReleaseStats(PERIOD);
+        ReleaseStats b = new ReleaseStats(PERIOD);
+        for (int k = 0; k < 100; k++) {
+            a.onRun(k * PERIOD, k * PERIOD + 10_000, k * PERIOD + 20_000);
+            b.onRun(k * PERIOD, k * PERIOD + (k == 99 ? 5_000_000 : 30_000), k * PERIOD + 6_000_000);
+        }
+        ExecutorTotals totals = new ExecutorTotals("park-loop");
+        totals.add(a);
+        totals.add(b);
+        totals.addCost(400_000, 0);
+        totals.addCost(0, 1_000);
+        RunResult r = totals.result();
+        assertEquals(200, r.releases());
+        assertEquals(0, r.misses());
+        assertEquals(0, r.bursts());
+        assertEquals(2.0, r.cpuUsPerRelease());
+        assertEquals(5.0, r.allocBytesPerRelease());
+        assertEquals(10.0, r.latenessUs().p50(), 0.2, "2 significant digits: buckets are 1 % wide");
+        assertEquals(30.0, r.latenessUs().p99(), 0.5);
+        assertEquals(5000.0, r.latenessUs().max());
+    }
+
+    @Test
+    void allocationLeavesOutThreadsThatEnded() {
+        assertEquals(30, CompareRun.allocatedBetween(new long[] {10, 5, 7}, new long[] {40, -1, 7}));
+    }
+}

@@ -1,0 +1,151 @@
+package io.rtaware.bench;
+
+import io.rtaware.core.data.Input;
+import io.rtaware.core.data.Output;
+import io.rtaware.core.monitor.Monitor;
+import io.rtaware.core.monitor.StepExecutor;
+import io.rtaware.core.task.Schedule;
+import io.rtaware.core.task.Task;
+import io.rtaware.core.task.TaskSetup;
+import io.rtaware.core.time.ManualClock;
+import io.rtaware.robot.msg.Odometry;
+import io.rtaware.robot.msg.RobotKeys;
+import java.util.concurrent.TimeUnit;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.Measurement;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
+import org.openjdk.jmh.annotations.Warmup;
+
+/**
+ * The monitor's per-release bookkeeping, measured through the public step executor: one
+ * {@link StepExecutor#step()} advances the manual clock to the next release and runs one cycle
+ * (lateness and execution histograms, counters, deadline token, watchdog check on the clock
+ * advance, listeners, input copy-in and output commit). The tasks do nothing else, so the time
+ * per op is the framework's cost per release, without the thread wake-up (which the
+ * {@code rtaware bench --compare} measures against a bare park loop).
+ *
+ * <p>Run: {@code java -jar rtaware-bench/target/benchmarks.jar MonitorBench}
+ */
+@BenchmarkMode(Mode.AverageTime)
+@OutputTimeUnit(TimeUnit.NANOSECONDS)
+@Warmup(iterations = 3, time = 1)
+@Measurement(iterations = 5, time = 1)
+@Fork(1)
+public class MonitorBench {
+
+    /** A task that does nothing: the cycle is pure bookkeeping. */
+    static final class EmptyTask implements Task {
+        @Override
+        public void initialize(TaskSetup setup) {
+            // Declares no data.
+        }
+
+        @Override
+        public void execute(long nowNs) {
+            // Nothing: the benchmark measures the monitor around it.
+        }
+    }
+
+    /** Publishes a pose every cycle. */
+    static final class PoseProducer implements Task {
+        private Output<Odometry> out;
+
+        @Override
+        public void initialize(TaskSetup setup) {
+            out = setup.produce(RobotKeys.ODOMETRY);
+        }
+
+        @Override
+        public void execute(long nowNs) {
+            out.value().xM += 1;
+            out.publish();
+        }
+    }
+
+    /** Reads the pose every cycle. */
+    static final class PoseConsumer implements Task {
+        private Input<Odometry> in;
+        double sink;
+
+        @Override
+        public void initialize(TaskSetup setup) {
+            in = setup.consume(RobotKeys.ODOMETRY);
+        }
+
+        @Override
+        public void execute(long nowNs) {
+            sink += in.value().xM;
+        }
+    }
+
+    /** One periodic task without data. */
+    @State(Scope.Thread)
+    public static class Empty {
+        Monitor monitor;
+        StepExecutor step;
+
+        /** Builds and starts the monitor on a manual clock. */
+        @Setup(Level.Trial)
+        public void start() {
+            monitor = Monitor.builder(new ManualClock())
+                    .task("empty", Schedule.periodic(1_000_000), new EmptyTask()).build();
+            step = monitor.startStepped();
+        }
+
+        /** Terminates the monitor. */
+        @TearDown(Level.Trial)
+        public void stop() {
+            monitor.stop();
+        }
+    }
+
+    /** A producer and a consumer of a pose, both periodic at 1 kHz. */
+    @State(Scope.Thread)
+    public static class PosePair {
+        Monitor monitor;
+        StepExecutor step;
+
+        /** Builds and starts the monitor on a manual clock. */
+        @Setup(Level.Trial)
+        public void start() {
+            monitor = Monitor.builder(new ManualClock())
+                    .task("odometry", Schedule.periodic(1_000_000), new PoseProducer())
+                    .task("controller", Schedule.periodic(1_000_000), new PoseConsumer()).build();
+            step = monitor.startStepped();
+        }
+
+        /** Terminates the monitor. */
+        @TearDown(Level.Trial)
+        public void stop() {
+            monitor.stop();
+        }
+    }
+
+    /**
+     * @param s the monitor
+     * @return whether a cycle ran (always true)
+     */
+    @Benchmark
+    public boolean emptyTaskCycle(Empty s) {
+        return s.step.step();
+    }
+
+    /**
+     * One cycle of either task (they alternate): a commit or a copy-in of a pose plus bookkeeping.
+     *
+     * @param s the monitor
+     * @return whether a cycle ran (always true)
+     */
+    @Benchmark
+    public boolean poseProducerConsumerCycle(PosePair s) {
+        return s.step.step();
+    }
+}

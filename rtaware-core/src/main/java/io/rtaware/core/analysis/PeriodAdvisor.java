@@ -1,0 +1,184 @@
+package io.rtaware.core.analysis;
+
+import io.rtaware.core.report.DataReport;
+import io.rtaware.core.report.Report;
+import io.rtaware.core.report.TaskReport;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+/**
+ * Derives period advice from a finished run. Three rules, applied to every periodic task:
+ * <ol>
+ *   <li><b>nyquist</b>: a task that samples an input must run at least twice as fast as that
+ *   input changes, so its period must be at most {@code 1 / (2 * rate)} of every key it
+ *   consumes (the measured commit rate). A task slower than that (by more than
+ *   {@value #TOLERANCE_PCT}% to absorb rate measurement noise) is told to shorten its period to
+ *   the bound.</li>
+ *   <li><b>mostly_stale</b>: a task whose runs are at least {@value #MOSTLY_STALE_PCT}% stale
+ *   wakes mostly to no new data. It could run as slowly as the Nyquist bound of its fastest
+ *   input; when that is at least {@value #MIN_SLOWDOWN} times its period, the advice says how
+ *   much slower it could run and how much CPU time per second that frees, from the mean
+ *   execution time: {@code exec_mean * (1/period - 1/suggested)}.</li>
+ *   <li><b>exec_near_period</b>: a task whose p99 execution time is at least
+ *   {@value #EXEC_NEAR_PERIOD_PCT}% of its period has no headroom. The suggested period puts the
+ *   p99 at {@value #TARGET_EXEC_PCT}% of it. If that period would break the Nyquist bound of
+ *   one of its inputs the advice says to do less work (to at most
+ *   {@value #TARGET_EXEC_PCT}% of the period); otherwise it says to lengthen the period.</li>
+ * </ol>
+ * Stateless and thread-safe.
+ */
+public final class PeriodAdvisor {
+
+    /** Slack over the Nyquist bound before the nyquist rule fires, percent. */
+    public static final double TOLERANCE_PCT = 2.0;
+    /** Share of stale runs from which a task counts as mostly stale, percent. */
+    public static final double MOSTLY_STALE_PCT = 50.0;
+    /** How many times longer the Nyquist bound must be than the period to advise slowing down. */
+    public static final double MIN_SLOWDOWN = 1.5;
+    /** p99 execution time over period from which the exec rule fires, percent. */
+    public static final double EXEC_NEAR_PERIOD_PCT = 80.0;
+    /** p99 execution time over the suggested period, percent. */
+    public static final double TARGET_EXEC_PCT = 70.0;
+
+    private PeriodAdvisor() {
+    }
+
+    /**
+     * @param report a finished run
+     * @return the advice, grouped by task in report order, then by rule
+     */
+    public static List<AdviceItem> advise(Report report) {
+        List<AdviceItem> items = new ArrayList<>();
+        for (TaskReport task : report.tasks()) {
+            if (task.periodMs() == null || task.periodMs() <= 0) {
+                continue;
+            }
+            List<DataReport> inputs = report.data().stream()
+                    .filter(d -> d.consumers().contains(task.name())).toList();
+            DataReport fastest = null;
+            for (DataReport input : inputs) {
+                if (input.rateHz() > 0 && (fastest == null || input.rateHz() > fastest.rateHz())) {
+                    fastest = input;
+                }
+            }
+            Double boundMs = fastest == null ? null : nyquistBoundMs(fastest.rateHz());
+            nyquist(task, fastest, boundMs, items);
+            mostlyStale(task, fastest, boundMs, items);
+            execNearPeriod(task, fastest, boundMs, items);
+        }
+        return items;
+    }
+
+    /**
+     * @param rateHz an input's change rate
+     * @return the longest period that samples it at least twice per change, in ms
+     */
+    public static double nyquistBoundMs(double rateHz) {
+        return 1000.0 / (2.0 * rateHz);
+    }
+
+    private static void nyquist(TaskReport task, DataReport fastest, Double boundMs, List<AdviceItem> items) {
+        double period = task.periodMs();
+        if (boundMs == null || period <= boundMs * (1 + TOLERANCE_PCT / 100)) {
+            return;
+        }
+        double suggested = floorTenth(boundMs);
+        Map<String, Object> evidence = new LinkedHashMap<>();
+        evidence.put("input", fastest.name());
+        evidence.put("input_rate_hz", fastest.rateHz());
+        evidence.put("nyquist_bound_ms", round3(boundMs));
+        items.add(new AdviceItem(task.name(), "nyquist", period, suggested, evidence, String.format(Locale.ROOT,
+                "'%s' samples '%s' (%.2f Hz) every %s ms; to see every change it must run at least twice as fast:"
+                        + " period <= %s ms (suggest %s ms)",
+                task.name(), fastest.name(), fastest.rateHz(), num(period), num(round3(boundMs)), num(suggested))));
+    }
+
+    private static void mostlyStale(TaskReport task, DataReport fastest, Double boundMs, List<AdviceItem> items) {
+        if (task.runs() == 0 || boundMs == null) {
+            return;
+        }
+        double stalePct = 100.0 * task.staleRuns() / task.runs();
+        double period = task.periodMs();
+        double suggested = floorTenth(boundMs);
+        if (stalePct < MOSTLY_STALE_PCT || suggested < period * MIN_SLOWDOWN) {
+            return;
+        }
+        double execMeanMs = task.execUs().mean() / 1000.0;
+        double freedMsPerS = execMeanMs * (1000.0 / period - 1000.0 / suggested);
+        Map<String, Object> evidence = new LinkedHashMap<>();
+        evidence.put("stale_runs", task.staleRuns());
+        evidence.put("runs", task.runs());
+        evidence.put("stale_pct", round2(stalePct));
+        evidence.put("input", fastest.name());
+        evidence.put("input_rate_hz", fastest.rateHz());
+        evidence.put("exec_mean_ms", round3(execMeanMs));
+        evidence.put("slowdown_factor", round2(suggested / period));
+        evidence.put("freed_cpu_ms_per_s", round2(freedMsPerS));
+        items.add(new AdviceItem(task.name(), "mostly_stale", period, suggested, evidence, String.format(Locale.ROOT,
+                "'%s' found no new data in %.0f%% of its runs: its fastest input '%s' changes at %.2f Hz, so it could"
+                        + " run %.1fx slower (period %s ms instead of %s ms) and free %.2f ms of CPU per second",
+                task.name(), stalePct, fastest.name(), fastest.rateHz(), suggested / period, num(suggested),
+                num(period), freedMsPerS)));
+    }
+
+    private static void execNearPeriod(TaskReport task, DataReport fastest, Double boundMs, List<AdviceItem> items) {
+        double period = task.periodMs();
+        double p99Ms = task.execUs().p99() / 1000.0;
+        double pct = 100.0 * p99Ms / period;
+        if (pct < EXEC_NEAR_PERIOD_PCT) {
+            return;
+        }
+        double suggested = ceilTenth(p99Ms / (TARGET_EXEC_PCT / 100));
+        boolean periodBound = boundMs != null && suggested > boundMs * (1 + TOLERANCE_PCT / 100);
+        double workTargetMs = round3(period * TARGET_EXEC_PCT / 100);
+        Map<String, Object> evidence = new LinkedHashMap<>();
+        evidence.put("exec_p99_ms", round3(p99Ms));
+        evidence.put("exec_max_ms", round3(task.execUs().max() / 1000.0));
+        evidence.put("exec_p99_pct_of_period", round2(pct));
+        evidence.put("misses", task.misses());
+        evidence.put("miss_pct", task.missPct());
+        String message;
+        if (periodBound) {
+            evidence.put("input", fastest.name());
+            evidence.put("nyquist_bound_ms", round3(boundMs));
+            evidence.put("target_exec_ms", workTargetMs);
+            message = String.format(Locale.ROOT,
+                    "'%s' needs %s ms (p99) of its %s ms period (%.0f%%, %d misses); a longer period would break the"
+                            + " Nyquist bound of '%s' (%s ms), so do less work: p99 <= %s ms",
+                    task.name(), num(round3(p99Ms)), num(period), pct, task.misses(), fastest.name(),
+                    num(round3(boundMs)), num(workTargetMs));
+            suggested = period;
+        } else {
+            message = String.format(Locale.ROOT,
+                    "'%s' needs %s ms (p99) of its %s ms period (%.0f%%, %d misses): lengthen the period to %s ms"
+                            + " (or cut the work to p99 <= %s ms)",
+                    task.name(), num(round3(p99Ms)), num(period), pct, task.misses(), num(suggested),
+                    num(workTargetMs));
+        }
+        items.add(new AdviceItem(task.name(), "exec_near_period", period, suggested, evidence, message));
+    }
+
+    static double floorTenth(double ms) {
+        return Math.max(0.1, Math.floor(ms * 10 + 1e-9) / 10);
+    }
+
+    static double ceilTenth(double ms) {
+        return Math.ceil(ms * 10 - 1e-9) / 10;
+    }
+
+    static double round2(double v) {
+        return Math.round(v * 100.0) / 100.0;
+    }
+
+    static double round3(double v) {
+        return Math.round(v * 1000.0) / 1000.0;
+    }
+
+    static String num(double v) {
+        return v == Math.rint(v) ? Long.toString((long) v)
+                : String.format(Locale.ROOT, "%.3f", v).replaceAll("0+$", "");
+    }
+}

@@ -1,0 +1,78 @@
+package io.rtaware.core.analysis;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+class PeriodAdvisorTest {
+
+    @Test
+    void nyquistFlagsATaskSlowerThanTwiceItsInputRate() {
+        // The paper's case: laser at 10 Hz, obstacle at 100 ms must run at <= 50 ms.
+        var report = Reports.report(List.of(
+                Reports.task("laser", 100, 100, 100, 100, 100, 0, 0),
+                Reports.task("obstacle", 100, 500, 600, 400, 100, 0, 0),
+                Reports.task("occupancy", 50, 500, 600, 400, 200, 100, 0)),
+                List.of(Reports.key("laser", "laser", 10.0, "obstacle", "occupancy")));
+        List<AdviceItem> advice = PeriodAdvisor.advise(report);
+        assertEquals(1, advice.size(), advice.toString());
+        AdviceItem item = advice.get(0);
+        assertEquals("obstacle", item.task());
+        assertEquals("nyquist", item.rule());
+        assertEquals(100.0, item.periodMs());
+        assertEquals(50.0, item.suggestedPeriodMs());
+        assertEquals(10.0, item.evidence().get("input_rate_hz"));
+        assertEquals(50.0, item.evidence().get("nyquist_bound_ms"));
+    }
+
+    @Test
+    void nyquistToleratesRateNoise() {
+        // 100.5 Hz gives a bound of 4.975 ms; a 5 ms consumer is within the 2% tolerance.
+        var report = Reports.report(List.of(Reports.task("b", 5, 100, 100, 100, 100, 50, 0)),
+                List.of(Reports.key("a.out", "a", 100.5, "b")));
+        assertEquals(List.of(), PeriodAdvisor.advise(report));
+    }
+
+    @Test
+    void mostlyStaleSaysHowMuchSlowerAndWhatItFrees() {
+        // 'b' runs every 2 ms, its input changes at 50 Hz (bound 10 ms): 5x slower frees
+        // 0.4 ms * (500 - 100) per second = 160 ms/s.
+        var report = Reports.report(List.of(Reports.task("b", 2, 500, 600, 400, 1000, 900, 0)),
+                List.of(Reports.key("a.out", "a", 50.0, "b")));
+        List<AdviceItem> advice = PeriodAdvisor.advise(report);
+        assertEquals(1, advice.size(), advice.toString());
+        AdviceItem item = advice.get(0);
+        assertEquals("mostly_stale", item.rule());
+        assertEquals(10.0, item.suggestedPeriodMs());
+        assertEquals(90.0, item.evidence().get("stale_pct"));
+        assertEquals(5.0, item.evidence().get("slowdown_factor"));
+        assertEquals(160.0, item.evidence().get("freed_cpu_ms_per_s"));
+        assertTrue(item.message().contains("5.0x slower"), item.message());
+    }
+
+    @Test
+    void execNearPeriodSuggestsALongerPeriod() {
+        // p99 9 ms of a 10 ms period: 90%; 9 / 0.7 = 12.857 -> 12.9 ms.
+        var report = Reports.report(List.of(Reports.task("a", 10, 9000, 9800, 8000, 100, 0, 3)), List.of());
+        List<AdviceItem> advice = PeriodAdvisor.advise(report);
+        assertEquals(1, advice.size());
+        assertEquals("exec_near_period", advice.get(0).rule());
+        assertEquals(12.9, advice.get(0).suggestedPeriodMs());
+        assertTrue(advice.get(0).message().contains("lengthen the period to 12.9 ms"), advice.get(0).message());
+    }
+
+    @Test
+    void execNearPeriodSaysLessWorkWhenNyquistForbidsALongerPeriod() {
+        // Input at 50 Hz: bound 10 ms; 12.9 ms would break it, so: less work, p99 <= 7 ms.
+        var report = Reports.report(List.of(Reports.task("b", 10, 9000, 9800, 8000, 100, 0, 3)),
+                List.of(Reports.key("a.out", "a", 50.0, "b")));
+        List<AdviceItem> advice = PeriodAdvisor.advise(report);
+        assertEquals(1, advice.size(), advice.toString());
+        assertEquals(10.0, advice.get(0).suggestedPeriodMs());
+        assertEquals(7.0, advice.get(0).evidence().get("target_exec_ms"));
+        assertTrue(advice.get(0).message().contains("do less work: p99 <= 7 ms"), advice.get(0).message());
+        assertTrue(AnalysisText.advice(advice).contains("exec_near_period"));
+    }
+}

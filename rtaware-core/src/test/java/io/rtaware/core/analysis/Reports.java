@@ -1,0 +1,31 @@
+package io.rtaware.core.analysis;
+
+import io.rtaware.core.report.DataReport;
+import io.rtaware.core.report.Percentiles;
+import io.rtaware.core.report.Report;
+import io.rtaware.core.report.TaskReport;
+import java.util.List;
+
+/** Hand-built reports for the analysis tests. */
+final class Reports {
+
+    private Reports() {
+    }
+
+    /** A periodic task with the given exec p99/max and mean (us), runs and stale runs. */
+    static TaskReport task(String name, double periodMs, double p99Us, double maxUs, double meanUs, long runs,
+                           long stale, long misses) {
+        return new TaskReport(name, "periodic", periodMs, periodMs, runs, runs, misses,
+                runs == 0 ? 0 : 100.0 * misses / runs, 0, stale, 0, 0,
+                new Percentiles(meanUs, p99Us, p99Us, maxUs, meanUs), Percentiles.EMPTY);
+    }
+
+    static DataReport key(String name, String producer, double rateHz, String... consumers) {
+        return new DataReport(name, producer, List.of(consumers), 100, rateHz,
+                new DataReport.Interval(1000 / rateHz, 1000 / rateHz, 1000 / rateHz));
+    }
+
+    static Report report(List<TaskReport> tasks, List<DataReport> data) {
+        return new Report(Report.SCHEMA, 1.0, 10.0, 0.0, tasks, data);
+    }
+}

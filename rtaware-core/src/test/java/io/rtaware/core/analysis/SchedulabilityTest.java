@@ -1,0 +1,97 @@
+package io.rtaware.core.analysis;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import io.rtaware.core.report.Percentiles;
+import io.rtaware.core.report.TaskReport;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+class SchedulabilityTest {
+
+    /**
+     * Textbook set (C, T) = (1, 4), (2, 6), (3, 12), deadlines = periods, RM order as given.
+     * <pre>
+     * R1 = 1
+     * R2: 2 -> 2 + ceil(2/4)*1 = 3 -> 2 + ceil(3/4)*1 = 3            => R2 = 3
+     * R3: 3 -> 3 + ceil(3/4)*1 + ceil(3/6)*2 = 6
+     *       -> 3 + ceil(6/4)*1 + ceil(6/6)*2 = 7
+     *       -> 3 + ceil(7/4)*1 + ceil(7/6)*2 = 9
+     *       -> 3 + ceil(9/4)*1 + ceil(9/6)*2 = 10
+     *       -> 3 + ceil(10/4)*1 + ceil(10/6)*2 = 10                  => R3 = 10 <= 12
+     * U = 1/4 + 2/6 + 3/12 = 0.8333 > 3 (2^(1/3) - 1) = 0.7798: above the Liu-Layland bound,
+     * yet schedulable by the exact test.
+     * </pre>
+     */
+    @Test
+    void responseTimesOfTheTextbookSet() {
+        long[] r = Schedulability.responseTimes(new long[] {1, 2, 3}, new long[] {4, 6, 12}, new long[] {4, 6, 12});
+        assertArrayEquals(new long[] {1, 3, 10}, r);
+    }
+
+    /**
+     * (C, T) = (2, 4), (3, 6): U = 1.0. R2: 3 -> 3 + ceil(3/4)*2 = 5 -> 3 + ceil(5/4)*2 = 7 > 6.
+     */
+    @Test
+    void responseTimePastTheDeadlineIsMinusOne() {
+        long[] r = Schedulability.responseTimes(new long[] {2, 3}, new long[] {4, 6}, new long[] {4, 6});
+        assertArrayEquals(new long[] {2, -1}, r);
+    }
+
+    @Test
+    void liuLaylandBound() {
+        assertEquals(1.0, Schedulability.liuLaylandBound(1), 1e-12);
+        assertEquals(0.8284, Schedulability.liuLaylandBound(2), 1e-4);
+        assertEquals(0.7798, Schedulability.liuLaylandBound(3), 1e-4);
+    }
+
+    @Test
+    void analyzesAReportInRateMonotonicOrder() {
+        // Registered slowest first; ms periods and exec times of the textbook set.
+        var report = Reports.report(List.of(
+                Reports.task("c", 12, 3000, 4000, 2000, 100, 0, 0),
+                Reports.task("b", 6, 2000, 2000, 1000, 100, 0, 0),
+                Reports.task("a", 4, 1000, 1000, 1000, 100, 0, 0),
+                new TaskReport("sock", "continuous", null, null, 5, 5, 0, 0, 0, 0, 0, 0, Percentiles.EMPTY,
+                        Percentiles.EMPTY)), List.of());
+        SchedulabilityReport s = Schedulability.analyze(report, 2);
+
+        assertEquals(List.of("a", "b", "c"), s.tasks().stream().map(TaskUtilization::task).toList());
+        assertEquals(List.of("sock"), s.excludedTasks());
+        TaskUtilization c = s.tasks().get(2);
+        assertEquals(3, c.rmPriority());
+        assertEquals(0.25, c.utilizationP99(), 1e-9);
+        assertEquals(0.3333, c.utilizationMax(), 1e-9);
+        assertEquals(10.0, c.responseP99Ms(), 1e-9);
+        // With max exec 4 ms: 4 -> 4+1+2 = 7 -> 4+2+4 = 10 -> 4+3+4 = 11 -> 4+3+4 = 11 <= 12.
+        assertEquals(11.0, c.responseMaxMs(), 1e-9);
+        assertEquals(0.8333, s.utilizationP99(), 1e-9);
+        assertEquals(0.9167, s.utilizationMax(), 1e-9);
+        assertEquals(0.7798, s.liuLaylandBound(), 1e-9);
+        assertFalse(s.liuLaylandHoldsP99());
+        assertTrue(s.rtaSchedulableP99());
+        assertTrue(s.rtaSchedulableMax());
+        assertEquals(0.4167, s.utilizationPerCoreP99(), 1e-9);
+        assertTrue(s.verdict().startsWith("schedulable on one core"), s.verdict());
+        assertTrue(s.verdict().contains("although above the Liu-Layland bound"), s.verdict());
+    }
+
+    @Test
+    void overloadIsNamed() {
+        var report = Reports.report(List.of(
+                Reports.task("a", 10, 9000, 9500, 9000, 100, 0, 0),
+                Reports.task("b", 10, 9000, 9500, 9000, 100, 0, 50)), List.of());
+        SchedulabilityReport s = Schedulability.analyze(report, 1);
+        assertFalse(s.rtaSchedulableP99());
+        assertNull(s.tasks().get(1).responseP99Ms());
+        assertEquals(9.0, s.tasks().get(0).responseP99Ms(), 1e-9);
+        assertTrue(s.verdict().contains("'b' can miss its deadline"), s.verdict());
+        assertTrue(s.verdict().contains("overloaded, needs at least 2 cores"), s.verdict());
+        String text = AnalysisText.schedulability(s);
+        assertTrue(text.contains("> deadline"), text);
+    }
+}
