@@ -2,6 +2,8 @@ package io.rtaware.app;
 
 import io.rtaware.app.analyze.AnalyzeCommand;
 import io.rtaware.app.bench.BenchCommand;
+import io.rtaware.app.experiment.ExperimentCommand;
+import io.rtaware.app.experiment.ReportCommand;
 import io.rtaware.app.player.PlayerProbeCommand;
 import io.rtaware.app.run.RunCommand;
 import io.rtaware.app.sim.SimCommand;
@@ -22,7 +24,8 @@ import picocli.CommandLine.Command;
                 "(plus -XX:+ZGenerational on JDK 21-23). ZGC is the measured choice: G1",
                 "pauses of 15-28 ms under garbage load go straight into release lateness",
                 "(README, Performance: rtaware bench --compare --gc-pressure 200)."},
-        subcommands = {RunCommand.class, SimCommand.class, WorldCommand.class, BenchCommand.class, AnalyzeCommand.class, PlayerProbeCommand.class, CommandLine.HelpCommand.class})
+        subcommands = {RunCommand.class, SimCommand.class, WorldCommand.class, BenchCommand.class, AnalyzeCommand.class,
+                ExperimentCommand.class, ReportCommand.class, PlayerProbeCommand.class, CommandLine.HelpCommand.class})
 public final class RtawareCli {
 
     /** Exit status for a mistake in the user's input. */

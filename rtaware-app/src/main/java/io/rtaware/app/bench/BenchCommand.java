@@ -6,6 +6,7 @@ import io.rtaware.app.bench.compare.CompareRun;
 import io.rtaware.app.bench.compare.Goal;
 import io.rtaware.app.bench.compare.RunResult;
 import io.rtaware.app.cli.DurationConverter;
+import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.live.LiveMixin;
 import io.rtaware.app.live.LiveView;
 import io.rtaware.app.report.ReportSections;
@@ -113,13 +114,8 @@ public final class BenchCommand implements Callable<Integer> {
                     + "helper thread (default: ${DEFAULT-VALUE}).")
     double gcPressureMbps;
 
-    @Option(names = "--trace", paramLabel = "FILE",
-            description = "Write a Chrome trace event file (open it in https://ui.perfetto.dev).")
-    Path trace;
-
-    @Option(names = "--trace-capacity", paramLabel = "N", defaultValue = "1048576",
-            description = "Events kept by --trace; older ones are dropped and counted (default: ${DEFAULT-VALUE}).")
-    int traceCapacity;
+    @Mixin
+    TraceOptions trace;
 
     @Option(names = "--adaptive",
             description = "Move the period of tasks declared with a range (a:5ms..50ms:1ms) from run-time evidence.")
@@ -186,9 +182,6 @@ public final class BenchCommand implements Callable<Integer> {
         PrintStream out = System.out;
         Clock clock = timeScale == 1.0 ? new SystemClock() : new ScaledClock(timeScale);
 
-        if (traceCapacity < 1) {
-            throw new UserError("--trace-capacity must be at least 1, got " + traceCapacity);
-        }
         if (rtPriority < 2 || rtPriority > 99) {
             throw new UserError("--rt-priority must be 2..99, got " + rtPriority);
         }
@@ -216,7 +209,7 @@ public final class BenchCommand implements Callable<Integer> {
         if (console != null) {
             monitor.addListener(console);
         }
-        TraceRecorder recorder = trace == null ? null : TraceRecorder.attach(monitor, traceCapacity);
+        TraceRecorder recorder = trace.attach(monitor);
         out.printf("rtaware bench: %d task(s)%s for %s of world time (time scale x%s)%n", specs.size(),
                 chain ? " in a chain" : "", Durations.format(durationNs), timeScale);
         LiveView liveView = LiveView.start(live.options(), monitor, out);
@@ -278,15 +271,7 @@ public final class BenchCommand implements Callable<Integer> {
             out.println();
             out.print(history);
         }
-        if (recorder != null) {
-            try {
-                recorder.write(trace);
-                out.println("trace written to " + trace + " (" + recorder.recorded() + " events, "
-                        + recorder.dropped() + " dropped; open it in https://ui.perfetto.dev)");
-            } catch (IOException e) {
-                System.err.println("rtaware: could not write " + trace + ": " + e.getMessage());
-            }
-        }
+        trace.write(recorder, out, System.err);
         if (json != null) {
             try {
                 doc.write(json);

@@ -16,6 +16,8 @@ import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.ScaledClock;
 import io.rtaware.core.time.SystemClock;
+import io.rtaware.core.trace.TraceRecorder;
+import io.rtaware.app.rt.RealtimeThreads;
 import io.rtaware.nav.NavConfig;
 import io.rtaware.nav.NavController;
 import io.rtaware.player.client.PlayerClient;
@@ -104,6 +106,8 @@ public final class RobotRun {
             server = SimCommandSupport.start(scenario, clock, ServerConfig.defaults(0), options.seed());
             host = ServerConfig.LOOPBACK;
             port = server.port();
+        } else {
+            checkReachable(host, port);
         }
         try {
             return runAgainst(scenario, clock, host, port, server);
@@ -111,6 +115,18 @@ public final class RobotRun {
             if (server != null) {
                 server.close();
             }
+        }
+    }
+
+    /**
+     * The data task reconnects with back-off once running; a server that cannot be reached at the
+     * start is the user's mistake (a wrong address or a server not started) and ends the command.
+     */
+    private static void checkReachable(String host, int port) {
+        try (PlayerClient probe = PlayerClient.connect(host, port, PlayerClientOptions.defaults(), new PlayerCounters())) {
+            probe.serverVersion();
+        } catch (IOException e) {
+            throw new UserError(e.getMessage());
         }
     }
 
@@ -133,6 +149,9 @@ public final class RobotRun {
                 .task(new TaskSpec(PLAYER_TASK, Schedule.continuous(), ErrorPolicy.CONTINUE, player))
                 .listener(new MissCounter(missEvents));
         nav.taskSpecs().forEach(builder::task);
+        if (options.realtime()) {
+            builder.threadSetup(RealtimeThreads.configure(RealtimeThreads.DEFAULT_TOP_PRIORITY, Map.of(), err));
+        }
         Monitor monitor;
         try {
             monitor = builder.build();
@@ -143,6 +162,7 @@ public final class RobotRun {
         if (console != null) {
             monitor.addListener(console);
         }
+        TraceRecorder trace = options.trace().attach(monitor);
 
         AtomicReference<String> outcome = new AtomicReference<>();
         AtomicReference<String> reason = new AtomicReference<>();
@@ -169,6 +189,7 @@ public final class RobotRun {
             live.finish(report, run);
             artifacts.write(report, run, referee, nav.finalMap().orElse(null),
                     scenario.map().orElse(null));
+            options.trace().write(trace, out, err);
         });
         Thread hook = monitor.installShutdownHook();
 

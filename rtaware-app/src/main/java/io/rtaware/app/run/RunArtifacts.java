@@ -1,5 +1,6 @@
 package io.rtaware.app.run;
 
+import io.rtaware.app.report.ReportSections;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
 import io.rtaware.core.report.SummaryTable;
@@ -41,16 +42,19 @@ final class RunArtifacts {
     void write(Report report, RunSection run, Referee referee, OccupancyGrid builtMap, OccupancyMap worldMap) {
         String table = SummaryTable.format(report);
         String runText = runText(run);
+        ReportDocument doc = new ReportDocument(report).section("run", run);
+        String analysis = ReportSections.enrich(doc, Runtime.getRuntime().availableProcessors()).text();
         out.println();
         out.print(table);
         out.println();
         out.print(runText);
+        out.println();
+        out.print(analysis);
         Path dir = options.outDir();
         try {
             Files.createDirectories(dir);
-            ReportDocument doc = new ReportDocument(report).section("run", run);
             doc.write(dir.resolve("report.json"));
-            Files.writeString(dir.resolve("report.md"), markdown(table, runText));
+            Files.writeString(dir.resolve("report.md"), markdown(table, runText, analysis));
             List<Referee.Sample> samples = referee == null ? List.of() : referee.samples();
             writeTrajectoryCsv(dir.resolve("trajectory.csv"), samples);
             if (worldMap != null) {
@@ -81,10 +85,11 @@ final class RunArtifacts {
         return sb.toString();
     }
 
-    private String markdown(String table, String runText) {
+    private String markdown(String table, String runText, String analysis) {
         return "# rtaware run: " + scenario.name() + "\n\n"
                 + "```\n" + runText + "```\n\n"
                 + "## Timing\n\n```\n" + table + "```\n\n"
+                + "## Period advice and schedulability\n\n```\n" + analysis + "```\n\n"
                 + "Definitions: a release is a grid point at which a task was due; a miss is a release whose run did not\n"
                 + "finish by its deadline, plus every release skipped because the task was still running; a stale run\n"
                 + "is a cycle in which none of the task's inputs had new data. Times are world time.\n\n"

@@ -1,6 +1,7 @@
 package io.rtaware.app.run;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.live.LiveMixin;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -62,6 +63,13 @@ public final class RunCommand implements Callable<Integer> {
     String model;
 
     @Mixin
+    TraceOptions trace;
+
+    @Option(names = "--realtime",
+            description = "SCHED_FIFO task threads in rate-monotonic order and 1 ns timer slack (Linux, root or CAP_SYS_NICE); one line and normal threads otherwise.")
+    boolean realtime;
+
+    @Mixin
     LiveMixin live;
 
     @Override
@@ -101,6 +109,6 @@ public final class RunCommand implements Callable<Integer> {
         Path dir = out != null ? out
                 : Path.of("runs", LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
         return new RunOptions(scenario, taskPeriods, timeScale, host, port, seed, dir, quiet, stuckAfterS,
-                gridResolutionM, model, live.options());
+                gridResolutionM, model, trace, realtime, live.options());
     }
 }

@@ -1,5 +1,6 @@
 package io.rtaware.app.run;
 
+import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.live.LiveOptions;
 import java.nio.file.Path;
 
@@ -17,11 +18,13 @@ import java.nio.file.Path;
  * @param stuckAfterS world seconds without progress after which the robot counts as stuck
  * @param gridResolutionM occupancy grid resolution
  * @param modelName the robot's model name for {@code simulation:0} ground truth
+ * @param trace the {@code --trace} options
+ * @param realtime SCHED_FIFO task threads in rate-monotonic order, when permitted
  * @param live whether and where to serve the live view
  */
 public record RunOptions(String scenario, TaskPeriods periods, double timeScale, String playerHost, int playerPort,
                          long seed, Path outDir, boolean quiet, double stuckAfterS, double gridResolutionM,
-                         String modelName, LiveOptions live) {
+                         String modelName, TraceOptions trace, boolean realtime, LiveOptions live) {
 
     /** @return true when the robot is the built-in simulator */
     public boolean builtInSimulator() {

@@ -1,6 +1,8 @@
 package io.rtaware.core.monitor;
 
 import io.rtaware.core.task.ErrorPolicy;
+import io.rtaware.core.time.Clock;
+import io.rtaware.core.time.SystemClock;
 import java.io.PrintStream;
 import java.util.List;
 import java.util.Locale;
@@ -31,6 +33,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
     private static final int KINDS = 6;
 
     private final PrintStream out;
+    private final Clock wallClock;
     private final List<TaskInfo> tasks;
     private final boolean includeStale;
     private final AtomicLongArray pending;
@@ -51,6 +54,20 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
      * @param includeStale whether stale runs are reported live (they are always in the summary)
      */
     public ConsoleReporter(PrintStream out, List<TaskInfo> monitor, boolean includeStale) {
+        this(out, monitor, includeStale, new SystemClock(), true);
+    }
+
+    /**
+     * @param out where lines go
+     * @param monitor the monitor's tasks
+     * @param includeStale whether stale runs are reported live
+     * @param wallClock the clock of the one-line-per-second limit (wall time, not world time: the
+     *     limit protects a person reading a terminal)
+     * @param printerThread false for tests, which call {@link #poll()} themselves
+     */
+    ConsoleReporter(PrintStream out, List<TaskInfo> monitor, boolean includeStale,
+                    Clock wallClock, boolean printerThread) {
+        this.wallClock = Objects.requireNonNull(wallClock, "wallClock");
         this.out = Objects.requireNonNull(out, "out");
         this.tasks = List.copyOf(monitor);
         this.includeStale = includeStale;
@@ -62,9 +79,11 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         this.lastPeriodChange = new AtomicReferenceArray<>(n);
         this.lastLineWallNs = new long[n];
         java.util.Arrays.fill(lastLineWallNs, Long.MIN_VALUE / 2);
-        this.printer = new Thread(this::printLoop, "rtaware-console");
-        this.printer.setDaemon(true);
-        this.printer.start();
+        this.printer = printerThread ? new Thread(this::printLoop, "rtaware-console") : null;
+        if (printer != null) {
+            printer.setDaemon(true);
+            printer.start();
+        }
     }
 
     @Override
@@ -113,7 +132,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
 
     private void printLoop() {
         while (!closed) {
-            printDue(false);
+            poll();
             try {
                 Thread.sleep(POLL_MS);
             } catch (InterruptedException e) {
@@ -122,13 +141,18 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         }
     }
 
+    /** One poll of the printer: prints the tasks whose last line is at least a second old. */
+    void poll() {
+        printDue(false);
+    }
+
     /** Prints every task's folded counts now, regardless of the one-line-per-second limit. */
     public void flush() {
         printDue(true);
     }
 
     private synchronized void printDue(boolean force) {
-        long wallNs = System.nanoTime();
+        long wallNs = wallClock.nanos();
         for (TaskInfo task : tasks) {
             int i = task.index();
             if (!force && wallNs - lastLineWallNs[i] < LINE_INTERVAL_NS) {
@@ -198,7 +222,9 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
     @Override
     public void close() {
         closed = true;
-        printer.interrupt();
+        if (printer != null) {
+            printer.interrupt();
+        }
         flush();
     }
 }

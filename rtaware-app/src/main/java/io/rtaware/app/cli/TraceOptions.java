@@ -1,0 +1,60 @@
+package io.rtaware.app.cli;
+
+import io.rtaware.app.UserError;
+import io.rtaware.core.monitor.Monitor;
+import io.rtaware.core.trace.TraceRecorder;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Path;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code --trace FILE} and {@code --trace-capacity N}, shared by {@code run} and {@code bench}
+ * (a picocli mixin): records the monitor's events into a bounded ring and writes a Chrome trace
+ * event file that Perfetto opens.
+ */
+public final class TraceOptions {
+
+    @Option(names = "--trace", paramLabel = "FILE",
+            description = "Write a Chrome trace event file (open it in https://ui.perfetto.dev).")
+    Path file;
+
+    @Option(names = "--trace-capacity", paramLabel = "N", defaultValue = "1048576",
+            description = "Events kept by --trace; older ones are dropped and counted (default: ${DEFAULT-VALUE}).")
+    int capacity;
+
+    /**
+     * Attaches a recorder if {@code --trace} was given; call before the monitor starts.
+     *
+     * @param monitor the built monitor
+     * @return the recorder, or null without {@code --trace}
+     * @throws UserError if the capacity is not positive
+     */
+    public TraceRecorder attach(Monitor monitor) {
+        if (capacity < 1) {
+            throw new UserError("--trace-capacity must be at least 1, got " + capacity);
+        }
+        return file == null ? null : TraceRecorder.attach(monitor, capacity);
+    }
+
+    /**
+     * Writes the trace file and says where it went; failures are reported, not thrown, so the
+     * rest of the termination goes on.
+     *
+     * @param recorder what {@link #attach} returned (null: nothing to do)
+     * @param out where the confirmation goes
+     * @param err where a failure goes
+     */
+    public void write(TraceRecorder recorder, PrintStream out, PrintStream err) {
+        if (recorder == null) {
+            return;
+        }
+        try {
+            recorder.write(file);
+            out.println("trace written to " + file + " (" + recorder.recorded() + " events, "
+                    + recorder.dropped() + " dropped; open it in https://ui.perfetto.dev)");
+        } catch (IOException e) {
+            err.println("rtaware: could not write " + file + ": " + e.getMessage());
+        }
+    }
+}

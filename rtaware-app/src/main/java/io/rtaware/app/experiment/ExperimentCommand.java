@@ -1,0 +1,187 @@
+package io.rtaware.app.experiment;
+
+import io.rtaware.app.UserError;
+import io.rtaware.experiment.ExperimentInputException;
+import io.rtaware.experiment.ExperimentPlan;
+import io.rtaware.experiment.ExperimentProfile;
+import io.rtaware.experiment.ExperimentRunner;
+import io.rtaware.experiment.ExperimentSets;
+import io.rtaware.experiment.ExperimentSummary;
+import io.rtaware.experiment.ExperimentSummary.SetSummary;
+import io.rtaware.experiment.JvmRunCommand;
+import io.rtaware.experiment.PeriodSet;
+import io.rtaware.experiment.ProgressBar;
+import io.rtaware.experiment.ResultsCsv;
+import io.rtaware.experiment.RunConditions;
+import io.rtaware.experiment.RunResult;
+import io.rtaware.experiment.report.ExperimentReport;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.LocalDateTime;
+import java.time.format.DateTimeFormatter;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code rtaware experiment}: the paper's experiment. Each run is a fresh JVM running
+ * {@code rtaware run}, one at a time, sets interleaved; every finished run is appended to
+ * results.csv; the report (summary.json, report.md, report.html, figures) is written at the
+ * end, or of what finished on Ctrl-C.
+ */
+@Command(name = "experiment", mixinStandardHelpOptions = true,
+        description = {"Reproduce the paper's experiment: several sets of task periods, repeated runs of the course,",
+                "run time, distance to the finish, missed deadlines, and Welch t-tests between sets.",
+                "Each run is a fresh JVM running 'rtaware run'; runs of different sets are interleaved.",
+                "Re-running into the same --out (or --resume) skips the runs already in results.csv.",
+                "Worst case it takes sets x runs x (360 s / time scale) plus JVM start-up.",
+                "Examples:",
+                "  rtaware experiment --sets paper --runs 2 --time-scale 20 --out experiments/quick",
+                "  rtaware experiment --sets my-sets.yaml --runs 10 --out experiments/mine"})
+public final class ExperimentCommand implements Callable<Integer> {
+
+    /** The run's time limit in world seconds (the paper's six minutes), for the worst-case ETA. */
+    static final double RUN_LIMIT_S = 360;
+
+    @Option(names = "--sets", defaultValue = ExperimentSets.PAPER, paramLabel = "paper|FILE",
+            description = "'paper' (Table I: Sets 1-5) or a YAML file of sets (see README) (default: ${DEFAULT-VALUE}).")
+    String sets;
+
+    @Option(names = "--runs", defaultValue = "10", description = "Runs per set (default: ${DEFAULT-VALUE}, as in the paper).")
+    int runs;
+
+    @Option(names = "--scenario", defaultValue = "paper-room", paramLabel = "paper-room|FILE",
+            description = "The course, passed to 'rtaware run' (default: ${DEFAULT-VALUE}).")
+    String scenario;
+
+    @Option(names = "--time-scale", defaultValue = "10", paramLabel = "K",
+            description = "World time runs K times faster than wall time, emulating a computer K times slower "
+                    + "(default: ${DEFAULT-VALUE}, the 'paper' profile with run's 0.05 m grid: see README; the report states it).")
+    double timeScale;
+
+    @Option(names = "--grid-resolution", paramLabel = "M",
+            description = "Occupancy grid cell size in metres, passed to 'rtaware run' (default: run's own default).")
+    Double gridResolutionM;
+
+    @Option(names = "--seed", defaultValue = "1", paramLabel = "S",
+            description = "Seed of run 1; run j of every set uses S + j - 1 (default: ${DEFAULT-VALUE}).")
+    long seed;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "Output folder (default: experiments/<timestamp>).")
+    Path out;
+
+    @Option(names = "--resume", description = "Continue the experiment in --out, skipping the runs already in its results.csv.")
+    boolean resume;
+
+    @Override
+    public Integer call() throws IOException, InterruptedException {
+        ExperimentPlan plan = plan();
+        Path dir = outputFolder();
+        System.setProperty("java.awt.headless", "true");
+        Files.createDirectories(dir);
+        if (!Files.exists(dir.resolve(ExperimentProfile.FILE_NAME))) {
+            ExperimentProfile.of(plan, ExperimentProfile.describeThisMachine()).write(dir);
+        }
+        ProgressBar progress = new ProgressBar(System.err, System.console() != null, System::nanoTime,
+                RUN_LIMIT_S / timeScale);
+        ExperimentRunner runner = new ExperimentRunner(plan, JvmRunCommand.ofCurrentProcess(JvmRunCommand.RTAWARE_MAIN),
+                dir, progress);
+        int total = plan.order().size();
+        System.out.printf(Locale.ROOT, "rtaware experiment: %d set(s) x %d run(s) of %s at time scale x%s into %s%n",
+                plan.sets().size(), runs, scenario, timeScale, dir);
+        CountDownLatch reported = new CountDownLatch(1);
+        Thread hook = new Thread(() -> {
+            runner.interrupt();
+            try {
+                reported.await(2, TimeUnit.MINUTES);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "rtaware-experiment-stop");
+        Runtime.getRuntime().addShutdownHook(hook);
+        try {
+            List<RunResult> rows = runner.run();
+            if (runner.interrupted()) {
+                System.err.println("interrupted: " + rows.size() + " of " + total + " runs are in "
+                        + dir.resolve(ResultsCsv.FILE_NAME) + "; run the same command again (or --resume) to continue");
+            }
+            if (rows.isEmpty()) {
+                return runner.interrupted() ? 130 : 0;
+            }
+            ExperimentSummary summary = ExperimentReport.render(dir, CourseBackgrounds.forScenario(scenario));
+            printSummary(summary, dir);
+            return runner.interrupted() ? 130 : 0;
+        } catch (ExperimentInputException e) {
+            throw new UserError(e.getMessage());
+        } finally {
+            reported.countDown();
+            try {
+                Runtime.getRuntime().removeShutdownHook(hook);
+            } catch (IllegalStateException shuttingDown) {
+                // The hook is running: it returns now that the report is written.
+            }
+        }
+    }
+
+    private ExperimentPlan plan() {
+        if (runs < 1) {
+            throw new UserError("--runs must be at least 1, got " + runs);
+        }
+        if (!(timeScale > 0) || Double.isInfinite(timeScale)) {
+            throw new UserError("--time-scale must be a positive number, got " + timeScale);
+        }
+        if (gridResolutionM != null && !(gridResolutionM > 0)) {
+            throw new UserError("--grid-resolution must be a positive number of metres, got " + gridResolutionM);
+        }
+        List<PeriodSet> periodSets;
+        try {
+            periodSets = ExperimentSets.resolve(sets);
+        } catch (ExperimentInputException e) {
+            throw new UserError(e.getMessage());
+        }
+        return new ExperimentPlan(periodSets, runs, new RunConditions(scenario, timeScale, seed, gridResolutionM));
+    }
+
+    private Path outputFolder() {
+        if (resume) {
+            if (out == null) {
+                throw new UserError("--resume needs --out DIR, the folder of the experiment to continue");
+            }
+            if (!Files.exists(out.resolve(ResultsCsv.FILE_NAME))) {
+                throw new UserError("nothing to resume: " + out.resolve(ResultsCsv.FILE_NAME) + " does not exist");
+            }
+            return out;
+        }
+        if (out != null) {
+            return out;
+        }
+        return Path.of("experiments", LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
+    }
+
+    private static void printSummary(ExperimentSummary summary, Path dir) {
+        System.out.println();
+        System.out.println("set                     periods (ms)     completed  run time (s)    distance to finish (m)  misses (all four)");
+        for (SetSummary s : summary.sets()) {
+            System.out.printf(Locale.ROOT, "%-22s  %-16s %4d/%-4d  %6s +- %-5s  %6s +- %-12s  %s%n", s.name(),
+                    String.join("/", s.periodsMs().values().stream().map(String::valueOf).toList()),
+                    s.completed(), s.runs(), fmt(s.runTimeS().mean()), fmt(s.runTimeS().sd()),
+                    fmt(s.distanceToFinishM().mean()), fmt(s.distanceToFinishM().sd()),
+                    pct(s.misses().get(ExperimentSummary.ALL_TASKS).missPct()));
+        }
+        System.out.println();
+        System.out.println("report: " + dir.resolve(ExperimentReport.MARKDOWN_FILE) + " (and report.html, summary.json, figures)");
+    }
+
+    private static String fmt(Double v) {
+        return v == null ? "n/a" : String.format(Locale.ROOT, "%.2f", v);
+    }
+
+    private static String pct(Double v) {
+        return v == null ? "n/a" : String.format(Locale.ROOT, "%.2f%%", v);
+    }
+}

@@ -1,0 +1,36 @@
+package io.rtaware.app.experiment;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+
+import io.rtaware.app.RtawareCli;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class ExperimentCommandTest {
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void badInputIsAUserErrorAndCreatesNothing() throws Exception {
+        Path out = dir.resolve("exp");
+        assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("experiment", "--runs", "0", "--out", out.toString()));
+        assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("experiment", "--time-scale", "-1", "--out", out.toString()));
+        assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("experiment", "--sets", dir.resolve("none.yaml").toString(),
+                "--out", out.toString()));
+        Path bad = dir.resolve("bad.yaml");
+        Files.writeString(bad, "sets:\n  - periods_ms: {waypoint: 0}\n");
+        assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("experiment", "--sets", bad.toString(), "--out", out.toString()));
+        assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("experiment", "--resume", "--out", out.toString()));
+        assertFalse(Files.exists(out));
+    }
+
+    @Test
+    void reportNeedsAnExperimentFolder() {
+        assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("report", dir.resolve("missing").toString()));
+        assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("report", dir.toString()));
+    }
+}

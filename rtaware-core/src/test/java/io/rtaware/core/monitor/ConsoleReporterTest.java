@@ -1,0 +1,127 @@
+package io.rtaware.core.monitor;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import io.rtaware.core.task.ErrorPolicy;
+import io.rtaware.core.task.Schedule;
+import io.rtaware.core.time.ManualClock;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+
+/** The live console: at most one line per second per task, and every count lands in some line. */
+class ConsoleReporterTest {
+
+    private static final long MS = 1_000_000L;
+
+    private final ByteArrayOutputStream buffer = new ByteArrayOutputStream();
+    private final ManualClock wall = new ManualClock(10_000 * MS);
+    private ConsoleReporter reporter;
+    private TaskInfo planner;
+    private TaskInfo mapper;
+
+    @BeforeEach
+    void setUp() {
+        planner = task("planner", 0);
+        mapper = task("mapper", 1);
+        reporter = new ConsoleReporter(new PrintStream(buffer, true, StandardCharsets.UTF_8),
+                List.of(planner, mapper), true, wall, false);
+    }
+
+    private static TaskInfo task(String name, int index) {
+        return new TaskInfo() {
+            @Override
+            public String name() {
+                return name;
+            }
+
+            @Override
+            public int index() {
+                return index;
+            }
+
+            @Override
+            public Schedule schedule() {
+                return Schedule.periodic(100 * MS);
+            }
+        };
+    }
+
+    private List<String> lines() {
+        return buffer.toString(StandardCharsets.UTF_8).lines().toList();
+    }
+
+    private void misses(TaskInfo task, int n) {
+        for (int i = 0; i < n; i++) {
+            reporter.onDeadlineMiss(task, 0, 100 * MS, 150 * MS, true);
+        }
+    }
+
+    private static long countOf(List<String> lines, String task, String what) {
+        Pattern p = Pattern.compile("\\] " + task + ":.*? (\\d+) " + what);
+        long sum = 0;
+        for (String line : lines) {
+            Matcher m = p.matcher(line);
+            if (m.find()) {
+                sum += Long.parseLong(m.group(1));
+            }
+        }
+        return sum;
+    }
+
+    @Test
+    void atMostOneLinePerSecondPerTaskWithFoldedCounts() {
+        misses(planner, 3);
+        reporter.poll();
+        assertEquals(1, lines().size(), "first events are printed at the next poll: " + lines());
+        assertTrue(lines().get(0).contains("planner: 3 deadline misses"), lines().get(0));
+
+        misses(planner, 4);
+        wall.advance(500 * MS);
+        reporter.poll();
+        assertEquals(1, lines().size(), "no second line for the same task within a second");
+
+        wall.advance(600 * MS);
+        reporter.poll();
+        assertEquals(2, lines().size(), "a second later the folded events get their line");
+        assertTrue(lines().get(1).contains("planner: 4 deadline misses"), lines().get(1));
+    }
+
+    @Test
+    void theLimitIsPerTask() {
+        misses(planner, 1);
+        reporter.poll();
+        misses(mapper, 2);
+        reporter.poll();
+        assertEquals(2, lines().size(), "another task's line is not held back by the planner's: " + lines());
+        assertTrue(lines().get(1).startsWith("[rtaware] mapper: 2 deadline misses"), lines().get(1));
+    }
+
+    @Test
+    void noCountIsDroppedWhateverTheRate() {
+        long total = 0;
+        for (int second = 0; second < 5; second++) {
+            for (int poll = 0; poll < 10; poll++) {
+                misses(planner, 7);
+                reporter.onStaleRun(planner, 0);
+                reporter.onTaskError(planner, new IllegalStateException("boom"), ErrorPolicy.CONTINUE, 0);
+                total += 7;
+                wall.advance(100 * MS);
+                reporter.poll();
+            }
+        }
+        reporter.close();
+        assertTrue(lines().size() <= 6, "at most one line per second (+ the flush), got " + lines().size());
+        assertEquals(total, countOf(lines(), "planner", "deadline miss"), "every miss counted in some line");
+        assertEquals(50, countOf(lines(), "planner", "stale run"), "every stale run counted");
+        assertEquals(50, countOf(lines(), "planner", "error"), "every error counted");
+        assertTrue(lines().get(lines().size() - 1).contains("last: IllegalStateException: boom"),
+                "an error line names the exception: " + lines().get(lines().size() - 1));
+    }
+}

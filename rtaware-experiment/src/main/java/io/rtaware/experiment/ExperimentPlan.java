@@ -1,0 +1,66 @@
+package io.rtaware.experiment;
+
+import java.math.BigDecimal;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+
+/**
+ * The runs of an experiment and the {@code rtaware run} arguments of each.
+ *
+ * @param sets the sets compared, in order (set numbers count from 1 in this order)
+ * @param runsPerSet runs of each set
+ * @param conditions what all runs share
+ */
+public record ExperimentPlan(List<PeriodSet> sets, int runsPerSet, RunConditions conditions) {
+
+    /** Validates the fields. */
+    public ExperimentPlan {
+        sets = List.copyOf(sets);
+        if (sets.isEmpty()) {
+            throw new IllegalArgumentException("an experiment needs at least one set");
+        }
+        if (runsPerSet < 1) {
+            throw new IllegalArgumentException("runs per set must be at least 1, got " + runsPerSet);
+        }
+        Objects.requireNonNull(conditions, "conditions");
+    }
+
+    /**
+     * @return every run, interleaved across sets (set 1 run 1, set 2 run 1, ..., set 1 run 2, ...)
+     *     so that slow drift of the machine does not bias one set
+     */
+    public List<PlannedRun> order() {
+        List<PlannedRun> order = new ArrayList<>();
+        for (int run = 1; run <= runsPerSet; run++) {
+            for (int set = 1; set <= sets.size(); set++) {
+                order.add(new PlannedRun(set, run, sets.get(set - 1)));
+            }
+        }
+        return order;
+    }
+
+    /**
+     * @param planned a run of this plan
+     * @param runDir the run's output folder
+     * @return the arguments after {@code rtaware run}
+     */
+    public List<String> runArguments(PlannedRun planned, Path runDir) {
+        List<String> args = new ArrayList<>(List.of(
+                "--scenario", conditions.scenario(),
+                "--periods", planned.periods().periodsArgument(),
+                "--time-scale", plain(conditions.timeScale()),
+                "--seed", Long.toString(conditions.seedOf(planned.run()))));
+        if (conditions.gridResolutionM() != null) {
+            args.add("--grid-resolution");
+            args.add(plain(conditions.gridResolutionM()));
+        }
+        args.addAll(List.of("--out", runDir.toString(), "--quiet"));
+        return args;
+    }
+
+    private static String plain(double v) {
+        return BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
+    }
+}

@@ -1,0 +1,94 @@
+package io.rtaware.experiment;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import io.rtaware.core.report.ReportDocument;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+
+/**
+ * The conditions an experiment ran under, stated in its report so the numbers are read
+ * honestly: the course, the time scale (how much slower a computer is emulated), the seed, the
+ * occupancy grid's resolution, the runs per set and the machine. Written to
+ * {@code experiment.json} when the experiment starts; when that file is missing, the report
+ * rebuilds all but the machine from {@code results.csv}.
+ *
+ * @param scenario the course
+ * @param timeScale world time runs this many times faster than wall time
+ * @param seed seed of run 1 (run j uses seed + j - 1)
+ * @param gridResolutionM grid cell size in metres, or null for {@code run}'s default
+ * @param runsPerSet runs planned per set
+ * @param machine the machine the runs were made on, or null if not recorded
+ */
+public record ExperimentProfile(String scenario, double timeScale, long seed, Double gridResolutionM,
+                                int runsPerSet, String machine) {
+
+    /** The profile's file name inside an experiment folder. */
+    public static final String FILE_NAME = "experiment.json";
+
+    private static final ObjectMapper MAPPER = ReportDocument.mapper();
+
+    /**
+     * @param plan the experiment's plan
+     * @param machine a description of this machine
+     * @return the profile
+     */
+    public static ExperimentProfile of(ExperimentPlan plan, String machine) {
+        RunConditions c = plan.conditions();
+        return new ExperimentProfile(c.scenario(), c.timeScale(), c.seed(), c.gridResolutionM(), plan.runsPerSet(), machine);
+    }
+
+    /**
+     * @param rows the results of an experiment (at least one)
+     * @return the profile implied by the first row; the machine is unknown
+     */
+    public static ExperimentProfile fromResults(List<RunResult> rows) {
+        RunConditions c = rows.get(0).conditions();
+        int runs = rows.stream().mapToInt(RunResult::run).max().orElse(0);
+        return new ExperimentProfile(c.scenario(), c.timeScale(), c.seed(), c.gridResolutionM(), runs, null);
+    }
+
+    /**
+     * @param dir an experiment folder
+     * @throws IOException if writing fails
+     */
+    public void write(Path dir) throws IOException {
+        Files.writeString(dir.resolve(FILE_NAME), MAPPER.writeValueAsString(this) + "\n");
+    }
+
+    /**
+     * @param dir an experiment folder
+     * @return its profile, if {@code experiment.json} is there and readable
+     */
+    public static Optional<ExperimentProfile> read(Path dir) {
+        Path file = dir.resolve(FILE_NAME);
+        if (!Files.exists(file)) {
+            return Optional.empty();
+        }
+        try {
+            return Optional.of(MAPPER.readValue(file.toFile(), ExperimentProfile.class));
+        } catch (IOException e) {
+            return Optional.empty();
+        }
+    }
+
+    /** @return this machine: CPU model, cores, operating system and Java version */
+    public static String describeThisMachine() {
+        String cpu = "unknown CPU";
+        try {
+            Path info = Path.of("/proc/cpuinfo");
+            if (Files.isReadable(info)) {
+                cpu = Files.readAllLines(info).stream().filter(l -> l.startsWith("model name"))
+                        .map(l -> l.substring(l.indexOf(':') + 1).strip()).findFirst().orElse(cpu);
+            }
+        } catch (IOException e) {
+            cpu = "unknown CPU (" + e.getMessage() + ")";
+        }
+        return String.format(Locale.ROOT, "%s, %d cores, %s %s %s, Java %s", cpu,
+                Runtime.getRuntime().availableProcessors(), System.getProperty("os.name"),
+                System.getProperty("os.version"), System.getProperty("os.arch"), System.getProperty("java.version"));
+    }
+}

@@ -1,0 +1,217 @@
+package io.rtaware.experiment;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Objects;
+import java.util.Set;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * Makes the runs of a plan one at a time, each in its own process, in interleaved order, and
+ * appends each finished run to {@code results.csv} at once. Runs already in the file are skipped,
+ * so re-running into the same folder resumes. {@link #interrupt()} (from a shutdown hook) stops
+ * the run under way and ends the loop; the folder stays valid.
+ *
+ * <p>Layout of the output folder: {@code results.csv}, and {@code runs/setI-runJ/} per run with
+ * the run's {@code report.json}, {@code trajectory.csv} and {@code run.log} (its output).
+ */
+public final class ExperimentRunner {
+
+    /** The folder holding one sub-folder per run. */
+    public static final String RUNS_DIR = "runs";
+    /** The file in each run's folder that receives the run's stdout and stderr. */
+    public static final String LOG_FILE = "run.log";
+
+    private static final long STOP_GRACE_S = 10;
+    private static final int EXIT_SIGINT = 130;
+    private static final int EXIT_SIGTERM = 143;
+
+    private final ExperimentPlan plan;
+    private final RunCommand command;
+    private final Path outDir;
+    private final ProgressBar progress;
+    private volatile boolean interrupted;
+    private volatile Process current;
+
+    /**
+     * @param plan the runs to make
+     * @param command how to start one run
+     * @param outDir the experiment folder (created if missing)
+     * @param progress where progress goes
+     */
+    public ExperimentRunner(ExperimentPlan plan, RunCommand command, Path outDir, ProgressBar progress) {
+        this.plan = Objects.requireNonNull(plan, "plan");
+        this.command = Objects.requireNonNull(command, "command");
+        this.outDir = Objects.requireNonNull(outDir, "outDir");
+        this.progress = Objects.requireNonNull(progress, "progress");
+    }
+
+    /** @return the results file of this experiment */
+    public Path resultsFile() {
+        return outDir.resolve(ResultsCsv.FILE_NAME);
+    }
+
+    /**
+     * Makes every run of the plan that is not yet in {@code results.csv}.
+     *
+     * @return every row of {@code results.csv} when the loop ends (finished or interrupted)
+     * @throws IOException if the folder cannot be written
+     * @throws InterruptedException if this thread is interrupted while waiting for a run
+     * @throws ExperimentInputException if the folder holds results of other settings, or
+     *     {@code run} rejects its arguments (exit status 2)
+     */
+    public List<RunResult> run() throws IOException, InterruptedException {
+        Files.createDirectories(outDir.resolve(RUNS_DIR));
+        Path csv = resultsFile();
+        List<RunResult> existing = Files.exists(csv) ? ResultsCsv.read(csv) : List.of();
+        Set<String> done = new HashSet<>();
+        for (RunResult r : existing) {
+            checkMatchesPlan(r);
+            done.add(r.set() + "/" + r.run());
+        }
+        List<PlannedRun> order = plan.order();
+        int total = order.size();
+        int finished = (int) order.stream().filter(p -> done.contains(p.set() + "/" + p.run())).count();
+        if (finished > 0) {
+            progress.note("resuming: " + finished + " of " + total + " runs already in " + csv);
+        }
+        for (PlannedRun planned : order) {
+            if (interrupted) {
+                break;
+            }
+            if (done.contains(planned.set() + "/" + planned.run())) {
+                continue;
+            }
+            progress.started(planned, finished, total);
+            RunResult result = runOne(planned);
+            if (result == null) {
+                break;
+            }
+            ResultsCsv.append(csv, result);
+            finished++;
+            progress.finished(result, finished, total);
+        }
+        progress.close();
+        return Files.exists(csv) ? ResultsCsv.read(csv) : List.of();
+    }
+
+    /**
+     * Stops the run under way (SIGTERM, then a forced kill after a grace period) and makes
+     * {@link #run()} return after it. Safe to call from a shutdown hook.
+     */
+    public void interrupt() {
+        interrupted = true;
+        Process p = current;
+        if (p != null && p.isAlive()) {
+            p.destroy();
+            try {
+                if (!p.waitFor(STOP_GRACE_S, TimeUnit.SECONDS)) {
+                    p.destroyForcibly();
+                }
+            } catch (InterruptedException e) {
+                p.destroyForcibly();
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+
+    /** @return true once {@link #interrupt()} was called or a run reported it was interrupted */
+    public boolean interrupted() {
+        return interrupted;
+    }
+
+    private RunResult runOne(PlannedRun planned) throws IOException, InterruptedException {
+        Path runDir = outDir.resolve(RUNS_DIR).resolve(planned.folderName());
+        deleteRecursively(runDir);
+        Files.createDirectories(runDir);
+        Path log = runDir.resolve(LOG_FILE);
+        List<String> cmd = command.commandLine(plan.runArguments(planned, runDir));
+        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();
+        current = p;
+        int exit;
+        try {
+            exit = p.waitFor();
+        } catch (InterruptedException e) {
+            p.destroyForcibly();
+            throw e;
+        } finally {
+            current = null;
+        }
+        if (interrupted || exit == EXIT_SIGINT || exit == EXIT_SIGTERM) {
+            // Ctrl-C reaches the run too (same process group): an interrupted run is not a result.
+            interrupted = true;
+            return null;
+        }
+        if (exit == 2) {
+            throw new ExperimentInputException("rtaware run rejected its arguments (set " + planned.set() + " run "
+                    + planned.run() + ", exit status 2): " + lastLine(log) + " (full output: " + log + ")");
+        }
+        Path report = runDir.resolve(RunReports.REPORT_FILE);
+        if (exit != 0 || !Files.exists(report)) {
+            progress.note("run set " + planned.set() + " run " + planned.run() + " failed (exit status " + exit
+                    + (Files.exists(report) ? "" : ", no report.json") + "); recorded as 'error', see " + log);
+            return RunResult.error(planned.set(), planned.run(), planned.periods(), plan.conditions());
+        }
+        RunResult result;
+        try {
+            result = RunReports.read(report, planned.set(), planned.run(), planned.periods(), plan.conditions());
+        } catch (IOException | RuntimeException e) {
+            progress.note("run set " + planned.set() + " run " + planned.run() + ": unreadable report (" + e.getMessage()
+                    + "); recorded as 'error'");
+            return RunResult.error(planned.set(), planned.run(), planned.periods(), plan.conditions());
+        }
+        if ("interrupted".equals(result.outcome())) {
+            interrupted = true;
+            return null;
+        }
+        return result;
+    }
+
+    private void checkMatchesPlan(RunResult r) {
+        String where = resultsFile() + " (set " + r.set() + " run " + r.run() + ")";
+        if (r.set() > plan.sets().size()) {
+            throw new ExperimentInputException(where + " has set " + r.set() + " but only " + plan.sets().size()
+                    + " sets are planned; use the same --sets or another --out");
+        }
+        PeriodSet planned = plan.sets().get(r.set() - 1);
+        if (!planned.periodsMs().equals(r.periods().periodsMs())) {
+            throw new ExperimentInputException(where + " was made with periods " + r.periods().shortLabel()
+                    + ", the planned set has " + planned.shortLabel() + "; use the same --sets or another --out");
+        }
+        RunConditions c = plan.conditions();
+        RunConditions rc = r.conditions();
+        if (!c.scenario().equals(rc.scenario()) || c.timeScale() != rc.timeScale() || c.seed() != rc.seed()
+                || !Objects.equals(c.gridResolutionM(), rc.gridResolutionM())) {
+            throw new ExperimentInputException(where + " was made with scenario " + rc.scenario() + ", time scale "
+                    + rc.timeScale() + ", seed " + rc.seed() + ", grid " + gridLabel(rc.gridResolutionM())
+                    + "; now scenario " + c.scenario() + ", time scale " + c.timeScale() + ", seed " + c.seed()
+                    + ", grid " + gridLabel(c.gridResolutionM()) + "; use the same options or another --out");
+        }
+    }
+
+    private static String gridLabel(Double m) {
+        return m == null ? "default" : m + " m";
+    }
+
+    private static String lastLine(Path log) throws IOException {
+        if (!Files.exists(log)) {
+            return "(no output)";
+        }
+        List<String> lines = Files.readAllLines(log).stream().filter(l -> !l.isBlank()).toList();
+        return lines.isEmpty() ? "(no output)" : lines.get(lines.size() - 1).strip();
+    }
+
+    private static void deleteRecursively(Path dir) throws IOException {
+        if (!Files.exists(dir)) {
+            return;
+        }
+        try (var paths = Files.walk(dir)) {
+            for (Path p : paths.sorted(java.util.Comparator.reverseOrder()).toList()) {
+                Files.delete(p);
+            }
+        }
+    }
+}

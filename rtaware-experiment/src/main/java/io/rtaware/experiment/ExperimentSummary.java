@@ -1,0 +1,153 @@
+package io.rtaware.experiment;
+
+import io.rtaware.experiment.stats.SampleStats;
+import io.rtaware.experiment.stats.WelchTest;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+
+/**
+ * Everything the report says, as written to {@code summary.json}: the profile, per set the
+ * rows of Tables I and II and the missed deadlines, Welch t-tests between every pair of sets,
+ * and the paper's published numbers. Computed from {@code results.csv} rows alone, so the
+ * experiment and {@code rtaware report} give the same numbers.
+ *
+ * <p>Which runs count: run time statistics are over the runs that completed the course (the
+ * time to finish is only defined for them, as in the paper's Table I); distance statistics and
+ * missed deadlines are over every run that ended on the course (completed, timeout, stuck);
+ * {@code error} rows count in {@code runs} and {@code outcomes} only.
+ *
+ * @param schema always {@link #SCHEMA}
+ * @param profile the conditions of the runs
+ * @param sets per set, in set order
+ * @param tTests Welch tests per quantity ({@code run_time_s}, {@code distance_to_finish_m})
+ * @param paper the paper's published numbers (the paper's, not ours)
+ */
+public record ExperimentSummary(String schema, ExperimentProfile profile, List<SetSummary> sets,
+                                Map<String, List<PairTest>> tTests, PaperReference.Published paper) {
+
+    /** The schema identifier of {@code summary.json}. */
+    public static final String SCHEMA = "rtaware.experiment/1";
+    /** Name of the pooled entry of the four tasks in {@link SetSummary#misses()}. */
+    public static final String ALL_TASKS = "all";
+    /** The quantity keys of {@link #tTests()}. */
+    public static final List<String> TESTED = List.of("run_time_s", "distance_to_finish_m");
+
+    /**
+     * One set's results.
+     *
+     * @param set the set's number
+     * @param name the set's name
+     * @param periodsMs the periods
+     * @param runs rows in results.csv for this set
+     * @param completed runs that completed the course ("trials completed")
+     * @param outcomes runs per outcome
+     * @param runTimeS run time over completed runs (Table I)
+     * @param distanceToFinishM distance to the finish over measured runs (Table II)
+     * @param distanceTravelledM path length over measured runs
+     * @param collisions collisions summed over measured runs
+     * @param misses per task and {@link #ALL_TASKS}, pooled over measured runs
+     */
+    public record SetSummary(int set, String name, Map<String, Long> periodsMs, int runs, int completed,
+                             Map<String, Integer> outcomes, SampleStats runTimeS, SampleStats distanceToFinishM,
+                             SampleStats distanceTravelledM, long collisions, Map<String, Misses> misses) {
+    }
+
+    /**
+     * Missed deadlines pooled over runs: {@code missPct = 100 * misses / releases}.
+     *
+     * @param releases releases summed over runs
+     * @param misses misses summed over runs
+     * @param missPct pooled percentage, or null with no releases
+     * @param staleRuns stale runs summed over runs
+     * @param execP99UsMean mean over runs of the per-run p99 execution time, µs (null for {@link #ALL_TASKS})
+     */
+    public record Misses(long releases, long misses, Double missPct, long staleRuns, Double execP99UsMean) {
+    }
+
+    /**
+     * A Welch test between two sets.
+     *
+     * @param setA the first set's number
+     * @param setB the second set's number
+     * @param test the result (t is mean of A minus mean of B over its standard error)
+     */
+    public record PairTest(int setA, int setB, WelchTest test) {
+    }
+
+    /**
+     * @param rows every row of results.csv (at least one)
+     * @param profile the conditions (see {@link ExperimentProfile#fromResults})
+     * @return the summary
+     */
+    public static ExperimentSummary of(List<RunResult> rows, ExperimentProfile profile) {
+        Map<Integer, List<RunResult>> bySet = new TreeMap<>();
+        rows.forEach(r -> bySet.computeIfAbsent(r.set(), k -> new ArrayList<>()).add(r));
+        List<SetSummary> sets = new ArrayList<>();
+        bySet.forEach((set, runs) -> sets.add(summarize(set, runs)));
+        Map<String, List<PairTest>> tests = new LinkedHashMap<>();
+        List<Integer> numbers = new ArrayList<>(bySet.keySet());
+        for (String quantity : TESTED) {
+            List<PairTest> pairs = new ArrayList<>();
+            for (int i = 0; i < numbers.size(); i++) {
+                for (int j = i + 1; j < numbers.size(); j++) {
+                    List<RunResult> a = bySet.get(numbers.get(i));
+                    List<RunResult> b = bySet.get(numbers.get(j));
+                    pairs.add(new PairTest(numbers.get(i), numbers.get(j),
+                            WelchTest.of(sample(a, quantity), sample(b, quantity))));
+                }
+            }
+            tests.put(quantity, pairs);
+        }
+        return new ExperimentSummary(SCHEMA, profile, sets, tests, PaperReference.published());
+    }
+
+    /**
+     * @param runs the rows of one set
+     * @param quantity {@code run_time_s} (completed runs) or {@code distance_to_finish_m} (measured runs)
+     * @return the sample the statistics and tests use
+     */
+    public static double[] sample(List<RunResult> runs, String quantity) {
+        return switch (quantity) {
+            case "run_time_s" -> runs.stream().filter(RunResult::completed).mapToDouble(RunResult::runTimeS).toArray();
+            case "distance_to_finish_m" -> runs.stream().filter(RunResult::measured).mapToDouble(RunResult::distanceToFinishM).toArray();
+            case "distance_travelled_m" -> runs.stream().filter(RunResult::measured).mapToDouble(RunResult::distanceTravelledM).toArray();
+            default -> throw new IllegalArgumentException("unknown quantity " + quantity);
+        };
+    }
+
+    private static SetSummary summarize(int set, List<RunResult> runs) {
+        RunResult first = runs.get(0);
+        Map<String, Integer> outcomes = new TreeMap<>();
+        runs.forEach(r -> outcomes.merge(r.outcome(), 1, Integer::sum));
+        List<RunResult> measured = runs.stream().filter(RunResult::measured).toList();
+        Map<String, Misses> misses = new LinkedHashMap<>();
+        long allReleases = 0;
+        long allMisses = 0;
+        long allStale = 0;
+        for (String task : PeriodSet.TASKS) {
+            List<TaskResult> t = measured.stream().map(r -> r.tasks().get(task)).filter(java.util.Objects::nonNull).toList();
+            long releases = t.stream().mapToLong(TaskResult::releases).sum();
+            long missed = t.stream().mapToLong(TaskResult::misses).sum();
+            long stale = t.stream().mapToLong(TaskResult::staleRuns).sum();
+            SampleStats p99 = SampleStats.of(t.stream().mapToDouble(TaskResult::execP99Us).toArray());
+            misses.put(task, new Misses(releases, missed, pct(missed, releases), stale, p99.mean()));
+            allReleases += releases;
+            allMisses += missed;
+            allStale += stale;
+        }
+        misses.put(ALL_TASKS, new Misses(allReleases, allMisses, pct(allMisses, allReleases), allStale, null));
+        long collisions = measured.stream().map(RunResult::collisions).filter(java.util.Objects::nonNull)
+                .mapToLong(Integer::longValue).sum();
+        return new SetSummary(set, first.periods().name(), first.periods().periodsMs(), runs.size(),
+                (int) runs.stream().filter(RunResult::completed).count(), outcomes,
+                SampleStats.of(sample(runs, "run_time_s")), SampleStats.of(sample(runs, "distance_to_finish_m")),
+                SampleStats.of(sample(runs, "distance_travelled_m")), collisions, misses);
+    }
+
+    private static Double pct(long misses, long releases) {
+        return releases == 0 ? null : 100.0 * misses / releases;
+    }
+}

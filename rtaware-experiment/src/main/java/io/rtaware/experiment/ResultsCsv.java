@@ -1,0 +1,258 @@
+package io.rtaware.experiment;
+
+import java.io.IOException;
+import java.io.RandomAccessFile;
+import java.math.BigDecimal;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * {@code results.csv}: one row per finished run, appended (and flushed) as each run ends, so an
+ * interrupted experiment loses nothing that finished. Columns, in order:
+ *
+ * <pre>
+ * set, set_name, run, scenario, time_scale, seed, grid_resolution_m,
+ * waypoint_period_ms, obstacle_period_ms, occupancy_period_ms, planner_period_ms,
+ * outcome, run_time_s, distance_to_finish_m, distance_travelled_m, collisions,
+ * waypoints_reached, waypoints_total,
+ * then for each task T of waypoint, obstacle, occupancy, planner:
+ * T_releases, T_misses, T_miss_pct, T_stale_runs, T_exec_p99_us
+ * </pre>
+ *
+ * RFC 4180 quoting; an empty field is a value the run did not give (an {@code error} row, or
+ * {@code grid_resolution_m} when {@code run}'s default was used). Numbers are written exactly
+ * (shortest decimal that reads back to the same double).
+ */
+public final class ResultsCsv {
+
+    /** The file name inside an experiment folder. */
+    public static final String FILE_NAME = "results.csv";
+
+    private static final List<String> TASK_COLUMNS = List.of("releases", "misses", "miss_pct", "stale_runs", "exec_p99_us");
+
+    /** The header row's column names. */
+    public static final List<String> HEADER = header();
+
+    private ResultsCsv() {
+    }
+
+    private static List<String> header() {
+        List<String> h = new ArrayList<>(List.of("set", "set_name", "run", "scenario", "time_scale", "seed", "grid_resolution_m"));
+        for (String task : PeriodSet.TASKS) {
+            h.add(task + "_period_ms");
+        }
+        h.addAll(List.of("outcome", "run_time_s", "distance_to_finish_m", "distance_travelled_m", "collisions",
+                "waypoints_reached", "waypoints_total"));
+        for (String task : PeriodSet.TASKS) {
+            for (String c : TASK_COLUMNS) {
+                h.add(task + "_" + c);
+            }
+        }
+        return List.copyOf(h);
+    }
+
+    /**
+     * Appends one row, writing the header first if the file is new, and dropping a partial last
+     * line left by a process that was killed while writing.
+     *
+     * @param file the results file
+     * @param result the finished run
+     * @throws IOException if writing fails
+     */
+    public static void append(Path file, RunResult result) throws IOException {
+        repairPartialLine(file);
+        StringBuilder text = new StringBuilder();
+        if (!Files.exists(file) || Files.size(file) == 0) {
+            text.append(String.join(",", HEADER)).append('\n');
+        }
+        text.append(format(result)).append('\n');
+        Files.writeString(file, text, StandardCharsets.UTF_8, StandardOpenOption.CREATE, StandardOpenOption.APPEND,
+                StandardOpenOption.WRITE, StandardOpenOption.DSYNC);
+    }
+
+    private static void repairPartialLine(Path file) throws IOException {
+        if (!Files.exists(file) || Files.size(file) == 0) {
+            return;
+        }
+        try (RandomAccessFile raf = new RandomAccessFile(file.toFile(), "rw")) {
+            long length = raf.length();
+            long pos = length - 1;
+            raf.seek(pos);
+            if (raf.read() == '\n') {
+                return;
+            }
+            while (pos > 0) {
+                raf.seek(pos - 1);
+                if (raf.read() == '\n') {
+                    break;
+                }
+                pos--;
+            }
+            raf.setLength(pos);
+        }
+    }
+
+    /**
+     * @param r a run
+     * @return its CSV row, without the line end
+     */
+    public static String format(RunResult r) {
+        List<String> f = new ArrayList<>();
+        f.add(Integer.toString(r.set()));
+        f.add(quote(r.periods().name()));
+        f.add(Integer.toString(r.run()));
+        f.add(quote(r.conditions().scenario()));
+        f.add(number(r.conditions().timeScale()));
+        f.add(Long.toString(r.conditions().seedOf(r.run())));
+        f.add(r.conditions().gridResolutionM() == null ? "" : number(r.conditions().gridResolutionM()));
+        r.periods().periodsMs().values().forEach(p -> f.add(Long.toString(p)));
+        f.add(quote(r.outcome()));
+        f.add(number(r.runTimeS()));
+        f.add(number(r.distanceToFinishM()));
+        f.add(number(r.distanceTravelledM()));
+        f.add(integer(r.collisions()));
+        f.add(integer(r.waypointsReached()));
+        f.add(integer(r.waypointsTotal()));
+        for (String task : PeriodSet.TASKS) {
+            TaskResult t = r.tasks().get(task);
+            if (t == null) {
+                TASK_COLUMNS.forEach(c -> f.add(""));
+            } else {
+                f.add(Long.toString(t.releases()));
+                f.add(Long.toString(t.misses()));
+                f.add(number(t.missPct()));
+                f.add(Long.toString(t.staleRuns()));
+                f.add(number(t.execP99Us()));
+            }
+        }
+        return String.join(",", f);
+    }
+
+    /**
+     * Reads every complete row. A last line without its line end (a write cut short) is ignored.
+     *
+     * @param file a results file written by {@link #append}
+     * @return the runs, in file order
+     * @throws IOException if the file cannot be read
+     * @throws ExperimentInputException if it is not an rtaware results file
+     */
+    public static List<RunResult> read(Path file) throws IOException {
+        String text = Files.readString(file, StandardCharsets.UTF_8);
+        List<String> lines = new ArrayList<>(text.lines().toList());
+        if (!text.isEmpty() && !text.endsWith("\n")) {
+            lines.remove(lines.size() - 1);
+        }
+        if (lines.isEmpty()) {
+            return List.of();
+        }
+        if (!split(lines.get(0)).equals(HEADER)) {
+            throw new ExperimentInputException(file + ": the header is not that of rtaware's results.csv (expected "
+                    + String.join(",", HEADER.subList(0, 4)) + ",...)");
+        }
+        List<RunResult> rows = new ArrayList<>();
+        for (int i = 1; i < lines.size(); i++) {
+            if (lines.get(i).isBlank()) {
+                continue;
+            }
+            try {
+                rows.add(parse(split(lines.get(i))));
+            } catch (RuntimeException e) {
+                throw new ExperimentInputException(file + " line " + (i + 1) + ": " + e.getMessage());
+            }
+        }
+        return rows;
+    }
+
+    private static RunResult parse(List<String> f) {
+        if (f.size() != HEADER.size()) {
+            throw new IllegalArgumentException("expected " + HEADER.size() + " fields, got " + f.size());
+        }
+        Map<String, String> row = new LinkedHashMap<>();
+        for (int i = 0; i < HEADER.size(); i++) {
+            row.put(HEADER.get(i), f.get(i));
+        }
+        int run = Integer.parseInt(row.get("run"));
+        Map<String, Long> periods = new LinkedHashMap<>();
+        PeriodSet.TASKS.forEach(t -> periods.put(t, Long.parseLong(row.get(t + "_period_ms"))));
+        String grid = row.get("grid_resolution_m");
+        RunConditions conditions = new RunConditions(row.get("scenario"), Double.parseDouble(row.get("time_scale")),
+                Long.parseLong(row.get("seed")) - run + 1, grid.isEmpty() ? null : Double.parseDouble(grid));
+        Map<String, TaskResult> tasks = new LinkedHashMap<>();
+        for (String t : PeriodSet.TASKS) {
+            if (!row.get(t + "_releases").isEmpty()) {
+                tasks.put(t, new TaskResult(Long.parseLong(row.get(t + "_releases")), Long.parseLong(row.get(t + "_misses")),
+                        decimal(row.get(t + "_miss_pct")), Long.parseLong(row.get(t + "_stale_runs")),
+                        decimal(row.get(t + "_exec_p99_us"))));
+            }
+        }
+        return new RunResult(Integer.parseInt(row.get("set")), run, new PeriodSet(row.get("set_name"), periods), conditions,
+                row.get("outcome"), decimal(row.get("run_time_s")), decimal(row.get("distance_to_finish_m")),
+                decimal(row.get("distance_travelled_m")), optionalInt(row.get("collisions")),
+                optionalInt(row.get("waypoints_reached")), optionalInt(row.get("waypoints_total")), tasks);
+    }
+
+    private static String number(double v) {
+        if (!Double.isFinite(v)) {
+            return "";
+        }
+        return BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
+    }
+
+    private static String integer(Integer v) {
+        return v == null ? "" : v.toString();
+    }
+
+    private static double decimal(String s) {
+        return s.isEmpty() ? Double.NaN : Double.parseDouble(s);
+    }
+
+    private static Integer optionalInt(String s) {
+        return s.isEmpty() ? null : Integer.valueOf(s);
+    }
+
+    private static String quote(String text) {
+        String s = text.replace('\n', ' ').replace('\r', ' ');
+        if (s.indexOf(',') < 0 && s.indexOf('"') < 0) {
+            return s;
+        }
+        return '"' + s.replace("\"", "\"\"") + '"';
+    }
+
+    /**
+     * @param line one CSV line (RFC 4180 quoting, no embedded line ends)
+     * @return its fields
+     */
+    static List<String> split(String line) {
+        List<String> fields = new ArrayList<>();
+        StringBuilder field = new StringBuilder();
+        boolean quoted = false;
+        for (int i = 0; i < line.length(); i++) {
+            char c = line.charAt(i);
+            if (quoted) {
+                if (c == '"' && i + 1 < line.length() && line.charAt(i + 1) == '"') {
+                    field.append('"');
+                    i++;
+                } else if (c == '"') {
+                    quoted = false;
+                } else {
+                    field.append(c);
+                }
+            } else if (c == '"') {
+                quoted = true;
+            } else if (c == ',') {
+                fields.add(field.toString());
+                field.setLength(0);
+            } else {
+                field.append(c);
+            }
+        }
+        fields.add(field.toString());
+        return fields;
+    }
+}

@@ -1,0 +1,71 @@
+package io.rtaware.experiment;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import io.rtaware.core.report.ReportDocument;
+import io.rtaware.core.report.TaskReport;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
+
+/**
+ * Turns the {@code report.json} that {@code rtaware run} writes into one {@link RunResult}:
+ * the core report's tasks plus the {@code run} section (outcome, run time, distances,
+ * collisions, waypoints).
+ */
+public final class RunReports {
+
+    /** The report's file name inside a run's folder. */
+    public static final String REPORT_FILE = "report.json";
+
+    private RunReports() {
+    }
+
+    /**
+     * @param reportFile a run's report.json
+     * @param set the set's number
+     * @param run the run's number
+     * @param periods the set
+     * @param conditions the shared conditions
+     * @return the run's result
+     * @throws IOException if the file is missing, unreadable, or has no {@code run} section
+     */
+    public static RunResult read(Path reportFile, int set, int run, PeriodSet periods, RunConditions conditions)
+            throws IOException {
+        ReportDocument doc = ReportDocument.read(reportFile);
+        Object section = doc.sections().get("run");
+        if (!(section instanceof JsonNode runNode) || !runNode.isObject()) {
+            throw new IOException(reportFile + " has no 'run' section");
+        }
+        Map<String, TaskResult> tasks = new LinkedHashMap<>();
+        for (String name : PeriodSet.TASKS) {
+            TaskReport t = doc.report().task(name);
+            if (t != null) {
+                tasks.put(name, new TaskResult(t.releases(), t.misses(), t.missPct(), t.staleRuns(),
+                        t.execUs() == null ? Double.NaN : t.execUs().p99()));
+            }
+        }
+        return new RunResult(set, run, periods, conditions, text(runNode, "outcome"),
+                number(runNode, "run_time_s"), number(runNode, "distance_to_finish_m"),
+                number(runNode, "distance_travelled_m"), integer(runNode, "collisions"),
+                integer(runNode, "waypoints_reached"), integer(runNode, "waypoints_total"), tasks);
+    }
+
+    private static String text(JsonNode node, String field) throws IOException {
+        JsonNode v = node.get(field);
+        if (v == null || !v.isTextual()) {
+            throw new IOException("run section has no text field '" + field + "'");
+        }
+        return v.asText();
+    }
+
+    private static double number(JsonNode node, String field) {
+        JsonNode v = node.get(field);
+        return v != null && v.isNumber() ? v.asDouble() : Double.NaN;
+    }
+
+    private static Integer integer(JsonNode node, String field) {
+        JsonNode v = node.get(field);
+        return v != null && v.isNumber() ? v.asInt() : null;
+    }
+}

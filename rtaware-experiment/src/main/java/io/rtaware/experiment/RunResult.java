@@ -1,0 +1,69 @@
+package io.rtaware.experiment;
+
+import java.util.Map;
+import java.util.Objects;
+import java.util.Set;
+
+/**
+ * One finished run of an experiment: one row of {@code results.csv}. Measures a run could not
+ * give (a run that crashed) are {@code NaN} or null, and such a run takes no part in the
+ * statistics ({@link #measured()}).
+ *
+ * @param set the set's number, from 1, in the order of the sets
+ * @param run the run's number within its set, from 1
+ * @param periods the set's name and periods
+ * @param conditions what all runs share
+ * @param outcome {@code completed}, {@code timeout}, {@code stuck}, {@code interrupted} or {@code error}
+ * @param runTimeS world seconds from start to the end of the run
+ * @param distanceToFinishM distance from the robot's final position to the finish, metres
+ * @param distanceTravelledM length of the path driven, metres
+ * @param collisions collisions with the world, or null if unknown
+ * @param waypointsReached waypoints reached, or null if unknown
+ * @param waypointsTotal waypoints in the course, or null if unknown
+ * @param tasks per behavior of {@link PeriodSet#TASKS}; empty when the run gave no report
+ */
+public record RunResult(int set, int run, PeriodSet periods, RunConditions conditions, String outcome,
+                        double runTimeS, double distanceToFinishM, double distanceTravelledM,
+                        Integer collisions, Integer waypointsReached, Integer waypointsTotal,
+                        Map<String, TaskResult> tasks) {
+
+    /** Outcome of a run that reached the finish. */
+    public static final String COMPLETED = "completed";
+    /** Outcome recorded when the run's process failed or left no readable report. */
+    public static final String ERROR = "error";
+    /** Outcomes of runs that ended on the course and so measure the controller. */
+    public static final Set<String> MEASURED_OUTCOMES = Set.of(COMPLETED, "timeout", "stuck");
+
+    /** Validates the fields. */
+    public RunResult {
+        Objects.requireNonNull(periods, "periods");
+        Objects.requireNonNull(conditions, "conditions");
+        Objects.requireNonNull(outcome, "outcome");
+        tasks = Map.copyOf(tasks);
+        if (set < 1 || run < 1) {
+            throw new IllegalArgumentException("set and run count from 1, got set " + set + " run " + run);
+        }
+    }
+
+    /**
+     * @param set the set's number
+     * @param run the run's number
+     * @param periods the set
+     * @param conditions the shared conditions
+     * @return the row recorded for a run whose process failed
+     */
+    public static RunResult error(int set, int run, PeriodSet periods, RunConditions conditions) {
+        return new RunResult(set, run, periods, conditions, ERROR, Double.NaN, Double.NaN, Double.NaN,
+                null, null, null, Map.of());
+    }
+
+    /** @return true if the run ended on the course (completed, timeout, stuck) */
+    public boolean measured() {
+        return MEASURED_OUTCOMES.contains(outcome);
+    }
+
+    /** @return true if the run reached the finish */
+    public boolean completed() {
+        return COMPLETED.equals(outcome);
+    }
+}

@@ -1,0 +1,239 @@
+package io.rtaware.experiment.report;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import io.rtaware.core.report.ReportDocument;
+import io.rtaware.experiment.ExperimentInputException;
+import io.rtaware.experiment.ExperimentProfile;
+import io.rtaware.experiment.ExperimentRunner;
+import io.rtaware.experiment.ExperimentSummary;
+import io.rtaware.experiment.ExperimentSummary.Misses;
+import io.rtaware.experiment.ExperimentSummary.PairTest;
+import io.rtaware.experiment.ExperimentSummary.SetSummary;
+import io.rtaware.experiment.PaperReference;
+import io.rtaware.experiment.PaperReference.PaperSet;
+import io.rtaware.experiment.PeriodSet;
+import io.rtaware.experiment.ResultsCsv;
+import io.rtaware.experiment.RunResult;
+import io.rtaware.experiment.stats.SampleStats;
+import io.rtaware.experiment.stats.WelchTest;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+
+/**
+ * Renders an experiment folder's report from its {@code results.csv} (and the runs'
+ * {@code trajectory.csv} files, and {@code experiment.json} for the machine when present):
+ * {@code summary.json}, {@code report.md}, {@code report.html} and the figures.
+ */
+public final class ExperimentReport {
+
+    /** The JSON summary's file name. */
+    public static final String SUMMARY_FILE = "summary.json";
+    /** The Markdown report's file name. */
+    public static final String MARKDOWN_FILE = "report.md";
+    /** The HTML report's file name (figures inline). */
+    public static final String HTML_FILE = "report.html";
+
+    private static final String NA = "n/a";
+
+    private ExperimentReport() {
+    }
+
+    /**
+     * @param dir an experiment folder with a {@code results.csv}
+     * @param background the course drawn behind the paths
+     * @return the summary written
+     * @throws IOException if reading or writing fails
+     * @throws ExperimentInputException if there is no results.csv with at least one row
+     */
+    public static ExperimentSummary render(Path dir, MapBackground background) throws IOException {
+        Path csv = dir.resolve(ResultsCsv.FILE_NAME);
+        if (!Files.exists(csv)) {
+            throw new ExperimentInputException(dir + " has no " + ResultsCsv.FILE_NAME + " (not an experiment folder?)");
+        }
+        List<RunResult> rows = ResultsCsv.read(csv);
+        if (rows.isEmpty()) {
+            throw new ExperimentInputException(csv + " has no runs yet: nothing to report");
+        }
+        // No disk cache: its clean-up registers a shutdown hook, which fails when the report is
+        // written after Ctrl-C, during shutdown.
+        javax.imageio.ImageIO.setUseCache(false);
+        ExperimentProfile profile = ExperimentProfile.read(dir).orElse(ExperimentProfile.fromResults(rows));
+        ExperimentSummary summary = ExperimentSummary.of(rows, profile);
+        ObjectMapper mapper = ReportDocument.mapper();
+        Files.writeString(dir.resolve(SUMMARY_FILE), mapper.writeValueAsString(summary) + "\n");
+
+        Figures.taskMisses(summary, dir);
+        Figures.setMisses(summary, dir);
+        Map<String, double[]> runTimes = new LinkedHashMap<>();
+        Map<String, double[]> distances = new LinkedHashMap<>();
+        Map<Integer, List<RunResult>> bySet = new TreeMap<>();
+        rows.forEach(r -> bySet.computeIfAbsent(r.set(), k -> new ArrayList<>()).add(r));
+        for (SetSummary s : summary.sets()) {
+            runTimes.put(s.name(), ExperimentSummary.sample(bySet.get(s.set()), "run_time_s"));
+            distances.put(s.name(), ExperimentSummary.sample(bySet.get(s.set()), "distance_to_finish_m"));
+        }
+        Figures.boxPlot(runTimes, "Run time per set (completed runs)", "run time (s, world time)", dir, Figures.RUNTIME_BOX);
+        Figures.boxPlot(distances, "Distance from the finish at the end of the run", "distance to finish (m)", dir,
+                Figures.DISTANCE_BOX);
+        Figures.trajectories(summary, trajectories(dir, rows), background, dir);
+
+        Blocks blocks = content(summary);
+        Files.writeString(dir.resolve(MARKDOWN_FILE), blocks.markdown());
+        Files.writeString(dir.resolve(HTML_FILE), blocks.html("rtaware experiment report", dir));
+        return summary;
+    }
+
+    private static List<Trajectory> trajectories(Path dir, List<RunResult> rows) throws IOException {
+        List<Trajectory> paths = new ArrayList<>();
+        for (RunResult r : rows) {
+            if (!r.measured()) {
+                continue;
+            }
+            Path file = dir.resolve(ExperimentRunner.RUNS_DIR).resolve("set" + r.set() + "-run" + r.run())
+                    .resolve(Trajectory.FILE_NAME);
+            if (Files.exists(file)) {
+                paths.add(Trajectory.read(file, r.set(), r.run()));
+            }
+        }
+        return paths;
+    }
+
+    private static Blocks content(ExperimentSummary s) {
+        Blocks b = new Blocks();
+        ExperimentProfile p = s.profile();
+        b.heading(1, "rtaware experiment report");
+        String k = plain(p.timeScale());
+        b.text("Profile: scenario `" + p.scenario() + "`, time scale x" + k + " (world time runs " + k
+                + " times faster than wall time, so each task's computation weighs " + k
+                + " times more against its period), grid resolution "
+                + (p.gridResolutionM() == null ? "`run`'s default" : plain(p.gridResolutionM()) + " m")
+                + ", seed " + p.seed() + " (run j uses seed + j - 1), " + p.runsPerSet() + " run(s) per set planned.");
+        b.text("Machine: " + (p.machine() == null ? "not recorded (no experiment.json)" : p.machine())
+                + ". The paper's runs: " + s.paper().source() + ".");
+        b.text("Which runs count: run time over the runs that completed the course; distance to the finish and missed "
+                + "deadlines over every run that ended on the course (completed, timeout, stuck); `error` runs are only counted. "
+                + "Missed deadlines are pooled: 100 x (misses summed over runs) / (releases summed over runs). "
+                + "Columns marked **paper** are the paper's published numbers, not ours.");
+
+        b.heading(2, "Table I: periods and run time");
+        List<List<String>> rows = new ArrayList<>();
+        for (SetSummary set : s.sets()) {
+            PaperSet paper = PaperReference.matching(new PeriodSet(set.name(), set.periodsMs()));
+            List<String> row = new ArrayList<>(List.of(set.name()));
+            set.periodsMs().values().forEach(v -> row.add(Long.toString(v)));
+            row.addAll(List.of(set.completed() + " of " + set.runs(), outcomes(set.outcomes()),
+                    num(set.runTimeS().mean(), 2), num(set.runTimeS().sd(), 2),
+                    paper == null ? "-" : num(paper.runTimeMeanS(), 2), paper == null ? "-" : num(paper.runTimeSdS(), 2)));
+            rows.add(row);
+        }
+        b.table(List.of("set", "waypoint (ms)", "obstacle (ms)", "occupancy (ms)", "planner (ms)", "completed",
+                "outcomes", "mean run time (s)", "SD (s)", "**paper** mean (s)", "**paper** SD (s)"), rows);
+
+        b.heading(2, "Table II: distance from the finish position");
+        rows = new ArrayList<>();
+        for (SetSummary set : s.sets()) {
+            PaperSet paper = PaperReference.matching(new PeriodSet(set.name(), set.periodsMs()));
+            SampleStats d = set.distanceToFinishM();
+            rows.add(List.of(set.name(), Integer.toString(d.n()), num(d.mean(), 2), num(d.sd(), 2), num(d.min(), 2),
+                    num(d.max(), 2), paper == null ? "-" : num(paper.distanceMeanM(), 2),
+                    paper == null ? "-" : num(paper.distanceSdM(), 2), paper == null ? "-" : num(paper.distanceMinM(), 2),
+                    paper == null ? "-" : num(paper.distanceMaxM(), 2)));
+        }
+        b.table(List.of("set", "runs", "mean (m)", "SD (m)", "min (m)", "max (m)", "**paper** mean (m)",
+                "**paper** SD (m)", "**paper** min (m)", "**paper** max (m)"), rows);
+
+        b.heading(2, "Missed deadlines");
+        rows = new ArrayList<>();
+        for (SetSummary set : s.sets()) {
+            List<String> row = new ArrayList<>(List.of(set.name()));
+            for (String task : PeriodSet.TASKS) {
+                row.add(missCell(set.misses().get(task)));
+            }
+            row.add(missCell(set.misses().get(ExperimentSummary.ALL_TASKS)));
+            rows.add(row);
+        }
+        List<String> header = new ArrayList<>(List.of("set"));
+        PeriodSet.TASKS.forEach(t -> header.add(t + " % (misses / releases)"));
+        header.add("all four % (misses / releases)");
+        b.table(header, rows);
+        b.figure(Figures.FIG7 + ".png", "Missed deadlines per task per set (the paper's Fig. 7 shows the same measure)");
+        b.figure(Figures.FIG8 + ".png", "Missed deadlines of all four tasks per set (the paper's Fig. 8)");
+
+        rows = new ArrayList<>();
+        for (SetSummary set : s.sets()) {
+            List<String> row = new ArrayList<>(List.of(set.name()));
+            for (String task : PeriodSet.TASKS) {
+                Misses m = set.misses().get(task);
+                row.add(m.staleRuns() + " / " + num(m.execP99UsMean(), 0));
+            }
+            rows.add(row);
+        }
+        List<String> h2 = new ArrayList<>(List.of("set"));
+        PeriodSet.TASKS.forEach(t -> h2.add(t + ": stale runs / mean exec p99 (µs)"));
+        b.table(h2, rows);
+
+        b.heading(2, "Welch t-tests between sets (two-sided)");
+        b.text("t = (mean of A - mean of B) / standard error; df by Welch–Satterthwaite; p from Apache Commons Math; "
+                + "confidence = 1 - p, as the paper quotes it. A p below 0.05 (confidence above 95%) is the usual threshold "
+                + "for 'statistically different'.");
+        for (String quantity : ExperimentSummary.TESTED) {
+            b.heading(3, "run_time_s".equals(quantity) ? "Run time (completed runs)" : "Distance to the finish");
+            rows = new ArrayList<>();
+            for (PairTest pair : s.tTests().get(quantity)) {
+                WelchTest t = pair.test();
+                rows.add(List.of(name(s, pair.setA()) + " vs " + name(s, pair.setB()), num(t.t(), 3), num(t.df(), 2),
+                        num(t.p(), 4), t.confidence() == null ? NA : num(100 * t.confidence(), 1) + "%",
+                        t.applicable() ? "" : NA + ": " + t.note()));
+            }
+            b.table(List.of("sets", "t", "df", "p", "confidence 1 - p", "note"), rows);
+            List<String> said = s.paper().tests().stream().filter(pt -> pt.quantity().equals(quantity))
+                    .map(pt -> (pt.setA() == null ? "all pairs" : "Set " + pt.setA() + " vs Set " + pt.setB()) + ": "
+                            + pt.statement()).toList();
+            b.text("**paper** (Section VII): " + String.join("; ", said) + ".");
+        }
+
+        b.heading(2, "Run time, distance and paths");
+        b.figure(Figures.RUNTIME_BOX + ".png", "Run time per set, completed runs (box: quartiles, whiskers: range within 1.5 IQR)");
+        b.figure(Figures.DISTANCE_BOX + ".png", "Distance from the finish at the end of each run, per set");
+        b.figure(Figures.TRAJECTORIES + ".png", "Every run's path, one colour per set");
+        rows = new ArrayList<>();
+        for (SetSummary set : s.sets()) {
+            SampleStats d = set.distanceTravelledM();
+            rows.add(List.of(set.name(), num(d.mean(), 2), num(d.sd(), 2), Long.toString(set.collisions())));
+        }
+        b.table(List.of("set", "mean distance travelled (m)", "SD (m)", "collisions (all runs)"), rows);
+        return b;
+    }
+
+    private static String name(ExperimentSummary s, int set) {
+        return s.sets().stream().filter(x -> x.set() == set).map(SetSummary::name).findFirst().orElse("set " + set);
+    }
+
+    private static String outcomes(Map<String, Integer> outcomes) {
+        List<String> parts = new ArrayList<>();
+        outcomes.forEach((k, v) -> parts.add(v + " " + k));
+        return String.join(", ", parts);
+    }
+
+    private static String missCell(Misses m) {
+        return num(m.missPct(), 2) + " (" + m.misses() + " / " + m.releases() + ")";
+    }
+
+    private static String plain(double v) {
+        return java.math.BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
+    }
+
+    private static String num(Double v, int decimals) {
+        if (v == null || !Double.isFinite(v)) {
+            return NA;
+        }
+        return String.format(Locale.ROOT, "%." + decimals + "f", v);
+    }
+}

@@ -1,0 +1,302 @@
+package io.rtaware.experiment.report;
+
+import io.rtaware.experiment.ExperimentSummary;
+import io.rtaware.experiment.ExperimentSummary.SetSummary;
+import io.rtaware.experiment.PeriodSet;
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.geom.Point2D;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import javax.imageio.ImageIO;
+import org.knowm.xchart.BitmapEncoder;
+import org.knowm.xchart.BoxChart;
+import org.knowm.xchart.BoxChartBuilder;
+import org.knowm.xchart.CategoryChart;
+import org.knowm.xchart.CategoryChartBuilder;
+import org.knowm.xchart.VectorGraphicsEncoder;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.internal.chartpart.Chart;
+import org.knowm.xchart.style.Styler;
+import org.knowm.xchart.style.markers.SeriesMarkers;
+
+/**
+ * Draws the experiment's figures with XChart, each as PNG and SVG: missed deadlines per task
+ * per set (the paper's Fig. 7), per set over all four tasks (Fig. 8), box plots of run time and
+ * distance to the finish per set, and every run's path over the course.
+ */
+public final class Figures {
+
+    /** Fig. 7 of the paper: missed-deadline % per task, grouped by set. */
+    public static final String FIG7 = "fig7-task-misses";
+    /** Fig. 8 of the paper: missed-deadline % of all four tasks per set. */
+    public static final String FIG8 = "fig8-set-misses";
+    /** Box plot of run time per set (completed runs). */
+    public static final String RUNTIME_BOX = "runtime-box";
+    /** Box plot of distance to the finish per set. */
+    public static final String DISTANCE_BOX = "distance-box";
+    /** Every run's path, one colour per set. */
+    public static final String TRAJECTORIES = "trajectories";
+
+    /** Colour-blind-safe palette (Okabe and Ito), cycled for sets and tasks. */
+    static final Color[] PALETTE = {new Color(0x0072B2), new Color(0xE69F00), new Color(0x009E73),
+            new Color(0xD55E00), new Color(0xCC79A7), new Color(0x56B4E9), new Color(0xF0E442), Color.BLACK};
+
+    private static final int WIDTH = 1000;
+    private static final int HEIGHT = 600;
+    private static final Color TRANSPARENT = new Color(0, 0, 0, 0);
+
+    private Figures() {
+    }
+
+    /**
+     * @param index a zero-based set or task index
+     * @return its colour
+     */
+    public static Color colour(int index) {
+        return PALETTE[index % PALETTE.length];
+    }
+
+    /**
+     * Writes {@code fig7-task-misses.png/.svg}.
+     *
+     * @param summary the experiment's summary
+     * @param dir the output folder
+     * @throws IOException if writing fails
+     */
+    public static void taskMisses(ExperimentSummary summary, Path dir) throws IOException {
+        CategoryChart chart = categoryChart("Missed deadlines per task (cf. paper Fig. 7)", "missed deadlines (% of releases)");
+        List<String> sets = setLabels(summary);
+        for (int t = 0; t < PeriodSet.TASKS.size(); t++) {
+            String task = PeriodSet.TASKS.get(t);
+            List<Double> pct = summary.sets().stream().map(s -> valueOrZero(s.misses().get(task).missPct())).toList();
+            chart.addSeries(task, sets, pct).setFillColor(colour(t));
+        }
+        save(chart, dir, FIG7);
+    }
+
+    /**
+     * Writes {@code fig8-set-misses.png/.svg}.
+     *
+     * @param summary the experiment's summary
+     * @param dir the output folder
+     * @throws IOException if writing fails
+     */
+    public static void setMisses(ExperimentSummary summary, Path dir) throws IOException {
+        CategoryChart chart = categoryChart("Missed deadlines of all four tasks per set (cf. paper Fig. 8)",
+                "missed deadlines (% of releases)");
+        List<Double> pct = summary.sets().stream()
+                .map(s -> valueOrZero(s.misses().get(ExperimentSummary.ALL_TASKS).missPct())).toList();
+        chart.addSeries("waypoint + obstacle + occupancy + planner", setLabels(summary), pct).setFillColor(colour(0));
+        save(chart, dir, FIG8);
+    }
+
+    /**
+     * Writes a box plot per set of one quantity.
+     *
+     * @param samples per set label, the values
+     * @param title the chart's title
+     * @param yTitle the y axis title with its unit
+     * @param dir the output folder
+     * @param name the file name without extension
+     * @throws IOException if writing fails
+     */
+    public static void boxPlot(Map<String, double[]> samples, String title, String yTitle, Path dir, String name)
+            throws IOException {
+        if (samples.values().stream().allMatch(v -> v.length == 0)) {
+            noData(title, dir, name);
+            return;
+        }
+        BoxChart chart = new BoxChartBuilder().width(WIDTH).height(HEIGHT).title(title)
+                .xAxisTitle("experiment set (series with no values are left out)").yAxisTitle(yTitle).build();
+        style(chart.getStyler());
+        chart.getStyler().setLegendVisible(false);
+        int i = 0;
+        for (Map.Entry<String, double[]> e : samples.entrySet()) {
+            if (e.getValue().length > 0) {
+                chart.addSeries(e.getKey() + " (n=" + e.getValue().length + ")", e.getValue()).setFillColor(colour(i));
+            }
+            i++;
+        }
+        save(chart, dir, name);
+    }
+
+    /**
+     * Writes {@code trajectories.png/.svg}: every path, one colour per set, waypoints as black
+     * diamonds, over the background's picture when it has one (PNG only; the SVG has the paths).
+     *
+     * @param summary the experiment's summary (set names and order)
+     * @param paths the runs' paths
+     * @param background the course
+     * @param dir the output folder
+     * @throws IOException if writing fails
+     */
+    public static void trajectories(ExperimentSummary summary, List<Trajectory> paths, MapBackground background, Path dir)
+            throws IOException {
+        WorldBounds bounds = background.image().isPresent() ? background.bounds() : null;
+        for (Trajectory t : paths) {
+            WorldBounds b = t.bounds();
+            bounds = b == null ? bounds : b.union(bounds);
+        }
+        for (Point2D.Double w : background.waypoints()) {
+            WorldBounds b = new WorldBounds(w.x - 0.01, w.y - 0.01, w.x + 0.01, w.y + 0.01);
+            bounds = b.union(bounds);
+        }
+        if (bounds == null) {
+            noData("Paths driven: no trajectory.csv found", dir, TRAJECTORIES);
+            return;
+        }
+        WorldBounds frame = background.image().isPresent() ? bounds : bounds.grow(0.05 * Math.max(bounds.widthM(), bounds.heightM()));
+        XYChart chart = trajectoryChart(summary, paths, background, frame, HEIGHT);
+        // Second pass: make one metre as long on both axes.
+        BufferedImage probe = new BufferedImage(WIDTH, HEIGHT, BufferedImage.TYPE_INT_ARGB);
+        chart.paint(probe.createGraphics(), WIDTH, HEIGHT);
+        double pxPerMx = (chart.getScreenXFromChart(frame.maxXM()) - chart.getScreenXFromChart(frame.minXM())) / frame.widthM();
+        double plotHeightPx = chart.getScreenYFromChart(frame.minYM()) - chart.getScreenYFromChart(frame.maxYM());
+        int height = (int) Math.round(HEIGHT + pxPerMx * frame.heightM() - plotHeightPx);
+        height = Math.max(300, Math.min(2000, height));
+        chart = trajectoryChart(summary, paths, background, frame, height);
+        saveSvg(chart, dir, TRAJECTORIES);
+        BufferedImage out = new BufferedImage(WIDTH, height, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = out.createGraphics();
+        g.setColor(Color.WHITE);
+        g.fillRect(0, 0, WIDTH, height);
+        if (background.image().isPresent()) {
+            BufferedImage overlay = new BufferedImage(WIDTH, height, BufferedImage.TYPE_INT_ARGB);
+            chart.getStyler().setChartBackgroundColor(TRANSPARENT);
+            chart.getStyler().setPlotBackgroundColor(TRANSPARENT);
+            chart.paint(overlay.createGraphics(), WIDTH, height);
+            WorldBounds mb = background.bounds();
+            int x0 = (int) Math.round(chart.getScreenXFromChart(mb.minXM()));
+            int x1 = (int) Math.round(chart.getScreenXFromChart(mb.maxXM()));
+            int y0 = (int) Math.round(chart.getScreenYFromChart(mb.maxYM()));
+            int y1 = (int) Math.round(chart.getScreenYFromChart(mb.minYM()));
+            g.setRenderingHint(RenderingHints.KEY_INTERPOLATION, RenderingHints.VALUE_INTERPOLATION_NEAREST_NEIGHBOR);
+            g.drawImage(background.image().get(), x0, y0, x1 - x0, y1 - y0, null);
+            g.drawImage(overlay, 0, 0, null);
+        } else {
+            chart.paint(g, WIDTH, height);
+        }
+        g.dispose();
+        ImageIO.write(out, "png", dir.resolve(TRAJECTORIES + ".png").toFile());
+    }
+
+    private static XYChart trajectoryChart(ExperimentSummary summary, List<Trajectory> paths, MapBackground background,
+                                           WorldBounds frame, int height) {
+        XYChart chart = new XYChartBuilder().width(WIDTH).height(height)
+                .title("Paths driven (ground truth), one colour per set" + (background.image().isPresent() ? ", over the course" : ""))
+                .xAxisTitle("x (m)").yAxisTitle("y (m)").build();
+        style(chart.getStyler());
+        chart.getStyler().setXAxisMin(frame.minXM()).setXAxisMax(frame.maxXM());
+        chart.getStyler().setYAxisMin(frame.minYM()).setYAxisMax(frame.maxYM());
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.OutsideE);
+        chart.getStyler().setDefaultSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Line);
+        chart.getStyler().setDecimalPattern("0.0");
+        List<SetSummary> sets = summary.sets();
+        for (int i = 0; i < sets.size(); i++) {
+            SetSummary set = sets.get(i);
+            boolean first = true;
+            for (Trajectory t : paths) {
+                if (t.set() != set.set() || t.xM().length == 0) {
+                    continue;
+                }
+                XYSeries s = chart.addSeries(first ? set.name() : set.name() + " run " + t.run(), t.xM(), t.yM());
+                s.setMarker(SeriesMarkers.NONE).setLineColor(colour(i)).setLineStyle(new BasicStroke(1.5f));
+                s.setShowInLegend(first);
+                first = false;
+            }
+        }
+        List<Point2D.Double> w = background.waypoints();
+        if (!w.isEmpty()) {
+            XYSeries s = chart.addSeries("waypoints (last = finish)", w.stream().mapToDouble(p -> p.x).toArray(),
+                    w.stream().mapToDouble(p -> p.y).toArray());
+            s.setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter);
+            s.setMarker(SeriesMarkers.DIAMOND).setMarkerColor(Color.BLACK);
+        }
+        return chart;
+    }
+
+    private static CategoryChart categoryChart(String title, String yTitle) {
+        CategoryChart chart = new CategoryChartBuilder().width(WIDTH).height(HEIGHT).title(title)
+                .xAxisTitle("experiment set").yAxisTitle(yTitle).build();
+        style(chart.getStyler());
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNE);
+        chart.getStyler().setYAxisMin(0.0);
+        chart.getStyler().setLabelsVisible(true);
+        chart.getStyler().setLabelsFont(new Font(Font.SANS_SERIF, Font.BOLD, 11));
+        chart.getStyler().setLabelsPosition(1.0);
+        chart.getStyler().setLabelsFontColorAutomaticEnabled(true);
+        chart.getStyler().setDecimalPattern("0.0#");
+        return chart;
+    }
+
+    private static void style(Styler styler) {
+        styler.setChartTitleFont(new Font(Font.SANS_SERIF, Font.BOLD, 18));
+        styler.setLegendFont(new Font(Font.SANS_SERIF, Font.PLAIN, 13));
+        styler.setChartBackgroundColor(Color.WHITE);
+        styler.setPlotBackgroundColor(Color.WHITE);
+        styler.setLegendBorderColor(Color.LIGHT_GRAY);
+        styler.setAntiAlias(true);
+        if (styler instanceof org.knowm.xchart.style.AxesChartStyler axes) {
+            axes.setAxisTitleFont(new Font(Font.SANS_SERIF, Font.PLAIN, 14));
+            axes.setAxisTickLabelsFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+            axes.setPlotGridLinesColor(new Color(0xDDDDDD));
+        }
+    }
+
+    private static List<String> setLabels(ExperimentSummary summary) {
+        List<String> labels = new ArrayList<>();
+        for (SetSummary s : summary.sets()) {
+            labels.add(s.name() + " (" + String.join("/", s.periodsMs().values().stream().map(String::valueOf).toList()) + ")");
+        }
+        return labels;
+    }
+
+    private static double valueOrZero(Double v) {
+        return v == null ? 0.0 : v;
+    }
+
+    private static void save(Chart<?, ?> chart, Path dir, String name) throws IOException {
+        BitmapEncoder.saveBitmap(chart, dir.resolve(name + ".png").toString(), BitmapEncoder.BitmapFormat.PNG);
+        saveSvg(chart, dir, name);
+    }
+
+    /**
+     * The SVG is a courtesy copy: when it cannot be written (as while the JVM shuts down after
+     * Ctrl-C, when the vector library cannot start) the PNG stands alone and a stale SVG is removed.
+     */
+    private static void saveSvg(Chart<?, ?> chart, Path dir, String name) throws IOException {
+        Path svg = dir.resolve(name + ".svg");
+        try {
+            VectorGraphicsEncoder.saveVectorGraphic(chart, svg.toString(), VectorGraphicsEncoder.VectorGraphicsFormat.SVG);
+        } catch (IOException | RuntimeException | LinkageError e) {
+            java.nio.file.Files.deleteIfExists(svg);
+            System.err.println("rtaware: " + svg.getFileName() + " not written (" + e + "); the PNG has the same figure");
+        }
+    }
+
+    private static void noData(String title, Path dir, String name) throws IOException {
+        BufferedImage img = new BufferedImage(WIDTH, 200, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = img.createGraphics();
+        g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+        g.setColor(Color.WHITE);
+        g.fillRect(0, 0, WIDTH, 200);
+        g.setColor(Color.DARK_GRAY);
+        g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 18));
+        g.drawString(title, 20, 80);
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 14));
+        g.drawString("No data to plot (see report.md for why).", 20, 120);
+        g.dispose();
+        ImageIO.write(img, "png", dir.resolve(name + ".png").toFile());
+        java.nio.file.Files.deleteIfExists(dir.resolve(name + ".svg"));
+    }
+}

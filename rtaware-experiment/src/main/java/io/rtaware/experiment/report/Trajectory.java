@@ -1,0 +1,76 @@
+package io.rtaware.experiment.report;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * The ground-truth path of one run, from its {@code trajectory.csv}
+ * (header {@code t_s,x_m,y_m,yaw_rad}).
+ *
+ * @param set the run's set number
+ * @param run the run's number
+ * @param xM x of each sample, m
+ * @param yM y of each sample, m
+ */
+public record Trajectory(int set, int run, double[] xM, double[] yM) {
+
+    /** The file name inside a run's folder. */
+    public static final String FILE_NAME = "trajectory.csv";
+
+    /** Most points kept per path; longer paths are thinned evenly (the last point is kept). */
+    static final int MAX_POINTS = 2_000;
+
+    /**
+     * @param file a trajectory.csv
+     * @param set the run's set number
+     * @param run the run's number
+     * @return the path
+     * @throws IOException if the file cannot be read or its header is not {@code t_s,x_m,y_m,yaw_rad}
+     */
+    public static Trajectory read(Path file, int set, int run) throws IOException {
+        List<String> lines = Files.readAllLines(file);
+        if (lines.isEmpty() || !lines.get(0).strip().startsWith("t_s,x_m,y_m")) {
+            throw new IOException(file + ": expected header t_s,x_m,y_m,yaw_rad");
+        }
+        List<double[]> points = new ArrayList<>();
+        for (String line : lines.subList(1, lines.size())) {
+            String[] f = line.split(",");
+            if (f.length < 3) {
+                continue;
+            }
+            try {
+                points.add(new double[] {Double.parseDouble(f[1]), Double.parseDouble(f[2])});
+            } catch (NumberFormatException e) {
+                throw new IOException(file + ": not a number in line '" + line + "'", e);
+            }
+        }
+        int stride = Math.max(1, (points.size() + MAX_POINTS - 1) / MAX_POINTS);
+        List<double[]> kept = new ArrayList<>();
+        for (int i = 0; i < points.size(); i += stride) {
+            kept.add(points.get(i));
+        }
+        if (!points.isEmpty() && kept.get(kept.size() - 1) != points.get(points.size() - 1)) {
+            kept.add(points.get(points.size() - 1));
+        }
+        return new Trajectory(set, run, kept.stream().mapToDouble(p -> p[0]).toArray(),
+                kept.stream().mapToDouble(p -> p[1]).toArray());
+    }
+
+    /** @return the rectangle holding the path, or null if it has fewer than two distinct points */
+    public WorldBounds bounds() {
+        if (xM.length == 0) {
+            return null;
+        }
+        double minX = java.util.Arrays.stream(xM).min().getAsDouble();
+        double maxX = java.util.Arrays.stream(xM).max().getAsDouble();
+        double minY = java.util.Arrays.stream(yM).min().getAsDouble();
+        double maxY = java.util.Arrays.stream(yM).max().getAsDouble();
+        if (maxX <= minX || maxY <= minY) {
+            return null;
+        }
+        return new WorldBounds(minX, minY, maxX, maxY);
+    }
+}

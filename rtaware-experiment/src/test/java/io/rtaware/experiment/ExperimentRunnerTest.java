@@ -1,0 +1,164 @@
+package io.rtaware.experiment;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import io.rtaware.core.report.ReportDocument;
+import io.rtaware.experiment.report.ExperimentReport;
+import io.rtaware.experiment.report.MapBackground;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicReference;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class ExperimentRunnerTest {
+
+    @TempDir
+    Path dir;
+
+    private final ByteArrayOutputStream progressBytes = new ByteArrayOutputStream();
+    private final List<List<String>> started = new ArrayList<>();
+
+    private ExperimentRunner runner(List<PeriodSet> sets, int runs, String scenario) {
+        ExperimentPlan plan = new ExperimentPlan(sets, runs, new RunConditions(scenario, 20, 7, null));
+        JvmRunCommand fake = JvmRunCommand.ofCurrentProcess(FakeRun.class.getName());
+        RunCommand recording = args -> {
+            started.add(args);
+            return fake.commandLine(args);
+        };
+        ProgressBar bar = new ProgressBar(new PrintStream(progressBytes, true, StandardCharsets.UTF_8), false,
+                System::nanoTime, 18);
+        return new ExperimentRunner(plan, recording, dir, bar);
+    }
+
+    private static List<PeriodSet> twoSets() {
+        return List.of(ExperimentSets.paper().get(0), ExperimentSets.paper().get(3));
+    }
+
+    @Test
+    void runsInterleavedInFreshJvmsAndRecordsEveryRun() throws Exception {
+        List<RunResult> rows = runner(twoSets(), 2, "paper-room").run();
+        assertEquals(4, rows.size());
+        assertEquals(List.of("1/1", "2/1", "1/2", "2/2"), rows.stream().map(r -> r.set() + "/" + r.run()).toList());
+        assertEquals(List.of("--scenario", "paper-room", "--periods", "waypoint=10,obstacle=10,occupancy=10,planner=10",
+                "--time-scale", "20", "--seed", "7", "--out", dir.resolve("runs/set1-run1").toString(), "--quiet"),
+                started.get(0));
+        assertEquals("8", started.get(2).get(started.get(2).indexOf("--seed") + 1));
+        RunResult r = rows.get(1);
+        assertEquals("completed", r.outcome());
+        assertEquals(250 + 350 / 20.0 + 2.5, r.runTimeS(), 1e-9);
+        assertEquals(4, r.tasks().size());
+        assertEquals(2000, r.tasks().get("waypoint").releases());
+        assertEquals(300.0, r.tasks().get("occupancy").execP99Us(), 1e-9);
+        assertTrue(Files.exists(dir.resolve("runs/set2-run2/trajectory.csv")));
+        String progress = progressBytes.toString(StandardCharsets.UTF_8);
+        assertTrue(progress.contains("4/4"), progress);
+        assertTrue(progress.contains("running set 2 (Set 4) run 2"), progress);
+        assertTrue(progress.contains("last: set 2 run 1 completed"), progress);
+        assertTrue(progress.contains("ETA"), progress);
+    }
+
+    @Test
+    void rerunningIntoTheSameFolderSkipsRunsAlreadyThere() throws Exception {
+        runner(twoSets(), 1, "paper-room").run();
+        String before = Files.readString(dir.resolve(ResultsCsv.FILE_NAME));
+        started.clear();
+        List<RunResult> rows = runner(twoSets(), 2, "paper-room").run();
+        assertEquals(2, started.size(), "only the two new runs are started");
+        assertEquals(4, rows.size());
+        assertTrue(Files.readString(dir.resolve(ResultsCsv.FILE_NAME)).startsWith(before));
+    }
+
+    @Test
+    void refusesAFolderMadeWithOtherSettings() throws Exception {
+        runner(twoSets(), 1, "paper-room").run();
+        ExperimentInputException e = assertThrows(ExperimentInputException.class,
+                () -> runner(List.of(ExperimentSets.paper().get(1), ExperimentSets.paper().get(3)), 1, "paper-room").run());
+        assertTrue(e.getMessage().contains("was made with periods 10/10/10/10"), e.getMessage());
+        e = assertThrows(ExperimentInputException.class, () -> runner(twoSets(), 1, "other-room").run());
+        assertTrue(e.getMessage().contains("scenario paper-room"), e.getMessage());
+    }
+
+    @Test
+    void exitStatusTwoStopsWithTheRunsOwnMessage() {
+        ExperimentInputException e = assertThrows(ExperimentInputException.class, () -> runner(twoSets(), 1, "reject").run());
+        assertTrue(e.getMessage().contains("unknown scenario 'reject'"), e.getMessage());
+        assertEquals(1, e.getMessage().lines().count());
+    }
+
+    @Test
+    void aCrashedRunIsRecordedAsErrorAndLeftOutOfStatistics() throws Exception {
+        List<RunResult> rows = runner(twoSets(), 1, "crash").run();
+        assertEquals(2, rows.size());
+        assertEquals("error", rows.get(0).outcome());
+        assertFalse(rows.get(0).measured());
+        assertTrue(Double.isNaN(rows.get(0).runTimeS()));
+        ExperimentSummary s = ExperimentSummary.of(rows, ExperimentProfile.fromResults(rows));
+        assertEquals(0, s.sets().get(0).runTimeS().n());
+        assertNull(s.sets().get(0).misses().get("all").missPct());
+        assertFalse(s.tTests().get("run_time_s").get(0).test().applicable());
+    }
+
+    @Test
+    void interruptKillsTheRunAndKeepsTheFolderValid() throws Exception {
+        Path slowDir = dir.resolve("slow");
+        ExperimentRunner r = new ExperimentRunner(new ExperimentPlan(List.of(ExperimentSets.paper().get(0)), 2,
+                new RunConditions("slow", 20, 7, null)), JvmRunCommand.ofCurrentProcess(FakeRun.class.getName()), slowDir,
+                new ProgressBar(new PrintStream(progressBytes, true, StandardCharsets.UTF_8), false, System::nanoTime, 1));
+        AtomicReference<List<RunResult>> result = new AtomicReference<>();
+        Thread t = new Thread(() -> {
+            try {
+                result.set(r.run());
+            } catch (Exception e) {
+                throw new IllegalStateException(e);
+            }
+        });
+        t.start();
+        Thread.sleep(1500);
+        long startNs = System.nanoTime();
+        r.interrupt();
+        t.join(20_000);
+        assertFalse(t.isAlive());
+        assertTrue((System.nanoTime() - startNs) / 1e9 < 15, "the child was stopped, not waited for");
+        assertTrue(r.interrupted());
+        assertEquals(List.of(), result.get());
+        assertFalse(Files.exists(slowDir.resolve(ResultsCsv.FILE_NAME)));
+    }
+
+    @Test
+    void reportFromCsvAloneGivesTheSameNumbers() throws Exception {
+        runner(ExperimentSets.paper(), 3, "paper-room").run();
+        ExperimentSummary first = ExperimentReport.render(dir, MapBackground.none());
+        JsonNode json1 = ReportDocument.mapper().readTree(dir.resolve("summary.json").toFile());
+        for (String f : List.of("report.md", "report.html", "fig7-task-misses.png", "fig8-set-misses.png",
+                "runtime-box.png", "distance-box.png", "trajectories.png", "fig7-task-misses.svg")) {
+            assertTrue(Files.size(dir.resolve(f)) > 1000, f);
+            Files.delete(dir.resolve(f));
+        }
+        Files.delete(dir.resolve("summary.json"));
+        // only results.csv (and the trajectories) remain: re-render
+        ExperimentSummary second = ExperimentReport.render(dir, MapBackground.none());
+        assertEquals(first, second);
+        assertEquals(json1, ReportDocument.mapper().readTree(dir.resolve("summary.json").toFile()));
+        ExperimentSummary.SetSummary set4 = second.sets().get(3);
+        assertEquals("Set 4", set4.name());
+        assertEquals(3, set4.completed());
+        // seeds 7, 8, 9 -> (seed % 3) * 2.5 = 2.5, 5, 0 on top of 250 + 350 / 20
+        assertEquals(250 + 17.5 + 2.5, set4.runTimeS().mean(), 1e-9);
+        assertEquals(2.5, set4.runTimeS().sd(), 1e-9);
+        assertEquals(10, second.tTests().get("run_time_s").size());
+        String md = Files.readString(dir.resolve("report.md"));
+        assertTrue(md.contains("| Set 4 | 100 | 50 | 100 | 100 | 3 of 3 | 3 completed | 270.00 | 2.50 | 276.97 | 5.17 |"), md);
+        assertTrue(Files.readString(dir.resolve("report.html")).contains("data:image/png;base64,"));
+    }
+}

@@ -1,0 +1,56 @@
+package io.rtaware.experiment;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class ResultsCsvTest {
+
+    @TempDir
+    Path dir;
+
+    private static RunResult sample(int run, String setName) {
+        return new RunResult(2, run, PeriodSet.of(setName, 100, 10, 100, 100), new RunConditions("my, \"room\".yaml", 12.5, 40, 0.05),
+                "timeout", 360.0, 1.0 / 3, 22.75, 1, 3, 4,
+                Map.of("waypoint", new TaskResult(3600, 7, 7 * 100.0 / 3600, 2, 123.456),
+                        "planner", new TaskResult(3600, 0, 0, 0, 9)));
+    }
+
+    @Test
+    void roundTripsExactlyWithQuotingAndMissingTasks() throws Exception {
+        Path f = dir.resolve("results.csv");
+        RunResult a = sample(1, "Set, two");
+        RunResult b = RunResult.error(2, 2, PeriodSet.of("Set, two", 100, 10, 100, 100), a.conditions());
+        ResultsCsv.append(f, a);
+        ResultsCsv.append(f, b);
+        List<String> lines = Files.readAllLines(f);
+        assertEquals(String.join(",", ResultsCsv.HEADER), lines.get(0));
+        assertEquals(3, lines.size());
+        assertEquals(List.of(a, b).toString(), ResultsCsv.read(f).toString());
+        assertEquals(41, Long.parseLong(ResultsCsv.split(lines.get(2)).get(5)), "seed of run 2 is seed + 1");
+    }
+
+    @Test
+    void aPartialLastLineIsIgnoredOnReadAndDroppedOnAppend() throws Exception {
+        Path f = dir.resolve("results.csv");
+        ResultsCsv.append(f, sample(1, "S"));
+        Files.writeString(f, "2,S,2,room", java.nio.file.StandardOpenOption.APPEND);
+        assertEquals(1, ResultsCsv.read(f).size());
+        ResultsCsv.append(f, sample(3, "S"));
+        List<RunResult> rows = ResultsCsv.read(f);
+        assertEquals(List.of(1, 3), rows.stream().map(RunResult::run).toList());
+    }
+
+    @Test
+    void aForeignFileIsAUserError() throws Exception {
+        Path f = dir.resolve("results.csv");
+        Files.writeString(f, "a,b,c\n1,2,3\n");
+        assertThrows(ExperimentInputException.class, () -> ResultsCsv.read(f));
+    }
+}
