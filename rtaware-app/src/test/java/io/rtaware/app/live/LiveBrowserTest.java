@@ -47,7 +47,7 @@ class LiveBrowserTest {
             // Time scale 2: slow enough (about 8 s of wall time) for two looks while the robot drives.
             run = CompletableFuture.supplyAsync(() -> RtawareCli.execute("run", "--scenario", scenario.toString(),
                     "--time-scale", "2", "--out", dir.resolve("run").toString(), "--quiet", "--seed", "7",
-                    "--live", "--live-linger", "30s"));
+                    "--live", "--live-linger", "12s"));
             String url = awaitUrl(stdout, run);
             try (Cdp browser = Cdp.launch(chromium, dir.resolve("profile"))) {
                 browser.navigate(url);
