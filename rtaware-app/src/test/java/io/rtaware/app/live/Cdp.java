@@ -159,11 +159,16 @@ final class Cdp implements AutoCloseable {
     }
 
     @Override
-    public void close() throws InterruptedException {
+    public void close() {
         socket.abort();
         browser.destroy();
-        if (!browser.waitFor(5, TimeUnit.SECONDS)) {
+        try {
+            if (!browser.waitFor(5, TimeUnit.SECONDS)) {
+                browser.destroyForcibly();
+            }
+        } catch (InterruptedException e) {
             browser.destroyForcibly();
+            Thread.currentThread().interrupt();
         }
     }
 }
