@@ -69,7 +69,12 @@ public final class Monitor {
 
     /** An executor: how task cycles get onto threads. */
     interface Executor {
-        void start(long startNs);
+        /**
+         * Starts the tasks.
+         *
+         * @return the start instant: release k of a periodic task is at start + offset + k * period
+         */
+        long start();
 
         /** Stops releasing tasks and waits for every task thread to return. */
         void stopAndJoin();
@@ -265,9 +270,11 @@ public final class Monitor {
             executor = newExecutor;
             MonitorListener[] all = listeners.toArray(new MonitorListener[0]);
             runtimes.forEach(r -> r.listeners(all));
-            startNs = clock.nanos();
         }
-        executor.start(startNs);
+        long started = executor.start();
+        synchronized (lifecycle) {
+            startNs = started;
+        }
     }
 
     /**

@@ -43,7 +43,8 @@ public final class StepExecutor implements Monitor.Executor {
     }
 
     @Override
-    public void start(long startNs) {
+    public long start() {
+        long startNs = clock.nanos();
         unsubscribe = clock.onAdvance((fromNs, toNs) -> {
             TaskRuntime running = current;
             if (running != null) {
@@ -54,6 +55,7 @@ public final class StepExecutor implements Monitor.Executor {
             runtime.begin(startNs);
             nextReleaseNs[runtime.index()] = runtime.releaseTimeNs(0);
         }
+        return startNs;
     }
 
     /**

@@ -3,6 +3,7 @@ package io.rtaware.core.monitor;
 import io.rtaware.core.time.Clock;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 
@@ -59,34 +60,62 @@ final class ThreadedExecutor implements Monitor.Executor {
     }
 
     @Override
-    public void start(long startNs) {
+    public long start() {
         running = true;
+        CountDownLatch ready = new CountDownLatch(runtimes.size());
+        CountDownLatch go = new CountDownLatch(1);
         watchdog = new Thread(this::watch, "rtaware-monitor");
         watchdog.setDaemon(true);
         watchdog.setPriority(Thread.MAX_PRIORITY);
         int[] ranks = rateMonotonicRanks(runtimes);
         for (TaskRuntime runtime : runtimes) {
-            runtime.begin(startNs);
             runtime.onCycleStart(() -> wakeWatchdogFor(runtime));
             int rank = ranks[runtime.index()];
-            Thread thread = new Thread(() -> runTask(runtime, rank), "rtaware-" + runtime.name());
+            Thread thread = new Thread(() -> runTask(runtime, rank, ready, go), "rtaware-" + runtime.name());
             thread.setDaemon(true);
             thread.setPriority(runtime.isPeriodic()
                     ? Math.max(Thread.NORM_PRIORITY, Thread.MAX_PRIORITY - 1 - rank) : Thread.NORM_PRIORITY);
             threads.add(thread);
         }
-        watchdog.start();
         threads.forEach(Thread::start);
+        // The start instant is taken once every task thread exists and has run its thread setup,
+        // so thread creation never makes release 0 late.
+        awaitUninterruptibly(ready);
+        long startNs = clock.nanos();
+        for (TaskRuntime runtime : runtimes) {
+            runtime.begin(startNs);
+        }
+        watchdog.start();
+        go.countDown();
+        return startNs;
     }
 
-    private void runTask(TaskRuntime runtime, int rank) {
-        if (threadSetup != null) {
+    private static void awaitUninterruptibly(CountDownLatch latch) {
+        boolean interrupted = false;
+        while (true) {
             try {
-                threadSetup.onTaskThreadStart(runtime, rank, runtimes.size());
-            } catch (RuntimeException e) {
-                System.err.println("rtaware: thread setup failed for task '" + runtime.name() + "': " + e);
+                latch.await();
+                break;
+            } catch (InterruptedException e) {
+                interrupted = true;
             }
         }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private void runTask(TaskRuntime runtime, int rank, CountDownLatch ready, CountDownLatch go) {
+        try {
+            if (threadSetup != null) {
+                threadSetup.onTaskThreadStart(runtime, rank, runtimes.size());
+            }
+        } catch (RuntimeException e) {
+            System.err.println("rtaware: thread setup failed for task '" + runtime.name() + "': " + e);
+        } finally {
+            ready.countDown();
+        }
+        awaitUninterruptibly(go);
         try {
             switch (runtime.schedule().kind()) {
                 case "periodic" -> runPeriodic(runtime);
