@@ -59,7 +59,7 @@ final class Cdp implements AutoCloseable {
     static Cdp launch(Path binary, Path profile) throws Exception {
         Process p = new ProcessBuilder(binary.toString(), "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
                 "--no-first-run", "--disable-background-networking", "--disable-component-update", "--disable-sync",
-                "--hide-scrollbars", "--window-size=1280,800", "--remote-debugging-port=0",
+                "--hide-scrollbars", "--window-size=1280,800", "--remote-debugging-port=0", "--remote-allow-origins=*",
                 "--user-data-dir=" + profile, "about:blank").redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
         BufferedReader err = new BufferedReader(new InputStreamReader(p.getErrorStream(), StandardCharsets.UTF_8));
         String browserWs = null;
@@ -77,7 +77,8 @@ final class Cdp implements AutoCloseable {
         drain.setDaemon(true);
         drain.start();
         URI http = URI.create(browserWs.replace("ws://", "http://"));
-        HttpClient client = HttpClient.newHttpClient();
+        // HTTP/1.1 throughout: the DevTools endpoint speaks neither h2c upgrades nor HTTP/2.
+        HttpClient client = HttpClient.newBuilder().version(HttpClient.Version.HTTP_1_1).build();
         String pageWs = null;
         for (int attempt = 0; pageWs == null && attempt < 50; attempt++) {
             JsonNode targets = JSON.readTree(client.send(HttpRequest.newBuilder(

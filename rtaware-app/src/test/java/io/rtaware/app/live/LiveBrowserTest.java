@@ -45,9 +45,21 @@ class LiveBrowserTest {
         CompletableFuture<Integer> run;
         try {
             // Time scale 2: slow enough (about 8 s of wall time) for two looks while the robot drives.
-            run = CompletableFuture.supplyAsync(() -> RtawareCli.execute("run", "--scenario", scenario.toString(),
-                    "--time-scale", "2", "--out", dir.resolve("run").toString(), "--quiet", "--seed", "7",
-                    "--live", "--live-linger", "12s"));
+            // On a thread of its own: the common pool has one thread on a 2-core machine, and the
+            // HttpClient's WebSocket handshake (JDK 25) must not wait behind a whole run there.
+            run = new CompletableFuture<>();
+            CompletableFuture<Integer> result = run;
+            Thread runner = new Thread(() -> {
+                try {
+                    result.complete(RtawareCli.execute("run", "--scenario", scenario.toString(),
+                            "--time-scale", "2", "--out", dir.resolve("run").toString(), "--quiet", "--seed", "7",
+                            "--live", "--live-linger", "12s"));
+                } catch (RuntimeException | Error e) {
+                    result.completeExceptionally(e);
+                }
+            }, "rtaware-run-under-test");
+            runner.setDaemon(true);
+            runner.start();
             String url = awaitUrl(stdout, run);
             try (Cdp browser = Cdp.launch(chromium, dir.resolve("profile"))) {
                 browser.navigate(url);
