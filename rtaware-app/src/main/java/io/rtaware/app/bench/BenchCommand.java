@@ -5,12 +5,12 @@ import io.rtaware.app.bench.compare.CompareReport;
 import io.rtaware.app.bench.compare.CompareRun;
 import io.rtaware.app.bench.compare.Goal;
 import io.rtaware.app.bench.compare.RunResult;
+import io.rtaware.app.cli.CommandMonitor;
 import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.live.LiveMixin;
 import io.rtaware.app.live.LiveView;
 import io.rtaware.app.report.ReportSections;
-import io.rtaware.core.monitor.ConfigurationException;
 import io.rtaware.core.monitor.ConsoleReporter;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.report.Report;
@@ -21,8 +21,6 @@ import io.rtaware.core.monitor.AdaptivePolicy;
 import io.rtaware.core.trace.TraceRecorder;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.Durations;
-import io.rtaware.core.time.ScaledClock;
-import io.rtaware.core.time.SystemClock;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Path;
@@ -180,7 +178,7 @@ public final class BenchCommand implements Callable<Integer> {
 
     private int bench(List<BenchSpec> specs, BusyWork work) throws IOException, InterruptedException {
         PrintStream out = System.out;
-        Clock clock = timeScale == 1.0 ? new SystemClock() : new ScaledClock(timeScale);
+        Clock clock = Clock.forTimeScale(timeScale);
 
         if (rtPriority < 2 || rtPriority > 99) {
             throw new UserError("--rt-priority must be 2..99, got " + rtPriority);
@@ -204,11 +202,8 @@ public final class BenchCommand implements Callable<Integer> {
                     new BenchTask(s.name(), s.workNs(), chain ? previous : null, work));
             previous = s.name();
         }
-        Monitor monitor = buildOrExplain(builder);
-        ConsoleReporter console = quiet ? null : new ConsoleReporter(System.err, monitor.tasks(), false);
-        if (console != null) {
-            monitor.addListener(console);
-        }
+        Monitor monitor = CommandMonitor.build(builder);
+        ConsoleReporter console = CommandMonitor.console(monitor, quiet, System.err);
         TraceRecorder recorder = trace.attach(monitor);
         out.printf("rtaware bench: %d task(s)%s for %s of world time (time scale x%s)%n", specs.size(),
                 chain ? " in a chain" : "", Durations.format(durationNs), timeScale);
@@ -226,12 +221,7 @@ public final class BenchCommand implements Callable<Integer> {
         endedEarly |= monitor.awaitTermination(java.time.Duration.ofNanos(wallNs - warmUpNs));
         long allocatedBytes = endedEarly ? -1 : allocation.allocatedSince();
         long releases = totalReleases(monitor) - releasesBefore;
-        monitor.stop();
-        try {
-            Runtime.getRuntime().removeShutdownHook(hook);
-        } catch (IllegalStateException shuttingDown) {
-            // Already shutting down: the hook is running or has run.
-        }
+        CommandMonitor.stop(monitor, hook);
         liveView.close();
         if (endedEarly) {
             System.err.println("rtaware: the run ended before its duration (a task hit a fatal error, see above)");
@@ -279,14 +269,6 @@ public final class BenchCommand implements Callable<Integer> {
             } catch (IOException e) {
                 System.err.println("rtaware: could not write " + json + ": " + e.getMessage());
             }
-        }
-    }
-
-    private static Monitor buildOrExplain(Monitor.Builder builder) {
-        try {
-            return builder.build();
-        } catch (ConfigurationException e) {
-            throw new UserError(String.join("; ", e.violations()));
         }
     }
 

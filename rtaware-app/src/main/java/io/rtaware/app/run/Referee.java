@@ -6,7 +6,7 @@ import io.rtaware.robot.geometry.Pose2d;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
-import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.LongSupplier;
 
 /**
  * Watches the robot from outside the controller, as the paper's ground-truth sensors did: samples
@@ -42,13 +42,13 @@ final class Referee implements AutoCloseable {
     private final long startNs;
     private final long samplePeriodNs;
     private final PoseSource source;
-    private final AtomicLong missEvents;
+    private final LongSupplier misses;
     private final List<Sample> samples = new ArrayList<>();
     private final List<Point2d> missMarkers = new ArrayList<>();
     private final Thread thread;
     private volatile boolean running = true;
     private double travelledM;
-    private long lastMissEvents;
+    private long lastMisses;
     private String lastError;
 
     /**
@@ -56,14 +56,14 @@ final class Referee implements AutoCloseable {
      * @param startNs world time of the run's start
      * @param samplePeriodNs world time between samples
      * @param source the pose source; closed with the referee
-     * @param missEvents a counter of deadline-miss events; a marker is recorded where it grows
+     * @param misses the total deadline misses so far; a marker is recorded where it grows
      */
-    Referee(Clock clock, long startNs, long samplePeriodNs, PoseSource source, AtomicLong missEvents) {
+    Referee(Clock clock, long startNs, long samplePeriodNs, PoseSource source, LongSupplier misses) {
         this.clock = clock;
         this.startNs = startNs;
         this.samplePeriodNs = samplePeriodNs;
         this.source = Objects.requireNonNull(source, "source");
-        this.missEvents = missEvents;
+        this.misses = misses;
         this.thread = new Thread(this::loop, "rtaware-referee");
         this.thread.setDaemon(true);
         this.thread.start();
@@ -97,15 +97,15 @@ final class Referee implements AutoCloseable {
             return;
         }
         double tS = (clock.nanos() - startNs) / 1e9;
-        long misses = missEvents.get();
+        long missesNow = misses.getAsLong();
         synchronized (this) {
             if (!samples.isEmpty()) {
                 travelledM += samples.get(samples.size() - 1).pose().distanceTo(pose);
             }
             samples.add(new Sample(tS, pose));
-            if (misses > lastMissEvents) {
+            if (missesNow > lastMisses) {
                 missMarkers.add(pose.position());
-                lastMissEvents = misses;
+                lastMisses = missesNow;
             }
         }
     }

@@ -1,21 +1,17 @@
 package io.rtaware.app.run;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.cli.CommandMonitor;
 import io.rtaware.app.live.LiveView;
 import io.rtaware.app.live.RunScene;
-import io.rtaware.core.monitor.ConfigurationException;
 import io.rtaware.core.monitor.ConsoleReporter;
 import io.rtaware.core.monitor.Monitor;
-import io.rtaware.core.monitor.MonitorListener;
 import io.rtaware.core.monitor.TaskCounters;
 import io.rtaware.core.monitor.TaskInfo;
-import io.rtaware.core.report.Report;
 import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Clock;
-import io.rtaware.core.time.ScaledClock;
-import io.rtaware.core.time.SystemClock;
 import io.rtaware.core.trace.TraceRecorder;
 import io.rtaware.app.rt.RealtimeThreads;
 import io.rtaware.nav.NavConfig;
@@ -70,6 +66,8 @@ public final class RobotRun {
     private static final double LOST_SERVER_AFTER_WALL_S = 3.0;
 
     private final RunOptions options;
+    /** Rising edges of the stall flag: the contact count when the server is not the built-in simulator. */
+    private final AtomicLong stallEdges = new AtomicLong();
     private final PrintStream out;
     private final PrintStream err;
 
@@ -94,7 +92,7 @@ public final class RobotRun {
      */
     public int execute() throws IOException {
         Scenario scenario = loadScenario();
-        Clock clock = options.timeScale() == 1.0 ? new SystemClock() : new ScaledClock(options.timeScale());
+        Clock clock = Clock.forTimeScale(options.timeScale());
 
         PlayerSimServer server = null;
         String host = options.playerHost();
@@ -144,24 +142,14 @@ public final class RobotRun {
         NavController nav = new NavController(navConfig);
         PlayerDataTask player = new PlayerDataTask(PlayerConfig.of(host, port).withReconnect(true, 500, 8000));
 
-        AtomicLong missEvents = new AtomicLong();
         Monitor.Builder builder = Monitor.builder(clock)
-                .task(new TaskSpec(PLAYER_TASK, Schedule.continuous(), ErrorPolicy.CONTINUE, player))
-                .listener(new MissCounter(missEvents));
+                .task(new TaskSpec(PLAYER_TASK, Schedule.continuous(), ErrorPolicy.CONTINUE, player));
         nav.taskSpecs().forEach(builder::task);
         if (options.realtime()) {
             builder.threadSetup(RealtimeThreads.configure(RealtimeThreads.DEFAULT_TOP_PRIORITY, Map.of(), err));
         }
-        Monitor monitor;
-        try {
-            monitor = builder.build();
-        } catch (ConfigurationException e) {
-            throw new UserError(String.join("; ", e.violations()));
-        }
-        ConsoleReporter console = options.quiet() ? null : new ConsoleReporter(err, monitor.tasks(), false);
-        if (console != null) {
-            monitor.addListener(console);
-        }
+        Monitor monitor = CommandMonitor.build(builder);
+        ConsoleReporter console = CommandMonitor.console(monitor, options.quiet(), err);
         TraceRecorder trace = options.trace().attach(monitor);
 
         AtomicReference<String> outcome = new AtomicReference<>();
@@ -184,7 +172,7 @@ public final class RobotRun {
             }
             monitor.read(nav.keys().course(), course);
             long collisions = server != null ? server.withWorld(World::contactCount) : stallEdges.get();
-            RunSection run = runSection(scenario, report, nav, course, referee, outcome.get(), reason.get(),
+            RunSection run = runSection(scenario, nav, course, referee, outcome.get(), reason.get(),
                     clock.nanos() - startNs[0], collisions, server != null);
             live.finish(report, run);
             artifacts.write(report, run, referee, nav.finalMap().orElse(null),
@@ -196,7 +184,7 @@ public final class RobotRun {
         monitor.start();
         startNs[0] = clock.nanos();
         Referee referee = new Referee(clock, startNs[0], SAMPLE_PERIOD_NS,
-                poseSource(host, port, monitor), missEvents);
+                poseSource(host, port, monitor), () -> totalMisses(monitor));
         refereeHolder.add(referee);
         live.truePose(referee::latest, referee.kind());
         if (!options.quiet()) {
@@ -205,13 +193,8 @@ public final class RobotRun {
                     server != null ? "built-in simulator" : "external Player server", referee.kind());
         }
 
-        supervise(scenario, clock, monitor, nav, referee, course, outcome, reason);
-        monitor.stop();
-        try {
-            Runtime.getRuntime().removeShutdownHook(hook);
-        } catch (IllegalStateException shuttingDown) {
-            // The JVM is already exiting; the hook has done or is doing the same work.
-        }
+        supervise(scenario, clock, startNs[0], monitor, nav, referee, course, outcome, reason);
+        CommandMonitor.stop(monitor, hook);
         live.close();
         return switch (outcome.get()) {
             case "error" -> 1;
@@ -220,19 +203,26 @@ public final class RobotRun {
         };
     }
 
-    private final AtomicLong stallEdges = new AtomicLong();
+    private static long totalMisses(Monitor monitor) {
+        long sum = 0;
+        for (int i = 0; i < monitor.tasks().size(); i++) {
+            sum += monitor.counters(i).misses();
+        }
+        return sum;
+    }
 
     /** Watches the run until it ends; records the outcome. Returns when the run is over. */
-    private void supervise(Scenario scenario, Clock clock, Monitor monitor, NavController nav, Referee referee,
-                           CourseStatus course, AtomicReference<String> outcome, AtomicReference<String> reason) {
-        long startNs = clock.nanos();
+    private void supervise(Scenario scenario, Clock clock, long startNs, Monitor monitor, NavController nav,
+                           Referee referee, CourseStatus course, AtomicReference<String> outcome,
+                           AtomicReference<String> reason) {
         long pollWallNs = Math.max(1_000_000L, Math.min(50_000_000L, (long) (50_000_000L / options.timeScale())));
         long lastStatusWallNs = System.nanoTime();
         Odometry odometry = new Odometry();
         VelocityCommand motor = new VelocityCommand();
         boolean wasStalled = false;
         boolean tty = System.console() != null;
-        long lastOdometryGeneration = -1;
+        long lastOdometryGeneration = 0;
+        long lastOdometryNs = startNs;
         long lastOdometryWallNs = System.nanoTime();
         while (true) {
             LockSupport.parkNanos(pollWallNs);
@@ -249,6 +239,7 @@ public final class RobotRun {
             wasStalled = odometry.stall;
             if (odometryGeneration != lastOdometryGeneration) {
                 lastOdometryGeneration = odometryGeneration;
+                lastOdometryNs = clock.nanos();
                 lastOdometryWallNs = System.nanoTime();
             }
             String end = null;
@@ -263,7 +254,7 @@ public final class RobotRun {
                 end = "stuck";
                 why = String.format(Locale.ROOT, "moved less than %.2f m in %.0f s while commanded to move",
                         STUCK_MIN_MOVE_M, options.stuckAfterS());
-            } else if (elapsedS > LOST_SERVER_AFTER_S && lostServer(monitor, clock, odometryGeneration)
+            } else if ((clock.nanos() - lastOdometryNs) / 1e9 > LOST_SERVER_AFTER_S
                     && (System.nanoTime() - lastOdometryWallNs) / 1e9 > LOST_SERVER_AFTER_WALL_S) {
                 end = "error";
                 why = String.format(Locale.ROOT, "no odometry from the robot server for %.0f s of world time "
@@ -284,14 +275,6 @@ public final class RobotRun {
                 printStatus(monitor, nav, course, elapsedS, referee, tty);
             }
         }
-    }
-
-    private boolean lostServer(Monitor monitor, Clock clock, long odometryGeneration) {
-        if (odometryGeneration == 0) {
-            return true;
-        }
-        long lastCommitNs = monitor.feed(RobotKeys.ODOMETRY.name()).lastCommitNs();
-        return (clock.nanos() - lastCommitNs) / 1e9 > LOST_SERVER_AFTER_S;
     }
 
     private void printStatus(Monitor monitor, NavController nav, CourseStatus course, double elapsedS,
@@ -317,8 +300,7 @@ public final class RobotRun {
 
     private NavConfig navConfig(Scenario scenario) {
         NavConfig.Builder b = NavConfig.builder()
-                .periodsNs(periodsByTask())
-                .gridResolutionM(options.gridResolutionM())
+                .periodsNs(options.periods().nanosByTask())
                 .goalToleranceM(scenario.goalToleranceM())
                 .waypoints(scenario.waypoints());
         OccupancyMap map = scenario.map().orElse(null);
@@ -335,14 +317,6 @@ public final class RobotRun {
         } catch (IllegalArgumentException e) {
             throw new UserError(e.getMessage());
         }
-    }
-
-    private Map<String, Long> periodsByTask() {
-        Map<String, Long> m = new LinkedHashMap<>();
-        for (String task : TaskPeriods.TASKS) {
-            m.put(task, options.periods().periodNs(task));
-        }
-        return m;
     }
 
     /** Ground truth through Player's simulation:0 when the server has it, odometry otherwise. */
@@ -389,7 +363,7 @@ public final class RobotRun {
         };
     }
 
-    private RunSection runSection(Scenario scenario, Report report, NavController nav, CourseStatus course,
+    private RunSection runSection(Scenario scenario, NavController nav, CourseStatus course,
                                   Referee referee, String outcome, String why, long elapsedNs, long collisions,
                                   boolean simulator) {
         Pose2d last = referee == null ? null : referee.latest();
@@ -413,24 +387,5 @@ public final class RobotRun {
 
     private static String trim(double v) {
         return v == Math.rint(v) ? Long.toString((long) v) : Double.toString(v);
-    }
-
-    /** Counts deadline-miss events so the referee can mark where they happened. Allocation-free. */
-    private static final class MissCounter implements MonitorListener {
-        private final AtomicLong events;
-
-        MissCounter(AtomicLong events) {
-            this.events = events;
-        }
-
-        @Override
-        public void onDeadlineMiss(TaskInfo task, long releaseNs, long deadlineNs, long detectedNs, boolean stillRunning) {
-            events.incrementAndGet();
-        }
-
-        @Override
-        public void onSkippedReleases(TaskInfo task, long skipped, long nowNs) {
-            events.incrementAndGet();
-        }
     }
 }

@@ -92,6 +92,11 @@ public final class TaskPeriods {
         return ns;
     }
 
+    /** @return periods in ns by task, in the paper's order */
+    public Map<String, Long> nanosByTask() {
+        return periodsNs;
+    }
+
     /** @return periods in ms by task, in the paper's order (the report's {@code periods_ms}) */
     public Map<String, Double> millis() {
         Map<String, Double> m = new LinkedHashMap<>();

@@ -12,6 +12,18 @@ package io.rtaware.core.time;
  */
 public interface Clock {
 
+    /**
+     * The clock a program runs on for a given time scale: wall time itself at 1, otherwise a
+     * {@link ScaledClock} starting at zero.
+     *
+     * @param timeScale world seconds per wall second; positive and finite
+     * @return a {@link SystemClock} for 1, a {@link ScaledClock} otherwise
+     * @throws IllegalArgumentException if the scale is not positive and finite
+     */
+    static Clock forTimeScale(double timeScale) {
+        return timeScale == 1.0 ? new SystemClock() : new ScaledClock(timeScale);
+    }
+
     /** @return world time in nanoseconds; never decreases. */
     long nanos();
 
