@@ -43,6 +43,14 @@ class CliErrorsTest {
     }
 
     @Test
+    void nonPositiveTimeScaleIsOneLineWithStatus2InEveryCommand() {
+        for (String command : new String[] {"run", "bench", "sim", "experiment"}) {
+            assertOneLineUserError(runCapturingErr(command, "--time-scale", "0"), "'0' is not a time scale");
+            assertOneLineUserError(runCapturingErr(command, "--time-scale", "fast"), "'fast' is not a time scale");
+        }
+    }
+
+    @Test
     void unknownOptionIsOneLineWithStatus2() {
         assertOneLineUserError(runCapturingErr("bench", "--frobnicate"), "--frobnicate");
     }

@@ -1,6 +1,7 @@
 package io.rtaware.app.bench;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.bench.compare.CompareReport;
 import io.rtaware.app.bench.compare.CompareRun;
 import io.rtaware.app.bench.compare.Goal;
@@ -82,7 +83,7 @@ public final class BenchCommand implements Callable<Integer> {
             description = "How long to run, in world time (default: ${DEFAULT-VALUE}).")
     long durationNs;
 
-    @Option(names = "--time-scale", defaultValue = "1", description = "World time runs K times faster than wall time (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--time-scale", converter = TimeScaleConverter.class, defaultValue = "1", description = "World time runs K times faster than wall time (default: ${DEFAULT-VALUE}).")
     double timeScale;
 
     @Option(names = "--json", description = "Write the JSON report (schema rtaware.report/1) to FILE.", paramLabel = "FILE")
@@ -139,9 +140,6 @@ public final class BenchCommand implements Callable<Integer> {
         List<BenchSpec> specs = taskSet();
         if (durationNs <= 0) {
             throw new UserError("--duration must be positive, got " + Durations.format(durationNs));
-        }
-        if (!(timeScale > 0) || Double.isInfinite(timeScale)) {
-            throw new UserError("--time-scale must be a positive number, got " + timeScale);
         }
         if (loadThreads < 0) {
             throw new UserError("--load must be 0 or more, got " + loadThreads);

@@ -1,6 +1,7 @@
 package io.rtaware.app.experiment;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.experiment.ExperimentInputException;
 import io.rtaware.experiment.ExperimentPlan;
 import io.rtaware.experiment.ExperimentProfile;
@@ -59,7 +60,7 @@ public final class ExperimentCommand implements Callable<Integer> {
             description = "The course, passed to 'rtaware run' (default: ${DEFAULT-VALUE}).")
     String scenario;
 
-    @Option(names = "--time-scale", defaultValue = "10", paramLabel = "K",
+    @Option(names = "--time-scale", converter = TimeScaleConverter.class, defaultValue = "10", paramLabel = "K",
             description = "World time runs K times faster than wall time, emulating a computer K times slower "
                     + "(default: ${DEFAULT-VALUE}, the 'paper' profile with run's 0.05 m grid: see README; the report states it).")
     double timeScale;
@@ -131,9 +132,6 @@ public final class ExperimentCommand implements Callable<Integer> {
     private ExperimentPlan plan() {
         if (runs < 1) {
             throw new UserError("--runs must be at least 1, got " + runs);
-        }
-        if (!(timeScale > 0) || Double.isInfinite(timeScale)) {
-            throw new UserError("--time-scale must be a positive number, got " + timeScale);
         }
         if (gridResolutionM != null && !(gridResolutionM > 0)) {
             throw new UserError("--grid-resolution must be a positive number of metres, got " + gridResolutionM);

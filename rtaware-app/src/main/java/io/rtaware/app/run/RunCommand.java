@@ -1,6 +1,7 @@
 package io.rtaware.app.run;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.live.LiveMixin;
 import java.io.IOException;
@@ -33,7 +34,7 @@ public final class RunCommand implements Callable<Integer> {
             description = "Task periods, e.g. waypoint=100,obstacle=50,occupancy=100,planner=100 (ms; tasks not named keep Set 4's).")
     String periods;
 
-    @Option(names = "--time-scale", defaultValue = "1", paramLabel = "K",
+    @Option(names = "--time-scale", converter = TimeScaleConverter.class, defaultValue = "1", paramLabel = "K",
             description = "World time runs K times faster than wall time, emulating a computer K times slower (default: ${DEFAULT-VALUE}).")
     double timeScale;
 
@@ -78,9 +79,6 @@ public final class RunCommand implements Callable<Integer> {
     }
 
     RunOptions options() {
-        if (!(timeScale > 0) || Double.isInfinite(timeScale)) {
-            throw new UserError("--time-scale must be a positive number, got " + timeScale);
-        }
         if (!(stuckAfterS > 0)) {
             throw new UserError("--stuck-after must be positive, got " + stuckAfterS);
         }

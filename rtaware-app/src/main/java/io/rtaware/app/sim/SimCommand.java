@@ -1,6 +1,7 @@
 package io.rtaware.app.sim;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.sim.scenario.ScenarioException;
 import io.rtaware.sim.server.ServerConfig;
 import io.rtaware.sim.server.SimCommandSupport;
@@ -24,7 +25,7 @@ public final class SimCommand implements Callable<Integer> {
     @Option(names = "--port", defaultValue = "6665", description = "TCP port, 0 for any free one (default: ${DEFAULT-VALUE}).")
     int port;
 
-    @Option(names = "--time-scale", defaultValue = "1", paramLabel = "K", description = "World runs K times faster than wall time (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--time-scale", converter = TimeScaleConverter.class, defaultValue = "1", paramLabel = "K", description = "World runs K times faster than wall time (default: ${DEFAULT-VALUE}).")
     double timeScale;
 
     @Option(names = "--seed", defaultValue = "1", description = "Seed of the sensor noise (default: ${DEFAULT-VALUE}).")
@@ -38,9 +39,6 @@ public final class SimCommand implements Callable<Integer> {
     public Integer call() {
         if (port < 0 || port > 65535) {
             throw new UserError("--port must be 0..65535, got " + port);
-        }
-        if (!(timeScale > 0) || Double.isInfinite(timeScale)) {
-            throw new UserError("--time-scale must be a positive number, got " + timeScale);
         }
         try {
             SimCommandSupport.serveUntilInterrupted(scenario, port, timeScale, seed, bind, System.out);
