@@ -54,6 +54,7 @@ public final class Monitor {
     private final Map<String, String> producers;
     private final Map<String, List<String>> consumers;
     private final List<String> keyNames;
+    private final Map<String, StateVariable<?>> variablesByName;
     private final List<Consumer<Report>> terminationHandlers = new CopyOnWriteArrayList<>();
     private final List<MonitorListener> listeners;
     private final ThreadSetup threadSetup;
@@ -91,6 +92,9 @@ public final class Monitor {
         this.producers = producers;
         this.consumers = consumers;
         this.keyNames = variables.stream().map(v -> v.key().name()).toList();
+        Map<String, StateVariable<?>> byName = new LinkedHashMap<>();
+        variables.forEach(v -> byName.put(v.key().name(), v));
+        this.variablesByName = Map.copyOf(byName);
     }
 
     /**
@@ -141,9 +145,15 @@ public final class Monitor {
      * @return its live feed statistics
      */
     public FeedStats feed(String key) {
-        return variables.stream().filter(v -> v.key().name().equals(key)).findFirst()
-                .orElseThrow(() -> new IllegalArgumentException("no key '" + key + "'; keys: " + keyNames))
-                .feedStats();
+        return variable(key).feedStats();
+    }
+
+    private StateVariable<?> variable(String key) {
+        StateVariable<?> variable = variablesByName.get(key);
+        if (variable == null) {
+            throw new IllegalArgumentException("no key '" + key + "'; keys: " + keyNames);
+        }
+        return variable;
     }
 
     /**
@@ -158,8 +168,7 @@ public final class Monitor {
      * @throws IllegalArgumentException if no task produces the key or its type differs
      */
     public <T extends StateValue<T>> long read(Key<T> key, T target) {
-        StateVariable<?> variable = variables.stream().filter(v -> v.key().name().equals(key.name())).findFirst()
-                .orElseThrow(() -> new IllegalArgumentException("no key '" + key.name() + "'; keys: " + keyNames));
+        StateVariable<?> variable = variable(key.name());
         if (!variable.key().type().equals(key.type())) {
             throw new IllegalArgumentException("key '" + key.name() + "' holds " + variable.key().type().getSimpleName()
                     + ", not " + key.type().getSimpleName());
@@ -177,11 +186,8 @@ public final class Monitor {
      * @throws IllegalArgumentException if no task produces it
      */
     public String producer(String key) {
-        String task = producers.get(key);
-        if (task == null) {
-            throw new IllegalArgumentException("no key '" + key + "'; keys: " + keyNames);
-        }
-        return task;
+        variable(key);
+        return producers.get(key);
     }
 
     /**
@@ -199,7 +205,7 @@ public final class Monitor {
      * @return true if some task produces it
      */
     public boolean hasKey(String key) {
-        return keyNames.contains(key);
+        return variablesByName.containsKey(key);
     }
 
     private TaskRuntime runtime(String task) {
