@@ -118,7 +118,7 @@ public final class StepExecutor implements Monitor.Executor {
         } finally {
             current = null;
         }
-        long endNs = clock.nanos();
+        long endNs = runtime.lastCycleEndNs();
         switch (outcome) {
             case DISABLE -> {
                 runtime.setState(TaskState.DISABLED, endNs);

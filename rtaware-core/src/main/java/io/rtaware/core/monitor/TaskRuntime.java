@@ -364,23 +364,21 @@ final class TaskRuntime implements TaskInfo {
      * miss now, while the task is still running.
      *
      * @param nowNs world time
-     * @return true if a miss was reported
      */
-    boolean checkDeadline(long nowNs) {
+    void checkDeadline(long nowNs) {
         long token = cycleToken.get();
         if ((token & 1) == 0) {
-            return false;
+            return;
         }
         long k = (token - 1) >>> 1;
         long deadline = deadlineOf(k);
         if (nowNs <= deadline || !cycleToken.compareAndSet(token, token + 1)) {
-            return false;
+            return;
         }
         misses.incrementAndGet();
         for (MonitorListener l : listeners) {
             l.onDeadlineMiss(this, releaseTimeNs(k), deadline, nowNs, true);
         }
-        return true;
     }
 
     /**
