@@ -54,7 +54,7 @@ final class RunArtifacts {
         try {
             Files.createDirectories(dir);
             doc.write(dir.resolve("report.json"));
-            Files.writeString(dir.resolve("report.md"), markdown(table, runText, analysis));
+            Files.writeString(dir.resolve("report.md"), markdown(table, runText, analysis, worldMap != null));
             List<Referee.Sample> samples = referee == null ? List.of() : referee.samples();
             writeTrajectoryCsv(dir.resolve("trajectory.csv"), samples);
             if (worldMap != null) {
@@ -85,7 +85,7 @@ final class RunArtifacts {
         return sb.toString();
     }
 
-    private String markdown(String table, String runText, String analysis) {
+    private String markdown(String table, String runText, String analysis, boolean withTrajectoryPng) {
         return "# rtaware run: " + scenario.name() + "\n\n"
                 + "```\n" + runText + "```\n\n"
                 + "## Timing\n\n```\n" + table + "```\n\n"
@@ -93,8 +93,7 @@ final class RunArtifacts {
                 + "Definitions: a release is a grid point at which a task was due; a miss is a release whose run did not\n"
                 + "finish by its deadline, plus every release skipped because the task was still running; a stale run\n"
                 + "is a cycle in which none of the task's inputs had new data. Times are world time.\n\n"
-                + (Files.exists(options.outDir().resolve("trajectory.png")) || scenario.map().isPresent()
-                        ? "![trajectory](trajectory.png)\n" : "");
+                + (withTrajectoryPng ? "![trajectory](trajectory.png)\n" : "");
     }
 
     private static void writeTrajectoryCsv(Path file, List<Referee.Sample> samples) throws IOException {
