@@ -181,10 +181,11 @@ public final class RobotRun {
         });
         Thread hook = monitor.installShutdownHook();
 
+        // Connected before the start, so the first ground-truth sample is the pose at the start.
+        Referee.PoseSource truth = poseSource(host, port, monitor);
         monitor.start();
         startNs[0] = clock.nanos();
-        Referee referee = new Referee(clock, startNs[0], SAMPLE_PERIOD_NS,
-                poseSource(host, port, monitor), () -> totalMisses(monitor));
+        Referee referee = new Referee(clock, startNs[0], SAMPLE_PERIOD_NS, truth, () -> totalMisses(monitor));
         refereeHolder.add(referee);
         live.truePose(referee::latest, referee.kind());
         if (!options.quiet()) {
