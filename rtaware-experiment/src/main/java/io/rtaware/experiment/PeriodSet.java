@@ -1,5 +1,6 @@
 package io.rtaware.experiment;
 
+import io.rtaware.nav.NavConfig;
 import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -17,7 +18,7 @@ import java.util.stream.Collectors;
 public record PeriodSet(String name, Map<String, Long> periodsMs) {
 
     /** The behaviors whose periods an experiment varies, in the paper's column order. */
-    public static final List<String> TASKS = List.of("waypoint", "obstacle", "occupancy", "planner");
+    public static final List<String> TASKS = NavConfig.BEHAVIORS;
 
     /**
      * @param name the set's label

@@ -72,6 +72,11 @@ public record NavConfig(
     public static final String PLANNER = "planner";
     /** Task name of the position mediator. */
     public static final String MEDIATOR = "mediator";
+    /**
+     * The paper's four behaviors, in the order of its Table I: the tasks whose periods a user
+     * sets on the command line and an experiment varies (the mediator follows them).
+     */
+    public static final List<String> BEHAVIORS = List.of(WAYPOINT, OBSTACLE, OCCUPANCY, PLANNER);
     /** The task names whose periods can be set, in registration order. */
     public static final List<String> TASK_NAMES = List.of(WAYPOINT, OBSTACLE, OCCUPANCY, PLANNER, MEDIATOR);
 

@@ -2,6 +2,7 @@ package io.rtaware.app.run;
 
 import io.rtaware.app.UserError;
 import io.rtaware.core.time.Durations;
+import io.rtaware.nav.NavConfig;
 import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -15,7 +16,7 @@ import java.util.Map;
 public final class TaskPeriods {
 
     /** The behaviors whose periods can be set, in the paper's order (Table I). */
-    public static final List<String> TASKS = List.of("waypoint", "obstacle", "occupancy", "planner");
+    public static final List<String> TASKS = NavConfig.BEHAVIORS;
 
     private final Map<String, Long> periodsNs;
 
