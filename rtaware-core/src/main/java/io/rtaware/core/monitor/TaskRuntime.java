@@ -105,6 +105,8 @@ final class TaskRuntime implements TaskInfo {
     private long latenessMaxNs;
     /** End of the latest cycle; task thread only. */
     private long lastCycleEndNs;
+    /** Whether the latest cycle threw; task thread only. */
+    private boolean lastCycleFailed;
     private double latenessSumNs;
 
     TaskRuntime(TaskSpec spec, int index, Clock clock, MonitorListener[] listeners,
@@ -340,6 +342,7 @@ final class TaskRuntime implements TaskInfo {
         for (MonitorListener l : listeners) {
             l.onCycle(this, releaseNs, startNs, endNs);
         }
+        lastCycleFailed = failure != null;
         if (failure != null) {
             return fail(failure, endNs);
         }
@@ -467,6 +470,11 @@ final class TaskRuntime implements TaskInfo {
 
     private static long roundToMicros(double ns) {
         return Math.max(1_000, Math.round(ns / 1_000) * 1_000);
+    }
+
+    /** @return true if the latest cycle threw (task thread only) */
+    boolean lastCycleFailed() {
+        return lastCycleFailed;
     }
 
     /** @return world time at which the latest cycle ended (task thread only) */

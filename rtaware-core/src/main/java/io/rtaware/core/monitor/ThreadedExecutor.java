@@ -18,11 +18,16 @@ import java.util.concurrent.locks.LockSupport;
  * without a period get {@code NORM_PRIORITY}; the watchdog has {@code MAX_PRIORITY}). An
  * optional {@link ThreadSetup} runs on each task thread before its first release.
  *
+ * <p>A continuous task whose cycle throws is released again only after
+ * {@value #CONTINUOUS_ERROR_PAUSE_NS} ns of wall time, so a failing input cannot spin a core.
+ *
  * <p>Thread-safe: started once, stopped once, by the monitor.
  */
 final class ThreadedExecutor implements Monitor.Executor {
 
     private static final long JOIN_TIMEOUT_MS = 5_000;
+    /** Wall time a continuous task waits after a cycle that threw, before it is released again. */
+    static final long CONTINUOUS_ERROR_PAUSE_NS = 20_000_000L;
 
     private final Clock clock;
     private final List<TaskRuntime> runtimes;
@@ -150,6 +155,11 @@ final class ThreadedExecutor implements Monitor.Executor {
             TaskRuntime.Outcome outcome = runtime.runCycle(k++, clock.nanos());
             if (!handle(runtime, outcome)) {
                 return;
+            }
+            if (runtime.lastCycleFailed()) {
+                // A continuous task that keeps throwing (a lost connection, say) would otherwise
+                // spin a core and flood the error count; each failure pauses it briefly.
+                LockSupport.parkNanos(CONTINUOUS_ERROR_PAUSE_NS);
             }
         }
     }

@@ -51,6 +51,23 @@ class ThreadedExecutorTest {
     }
 
     @Test
+    void aContinuousTaskThatKeepsThrowingIsPausedNotSpun() throws InterruptedException {
+        Monitor monitor = Monitor.builder(clock).task("broken", Schedule.continuous(), FnTask.of(now -> {
+            throw new IllegalStateException("connection lost");
+        })).build();
+        monitor.start();
+        Thread.sleep(300);
+        Report report = monitor.stop();
+
+        long errors = report.task("broken").errors();
+        // Without the pause this loop ran millions of cycles in a few seconds; with a 20 ms pause,
+        // about 15 fit in 300 ms. The bound leaves room for a slow machine either way.
+        assertTrue(errors >= 2 && errors <= 100, "a failing continuous task is paused after each error, got "
+                + errors + " errors in ~300 ms");
+        assertEquals(report.task("broken").runs(), errors, "every run failed and was counted");
+    }
+
+    @Test
     void stopAllFromATaskThreadTerminatesTheMonitor() throws InterruptedException {
         CountDownLatch handled = new CountDownLatch(1);
         Monitor monitor = Monitor.builder(clock)

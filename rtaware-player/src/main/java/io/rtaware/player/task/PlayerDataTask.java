@@ -167,9 +167,6 @@ public final class PlayerDataTask implements Task {
 
     private boolean reconnectIfDue(long nowNs) throws IOException, InterruptedException {
         if (!config.reconnect()) {
-            // Wait one poll period so that a task released continuously does not spin a core
-            // throwing this error.
-            Thread.sleep(config.pollWaitMs());
             throw new PlayerConnectionException("not connected to Player server " + config.host() + ":"
                     + config.port() + " (reconnection disabled)", null);
         }
