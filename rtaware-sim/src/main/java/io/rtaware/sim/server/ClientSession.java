@@ -148,8 +148,9 @@ final class ClientSession {
     }
 
     private void readLoop() {
-        try (MessageTimeoutInputStream in = new MessageTimeoutInputStream(socket.getInputStream(),
-                socket::setSoTimeout, settings.wallClock(), settings.messageTimeoutNs())) {
+        try { // the stream is closed with the socket by close(), after the reason is logged
+            MessageTimeoutInputStream in = new MessageTimeoutInputStream(socket.getInputStream(),
+                    socket::setSoTimeout, settings.wallClock(), settings.messageTimeoutNs());
             while (!queue.isClosed()) {
                 PlayerHeader h = frames.read(in);
                 in.messageComplete();
