@@ -99,6 +99,8 @@ final class ClientAcceptor implements Runnable {
             closeQuietly(socket);
             return;
         }
+        refusedFull.ended(n -> "rtaware-sim: admitting clients again, after " + n
+                + " were refused at the limit of " + maxClients);
         try {
             socket.setTcpNoDelay(true);
         } catch (SocketException e) {
@@ -121,8 +123,6 @@ final class ClientAcceptor implements Runnable {
             return;
         }
         refusedNoThreads.ended(n -> "rtaware-sim: client threads start again, after " + n + " clients were refused");
-        refusedFull.ended(n -> "rtaware-sim: admitting clients again, after " + n
-                + " were refused at the limit of " + maxClients);
         LOG.log(Level.DEBUG, "rtaware-sim: client " + session.name() + " connected");
     }
 
