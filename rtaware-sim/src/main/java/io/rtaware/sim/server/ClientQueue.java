@@ -74,10 +74,6 @@ final class ClientQueue {
         return rules.add(rule);
     }
 
-    synchronized int ruleCount() {
-        return rules.size();
-    }
-
     /**
      * Queues a reply.
      *

@@ -1,5 +1,7 @@
 package io.rtaware.sim.server;
 
+import io.rtaware.sim.world.LaserConfig;
+import io.rtaware.sim.world.RobotConfig;
 import io.rtaware.sim.world.World;
 import java.util.Objects;
 import java.util.function.Consumer;
@@ -57,12 +59,12 @@ final class SharedWorld {
     }
 
     /** @return the laser's configuration (immutable; no lock needed) */
-    io.rtaware.sim.world.LaserConfig laserConfig() {
+    LaserConfig laserConfig() {
         return world.laserConfig();
     }
 
     /** @return the robot's configuration (immutable; no lock needed) */
-    io.rtaware.sim.world.RobotConfig robotConfig() {
+    RobotConfig robotConfig() {
         return world.robotConfig();
     }
 }
