@@ -51,6 +51,13 @@ class CliErrorsTest {
     }
 
     @Test
+    void simLimitsOutOfRangeAreOneLineWithStatus2() {
+        assertOneLineUserError(runCapturingErr("sim", "--max-clients", "0"), "--max-clients must be 1..4096, got 0");
+        assertOneLineUserError(runCapturingErr("sim", "--max-rules", "-3"), "--max-rules must be 1..65536, got -3");
+        assertOneLineUserError(runCapturingErr("sim", "--message-timeout", "90min"), "--message-timeout must be 1ms..60min, got ");
+    }
+
+    @Test
     void unknownOptionIsOneLineWithStatus2() {
         assertOneLineUserError(runCapturingErr("bench", "--frobnicate"), "--frobnicate");
     }

@@ -11,6 +11,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.Semaphore;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
@@ -47,6 +48,8 @@ public final class LiveServer implements AutoCloseable {
     private final ExecutorService executor;
     private final Map<String, Resource> resources = new ConcurrentHashMap<>();
     private final CopyOnWriteArrayList<EventClient> clients = new CopyOnWriteArrayList<>();
+    /** One permit per stream slot: taking it is the admission, so concurrent connects cannot overshoot. */
+    private final Semaphore eventSlots = new Semaphore(MAX_EVENT_CLIENTS);
     private final AtomicInteger clientsEver = new AtomicInteger();
     private volatile byte[] snapshot = "{}".getBytes(StandardCharsets.UTF_8);
     private volatile boolean closed;
@@ -164,20 +167,20 @@ public final class LiveServer implements AutoCloseable {
 
     /** Serves one event stream on this handler thread until the client goes or the server closes. */
     private void stream(HttpExchange exchange) throws IOException {
-        if (clients.size() >= MAX_EVENT_CLIENTS || closed) {
+        if (closed || !eventSlots.tryAcquire()) {
             send(exchange, 503, "text/plain; charset=utf-8",
                     "too many live view clients\n".getBytes(StandardCharsets.UTF_8), false);
             return;
         }
-        exchange.getResponseHeaders().set("Content-Type", "text/event-stream; charset=utf-8");
-        exchange.getResponseHeaders().set("Cache-Control", "no-store");
-        exchange.sendResponseHeaders(200, 0);
         EventClient client = new EventClient(Thread.currentThread());
-        client.offer(snapshot);
-        clients.add(client);
-        clientsEver.incrementAndGet();
-        OutputStream body = exchange.getResponseBody();
         try {
+            exchange.getResponseHeaders().set("Content-Type", "text/event-stream; charset=utf-8");
+            exchange.getResponseHeaders().set("Cache-Control", "no-store");
+            exchange.sendResponseHeaders(200, 0);
+            client.offer(snapshot);
+            clients.add(client);
+            clientsEver.incrementAndGet();
+            OutputStream body = exchange.getResponseBody();
             while (!closed) {
                 byte[] next = client.slot.getAndSet(null);
                 if (next == null) {
@@ -197,6 +200,7 @@ public final class LiveServer implements AutoCloseable {
             // The browser went away: drop it below.
         } finally {
             clients.remove(client);
+            eventSlots.release();
         }
     }
 

@@ -1,7 +1,9 @@
 package io.rtaware.app.sim;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.app.cli.TimeScaleConverter;
+import io.rtaware.core.time.Durations;
 import io.rtaware.sim.scenario.ScenarioException;
 import io.rtaware.sim.server.ServerConfig;
 import io.rtaware.sim.server.SimCommandSupport;
@@ -35,13 +37,36 @@ public final class SimCommand implements Callable<Integer> {
             description = "Listen address (default: ${DEFAULT-VALUE}); 0.0.0.0 exposes the simulator to other machines.")
     String bind;
 
+    @Option(names = "--max-clients", defaultValue = "" + ServerConfig.DEFAULT_MAX_CLIENTS, paramLabel = "N",
+            description = "Clients served at once, each costs two threads; more are refused (default: ${DEFAULT-VALUE}).")
+    int maxClients;
+
+    @Option(names = "--max-rules", defaultValue = "" + ServerConfig.DEFAULT_MAX_RULES, paramLabel = "N",
+            description = "Replace rules per client; more are NACKed (default: ${DEFAULT-VALUE}).")
+    int maxRules;
+
+    @Option(names = "--message-timeout", defaultValue = "10s", converter = DurationConverter.class, paramLabel = "D",
+            description = "A client that sends part of a message and not the rest within D is disconnected (default: ${DEFAULT-VALUE}).")
+    long messageTimeoutNs;
+
     @Override
     public Integer call() {
         if (port < 0 || port > 65535) {
             throw new UserError("--port must be 0..65535, got " + port);
         }
+        if (maxClients < 1 || maxClients > ServerConfig.MAX_CLIENTS_LIMIT) {
+            throw new UserError("--max-clients must be 1.." + ServerConfig.MAX_CLIENTS_LIMIT + ", got " + maxClients);
+        }
+        if (maxRules < 1 || maxRules > 65536) {
+            throw new UserError("--max-rules must be 1..65536, got " + maxRules);
+        }
+        if (messageTimeoutNs < 1_000_000L || messageTimeoutNs > 3_600_000_000_000L) {
+            throw new UserError("--message-timeout must be 1ms..60min, got " + Durations.format(messageTimeoutNs));
+        }
+        ServerConfig config = ServerConfig.defaults(port).withBindAddress(bind)
+                .withLimits(maxClients, maxRules, messageTimeoutNs);
         try {
-            SimCommandSupport.serveUntilInterrupted(scenario, port, timeScale, seed, bind, System.out);
+            SimCommandSupport.serveUntilInterrupted(scenario, config, timeScale, seed, System.out);
         } catch (ScenarioException e) {
             throw new UserError(e.getMessage());
         } catch (IOException e) {

@@ -202,6 +202,40 @@ class LiveServerTest {
         assertEquals(1, server.eventClientsEver());
     }
 
+    @Test
+    void concurrentConnectsNeverExceedTheEventClientCap() throws Exception {
+        LiveServer server = server();
+        int clients = 8 * LiveServer.MAX_EVENT_CLIENTS;
+        List<Socket> sockets = new ArrayList<>();
+        try {
+            for (int i = 0; i < clients; i++) {
+                Socket s = new Socket(InetAddress.getLoopbackAddress(), server.port());
+                s.setSoTimeout(10_000);
+                sockets.add(s);
+            }
+            for (Socket s : sockets) { // a burst: the server's handler threads admit them concurrently
+                request(s, "/events");
+            }
+            int admitted = 0;
+            int refused = 0;
+            for (Socket s : sockets) {
+                String status = readUntil(s.getInputStream(), "\r\n");
+                if (status.startsWith("HTTP/1.1 200")) {
+                    admitted++;
+                } else if (status.startsWith("HTTP/1.1 503")) {
+                    refused++;
+                }
+            }
+            assertEquals(LiveServer.MAX_EVENT_CLIENTS, admitted, "admitted streams (all stay open)");
+            assertEquals(clients - LiveServer.MAX_EVENT_CLIENTS, refused, "refused with 503");
+            assertEquals(LiveServer.MAX_EVENT_CLIENTS, server.eventClientsEver());
+        } finally {
+            for (Socket s : sockets) {
+                s.close();
+            }
+        }
+    }
+
     private static void request(Socket socket, String path) throws IOException {
         socket.getOutputStream().write(("GET " + path + " HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n")
                 .getBytes(StandardCharsets.US_ASCII));

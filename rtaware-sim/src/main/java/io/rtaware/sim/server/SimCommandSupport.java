@@ -41,25 +41,27 @@ public final class SimCommandSupport {
     }
 
     /**
-     * {@code rtaware sim --scenario S --port P --time-scale K --seed N --bind ADDR}: serves until
-     * the thread is interrupted (or the JVM exits), then closes the server.
+     * {@code rtaware sim --scenario S --port P --time-scale K --seed N --bind ADDR --max-clients C
+     * --max-rules R --message-timeout T}: serves until the thread is interrupted (or the JVM
+     * exits), then closes the server.
      *
      * @param scenario {@code paper-room} or a scenario file
-     * @param port TCP port (0 = any free port; the bound port is printed)
+     * @param config address (use {@link ServerConfig#LOOPBACK} unless told otherwise), port (0 =
+     *     any free port; the bound port is printed) and limits
      * @param timeScale world seconds per wall second, positive
      * @param seed seed of all sensor noise
-     * @param bindAddress listen address (use {@link ServerConfig#LOOPBACK} unless told otherwise)
      * @param out where the one-line start message goes
      * @throws IOException if the port cannot be bound
      * @throws io.rtaware.sim.scenario.ScenarioException if the scenario cannot be loaded
      */
-    public static void serveUntilInterrupted(String scenario, int port, double timeScale, long seed,
-                                             String bindAddress, PrintStream out) throws IOException {
+    public static void serveUntilInterrupted(String scenario, ServerConfig config, double timeScale, long seed,
+                                             PrintStream out) throws IOException {
         Scenario s = ScenarioLoader.load(scenario);
         ScaledClock clock = new ScaledClock(timeScale);
-        try (PlayerSimServer server = start(s, clock, ServerConfig.defaults(port).withBindAddress(bindAddress), seed)) {
-            out.println("rtaware-sim: scenario " + s.name() + " served on " + bindAddress + ":" + server.port()
-                    + " (time scale " + timeScale + ", seed " + seed + "); Ctrl-C to stop");
+        try (PlayerSimServer server = start(s, clock, config, seed)) {
+            out.println("rtaware-sim: scenario " + s.name() + " served on " + config.bindAddress() + ":" + server.port()
+                    + " (time scale " + timeScale + ", seed " + seed + ", at most " + config.maxClients()
+                    + " clients); Ctrl-C to stop");
             out.flush();
             Object forever = new Object();
             synchronized (forever) {
