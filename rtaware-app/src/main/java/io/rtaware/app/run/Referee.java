@@ -12,7 +12,10 @@ import java.util.function.LongSupplier;
  * Watches the robot from outside the controller, as the paper's ground-truth sensors did: samples
  * the true pose at a fixed world-time rate on a thread of its own, records the trajectory, the
  * distance travelled and where deadline misses happened, and tells whether the robot is stuck.
- * Thread-safe: sampled by its own thread, read by any.
+ * When the source gives no pose for longer than {@link #GAP_AFTER_NS} of world time (a
+ * restarted simulator, a lost connection), the referee records a {@link GroundTruthGap}: the distance
+ * travelled is summed only between samples without a gap between them, and the report says
+ * which time it covers. Thread-safe: sampled by its own thread, read by any.
  */
 final class Referee implements AutoCloseable {
 
@@ -38,6 +41,9 @@ final class Referee implements AutoCloseable {
     record Sample(double tS, Pose2d pose) {
     }
 
+    /** World time without a pose after which the referee counts a gap in its measurement: 1 s. */
+    static final long GAP_AFTER_NS = 1_000_000_000L;
+
     private final Clock clock;
     private final long startNs;
     private final long samplePeriodNs;
@@ -45,6 +51,7 @@ final class Referee implements AutoCloseable {
     private final LongSupplier misses;
     private final List<Sample> samples = new ArrayList<>();
     private final List<Point2d> missMarkers = new ArrayList<>();
+    private final List<GroundTruthGap> gaps = new ArrayList<>();
     private final Thread thread;
     private volatile boolean running = true;
     private double travelledM;
@@ -100,7 +107,12 @@ final class Referee implements AutoCloseable {
         long missesNow = misses.getAsLong();
         synchronized (this) {
             if (!samples.isEmpty()) {
-                travelledM += samples.get(samples.size() - 1).pose().distanceTo(pose);
+                Sample previous = samples.get(samples.size() - 1);
+                if (tS - previous.tS() > GAP_AFTER_NS / 1e9) {
+                    gaps.add(new GroundTruthGap(previous.tS(), tS, false));
+                } else {
+                    travelledM += previous.pose().distanceTo(pose);
+                }
             }
             samples.add(new Sample(tS, pose));
             if (missesNow > lastMisses) {
@@ -120,7 +132,20 @@ final class Referee implements AutoCloseable {
         return samples.isEmpty() ? null : samples.get(samples.size() - 1).pose();
     }
 
-    /** @return metres travelled so far */
+    /**
+     * @param endS world seconds since the start at which the run ended
+     * @return the gaps in the measurement, including one still open at {@code endS}
+     */
+    synchronized List<GroundTruthGap> gaps(double endS) {
+        List<GroundTruthGap> all = new ArrayList<>(gaps);
+        double lastS = samples.isEmpty() ? 0.0 : samples.get(samples.size() - 1).tS();
+        if (endS - lastS > GAP_AFTER_NS / 1e9) {
+            all.add(new GroundTruthGap(lastS, endS, true));
+        }
+        return all;
+    }
+
+    /** @return metres travelled so far, summed over the spans without a gap */
     synchronized double travelledM() {
         return travelledM;
     }
