@@ -12,10 +12,11 @@ import java.util.function.LongSupplier;
  * Watches the robot from outside the controller, as the paper's ground-truth sensors did: samples
  * the true pose at a fixed world-time rate on a thread of its own, records the trajectory, the
  * distance travelled and where deadline misses happened, and tells whether the robot is stuck.
- * When the source gives no pose for longer than {@link #GAP_AFTER_NS} of world time (a
- * restarted simulator, a lost connection), the referee records a {@link GroundTruthGap}: the distance
+ * When the source fails to give a pose after it has given one (a restarted simulator, a lost
+ * connection, an impossible pose), the referee records a {@link GroundTruthGap} from the last
+ * pose before the failure to the first one after it (or to the end of the run): the distance
  * travelled is summed only between samples without a gap between them, and the report says
- * which time it covers. Thread-safe: sampled by its own thread, read by any.
+ * which time it covers. A sampling thread that merely ran late (a loaded machine) is no gap. Thread-safe: sampled by its own thread, read by any.
  */
 final class Referee implements AutoCloseable {
 
@@ -41,8 +42,6 @@ final class Referee implements AutoCloseable {
     record Sample(double tS, Pose2d pose) {
     }
 
-    /** World time without a pose after which the referee counts a gap in its measurement: 1 s. */
-    static final long GAP_AFTER_NS = 1_000_000_000L;
 
     private final Clock clock;
     private final long startNs;
@@ -57,6 +56,8 @@ final class Referee implements AutoCloseable {
     private double travelledM;
     private long lastMisses;
     private String lastError;
+    /** True from a failed sample until the next pose: a gap is open. */
+    private boolean failing;
 
     /**
      * @param clock world clock
@@ -97,10 +98,14 @@ final class Referee implements AutoCloseable {
         } catch (Exception e) {
             synchronized (this) {
                 lastError = e.getMessage();
+                failing = true;
             }
             return;
         }
         if (pose == null) {
+            synchronized (this) {
+                failing = true;
+            }
             return;
         }
         double tS = (clock.nanos() - startNs) / 1e9;
@@ -108,12 +113,13 @@ final class Referee implements AutoCloseable {
         synchronized (this) {
             if (!samples.isEmpty()) {
                 Sample previous = samples.get(samples.size() - 1);
-                if (tS - previous.tS() > GAP_AFTER_NS / 1e9) {
+                if (failing) {
                     gaps.add(new GroundTruthGap(previous.tS(), tS, false));
                 } else {
                     travelledM += previous.pose().distanceTo(pose);
                 }
             }
+            failing = false;
             samples.add(new Sample(tS, pose));
             if (missesNow > lastMisses) {
                 missMarkers.add(pose.position());
@@ -138,9 +144,8 @@ final class Referee implements AutoCloseable {
      */
     synchronized List<GroundTruthGap> gaps(double endS) {
         List<GroundTruthGap> all = new ArrayList<>(gaps);
-        double lastS = samples.isEmpty() ? 0.0 : samples.get(samples.size() - 1).tS();
-        if (endS - lastS > GAP_AFTER_NS / 1e9) {
-            all.add(new GroundTruthGap(lastS, endS, true));
+        if (failing || samples.isEmpty()) {
+            all.add(new GroundTruthGap(samples.isEmpty() ? 0.0 : samples.get(samples.size() - 1).tS(), endS, true));
         }
         return all;
     }
