@@ -42,7 +42,6 @@ final class Referee implements AutoCloseable {
     record Sample(double tS, Pose2d pose) {
     }
 
-
     private final Clock clock;
     private final long startNs;
     private final long samplePeriodNs;
@@ -74,13 +73,22 @@ final class Referee implements AutoCloseable {
         this.misses = misses;
         this.thread = new Thread(this::loop, "rtaware-referee");
         this.thread.setDaemon(true);
-        this.thread.start();
+    }
+
+    /**
+     * Starts sampling on the referee's own thread, every {@code samplePeriodNs} of world time.
+     *
+     * @return this referee
+     */
+    Referee start() {
+        thread.start();
+        return this;
     }
 
     private void loop() {
         long next = clock.nanos();
         while (running) {
-            sampleOnce();
+            sample();
             next += samplePeriodNs;
             long waitNs = next - clock.nanos();
             if (waitNs > 0) {
@@ -91,7 +99,8 @@ final class Referee implements AutoCloseable {
         }
     }
 
-    private void sampleOnce() {
+    /** Takes one sample now (the sampling thread's step; tests call it on a manual clock). */
+    void sample() {
         Pose2d pose;
         try {
             pose = source.pose();
@@ -188,17 +197,19 @@ final class Referee implements AutoCloseable {
         return Double.NaN;
     }
 
-    /** Takes a last sample, stops sampling and closes the source. */
+    /** Stops sampling, takes a last sample and closes the source. */
     @Override
     public void close() {
         running = false;
-        thread.interrupt();
-        try {
-            thread.join(2_000);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
+        if (thread.isAlive()) {
+            thread.interrupt();
+            try {
+                thread.join(2_000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
         }
-        sampleOnce();
+        sample();
         try {
             source.close();
         } catch (Exception ignored) {

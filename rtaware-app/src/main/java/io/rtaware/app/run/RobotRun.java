@@ -175,7 +175,7 @@ public final class RobotRun {
 
         monitor.start();
         long startNs = clock.nanos();
-        Referee referee = new Referee(clock, startNs, SAMPLE_PERIOD_NS, truth, () -> totalMisses(monitor));
+        Referee referee = new Referee(clock, startNs, SAMPLE_PERIOD_NS, truth, () -> totalMisses(monitor)).start();
         Supervisor supervisor = new Supervisor(new MonitorView(monitor, nav, referee, player), clock, System::nanoTime,
                 startNs, scenario.timeLimitS(), options.stuckAfterS());
         state.started(startNs, referee, supervisor);
