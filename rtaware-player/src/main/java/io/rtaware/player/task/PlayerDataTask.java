@@ -22,6 +22,7 @@ import io.rtaware.robot.validate.RejectionWatch;
 import io.rtaware.robot.validate.SampleValidator;
 import java.io.IOException;
 import java.util.LinkedHashMap;
+import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 
@@ -201,7 +202,7 @@ public final class PlayerDataTask implements Task {
         }
         SampleValidator checks = odometryFault ? counters.odometryChecks() : scanChecks();
         long sinceNs = (odometryFault ? odometryWatch : scanWatch).rejectingSinceNs();
-        fault = String.format(java.util.Locale.ROOT, "%s sent only impossible samples for %.1f s of world time (%d"
+        fault = String.format(Locale.ROOT, "%s sent only impossible samples for %.1f s of world time (%d"
                         + " rejected in all), latest: %s; robot halted",
                 odometryFault ? position2d : config.scanSource(), (nowNs - sinceNs) / 1e9, checks.rejected(),
                 checks.lastRejection());

@@ -212,6 +212,48 @@ class PlayerDataTaskSafetyTest {
         }
     }
 
+    @Test
+    void scansThatStayImpossibleForASecondHaltTheRobotNamingTheLaser() throws Exception {
+        try (ScriptedServer server = new ScriptedServer(conn -> {
+            conn.banner();
+            for (int i = 0; i < 4; i++) {
+                conn.send(ack(conn.readMessage()));
+            }
+            conn.send(odometry(0.1, 0.0));
+            conn.send(scan(0.1, 1f, 2f, 3f));
+            conn.send(scan(0.2, 1f, -2f, 3f)); // a negative range, and no true scan after it
+            while (true) {
+                byte[] msg;
+                try {
+                    msg = conn.readMessage();
+                } catch (java.io.EOFException closed) {
+                    break;
+                }
+                PlayerHeader h = header(msg);
+                if (h.type() == MessageType.REQ) {
+                    conn.send(ack(msg));
+                } else {
+                    conn.send(odometry(0.3, 0.0)); // the pose stays true
+                }
+            }
+        })) {
+            ManualClock clock = new ManualClock();
+            PlayerDataTask player = new PlayerDataTask(config(server.port()));
+            Monitor monitor = monitor(clock, player, new Consumer());
+            StepExecutor step = monitor.startStepped();
+            for (int i = 0; i < 5000 && player.fault() == null; i++) {
+                step.step();
+            }
+            monitor.stop();
+            String fault = player.fault();
+            assertNotNull(fault);
+            assertTrue(fault.startsWith("laser:0 sent only impossible samples for 1.0 s of world time (1 rejected"),
+                    fault);
+            assertTrue(fault.contains("range[1] = -2.0 m is outside [0, 8.0] m"), fault);
+            assertEquals(0, player.deviceSamples().get("position2d:0").rejectedSamples());
+        }
+    }
+
     private static int indexOfFirstStop(List<VelocityCmd> commands) {
         for (int i = 0; i < commands.size(); i++) {
             if (commands.get(i).vxMps() == 0.0) {
