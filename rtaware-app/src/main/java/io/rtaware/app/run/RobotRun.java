@@ -160,7 +160,9 @@ public final class RobotRun {
             state.end(RunOutcome.INTERRUPTED, "interrupted (Ctrl-C or SIGTERM)");
             Referee referee = state.referee();
             if (referee != null) {
-                referee.close();
+                referee.close(); // closes the pose source too
+            } else {
+                closeQuietly(truth); // stopped before the start: no referee owns the source yet
             }
             monitor.read(nav.keys().course(), course);
             long collisions = server != null ? server.withWorld(World::contactCount) : state.stallEdges();
@@ -190,6 +192,14 @@ public final class RobotRun {
         CommandMonitor.stop(monitor, hook);
         live.close();
         return state.ending().outcome().exitStatus();
+    }
+
+    private static void closeQuietly(Referee.PoseSource source) {
+        try {
+            source.close();
+        } catch (Exception ignored) {
+            // the run is over; a failing close of the observer's connection changes nothing
+        }
     }
 
     private static String outcomeName(RunState state) {
