@@ -12,7 +12,11 @@ import java.util.function.LongSupplier;
  * Watches the robot from outside the controller, as the paper's ground-truth sensors did: samples
  * the true pose at a fixed world-time rate on a thread of its own, records the trajectory, the
  * distance travelled and where deadline misses happened, and tells whether the robot is stuck.
- * Thread-safe: sampled by its own thread, read by any.
+ * When the source fails to give a pose after it has given one (a restarted simulator, a lost
+ * connection, an impossible pose), the referee records a {@link GroundTruthGap} from the last
+ * pose before the failure to the first one after it (or to the end of the run): the distance
+ * travelled is summed only between samples without a gap between them, and the report says
+ * which time it covers. A sampling thread that merely ran late (a loaded machine) is no gap. Thread-safe: sampled by its own thread, read by any.
  */
 final class Referee implements AutoCloseable {
 
@@ -45,11 +49,14 @@ final class Referee implements AutoCloseable {
     private final LongSupplier misses;
     private final List<Sample> samples = new ArrayList<>();
     private final List<Point2d> missMarkers = new ArrayList<>();
+    private final List<GroundTruthGap> gaps = new ArrayList<>();
     private final Thread thread;
     private volatile boolean running = true;
     private double travelledM;
     private long lastMisses;
     private String lastError;
+    /** True from a failed sample until the next pose: a gap is open. */
+    private boolean failing;
 
     /**
      * @param clock world clock
@@ -66,13 +73,22 @@ final class Referee implements AutoCloseable {
         this.misses = misses;
         this.thread = new Thread(this::loop, "rtaware-referee");
         this.thread.setDaemon(true);
-        this.thread.start();
+    }
+
+    /**
+     * Starts sampling on the referee's own thread, every {@code samplePeriodNs} of world time.
+     *
+     * @return this referee
+     */
+    Referee start() {
+        thread.start();
+        return this;
     }
 
     private void loop() {
         long next = clock.nanos();
         while (running) {
-            sampleOnce();
+            sample();
             next += samplePeriodNs;
             long waitNs = next - clock.nanos();
             if (waitNs > 0) {
@@ -83,25 +99,36 @@ final class Referee implements AutoCloseable {
         }
     }
 
-    private void sampleOnce() {
+    /** Takes one sample now (the sampling thread's step; tests call it on a manual clock). */
+    void sample() {
         Pose2d pose;
         try {
             pose = source.pose();
         } catch (Exception e) {
             synchronized (this) {
                 lastError = e.getMessage();
+                failing = true;
             }
             return;
         }
         if (pose == null) {
+            synchronized (this) {
+                failing = true;
+            }
             return;
         }
         double tS = (clock.nanos() - startNs) / 1e9;
         long missesNow = misses.getAsLong();
         synchronized (this) {
             if (!samples.isEmpty()) {
-                travelledM += samples.get(samples.size() - 1).pose().distanceTo(pose);
+                Sample previous = samples.get(samples.size() - 1);
+                if (failing) {
+                    gaps.add(new GroundTruthGap(previous.tS(), tS, false));
+                } else {
+                    travelledM += previous.pose().distanceTo(pose);
+                }
             }
+            failing = false;
             samples.add(new Sample(tS, pose));
             if (missesNow > lastMisses) {
                 missMarkers.add(pose.position());
@@ -120,7 +147,19 @@ final class Referee implements AutoCloseable {
         return samples.isEmpty() ? null : samples.get(samples.size() - 1).pose();
     }
 
-    /** @return metres travelled so far */
+    /**
+     * @param endS world seconds since the start at which the run ended
+     * @return the gaps in the measurement, including one still open at {@code endS}
+     */
+    synchronized List<GroundTruthGap> gaps(double endS) {
+        List<GroundTruthGap> all = new ArrayList<>(gaps);
+        if (failing || samples.isEmpty()) {
+            all.add(new GroundTruthGap(samples.isEmpty() ? 0.0 : samples.get(samples.size() - 1).tS(), endS, true));
+        }
+        return all;
+    }
+
+    /** @return metres travelled so far, summed over the spans without a gap */
     synchronized double travelledM() {
         return travelledM;
     }
@@ -158,17 +197,19 @@ final class Referee implements AutoCloseable {
         return Double.NaN;
     }
 
-    /** Takes a last sample, stops sampling and closes the source. */
+    /** Stops sampling, takes a last sample and closes the source. */
     @Override
     public void close() {
         running = false;
-        thread.interrupt();
-        try {
-            thread.join(2_000);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
+        if (thread.isAlive()) {
+            thread.interrupt();
+            try {
+                thread.join(2_000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
         }
-        sampleOnce();
+        sample();
         try {
             source.close();
         } catch (Exception ignored) {

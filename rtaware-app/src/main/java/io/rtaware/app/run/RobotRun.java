@@ -19,8 +19,8 @@ import io.rtaware.nav.NavController;
 import io.rtaware.player.client.PlayerClient;
 import io.rtaware.player.client.PlayerClientOptions;
 import io.rtaware.player.client.PlayerCounters;
-import io.rtaware.player.protocol.DeviceAddress;
-import io.rtaware.player.protocol.SimulationPose2d;
+import io.rtaware.player.client.PlayerStats;
+import io.rtaware.player.task.DeviceSamples;
 import io.rtaware.player.task.PlayerConfig;
 import io.rtaware.player.task.PlayerDataTask;
 import io.rtaware.robot.geometry.Point2d;
@@ -39,35 +39,27 @@ import io.rtaware.sim.server.SimCommandSupport;
 import io.rtaware.sim.world.World;
 import java.io.IOException;
 import java.io.PrintStream;
-import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.concurrent.atomic.AtomicLong;
-import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.LockSupport;
 
 /**
  * One robot run of the paper's course: the composition root of {@code rtaware run}. Starts the
  * built-in simulator on a free loopback port (or uses an external Player server), wires the
  * Player data task and the navigation behaviors onto one monitor, watches the run from outside
- * (ground truth, progress, time limit), and on every way out (finish, time limit, stuck, Ctrl-C,
- * a crash, a lost connection) stops the robot first and then writes the report.
+ * (ground truth, progress, time limit, safety faults; see {@link Supervisor}), and on every way
+ * out (finish, time limit, stuck, Ctrl-C, a crash, a lost connection, data that cannot be true)
+ * stops the robot first and then writes the report.
  */
 public final class RobotRun {
 
     /** Task name of the Player data task in reports. */
     public static final String PLAYER_TASK = "player";
     private static final long SAMPLE_PERIOD_NS = 100_000_000L;
-    private static final double STUCK_MIN_MOVE_M = 0.05;
-    private static final double LOST_SERVER_AFTER_S = 5.0;
-    /** Also required, so a loaded machine that stalls the scaled world briefly is not a lost server. */
-    private static final double LOST_SERVER_AFTER_WALL_S = 3.0;
 
     private final RunOptions options;
-    /** Rising edges of the stall flag: the contact count when the server is not the built-in simulator. */
-    private final AtomicLong stallEdges = new AtomicLong();
     private final PrintStream out;
     private final PrintStream err;
 
@@ -152,41 +144,43 @@ public final class RobotRun {
         ConsoleReporter console = CommandMonitor.console(monitor, options.quiet(), err);
         TraceRecorder trace = options.trace().attach(monitor);
 
-        AtomicReference<String> outcome = new AtomicReference<>();
-        AtomicReference<String> reason = new AtomicReference<>();
-        List<Referee> refereeHolder = new ArrayList<>(1);
+        // Everything the termination handler reads exists before the start: Ctrl-C may run it on
+        // the shutdown-hook thread at any moment from here on.
+        RunState state = new RunState(clock.nanos());
         CourseStatus course = new CourseStatus();
-        long[] startNs = new long[1];
         RunArtifacts artifacts = new RunArtifacts(options, scenario, navConfig, out);
         LiveView live = LiveView.start(options.live(), monitor, new RunScene(scenario.name(), scenario.map().orElse(null),
-                scenario.waypoints(), nav.keys(), nav::mediatorCounts, outcome::get), out);
+                scenario.waypoints(), nav.keys(), nav::mediatorCounts, () -> outcomeName(state)), out);
+        // Connected before the start, so the first ground-truth sample is the pose at the start.
+        Referee.PoseSource truth = poseSource(host, port, clock, monitor);
         monitor.onTermination(report -> {
             if (console != null) {
                 console.close();
             }
-            outcome.compareAndSet(null, "interrupted");
-            reason.compareAndSet(null, "interrupted (Ctrl-C or SIGTERM)");
-            Referee referee = refereeHolder.isEmpty() ? null : refereeHolder.get(0);
+            state.end(RunOutcome.INTERRUPTED, "interrupted (Ctrl-C or SIGTERM)");
+            Referee referee = state.referee();
             if (referee != null) {
-                referee.close();
+                referee.close(); // closes the pose source too
+            } else {
+                closeQuietly(truth); // stopped before the start: no referee owns the source yet
             }
             monitor.read(nav.keys().course(), course);
-            long collisions = server != null ? server.withWorld(World::contactCount) : stallEdges.get();
-            RunSection run = runSection(scenario, nav, course, referee, outcome.get(), reason.get(),
-                    clock.nanos() - startNs[0], collisions, server != null);
+            long collisions = server != null ? server.withWorld(World::contactCount) : state.stallEdges();
+            RunSection run = runSection(scenario, nav, course, referee, state.ending(),
+                    clock.nanos() - state.startNs(), collisions, server != null);
             live.finish(report, run);
-            artifacts.write(report, run, referee, nav.finalMap().orElse(null),
-                    scenario.map().orElse(null));
+            artifacts.write(report, run, playerSection(player, host, port, truth), referee,
+                    nav.finalMap().orElse(null), scenario.map().orElse(null));
             options.trace().write(trace, out, err);
         });
         Thread hook = monitor.installShutdownHook();
 
-        // Connected before the start, so the first ground-truth sample is the pose at the start.
-        Referee.PoseSource truth = poseSource(host, port, monitor);
         monitor.start();
-        startNs[0] = clock.nanos();
-        Referee referee = new Referee(clock, startNs[0], SAMPLE_PERIOD_NS, truth, () -> totalMisses(monitor));
-        refereeHolder.add(referee);
+        long startNs = clock.nanos();
+        Referee referee = new Referee(clock, startNs, SAMPLE_PERIOD_NS, truth, () -> totalMisses(monitor)).start();
+        Supervisor supervisor = new Supervisor(new MonitorView(monitor, nav, referee, player), clock, System::nanoTime,
+                startNs, scenario.timeLimitS(), options.stuckAfterS());
+        state.started(startNs, referee, supervisor);
         live.truePose(referee::latest, referee.kind());
         if (!options.quiet()) {
             err.printf(Locale.ROOT, "rtaware run: scenario %s, periods %s, time scale x%s, robot %s:%d (%s), ground truth from %s%n",
@@ -194,14 +188,23 @@ public final class RobotRun {
                     server != null ? "built-in simulator" : "external Player server", referee.kind());
         }
 
-        supervise(scenario, clock, startNs[0], monitor, nav, referee, course, outcome, reason);
+        supervise(clock, startNs, monitor, nav, referee, supervisor, course, state);
         CommandMonitor.stop(monitor, hook);
         live.close();
-        return switch (outcome.get()) {
-            case "error" -> 1;
-            case "interrupted" -> 130;
-            default -> 0;
-        };
+        return state.ending().outcome().exitStatus();
+    }
+
+    private static void closeQuietly(Referee.PoseSource source) {
+        try {
+            source.close();
+        } catch (Exception ignored) {
+            // the run is over; a failing close of the observer's connection changes nothing
+        }
+    }
+
+    private static String outcomeName(RunState state) {
+        RunOutcome outcome = state.outcome();
+        return outcome == null ? null : outcome.jsonName();
     }
 
     private static long totalMisses(Monitor monitor) {
@@ -212,67 +215,91 @@ public final class RobotRun {
         return sum;
     }
 
-    /** Watches the run until it ends; records the outcome. Returns when the run is over. */
-    private void supervise(Scenario scenario, Clock clock, long startNs, Monitor monitor, NavController nav,
-                           Referee referee, CourseStatus course, AtomicReference<String> outcome,
-                           AtomicReference<String> reason) {
+    /** The supervisor's view of a running monitor: the keys' newest values, the referee, the data task. */
+    private static final class MonitorView implements Supervisor.View {
+        private final Monitor monitor;
+        private final NavController nav;
+        private final Referee referee;
+        private final PlayerDataTask player;
+        private final CourseStatus course = new CourseStatus();
+        private final Odometry odometry = new Odometry();
+        private final VelocityCommand motor = new VelocityCommand();
+        private long odometryGeneration;
+
+        MonitorView(Monitor monitor, NavController nav, Referee referee, PlayerDataTask player) {
+            this.monitor = monitor;
+            this.nav = nav;
+            this.referee = referee;
+            this.player = player;
+        }
+
+        @Override
+        public void refresh() {
+            monitor.read(nav.keys().course(), course);
+            odometryGeneration = monitor.read(RobotKeys.ODOMETRY, odometry);
+            monitor.read(RobotKeys.MOTOR, motor);
+        }
+
+        @Override
+        public boolean courseDone() {
+            return course.done;
+        }
+
+        @Override
+        public long odometryGeneration() {
+            return odometryGeneration;
+        }
+
+        @Override
+        public boolean stalled() {
+            return odometry.stall;
+        }
+
+        @Override
+        public boolean commandedToMove() {
+            return !motor.isStop();
+        }
+
+        @Override
+        public double displacementOverLastM(double windowS) {
+            return referee.displacementOverLastM(windowS);
+        }
+
+        @Override
+        public String safetyFault() {
+            return player.fault();
+        }
+    }
+
+    /** Watches the run until it ends; records the ending. Returns when the run is over. */
+    private void supervise(Clock clock, long startNs, Monitor monitor, NavController nav, Referee referee,
+                           Supervisor supervisor, CourseStatus course, RunState state) {
         long pollWallNs = Math.max(1_000_000L, Math.min(50_000_000L, (long) (50_000_000L / options.timeScale())));
         long lastStatusWallNs = System.nanoTime();
-        Odometry odometry = new Odometry();
-        VelocityCommand motor = new VelocityCommand();
-        boolean wasStalled = false;
         boolean tty = System.console() != null;
-        long lastOdometryGeneration = 0;
-        long lastOdometryNs = startNs;
-        long lastOdometryWallNs = System.nanoTime();
         while (true) {
             LockSupport.parkNanos(pollWallNs);
             if (monitor.isStopping()) {
                 return; // Ctrl-C, SIGTERM or a STOP_ALL error: the termination handler records the outcome.
             }
             double elapsedS = (clock.nanos() - startNs) / 1e9;
-            monitor.read(nav.keys().course(), course);
-            long odometryGeneration = monitor.read(RobotKeys.ODOMETRY, odometry);
-            monitor.read(RobotKeys.MOTOR, motor);
-            if (odometry.stall && !wasStalled) {
-                stallEdges.incrementAndGet();
-            }
-            wasStalled = odometry.stall;
-            if (odometryGeneration != lastOdometryGeneration) {
-                lastOdometryGeneration = odometryGeneration;
-                lastOdometryNs = clock.nanos();
-                lastOdometryWallNs = System.nanoTime();
-            }
-            String end = null;
-            String why = null;
-            if (course.done) {
-                end = "completed";
-                why = "finish reached";
-            } else if (elapsedS >= scenario.timeLimitS()) {
-                end = "timeout";
-                why = String.format(Locale.ROOT, "time limit of %.0f s passed", scenario.timeLimitS());
-            } else if (!motor.isStop() && referee.displacementOverLastM(options.stuckAfterS()) < STUCK_MIN_MOVE_M) {
-                end = "stuck";
-                why = String.format(Locale.ROOT, "moved less than %.2f m in %.0f s while commanded to move",
-                        STUCK_MIN_MOVE_M, options.stuckAfterS());
-            } else if ((clock.nanos() - lastOdometryNs) / 1e9 > LOST_SERVER_AFTER_S
-                    && (System.nanoTime() - lastOdometryWallNs) / 1e9 > LOST_SERVER_AFTER_WALL_S) {
-                end = "error";
-                why = String.format(Locale.ROOT, "no odometry from the robot server for %.0f s of world time "
-                        + "(%.0f s of wall time): connection lost", LOST_SERVER_AFTER_S, LOST_SERVER_AFTER_WALL_S);
-            }
-            if (end != null) {
-                outcome.compareAndSet(null, end);
-                reason.compareAndSet(null, why);
+            RunState.Ending ending = supervisor.check();
+            if (ending != null) {
+                state.end(ending.outcome(), ending.reason());
                 if (!options.quiet()) {
+                    monitor.read(nav.keys().course(), course);
                     printStatus(monitor, nav, course, elapsedS, referee, tty);
                     err.println();
-                    err.println("rtaware run: " + end + ": " + why + "; stopping the robot");
+                }
+                if (!options.quiet() || ending.outcome() == RunOutcome.ERROR) {
+                    err.println("rtaware run: " + ending.outcome().jsonName() + ": " + ending.reason()
+                            + "; stopping the robot");
                 }
                 return;
             }
             if (!options.quiet() && System.nanoTime() - lastStatusWallNs >= (tty ? 250_000_000L : 5_000_000_000L)) {
                 lastStatusWallNs = System.nanoTime();
+                monitor.read(nav.keys().course(), course);
                 printStatus(monitor, nav, course, elapsedS, referee, tty);
             }
         }
@@ -321,34 +348,11 @@ public final class RobotRun {
     }
 
     /** Ground truth through Player's simulation:0 when the server has it, odometry otherwise. */
-    private Referee.PoseSource poseSource(String host, int port, Monitor monitor) {
+    private Referee.PoseSource poseSource(String host, int port, Clock clock, Monitor monitor) {
         try {
-            PlayerClient client = PlayerClient.connect(host, port, PlayerClientOptions.defaults(), new PlayerCounters());
-            try {
-                client.subscribe(DeviceAddress.parse("simulation:0"));
-                client.simulationPose2d(0, options.modelName());
-                return new Referee.PoseSource() {
-                    @Override
-                    public Pose2d pose() throws IOException {
-                        SimulationPose2d p = client.simulationPose2d(0, options.modelName());
-                        return new Pose2d(p.xM(), p.yM(), p.yawRad());
-                    }
-
-                    @Override
-                    public String kind() {
-                        return "ground_truth";
-                    }
-
-                    @Override
-                    public void close() throws IOException {
-                        client.close();
-                    }
-                };
-            } catch (IOException e) {
-                client.close();
-            }
+            return GroundTruthSource.open(host, port, options.modelName(), clock);
         } catch (IOException e) {
-            // No second connection: fall back to odometry below.
+            // No second connection or no simulation:0: fall back to odometry below.
         }
         Odometry odometry = new Odometry();
         return new Referee.PoseSource() {
@@ -364,22 +368,42 @@ public final class RobotRun {
         };
     }
 
+    private static PlayerSection playerSection(PlayerDataTask player, String host, int port, Referee.PoseSource truth) {
+        PlayerStats stats = player.stats();
+        Map<String, DeviceSamples> devices = new LinkedHashMap<>(player.deviceSamples());
+        if (truth instanceof GroundTruthSource groundTruth) {
+            devices.put("simulation:0", groundTruth.samples());
+        }
+        return new PlayerSection(host + ":" + port, player.serverVersion(), stats.connects(), stats.connectionLosses(),
+                stats.protocolErrors(), devices, player.fault());
+    }
+
     private RunSection runSection(Scenario scenario, NavController nav, CourseStatus course,
-                                  Referee referee, String outcome, String why, long elapsedNs, long collisions,
+                                  Referee referee, RunState.Ending ending, long elapsedNs, long collisions,
                                   boolean simulator) {
+        double runTimeS = elapsedNs / 1e9;
+        List<GroundTruthGap> gaps = referee == null ? List.of() : referee.gaps(runTimeS);
+        double uncoveredS = 0;
+        boolean staleAtEnd = referee == null;
+        for (GroundTruthGap gap : gaps) {
+            uncoveredS += gap.toS() - gap.fromS();
+            staleAtEnd |= gap.open();
+        }
         Pose2d last = referee == null ? null : referee.latest();
         Point2d finish = scenario.finish();
-        double toFinish = last == null ? Double.NaN : last.position().distanceTo(finish);
+        // A final pose older than the end of the run is not measured: no distance rather than a stale one.
+        Double toFinish = last == null || staleAtEnd ? null : round3(last.position().distanceTo(finish));
         var counts = nav.mediatorCounts();
         Map<String, Long> mediator = new LinkedHashMap<>();
         mediator.put("obstacle", counts.obstacle());
         mediator.put("waypoint", counts.waypoint());
         mediator.put("stop", counts.stop());
-        return new RunSection(scenario.name(), options.periods().millis(), outcome, "completed".equals(outcome),
-                round3(elapsedNs / 1e9), course.waypointsReached, course.waypointsTotal, round3(toFinish),
-                round3(referee == null ? 0 : referee.travelledM()), collisions, mediator,
-                referee == null ? "odometry" : referee.kind(), simulator ? "simulator" : "stall",
-                options.timeScale(), options.seed(), options.gridResolutionM(), counts.staleStops(), why);
+        return new RunSection(scenario.name(), options.periods().millis(), ending.outcome().jsonName(),
+                ending.outcome() == RunOutcome.COMPLETED, round3(runTimeS), course.waypointsReached,
+                course.waypointsTotal, toFinish, round3(referee == null ? 0 : referee.travelledM()), collisions,
+                mediator, referee == null ? "odometry" : referee.kind(), simulator ? "simulator" : "stall",
+                options.timeScale(), options.seed(), options.gridResolutionM(), counts.staleStops(), ending.reason(),
+                gaps, round3(Math.max(0, runTimeS - uncoveredS)));
     }
 
     private static double round3(double v) {

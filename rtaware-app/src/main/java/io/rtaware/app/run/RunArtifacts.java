@@ -20,7 +20,8 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * Writes a run's output folder: {@code report.json} (core report plus the {@code run} section),
+ * Writes a run's output folder: {@code report.json} (core report plus the {@code run} and
+ * {@code player} sections),
  * {@code report.md}, {@code trajectory.csv}, {@code trajectory.png}, and the grid the robot built
  * as {@code map.pgm} + {@code map.yaml}. Prints the termination summary first, so a person sees
  * it even if a file cannot be written. Called once, from the monitor's termination handler.
@@ -39,10 +40,11 @@ final class RunArtifacts {
         this.out = out;
     }
 
-    void write(Report report, RunSection run, Referee referee, OccupancyGrid builtMap, OccupancyMap worldMap) {
+    void write(Report report, RunSection run, PlayerSection player, Referee referee, OccupancyGrid builtMap,
+               OccupancyMap worldMap) {
         String table = SummaryTable.format(report);
-        String runText = runText(run);
-        ReportDocument doc = new ReportDocument(report).section("run", run);
+        String runText = runText(run, player);
+        ReportDocument doc = new ReportDocument(report).section("run", run).section("player", player);
         String analysis = ReportSections.enrich(doc, Runtime.getRuntime().availableProcessors()).text();
         out.println();
         out.print(table);
@@ -72,12 +74,33 @@ final class RunArtifacts {
         }
     }
 
-    private String runText(RunSection r) {
+    private String runText(RunSection r, PlayerSection player) {
         StringBuilder sb = new StringBuilder();
         sb.append(String.format(Locale.ROOT, "run: %s (%s) after %.1f s of world time; waypoints %d of %d%n",
                 r.outcome(), r.reason(), r.runTimeS(), r.waypointsReached(), r.waypointsTotal()));
-        sb.append(String.format(Locale.ROOT, "     distance to finish %.2f m, travelled %.2f m, collisions %d (measured on %s)%n",
-                r.distanceToFinishM(), r.distanceTravelledM(), r.collisions(), r.measuredOn().replace('_', ' ')));
+        sb.append(String.format(Locale.ROOT, "     distance to finish %s, travelled %.2f m, collisions %d (measured on %s)%n",
+                r.distanceToFinishM() == null ? "unknown (no ground truth at the end)"
+                        : String.format(Locale.ROOT, "%.2f m", r.distanceToFinishM()),
+                r.distanceTravelledM(), r.collisions(), r.measuredOn().replace('_', ' ')));
+        if (!r.groundTruthGaps().isEmpty()) {
+            StringBuilder spans = new StringBuilder();
+            for (GroundTruthGap g : r.groundTruthGaps()) {
+                spans.append(spans.length() == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.1f-%.1f s%s",
+                        g.fromS(), g.toS(), g.open() ? " (to the end)" : ""));
+            }
+            sb.append(String.format(Locale.ROOT, "     ground truth lost: %s; distance travelled measured over %.1f s of"
+                    + " %.1f s%n", spans, r.groundTruthCoveredS(), r.runTimeS()));
+        }
+        StringBuilder rejected = new StringBuilder();
+        player.devices().forEach((device, samples) -> {
+            if (samples.rejectedSamples() > 0) {
+                rejected.append(rejected.length() == 0 ? "" : ", ").append(device).append(' ')
+                        .append(samples.rejectedSamples()).append(" of ").append(samples.samples());
+            }
+        });
+        if (rejected.length() > 0) {
+            sb.append("     impossible samples rejected: ").append(rejected).append(System.lineSeparator());
+        }
         sb.append(String.format(Locale.ROOT, "     mediator: obstacle won %d cycles, waypoint %d, stop %d (%d because a request was too old)%n",
                 r.mediator().get("obstacle"), r.mediator().get("waypoint"), r.mediator().get("stop"), r.staleStops()));
         sb.append(String.format(Locale.ROOT, "     scenario %s, periods %s, time scale x%s, seed %d, grid %.2f m%n",

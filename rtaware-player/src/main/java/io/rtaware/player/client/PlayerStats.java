@@ -15,8 +15,11 @@ package io.rtaware.player.client;
  * @param commandsSent velocity commands sent
  * @param connects successful connections
  * @param connectionLosses connections lost or failed
+ * @param rejectedOdometry position2d states that could not be true and were dropped
+ * @param rejectedScans laser scans and ranger ranges that could not be true and were dropped
  */
 public record PlayerStats(long messagesReceived, long bytesReceived, long messagesSent, long bytesSent,
                           long protocolErrors, long skippedMessages, long odometryMessages, long scanMessages,
-                          long synchs, long commandsSent, long connects, long connectionLosses) {
+                          long synchs, long commandsSent, long connects, long connectionLosses,
+                          long rejectedOdometry, long rejectedScans) {
 }

@@ -18,7 +18,12 @@ import io.rtaware.robot.msg.LaserScan;
 import io.rtaware.robot.msg.Odometry;
 import io.rtaware.robot.msg.RobotKeys;
 import io.rtaware.robot.msg.VelocityCommand;
+import io.rtaware.robot.validate.RejectionWatch;
+import io.rtaware.robot.validate.SampleValidator;
 import java.io.IOException;
+import java.util.LinkedHashMap;
+import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 
 /**
@@ -35,10 +40,21 @@ import java.util.concurrent.TimeUnit;
  * exponential back-off. {@link #terminate} sends a zero velocity first, then unsubscribes and
  * closes.
  *
+ * <p>Samples that cannot be true ({@link io.rtaware.robot.validate.SampleChecks}) are rejected
+ * by the client where they are decoded and never published; {@link #deviceSamples()} counts
+ * them per device. When a device has delivered only rejected samples for
+ * {@link #IMPOSSIBLE_DATA_FAULT_AFTER_NS} of world time, the task halts the robot: it sends a
+ * zero velocity at once, from then on sends only zero velocities, records {@link #fault()} (one
+ * line naming the device and the value) and throws {@link ImpossibleDataException} from that
+ * cycle, so the monitor counts the error. The halt lasts until {@link #terminate}.
+ *
  * <p>Called by one thread at a time, as every task; {@link #stats()} may be called from any
  * thread.
  */
 public final class PlayerDataTask implements Task {
+
+    /** World time of rejection-only samples from one device after which the robot is halted: 1 s. */
+    public static final long IMPOSSIBLE_DATA_FAULT_AFTER_NS = 1_000_000_000L;
 
     private final PlayerConfig config;
     private final PlayerCounters counters = new PlayerCounters();
@@ -65,12 +81,16 @@ public final class PlayerDataTask implements Task {
     private long nextAttemptNs;
     private int failedAttempts;
 
-    /**
-     * @param config connection settings (validated when built)
-     */
+    private final RejectionWatch odometryWatch = new RejectionWatch(IMPOSSIBLE_DATA_FAULT_AFTER_NS);
+    private final RejectionWatch scanWatch = new RejectionWatch(IMPOSSIBLE_DATA_FAULT_AFTER_NS);
+    private volatile String fault;
+
     /** World clock of the monitor, to turn world-time silence into the wall time a socket sees. */
     private Clock clock;
 
+    /**
+     * @param config connection settings (validated when built)
+     */
     public PlayerDataTask(PlayerConfig config) {
         this.config = config;
         this.position2d = DeviceAddress.of(Interfaces.POSITION2D, config.position2dIndex());
@@ -126,6 +146,8 @@ public final class PlayerDataTask implements Task {
         pullPending = false;
         lastMessageNs = Long.MIN_VALUE;
         sentAtNs = Long.MIN_VALUE;
+        odometryWatch.reset();
+        scanWatch.reset();
     }
 
     /**
@@ -135,9 +157,11 @@ public final class PlayerDataTask implements Task {
      * @throws IOException if the connection is lost, times out, is broken, or a reconnection
      *     attempt fails; or if it is down and reconnection is disabled
      * @throws InterruptedException if interrupted while waiting to reconnect
+     * @throws ImpossibleDataException in the cycle that halts the robot because a device sent
+     *     only impossible samples for {@link #IMPOSSIBLE_DATA_FAULT_AFTER_NS}
      */
     @Override
-    public void execute(long nowNs) throws IOException, InterruptedException {
+    public void execute(long nowNs) throws IOException, InterruptedException, ImpossibleDataException {
         if (client == null && !reconnectIfDue(nowNs)) {
             return;
         }
@@ -159,10 +183,31 @@ public final class PlayerDataTask implements Task {
             }
             checkReadTimeout(nowNs, n);
             publish();
+            watchRejections(nowNs);
         } catch (IOException e) {
             drop(nowNs);
             throw e;
         }
+    }
+
+    private SampleValidator scanChecks() {
+        return config.scanSource().interf() == Interfaces.RANGER ? counters.rangerChecks() : counters.laserChecks();
+    }
+
+    private void watchRejections(long nowNs) throws IOException, ImpossibleDataException {
+        boolean odometryFault = odometryWatch.observe(nowNs, counters.odometryChecks().lastRejected());
+        boolean scanFault = scanWatch.observe(nowNs, scanChecks().lastRejected());
+        if (fault != null || !(odometryFault || scanFault)) {
+            return;
+        }
+        SampleValidator checks = odometryFault ? counters.odometryChecks() : scanChecks();
+        long sinceNs = (odometryFault ? odometryWatch : scanWatch).rejectingSinceNs();
+        fault = String.format(Locale.ROOT, "%s sent only impossible samples for %.1f s of world time (%d"
+                        + " rejected in all), latest: %s; robot halted",
+                odometryFault ? position2d : config.scanSource(), (nowNs - sinceNs) / 1e9, checks.rejected(),
+                checks.lastRejection());
+        sendVelocity(0.0, 0.0, nowNs);
+        throw new ImpossibleDataException(fault);
     }
 
     private boolean reconnectIfDue(long nowNs) throws IOException, InterruptedException {
@@ -207,6 +252,14 @@ public final class PlayerDataTask implements Task {
     }
 
     private void sendMotor(long nowNs) throws IOException {
+        if (fault != null) {
+            // halted: only zero velocities, again after the keep-alive period
+            if (sentVxMps != 0.0 || sentOmegaRadPerSec != 0.0 || sentAtNs == Long.MIN_VALUE
+                    || nowNs - sentAtNs >= TimeUnit.MILLISECONDS.toNanos(config.keepAliveMs())) {
+                sendVelocity(0.0, 0.0, nowNs);
+            }
+            return;
+        }
         if (motorIn.hasValue() && motorIn.generation() != motorGeneration) {
             motorGeneration = motorIn.generation();
             VelocityCommand cmd = motorIn.value();
@@ -294,6 +347,26 @@ public final class PlayerDataTask implements Task {
     /** @return a snapshot of the counters of every connection this task made */
     public PlayerStats stats() {
         return counters.snapshot();
+    }
+
+    /**
+     * @return one line naming the device and the value that halted the robot, or null while no
+     *     device has sent only impossible samples for {@link #IMPOSSIBLE_DATA_FAULT_AFTER_NS};
+     *     readable from any thread
+     */
+    public String fault() {
+        return fault;
+    }
+
+    /**
+     * @return per device ({@code position2d:N} and the scan source), the samples received and
+     *     rejected so far over every connection; readable from any thread
+     */
+    public Map<String, DeviceSamples> deviceSamples() {
+        Map<String, DeviceSamples> devices = new LinkedHashMap<>();
+        devices.put(position2d.toString(), DeviceSamples.of(counters.odometryChecks()));
+        devices.put(config.scanSource().toString(), DeviceSamples.of(scanChecks()));
+        return devices;
     }
 
     /** @return the version the server announced ("" before the first connection) */

@@ -1,0 +1,16 @@
+package io.rtaware.player.task;
+
+/**
+ * Thrown by {@link PlayerDataTask#execute} in the cycle in which it halted the robot because a
+ * device sent only samples that cannot be true for a second of world time. The message is one
+ * line naming the device and the offending value.
+ */
+public final class ImpossibleDataException extends Exception {
+
+    private static final long serialVersionUID = 1L;
+
+    /** @param message the device, the value, and that the robot was halted */
+    public ImpossibleDataException(String message) {
+        super(message);
+    }
+}
