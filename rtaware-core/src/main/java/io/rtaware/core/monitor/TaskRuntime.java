@@ -1,6 +1,7 @@
 package io.rtaware.core.monitor;
 
 import io.rtaware.core.report.Percentiles;
+import io.rtaware.core.report.Rounding;
 import io.rtaware.core.report.TaskReport;
 import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.Schedule;
@@ -542,6 +543,6 @@ final class TaskRuntime implements TaskInfo {
     }
 
     static double round2(double v) {
-        return Math.round(v * 100.0) / 100.0;
+        return Rounding.toDecimals(v, 2);
     }
 }
