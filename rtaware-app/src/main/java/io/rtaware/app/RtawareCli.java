@@ -48,7 +48,19 @@ public final class RtawareCli {
      * @return the exit status
      */
     public static int execute(String... args) {
-        CommandLine cli = new CommandLine(new RtawareCli());
+        return execute(CommandLine.defaultFactory(), args);
+    }
+
+    /**
+     * Runs one command line without exiting the JVM, with the commands made by a factory (e.g. a
+     * command given a smaller memory budget than this JVM's).
+     *
+     * @param factory makes the command objects
+     * @param args command-line arguments
+     * @return the exit status
+     */
+    public static int execute(CommandLine.IFactory factory, String... args) {
+        CommandLine cli = new CommandLine(new RtawareCli(), factory);
         cli.setParameterExceptionHandler((ex, a) -> {
             PrintWriter err = ex.getCommandLine().getErr();
             err.println("rtaware: " + ex.getMessage().lines().findFirst().orElse("invalid arguments")

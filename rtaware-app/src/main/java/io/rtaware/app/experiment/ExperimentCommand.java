@@ -2,6 +2,7 @@ package io.rtaware.app.experiment;
 
 import io.rtaware.app.UserError;
 import io.rtaware.app.cli.TimeScaleConverter;
+import io.rtaware.app.output.OutputFolder;
 import io.rtaware.experiment.ExperimentInputException;
 import io.rtaware.experiment.ExperimentPlan;
 import io.rtaware.experiment.ExperimentProfile;
@@ -82,7 +83,7 @@ public final class ExperimentCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException, InterruptedException {
         ExperimentPlan plan = plan();
-        Path dir = outputFolder();
+        Path dir = OutputFolder.of("--out", outputFolder()).path();
         System.setProperty("java.awt.headless", "true");
         Files.createDirectories(dir);
         if (!Files.exists(dir.resolve(ExperimentProfile.FILE_NAME))) {

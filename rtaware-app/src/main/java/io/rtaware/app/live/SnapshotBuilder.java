@@ -7,6 +7,7 @@ import io.rtaware.core.data.FeedStats;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.TaskCounters;
 import io.rtaware.core.monitor.TaskInfo;
+import io.rtaware.core.report.Rounding;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.nav.task.PositionMediatorTask;
 import io.rtaware.robot.geometry.Point2d;
@@ -305,7 +306,6 @@ final class SnapshotBuilder {
         if (!Double.isFinite(v)) {
             return 0.0;
         }
-        double f = Math.pow(10, digits);
-        return Math.round(v * f) / f;
+        return Rounding.toDecimals(v, digits);
     }
 }

@@ -8,6 +8,7 @@ import io.rtaware.core.monitor.ConsoleReporter;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.TaskCounters;
 import io.rtaware.core.monitor.TaskInfo;
+import io.rtaware.core.report.Rounding;
 import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.TaskSpec;
@@ -157,7 +158,7 @@ public final class RobotRun {
         List<Referee> refereeHolder = new ArrayList<>(1);
         CourseStatus course = new CourseStatus();
         long[] startNs = new long[1];
-        RunArtifacts artifacts = new RunArtifacts(options, scenario, navConfig, out);
+        RunArtifacts artifacts = new RunArtifacts(options, scenario, navConfig, out, err);
         LiveView live = LiveView.start(options.live(), monitor, new RunScene(scenario.name(), scenario.map().orElse(null),
                 scenario.waypoints(), nav.keys(), nav::mediatorCounts, outcome::get), out);
         monitor.onTermination(report -> {
@@ -177,7 +178,7 @@ public final class RobotRun {
             live.finish(report, run);
             artifacts.write(report, run, referee, nav.finalMap().orElse(null),
                     scenario.map().orElse(null));
-            options.trace().write(trace, out, err);
+            options.trace().write(trace, out, artifacts.writes());
         });
         Thread hook = monitor.installShutdownHook();
 
@@ -197,11 +198,11 @@ public final class RobotRun {
         supervise(scenario, clock, startNs[0], monitor, nav, referee, course, outcome, reason);
         CommandMonitor.stop(monitor, hook);
         live.close();
-        return switch (outcome.get()) {
+        return artifacts.exitStatus(switch (outcome.get()) {
             case "error" -> 1;
             case "interrupted" -> 130;
             default -> 0;
-        };
+        });
     }
 
     private static long totalMisses(Monitor monitor) {
@@ -383,7 +384,7 @@ public final class RobotRun {
     }
 
     private static double round3(double v) {
-        return Double.isNaN(v) ? v : Math.round(v * 1000.0) / 1000.0;
+        return Rounding.toDecimals(v, 3);
     }
 
     private static String trim(double v) {

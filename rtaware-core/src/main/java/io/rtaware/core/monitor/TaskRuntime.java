@@ -45,6 +45,21 @@ final class TaskRuntime implements TaskInfo {
     private static final long HIGHEST_TRACKABLE_NS = 3_600_000_000_000L;
     /** Cycles whose execution times {@link #counters()} summarizes as a live p99. */
     static final int RECENT_EXEC_CYCLES = 128;
+    /** Bookkeeping besides the histograms and the recent ring: runtime, counters, spec, thread object. */
+    private static final long FIXED_OVERHEAD_BYTES = 16 * 1024;
+
+    /**
+     * Heap bytes one task's bookkeeping takes: its two histograms (as HdrHistogram estimates
+     * their footprint), each copied once more when the report is made, the recent-execution ring
+     * and a fixed allowance for the rest. Not the task's own data, nor its thread's stack (native
+     * memory).
+     *
+     * @return the estimate in bytes
+     */
+    static long estimatedHeapBytes() {
+        long histogram = new Histogram(1, HIGHEST_TRACKABLE_NS, 2).getEstimatedFootprintInBytes();
+        return 2 * 2 * histogram + 2L * RECENT_EXEC_CYCLES * Long.BYTES + FIXED_OVERHEAD_BYTES;
+    }
 
     private final TaskSpec spec;
     private final int index;
