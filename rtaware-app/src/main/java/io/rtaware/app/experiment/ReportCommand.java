@@ -32,6 +32,8 @@ public final class ReportCommand implements Callable<Integer> {
         try {
             String scenario = ExperimentProfile.read(dir).map(ExperimentProfile::scenario)
                     .orElseGet(() -> firstScenario(dir));
+            ResultsCsv.tornLastLine(dir.resolve(ResultsCsv.FILE_NAME))
+                    .ifPresent(note -> System.err.println("rtaware: note: " + note));
             ExperimentReport.render(dir, CourseBackgrounds.forScenario(scenario));
         } catch (ExperimentInputException e) {
             throw new UserError(e.getMessage());
