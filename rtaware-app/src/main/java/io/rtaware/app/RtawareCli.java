@@ -9,6 +9,7 @@ import io.rtaware.app.run.RunCommand;
 import io.rtaware.app.sim.SimCommand;
 import io.rtaware.app.sim.WorldCommand;
 import java.io.PrintWriter;
+import java.nio.file.InvalidPathException;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -70,6 +71,11 @@ public final class RtawareCli {
         cli.setExecutionExceptionHandler((ex, cmd, parseResult) -> {
             if (ex instanceof UserError) {
                 cmd.getErr().println("rtaware: " + ex.getMessage());
+                return EXIT_USER_ERROR;
+            }
+            if (ex instanceof InvalidPathException e) {
+                cmd.getErr().println("rtaware: '" + e.getInput() + "' is not a file name this system can use ("
+                        + e.getReason() + "); with LC_ALL=C only ASCII names work: use a UTF-8 locale (LC_ALL=C.UTF-8)");
                 return EXIT_USER_ERROR;
             }
             throw ex;
