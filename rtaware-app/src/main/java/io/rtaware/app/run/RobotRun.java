@@ -93,15 +93,18 @@ public final class RobotRun {
      */
     public int execute() throws IOException {
         Scenario scenario = loadScenario();
+        CourseCheck.warnings(scenario).forEach(w -> err.println("rtaware run: warning: " + w + "; running anyway"));
         Clock clock = Clock.forTimeScale(options.timeScale());
 
         PlayerSimServer server = null;
+        BuiltInSimulatorLog simulatorLog = null;
         String host = options.playerHost();
         int port = options.playerPort();
         if (options.builtInSimulator()) {
             if (scenario.map().isEmpty()) {
                 throw new UserError("scenario '" + scenario.name() + "' has no map; the built-in simulator needs one (or use --player HOST:PORT)");
             }
+            simulatorLog = BuiltInSimulatorLog.install(err);
             server = SimCommandSupport.start(scenario, clock, ServerConfig.defaults(0), options.seed());
             host = ServerConfig.LOOPBACK;
             port = server.port();
@@ -113,6 +116,9 @@ public final class RobotRun {
         } finally {
             if (server != null) {
                 server.close();
+            }
+            if (simulatorLog != null) {
+                simulatorLog.close();
             }
         }
     }
