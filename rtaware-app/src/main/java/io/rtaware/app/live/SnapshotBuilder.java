@@ -146,7 +146,7 @@ final class SnapshotBuilder {
         if (periodMs == null) {
             row.putNull("period_ms");
         } else {
-            row.put("period_ms", round(periodMs, 3));
+            row.put("period_ms", round(periodMs, 6)); // to the nanosecond: a 1 ns period is not 0 ms
         }
         row.put("releases", c.releases());
         row.put("runs", c.runs());
