@@ -50,15 +50,14 @@ final class TaskRuntime implements TaskInfo {
 
     /**
      * Heap bytes one task's bookkeeping takes: its two histograms (as HdrHistogram estimates
-     * their footprint), each copied once more when the report is made, the recent-execution ring
-     * and a fixed allowance for the rest. Not the task's own data, nor its thread's stack (native
-     * memory).
+     * their footprint), the recent-execution ring and a fixed allowance for the rest. Not the
+     * task's own data, nor its thread's stack (native memory).
      *
      * @return the estimate in bytes
      */
     static long estimatedHeapBytes() {
         long histogram = new Histogram(1, HIGHEST_TRACKABLE_NS, 2).getEstimatedFootprintInBytes();
-        return 2 * 2 * histogram + 2L * RECENT_EXEC_CYCLES * Long.BYTES + FIXED_OVERHEAD_BYTES;
+        return 2 * histogram + 2L * RECENT_EXEC_CYCLES * Long.BYTES + FIXED_OVERHEAD_BYTES;
     }
 
     private final TaskSpec spec;
