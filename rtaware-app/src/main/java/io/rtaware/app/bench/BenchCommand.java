@@ -27,6 +27,7 @@ import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.Durations;
 import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -194,7 +195,10 @@ public final class BenchCommand implements Callable<Integer> {
                 System.getProperty("java.vm.version"), CompareRun.collectors(), runs, Goal.check(runs));
         out.print(report.table());
         OutputWrites writes = new OutputWrites(System.err);
-        if (json != null && writes.write(json, () -> report.write(json))) {
+        if (json != null && writes.write(json, () -> {
+            Files.createDirectories(json.toAbsolutePath().getParent());
+            report.write(json);
+        })) {
             out.println("comparison written to " + json);
         }
         return writes.exitStatus(0);

@@ -92,8 +92,9 @@ public final class ExperimentCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException, InterruptedException {
         ExperimentPlan requested = resume ? null : plan();
-        Path dir = OutputFolder.of("--out", outputFolder()).path();
-        try (FolderLock lock = FolderLock.acquire(dir)) {
+        OutputFolder folder = OutputFolder.of("--out", outputFolder());
+        Path dir = folder.path();
+        try (FolderLock lock = FolderLock.acquire(folder.create())) {
             ExperimentPlan plan = resume ? ResumedPlan.of(dir, spec.commandLine().getParseResult(), this::plan) : requested;
             return run(plan, dir);
         } catch (ExperimentInputException e) {

@@ -8,9 +8,9 @@ import java.util.Objects;
 
 /**
  * One output file named on the command line ({@code --json FILE}, {@code --trace FILE}, and any
- * later option such as {@code --record FILE.mcap}), checked before the command runs: the name
- * is not empty, it is not a folder, its folder exists (it is created) and accepts a new file, and
- * an existing file is writable. An existing non-folder (a regular file to replace, or a device
+ * later option such as {@code --record FILE.mcap}), checked before the command runs, without
+ * creating anything: the name is not empty, it is not a folder, its folder accepts a new file (or
+ * can be created, see {@link OutputFolder}), and an existing file is writable. An existing non-folder (a regular file to replace, or a device
  * such as {@code /dev/null}) is accepted. A failure is a {@link UserError} naming the option, the
  * path and the reason. Immutable.
  */

@@ -2,17 +2,18 @@ package io.rtaware.app.output;
 
 import io.rtaware.app.UserError;
 import java.io.IOException;
-import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Objects;
 
 /**
  * An output folder named on the command line ({@code run --out}, {@code experiment --out},
- * {@code report DIR}), checked before the command runs: the name is not empty (an empty
- * {@code --out ""} would silently mean the current folder), it is not an existing file, it is
- * created if missing, and a file can be made in it. A failure is a {@link UserError} naming the
- * option, the path and the reason. Immutable.
+ * {@code report DIR}), checked before the command runs, without creating anything: the name is
+ * not empty (an empty {@code --out ""} would silently mean the current folder), it is not an
+ * existing file, and a file can be made in it or, when it does not exist yet, in its nearest
+ * existing ancestor (which must be a folder: a file in the way is named). The writer creates the
+ * folder when it writes ({@link #create()}). A failure is a {@link UserError} naming the option,
+ * the path and the reason. Immutable.
  */
 public final class OutputFolder {
 
@@ -25,7 +26,7 @@ public final class OutputFolder {
     }
 
     /**
-     * Checks the folder and creates it if missing.
+     * Checks that the folder exists and is writable, or can be created.
      *
      * @param option the option that named it, e.g. {@code --out}
      * @param path the path given
@@ -44,15 +45,26 @@ public final class OutputFolder {
         if (Files.exists(path) && !Files.isDirectory(path)) {
             throw new UserError(option + " names an existing file, not a folder: " + path);
         }
+        if (Files.isDirectory(path)) {
+            OutputFile.probe(option, path, what);
+            return new OutputFolder(option, path);
+        }
+        Path ancestor = path.toAbsolutePath().getParent();
+        while (ancestor != null && !Files.exists(ancestor)) {
+            ancestor = ancestor.getParent();
+        }
+        if (ancestor == null) {
+            throw new UserError(option + ": cannot create " + what + " " + path + ": no existing folder above it");
+        }
+        if (!Files.isDirectory(ancestor)) {
+            throw new UserError(option + ": cannot create " + what + " " + path + ": a file is in the way (" + ancestor + ")");
+        }
         try {
-            Files.createDirectories(path);
-        } catch (FileAlreadyExistsException e) {
-            throw new UserError(option + ": cannot create " + what + " " + path + ": a file is in the way ("
-                    + e.getFile() + ")");
-        } catch (IOException | SecurityException e) {
+            Path probe = Files.createTempFile(ancestor, ".rtaware-write-check-", ".tmp");
+            Files.delete(probe);
+        } catch (IOException | SecurityException | UnsupportedOperationException e) {
             throw new UserError(option + ": cannot create " + what + " " + path + ": " + OutputFile.reason(e));
         }
-        OutputFile.probe(option, path, what);
         return new OutputFolder(option, path);
     }
 
@@ -73,6 +85,16 @@ public final class OutputFolder {
         }
         OutputFile.probe(option, path, "folder");
         return new OutputFolder(option, path);
+    }
+
+    /**
+     * Creates the folder (and its parents) if it does not exist yet.
+     *
+     * @return the folder
+     * @throws IOException if it cannot be created
+     */
+    public Path create() throws IOException {
+        return Files.createDirectories(path);
     }
 
     /** @return the folder as given */

@@ -36,10 +36,11 @@ class OutputPathsTest {
                 .contains("cannot create folder /proc/rtaware-x"));
         assertTrue(assertThrows(UserError.class, () -> OutputFolder.of("--out", file.resolve("sub"))).getMessage()
                 .contains("--out"), "a file in the way of the folder's path");
-        OutputFolder made = OutputFolder.of("--out", dir.resolve("new/deep"));
-        assertTrue(Files.isDirectory(made.path()), "a missing folder is created");
-        try (var listing = Files.list(made.path())) {
-            assertEquals(0, listing.count(), "the write probe leaves nothing behind");
+        OutputFolder later = OutputFolder.of("--out", dir.resolve("new/deep"));
+        assertFalse(Files.exists(dir.resolve("new")), "checking creates nothing");
+        assertTrue(Files.isDirectory(later.create()), "the writer creates it");
+        try (var listing = Files.list(dir)) {
+            assertEquals(2, listing.count(), "the write probe leaves nothing behind (a-file and new)");
         }
     }
 
