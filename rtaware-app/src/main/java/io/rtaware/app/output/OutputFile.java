@@ -2,6 +2,7 @@ package io.rtaware.app.output;
 
 import io.rtaware.app.UserError;
 import java.io.IOException;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Objects;
@@ -73,20 +74,25 @@ public final class OutputFile {
         }
     }
 
-    /** @return the one-line reason of an I/O failure, with its type when it has no message */
+    /**
+     * @return the one-line reason of an I/O failure: the operating system's reason for a file
+     *     system error (the path is named by the caller), the message otherwise
+     */
     static String reason(Exception e) {
-        String message = e.getMessage();
-        String type = e.getClass().getSimpleName();
-        if (message == null || message.isBlank()) {
-            return type;
+        if (e instanceof FileSystemException fse) {
+            if (fse.getReason() != null && !fse.getReason().isBlank()) {
+                return fse.getReason();
+            }
+            return switch (e.getClass().getSimpleName()) {
+                case "AccessDeniedException" -> "permission denied";
+                case "NoSuchFileException" -> "no such file or folder";
+                case "FileAlreadyExistsException" -> "a file is in the way";
+                case "NotDirectoryException" -> "not a folder";
+                default -> e.getClass().getSimpleName();
+            };
         }
-        String line = message.lines().findFirst().orElse(message);
-        return switch (type) {
-            case "AccessDeniedException" -> "permission denied: " + line;
-            case "NoSuchFileException" -> "no such file or folder: " + line;
-            case "FileAlreadyExistsException" -> "a file is in the way: " + line;
-            case "NotDirectoryException" -> "not a folder: " + line;
-            default -> line;
-        };
+        String message = e.getMessage();
+        return message == null || message.isBlank() ? e.getClass().getSimpleName()
+                : message.lines().findFirst().orElse(message);
     }
 }
