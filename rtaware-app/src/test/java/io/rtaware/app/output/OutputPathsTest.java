@@ -99,6 +99,7 @@ class OutputPathsTest {
         CliRun.of("experiment", "--out", "").assertOneLineUserError("--out must name a folder");
         CliRun.of("experiment", "--out", "/proc/rtaware-x").assertOneLineUserError("cannot create folder");
         CliRun.of("report", file.toString()).assertOneLineUserError("is not a folder");
+        CliRun.of("world", "--png", dir.toString()).assertOneLineUserError("--png names a folder, not a file");
     }
 
     @Test
