@@ -9,6 +9,7 @@ import io.rtaware.app.run.RunCommand;
 import io.rtaware.app.sim.SimCommand;
 import io.rtaware.app.sim.WorldCommand;
 import java.io.PrintWriter;
+import java.nio.file.InvalidPathException;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -48,7 +49,19 @@ public final class RtawareCli {
      * @return the exit status
      */
     public static int execute(String... args) {
-        CommandLine cli = new CommandLine(new RtawareCli());
+        return execute(CommandLine.defaultFactory(), args);
+    }
+
+    /**
+     * Runs one command line without exiting the JVM, with the commands made by a factory (e.g. a
+     * command given a smaller memory budget than this JVM's).
+     *
+     * @param factory makes the command objects
+     * @param args command-line arguments
+     * @return the exit status
+     */
+    public static int execute(CommandLine.IFactory factory, String... args) {
+        CommandLine cli = new CommandLine(new RtawareCli(), factory);
         cli.setParameterExceptionHandler((ex, a) -> {
             PrintWriter err = ex.getCommandLine().getErr();
             err.println("rtaware: " + ex.getMessage().lines().findFirst().orElse("invalid arguments")
@@ -58,6 +71,11 @@ public final class RtawareCli {
         cli.setExecutionExceptionHandler((ex, cmd, parseResult) -> {
             if (ex instanceof UserError) {
                 cmd.getErr().println("rtaware: " + ex.getMessage());
+                return EXIT_USER_ERROR;
+            }
+            if (ex instanceof InvalidPathException e) {
+                cmd.getErr().println("rtaware: '" + e.getInput() + "' is not a file name this system can use ("
+                        + e.getReason() + "); with LC_ALL=C only ASCII names work: use a UTF-8 locale (LC_ALL=C.UTF-8)");
                 return EXIT_USER_ERROR;
             }
             throw ex;

@@ -66,10 +66,12 @@ public final class ExperimentRunner {
     public List<RunResult> run() throws IOException, InterruptedException {
         Files.createDirectories(outDir.resolve(RUNS_DIR));
         Path csv = resultsFile();
-        List<RunResult> existing = Files.exists(csv) ? ResultsCsv.read(csv) : List.of();
+        List<ResultsCsv.Row> existing = Files.exists(csv) ? ResultsCsv.readRows(csv) : List.of();
+        ResultsCsv.tornLastLine(csv).ifPresent(progress::note);
         Set<String> done = new HashSet<>();
-        for (RunResult r : existing) {
-            checkMatchesPlan(r);
+        for (ResultsCsv.Row row : existing) {
+            RunResult r = row.result();
+            checkMatchesPlan(r, row.line());
             done.add(r.set() + "/" + r.run());
         }
         List<PlannedRun> order = plan.order();
@@ -170,8 +172,8 @@ public final class ExperimentRunner {
         return result;
     }
 
-    private void checkMatchesPlan(RunResult r) {
-        String where = resultsFile() + " (set " + r.set() + " run " + r.run() + ")";
+    private void checkMatchesPlan(RunResult r, int line) {
+        String where = resultsFile() + " line " + line + " (set " + r.set() + " run " + r.run() + ")";
         if (r.set() > plan.sets().size()) {
             throw new ExperimentInputException(where + " has set " + r.set() + " but only " + plan.sets().size()
                     + " sets are planned; use the same --sets or another --out");

@@ -107,15 +107,17 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
     /**
      * @param runs the rows of one set
      * @param quantity {@code run_time_s} (completed runs) or {@code distance_to_finish_m} (measured runs)
-     * @return the sample the statistics and tests use
+     * @return the sample the statistics, tests and figures use: values the runs did not give
+     *     (NaN, non-finite) are left out
      */
     public static double[] sample(List<RunResult> runs, String quantity) {
-        return switch (quantity) {
+        double[] all = switch (quantity) {
             case "run_time_s" -> runs.stream().filter(RunResult::completed).mapToDouble(RunResult::runTimeS).toArray();
             case "distance_to_finish_m" -> runs.stream().filter(RunResult::measured).mapToDouble(RunResult::distanceToFinishM).toArray();
             case "distance_travelled_m" -> runs.stream().filter(RunResult::measured).mapToDouble(RunResult::distanceTravelledM).toArray();
             default -> throw new IllegalArgumentException("unknown quantity " + quantity);
         };
+        return java.util.Arrays.stream(all).filter(Double::isFinite).toArray();
     }
 
     private static SetSummary summarize(int set, List<RunResult> runs) {

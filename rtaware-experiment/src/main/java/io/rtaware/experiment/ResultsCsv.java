@@ -135,14 +135,59 @@ public final class ResultsCsv {
     }
 
     /**
-     * Reads every complete row. A last line without its line end (a write cut short) is ignored.
+     * A row of the file and the line it is on (the header is line 1).
+     *
+     * @param line the line number
+     * @param result the run
+     */
+    public record Row(int line, RunResult result) {
+    }
+
+    /**
+     * Reads every complete row. A last line without its line end (a write cut short) is not a
+     * run: {@link #tornLastLine} says so, for the caller to report.
      *
      * @param file a results file written by {@link #append}
      * @return the runs, in file order
      * @throws IOException if the file cannot be read
-     * @throws ExperimentInputException if it is not an rtaware results file
+     * @throws ExperimentInputException if it is not an rtaware results file, or a row repeats a
+     *     (set, run) of an earlier row, or gives a set other periods or another name than an
+     *     earlier row (the message names both lines)
      */
     public static List<RunResult> read(Path file) throws IOException {
+        return readRows(file).stream().map(Row::result).toList();
+    }
+
+    /**
+     * @param file a results file
+     * @return a description of its last line when that line has no line end (a write cut short,
+     *     e.g. a process killed while appending), naming the line number; empty otherwise
+     * @throws IOException if the file cannot be read
+     */
+    public static java.util.Optional<String> tornLastLine(Path file) throws IOException {
+        if (!Files.exists(file)) {
+            return java.util.Optional.empty();
+        }
+        String text = Files.readString(file, StandardCharsets.UTF_8);
+        if (text.isEmpty() || text.endsWith("\n")) {
+            return java.util.Optional.empty();
+        }
+        long line = text.lines().count();
+        String last = text.substring(text.lastIndexOf('\n') + 1);
+        return java.util.Optional.of(file + " line " + line + " is incomplete (" + last.length()
+                + " characters without a line end: a write cut short); it is not counted as a run"
+                + " and is removed when the next run is appended");
+    }
+
+    /**
+     * Like {@link #read} with each row's line number.
+     *
+     * @param file a results file written by {@link #append}
+     * @return the rows, in file order
+     * @throws IOException if the file cannot be read
+     * @throws ExperimentInputException as {@link #read}
+     */
+    public static List<Row> readRows(Path file) throws IOException {
         String text = Files.readString(file, StandardCharsets.UTF_8);
         List<String> lines = new ArrayList<>(text.lines().toList());
         if (!text.isEmpty() && !text.endsWith("\n")) {
@@ -155,16 +200,32 @@ public final class ResultsCsv {
             throw new ExperimentInputException(file + ": the header is not that of rtaware's results.csv (expected "
                     + String.join(",", HEADER.subList(0, 4)) + ",...)");
         }
-        List<RunResult> rows = new ArrayList<>();
+        List<Row> rows = new ArrayList<>();
+        Map<String, Integer> lineOfRun = new java.util.HashMap<>();
+        Map<Integer, Row> firstOfSet = new java.util.HashMap<>();
         for (int i = 1; i < lines.size(); i++) {
             if (lines.get(i).isBlank()) {
                 continue;
             }
+            RunResult r;
             try {
-                rows.add(parse(split(lines.get(i))));
+                r = parse(split(lines.get(i)));
             } catch (RuntimeException e) {
                 throw new ExperimentInputException(file + " line " + (i + 1) + ": " + e.getMessage());
             }
+            Integer earlier = lineOfRun.putIfAbsent(r.set() + "/" + r.run(), i + 1);
+            if (earlier != null) {
+                throw new ExperimentInputException(file + " line " + (i + 1) + ": set " + r.set() + " run " + r.run()
+                        + " is already on line " + earlier + " (two processes wrote the folder?); delete one of the rows");
+            }
+            Row first = firstOfSet.putIfAbsent(r.set(), new Row(i + 1, r));
+            if (first != null && !first.result().periods().equals(r.periods())) {
+                throw new ExperimentInputException(file + " line " + (i + 1) + ": set " + r.set() + " is '"
+                        + r.periods().name() + "' " + r.periods().shortLabel() + " but line " + first.line() + " has it as '"
+                        + first.result().periods().name() + "' " + first.result().periods().shortLabel()
+                        + "; a folder holds one plan");
+            }
+            rows.add(new Row(i + 1, r));
         }
         return rows;
     }

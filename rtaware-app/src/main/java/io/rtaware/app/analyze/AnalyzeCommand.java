@@ -38,6 +38,7 @@ public final class AnalyzeCommand implements Callable<Integer> {
             String why = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage().lines().findFirst().orElse("");
             throw new UserError("cannot read report " + file + ": " + why);
         }
+        ReportInput.check(doc.report(), file);
         System.out.print(ReportSections.analyze(doc.report(), cores).text());
         return 0;
     }

@@ -8,9 +8,12 @@ import io.rtaware.app.bench.compare.Goal;
 import io.rtaware.app.bench.compare.RunResult;
 import io.rtaware.app.cli.CommandMonitor;
 import io.rtaware.app.cli.DurationConverter;
+import io.rtaware.app.cli.MemoryBudget;
 import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.live.LiveMixin;
 import io.rtaware.app.live.LiveView;
+import io.rtaware.app.output.OutputFile;
+import io.rtaware.app.output.OutputWrites;
 import io.rtaware.app.report.ReportSections;
 import io.rtaware.core.monitor.ConsoleReporter;
 import io.rtaware.core.monitor.Monitor;
@@ -24,6 +27,7 @@ import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.Durations;
 import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -31,6 +35,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import java.util.function.Supplier;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -135,9 +140,31 @@ public final class BenchCommand implements Callable<Integer> {
     @Mixin
     LiveMixin live;
 
+    private final Supplier<MemoryBudget> memory;
+
+    /** The command with this JVM's heap as its memory budget. */
+    public BenchCommand() {
+        this(MemoryBudget::ofThisJvm);
+    }
+
+    /** @param memory the heap the task set and the trace may take, asked for when the command runs */
+    public BenchCommand(Supplier<MemoryBudget> memory) {
+        this.memory = memory;
+    }
+
     @Override
     public Integer call() throws IOException, InterruptedException {
         List<BenchSpec> specs = taskSet();
+        live.options(); // a bad --live-port or --live-bind ends the command before anything runs
+        if (json != null) {
+            OutputFile.of("--json", json);
+        }
+        trace.checkOutput();
+        long perTaskBytes = Monitor.estimatedHeapBytesPerTask();
+        memory.get().require(MemoryBudget.times(specs.size(), perTaskBytes),
+                specs.size() + " task(s) (" + perTaskBytes / 1024 + " KB of monitor bookkeeping per task)");
+        memory.get().require(MemoryBudget.add(MemoryBudget.times(specs.size(), perTaskBytes), trace.heapBytes()),
+                trace.describe() + " with " + specs.size() + " task(s)");
         if (durationNs <= 0) {
             throw new UserError("--duration must be positive, got " + Durations.format(durationNs));
         }
@@ -167,11 +194,14 @@ public final class BenchCommand implements Callable<Integer> {
                 specs.get(0).workNs() / 1e6, run.measuredNs() / 1e9, segmentNs / 1e9, loadThreads, gcPressureMbps,
                 System.getProperty("java.vm.version"), CompareRun.collectors(), runs, Goal.check(runs));
         out.print(report.table());
-        if (json != null) {
+        OutputWrites writes = new OutputWrites(System.err);
+        if (json != null && writes.write(json, () -> {
+            Files.createDirectories(json.toAbsolutePath().getParent());
             report.write(json);
+        })) {
             out.println("comparison written to " + json);
         }
-        return 0;
+        return writes.exitStatus(0);
     }
 
     private int bench(List<BenchSpec> specs, BusyWork work) throws IOException, InterruptedException {
@@ -207,7 +237,8 @@ public final class BenchCommand implements Callable<Integer> {
                 chain ? " in a chain" : "", Durations.format(durationNs), timeScale);
         LiveView liveView = LiveView.start(live.options(), monitor, out);
         Thread hook = monitor.installShutdownHook();
-        monitor.onTermination(report -> finish(monitor, report, console, recorder, out));
+        OutputWrites writes = new OutputWrites(System.err);
+        monitor.onTermination(report -> finish(monitor, report, console, recorder, out, writes));
         monitor.onTermination(report -> liveView.finish(report, null));
         monitor.start();
         long wallNs = clock.toWallNanos(durationNs);
@@ -233,7 +264,7 @@ public final class BenchCommand implements Callable<Integer> {
                     + " bytes in steady state");
             return EXIT_ALLOCATED;
         }
-        return 0;
+        return writes.exitStatus(0);
     }
 
     private static long totalReleases(Monitor monitor) {
@@ -245,7 +276,7 @@ public final class BenchCommand implements Callable<Integer> {
     }
 
     private void finish(Monitor monitor, Report report, ConsoleReporter console, TraceRecorder recorder,
-                        PrintStream out) {
+                        PrintStream out, OutputWrites writes) {
         if (console != null) {
             console.close();
         }
@@ -259,14 +290,9 @@ public final class BenchCommand implements Callable<Integer> {
             out.println();
             out.print(history);
         }
-        trace.write(recorder, out, System.err);
-        if (json != null) {
-            try {
-                doc.write(json);
-                out.println("report written to " + json);
-            } catch (IOException e) {
-                System.err.println("rtaware: could not write " + json + ": " + e.getMessage());
-            }
+        trace.write(recorder, out, writes);
+        if (json != null && writes.write(json, () -> doc.write(json))) {
+            out.println("report written to " + json);
         }
     }
 

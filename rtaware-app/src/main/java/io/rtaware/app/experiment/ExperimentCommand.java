@@ -2,6 +2,8 @@ package io.rtaware.app.experiment;
 
 import io.rtaware.app.UserError;
 import io.rtaware.app.cli.TimeScaleConverter;
+import io.rtaware.app.output.OutputFolder;
+import io.rtaware.app.output.OutputWrites;
 import io.rtaware.experiment.ExperimentInputException;
 import io.rtaware.experiment.ExperimentPlan;
 import io.rtaware.experiment.ExperimentProfile;
@@ -9,8 +11,10 @@ import io.rtaware.experiment.ExperimentRunner;
 import io.rtaware.experiment.ExperimentSets;
 import io.rtaware.experiment.ExperimentSummary;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
+import io.rtaware.experiment.FolderLock;
 import io.rtaware.experiment.JvmRunCommand;
 import io.rtaware.experiment.PeriodSet;
+import io.rtaware.experiment.PlanFile;
 import io.rtaware.experiment.ProgressBar;
 import io.rtaware.experiment.ResultsCsv;
 import io.rtaware.experiment.RunConditions;
@@ -27,7 +31,9 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /**
  * {@code rtaware experiment}: the paper's experiment. Each run is a fresh JVM running
@@ -76,15 +82,38 @@ public final class ExperimentCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "DIR", description = "Output folder (default: experiments/<timestamp>).")
     Path out;
 
-    @Option(names = "--resume", description = "Continue the experiment in --out, skipping the runs already in its results.csv.")
+    @Option(names = "--resume", description = "Continue the experiment in --out with the plan stored there (sets, runs, "
+            + "scenario, time scale, seed, grid), skipping the runs already in its results.csv.")
     boolean resume;
+
+    @Spec
+    CommandSpec spec;
 
     @Override
     public Integer call() throws IOException, InterruptedException {
-        ExperimentPlan plan = plan();
-        Path dir = outputFolder();
+        ExperimentPlan requested = resume ? null : plan();
+        OutputFolder folder = OutputFolder.of("--out", outputFolder());
+        Path dir = folder.path();
+        try (FolderLock lock = FolderLock.acquire(folder.create())) {
+            ExperimentPlan plan = resume ? ResumedPlan.of(dir, spec.commandLine().getParseResult(), this::plan) : requested;
+            return run(plan, dir);
+        } catch (ExperimentInputException e) {
+            throw new UserError(e.getMessage());
+        } catch (IOException e) {
+            System.err.println("rtaware: experiment in " + dir + ": could not write: " + e.getMessage()
+                    + " (what finished is in " + dir.resolve(ResultsCsv.FILE_NAME) + ")");
+            return OutputWrites.EXIT_WRITE_FAILED;
+        }
+    }
+
+    private int run(ExperimentPlan plan, Path dir) throws IOException, InterruptedException {
+        int runs = plan.runsPerSet();
+        String scenario = plan.conditions().scenario();
+        double timeScale = plan.conditions().timeScale();
         System.setProperty("java.awt.headless", "true");
-        Files.createDirectories(dir);
+        if (!Files.exists(dir.resolve(PlanFile.FILE_NAME))) {
+            PlanFile.write(dir, plan);
+        }
         if (!Files.exists(dir.resolve(ExperimentProfile.FILE_NAME))) {
             ExperimentProfile.of(plan, ExperimentProfile.describeThisMachine()).write(dir);
         }
@@ -129,7 +158,8 @@ public final class ExperimentCommand implements Callable<Integer> {
         }
     }
 
-    private ExperimentPlan plan() {
+    /** @return the plan the options ask for */
+    ExperimentPlan plan() {
         if (runs < 1) {
             throw new UserError("--runs must be at least 1, got " + runs);
         }
@@ -150,8 +180,9 @@ public final class ExperimentCommand implements Callable<Integer> {
             if (out == null) {
                 throw new UserError("--resume needs --out DIR, the folder of the experiment to continue");
             }
-            if (!Files.exists(out.resolve(ResultsCsv.FILE_NAME))) {
-                throw new UserError("nothing to resume: " + out.resolve(ResultsCsv.FILE_NAME) + " does not exist");
+            if (!Files.exists(out.resolve(ResultsCsv.FILE_NAME)) && !Files.exists(out.resolve(PlanFile.FILE_NAME))) {
+                throw new UserError("nothing to resume: " + out + " holds no " + PlanFile.FILE_NAME + " or "
+                        + ResultsCsv.FILE_NAME);
             }
             return out;
         }

@@ -1,12 +1,12 @@
 package io.rtaware.app.experiment;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.output.OutputFolder;
 import io.rtaware.experiment.ExperimentInputException;
 import io.rtaware.experiment.ExperimentProfile;
 import io.rtaware.experiment.ResultsCsv;
 import io.rtaware.experiment.report.ExperimentReport;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -27,13 +27,13 @@ public final class ReportCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        if (!Files.isDirectory(dir)) {
-            throw new UserError("report: " + dir + " is not a folder");
-        }
+        OutputFolder.existing("report", dir);
         System.setProperty("java.awt.headless", "true");
         try {
             String scenario = ExperimentProfile.read(dir).map(ExperimentProfile::scenario)
                     .orElseGet(() -> firstScenario(dir));
+            ResultsCsv.tornLastLine(dir.resolve(ResultsCsv.FILE_NAME))
+                    .ifPresent(note -> System.err.println("rtaware: note: " + note));
             ExperimentReport.render(dir, CourseBackgrounds.forScenario(scenario));
         } catch (ExperimentInputException e) {
             throw new UserError(e.getMessage());

@@ -2,6 +2,8 @@ package io.rtaware.app.live;
 
 import io.rtaware.app.UserError;
 import io.rtaware.app.cli.DurationConverter;
+import java.net.InetAddress;
+import java.net.UnknownHostException;
 import picocli.CommandLine.Option;
 
 /** The {@code --live} options shared by {@code run} and {@code bench}. Not thread-safe (picocli fills it). */
@@ -27,13 +29,22 @@ public final class LiveMixin {
 
     /**
      * @return the validated options
-     * @throws UserError for a bad port or linger time
+     * @throws UserError for a bad port or linger time, or a bind address that does not resolve
      */
     public LiveOptions options() {
+        LiveOptions options;
         try {
-            return new LiveOptions(live, bind, port, lingerNs);
+            options = new LiveOptions(live, bind, port, lingerNs);
         } catch (IllegalArgumentException e) {
             throw new UserError(e.getMessage());
         }
+        if (live) {
+            try {
+                InetAddress.getByName(bind);
+            } catch (UnknownHostException e) {
+                throw new UserError("--live-bind: cannot resolve '" + bind + "' to an address of this machine");
+            }
+        }
+        return options;
     }
 }

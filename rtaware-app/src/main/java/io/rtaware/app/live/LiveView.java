@@ -4,6 +4,7 @@ import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import io.rtaware.app.UserError;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
@@ -13,8 +14,10 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.PrintStream;
 import java.io.UncheckedIOException;
+import java.net.BindException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.net.UnknownHostException;
 import java.util.Locale;
 import java.util.Objects;
 import java.util.concurrent.TimeUnit;
@@ -77,7 +80,8 @@ public final class LiveView implements AutoCloseable {
      * @param monitor the monitor to watch
      * @param out where the {@code live view: URL} line goes
      * @return the view
-     * @throws IOException if the address cannot be bound
+     * @throws UserError if the port is in use or the address is not one of this machine
+     * @throws IOException if the page cannot be loaded
      */
     public static LiveView start(LiveOptions options, Monitor monitor, PrintStream out) throws IOException {
         return start(options, monitor, null, out);
@@ -91,7 +95,8 @@ public final class LiveView implements AutoCloseable {
      * @param scene what to draw besides tasks and keys, or null for tasks and keys only
      * @param out where the {@code live view: URL} line goes
      * @return the view
-     * @throws IOException if the address cannot be bound
+     * @throws UserError if the port is in use or the address is not one of this machine
+     * @throws IOException if the page cannot be loaded
      */
     public static LiveView start(LiveOptions options, Monitor monitor, RunScene scene, PrintStream out)
             throws IOException {
@@ -99,8 +104,17 @@ public final class LiveView implements AutoCloseable {
             return new LiveView(options, null, null, null, out);
         }
         Objects.requireNonNull(monitor, "monitor");
-        InetAddress address = InetAddress.getByName(options.bindAddress());
-        LiveServer server = new LiveServer(new InetSocketAddress(address, options.port()), page());
+        InetAddress address;
+        LiveServer server;
+        try {
+            address = InetAddress.getByName(options.bindAddress());
+            server = new LiveServer(new InetSocketAddress(address, options.port()), page());
+        } catch (UnknownHostException e) {
+            throw new UserError("--live-bind: cannot resolve '" + options.bindAddress() + "' to an address of this machine");
+        } catch (BindException e) {
+            throw new UserError("cannot serve the live view on " + options.bindAddress() + ":" + options.port() + ": "
+                    + e.getMessage() + " (--live-port in use, or --live-bind not an address of this machine)");
+        }
         LiveView view = new LiveView(options, server, monitor, scene, out);
         if (scene != null && scene.world() != null) {
             server.putResource("/world.png", "image/png", MapImages.world(scene.world()));

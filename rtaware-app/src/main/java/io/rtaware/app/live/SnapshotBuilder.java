@@ -7,6 +7,7 @@ import io.rtaware.core.data.FeedStats;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.TaskCounters;
 import io.rtaware.core.monitor.TaskInfo;
+import io.rtaware.core.report.Rounding;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.nav.task.PositionMediatorTask;
 import io.rtaware.robot.geometry.Point2d;
@@ -145,7 +146,7 @@ final class SnapshotBuilder {
         if (periodMs == null) {
             row.putNull("period_ms");
         } else {
-            row.put("period_ms", round(periodMs, 3));
+            row.put("period_ms", round(periodMs, 6)); // to the nanosecond: a 1 ns period is not 0 ms
         }
         row.put("releases", c.releases());
         row.put("runs", c.runs());
@@ -305,7 +306,6 @@ final class SnapshotBuilder {
         if (!Double.isFinite(v)) {
             return 0.0;
         }
-        double f = Math.pow(10, digits);
-        return Math.round(v * f) / f;
+        return Rounding.toDecimals(v, digits);
     }
 }

@@ -8,6 +8,7 @@ import io.rtaware.core.monitor.ConsoleReporter;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.TaskCounters;
 import io.rtaware.core.monitor.TaskInfo;
+import io.rtaware.core.report.Rounding;
 import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.TaskSpec;
@@ -84,15 +85,18 @@ public final class RobotRun {
      */
     public int execute() throws IOException {
         Scenario scenario = loadScenario();
+        CourseCheck.warnings(scenario).forEach(w -> err.println("rtaware run: warning: " + w + "; running anyway"));
         Clock clock = Clock.forTimeScale(options.timeScale());
 
         PlayerSimServer server = null;
+        BuiltInSimulatorLog simulatorLog = null;
         String host = options.playerHost();
         int port = options.playerPort();
         if (options.builtInSimulator()) {
             if (scenario.map().isEmpty()) {
                 throw new UserError("scenario '" + scenario.name() + "' has no map; the built-in simulator needs one (or use --player HOST:PORT)");
             }
+            simulatorLog = BuiltInSimulatorLog.install(err);
             server = SimCommandSupport.start(scenario, clock, ServerConfig.defaults(0), options.seed());
             host = ServerConfig.LOOPBACK;
             port = server.port();
@@ -104,6 +108,9 @@ public final class RobotRun {
         } finally {
             if (server != null) {
                 server.close();
+            }
+            if (simulatorLog != null) {
+                simulatorLog.close();
             }
         }
     }
@@ -148,7 +155,7 @@ public final class RobotRun {
         // the shutdown-hook thread at any moment from here on.
         RunState state = new RunState(clock.nanos());
         CourseStatus course = new CourseStatus();
-        RunArtifacts artifacts = new RunArtifacts(options, scenario, navConfig, out);
+        RunArtifacts artifacts = new RunArtifacts(options, scenario, navConfig, out, err);
         LiveView live = LiveView.start(options.live(), monitor, new RunScene(scenario.name(), scenario.map().orElse(null),
                 scenario.waypoints(), nav.keys(), nav::mediatorCounts, () -> outcomeName(state)), out);
         // Connected before the start, so the first ground-truth sample is the pose at the start.
@@ -171,7 +178,7 @@ public final class RobotRun {
             live.finish(report, run);
             artifacts.write(report, run, playerSection(player, host, port, truth), referee,
                     nav.finalMap().orElse(null), scenario.map().orElse(null));
-            options.trace().write(trace, out, err);
+            options.trace().write(trace, out, artifacts.writes());
         });
         Thread hook = monitor.installShutdownHook();
 
@@ -191,7 +198,7 @@ public final class RobotRun {
         supervise(clock, startNs, monitor, nav, referee, supervisor, course, state);
         CommandMonitor.stop(monitor, hook);
         live.close();
-        return state.ending().outcome().exitStatus();
+        return artifacts.exitStatus(state.ending().outcome().exitStatus());
     }
 
     private static void closeQuietly(Referee.PoseSource source) {
@@ -407,7 +414,7 @@ public final class RobotRun {
     }
 
     private static double round3(double v) {
-        return Double.isNaN(v) ? v : Math.round(v * 1000.0) / 1000.0;
+        return Rounding.toDecimals(v, 3);
     }
 
     private static String trim(double v) {

@@ -1,5 +1,6 @@
 package io.rtaware.app.run;
 
+import io.rtaware.app.output.OutputWrites;
 import io.rtaware.app.report.ReportSections;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
@@ -13,9 +14,9 @@ import io.rtaware.sim.render.WorldRenderer;
 import io.rtaware.sim.scenario.Scenario;
 import java.io.IOException;
 import java.io.PrintStream;
-import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
@@ -24,7 +25,10 @@ import java.util.Locale;
  * {@code player} sections),
  * {@code report.md}, {@code trajectory.csv}, {@code trajectory.png}, and the grid the robot built
  * as {@code map.pgm} + {@code map.yaml}. Prints the termination summary first, so a person sees
- * it even if a file cannot be written. Called once, from the monitor's termination handler.
+ * it even if a file cannot be written. Each file is written on its own: one that fails is named
+ * with the reason and the others are still written ({@link OutputWrites}); the command's exit
+ * status then says so ({@link #exitStatus(int)}). Called once, from the monitor's termination
+ * handler.
  */
 final class RunArtifacts {
 
@@ -32,12 +36,27 @@ final class RunArtifacts {
     private final Scenario scenario;
     private final NavConfig navConfig;
     private final PrintStream out;
+    private final OutputWrites writes;
 
-    RunArtifacts(RunOptions options, Scenario scenario, NavConfig navConfig, PrintStream out) {
+    RunArtifacts(RunOptions options, Scenario scenario, NavConfig navConfig, PrintStream out, PrintStream err) {
         this.options = options;
         this.scenario = scenario;
         this.navConfig = navConfig;
         this.out = out;
+        this.writes = new OutputWrites(err);
+    }
+
+    /** @return the run's writes, for other outputs of the same run (the trace) */
+    OutputWrites writes() {
+        return writes;
+    }
+
+    /**
+     * @param status the run's exit status from its outcome
+     * @return that status, or non-zero if an output could not be written
+     */
+    int exitStatus(int status) {
+        return writes.exitStatus(status);
     }
 
     void write(Report report, RunSection run, PlayerSection player, Referee referee, OccupancyGrid builtMap,
@@ -53,24 +72,34 @@ final class RunArtifacts {
         out.println();
         out.print(analysis);
         Path dir = options.outDir();
-        try {
-            Files.createDirectories(dir);
-            doc.write(dir.resolve("report.json"));
-            Files.writeString(dir.resolve("report.md"), markdown(table, runText, analysis, worldMap != null));
-            List<Referee.Sample> samples = referee == null ? List.of() : referee.samples();
-            writeTrajectoryCsv(dir.resolve("trajectory.csv"), samples);
-            if (worldMap != null) {
-                List<Pose2d> poses = samples.stream().map(Referee.Sample::pose).toList();
-                new WorldRenderer().writePng(scenario, worldMap, poses,
-                        referee == null ? List.of() : referee.missMarkers(), dir.resolve("trajectory.png"));
+        if (!writes.write(dir, () -> Files.createDirectories(dir))) {
+            return;
+        }
+        List<String> names = new ArrayList<>();
+        if (writes.write(dir.resolve("report.json"), () -> doc.write(dir.resolve("report.json")))) {
+            names.add("report.json");
+        }
+        if (writes.write(dir.resolve("report.md"), () -> Files.writeString(dir.resolve("report.md"),
+                markdown(table, runText, analysis, worldMap != null)))) {
+            names.add("report.md");
+        }
+        List<Referee.Sample> samples = referee == null ? List.of() : referee.samples();
+        if (writes.write(dir.resolve("trajectory.csv"), () -> writeTrajectoryCsv(dir.resolve("trajectory.csv"), samples))) {
+            names.add("trajectory.csv");
+        }
+        if (worldMap != null) {
+            List<Pose2d> poses = samples.stream().map(Referee.Sample::pose).toList();
+            if (writes.write(dir.resolve("trajectory.png"), () -> new WorldRenderer().writePng(scenario, worldMap, poses,
+                    referee == null ? List.of() : referee.missMarkers(), dir.resolve("trajectory.png")))) {
+                names.add("trajectory.png");
             }
-            if (builtMap != null) {
-                PgmMapWriter.write(builtMap, dir, "map");
-            }
-            out.println("report written to " + dir + " (report.json, report.md, trajectory.csv"
-                    + (worldMap != null ? ", trajectory.png" : "") + (builtMap != null ? ", map.pgm, map.yaml" : "") + ")");
-        } catch (IOException | UncheckedIOException e) {
-            System.err.println("rtaware: could not write the run's report to " + dir + ": " + e.getMessage());
+        }
+        if (builtMap != null && writes.write(dir.resolve("map.pgm"), () -> PgmMapWriter.write(builtMap, dir, "map"))) {
+            names.add("map.pgm");
+            names.add("map.yaml");
+        }
+        if (!names.isEmpty()) {
+            out.println("report written to " + dir + " (" + String.join(", ", names) + ")");
         }
     }
 

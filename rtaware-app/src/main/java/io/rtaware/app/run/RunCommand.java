@@ -1,14 +1,17 @@
 package io.rtaware.app.run;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.cli.MemoryBudget;
 import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.live.LiveMixin;
+import io.rtaware.app.output.OutputFolder;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
 import java.util.concurrent.Callable;
+import java.util.function.Supplier;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -73,9 +76,23 @@ public final class RunCommand implements Callable<Integer> {
     @Mixin
     LiveMixin live;
 
+    private final Supplier<MemoryBudget> memory;
+
+    /** The command with this JVM's heap as its memory budget. */
+    public RunCommand() {
+        this(MemoryBudget::ofThisJvm);
+    }
+
+    /** @param memory the heap the trace may take, asked for when the command runs */
+    public RunCommand(Supplier<MemoryBudget> memory) {
+        this.memory = memory;
+    }
+
     @Override
     public Integer call() throws IOException {
-        return new RobotRun(options(), System.out, System.err).execute();
+        RunOptions options = options();
+        memory.get().require(trace.heapBytes(), trace.describe());
+        return new RobotRun(options, System.out, System.err).execute();
     }
 
     RunOptions options() {
@@ -106,6 +123,8 @@ public final class RunCommand implements Callable<Integer> {
         }
         Path dir = out != null ? out
                 : Path.of("runs", LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
+        OutputFolder.of("--out", dir);
+        trace.checkOutput();
         return new RunOptions(scenario, taskPeriods, timeScale, host, port, seed, dir, quiet, stuckAfterS,
                 gridResolutionM, model, trace, realtime, live.options());
     }

@@ -1,6 +1,7 @@
 package io.rtaware.app.sim;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.output.OutputFile;
 import io.rtaware.sim.render.WorldRenderer;
 import io.rtaware.sim.scenario.Scenario;
 import io.rtaware.sim.scenario.ScenarioException;
@@ -25,6 +26,7 @@ public final class WorldCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        OutputFile.of("--png", png);
         Scenario s;
         try {
             s = ScenarioLoader.load(scenario);

@@ -1,5 +1,6 @@
 package io.rtaware.core.analysis;
 
+import io.rtaware.core.time.Durations;
 import java.util.List;
 import java.util.Locale;
 
@@ -23,7 +24,7 @@ public final class AnalysisText {
         }
         for (AdviceItem item : advice) {
             sb.append(String.format(Locale.ROOT, "  %-12s %-16s %8s -> %-8s %s%n", item.task(), item.rule(),
-                    PeriodAdvisor.num(item.periodMs()) + "ms", PeriodAdvisor.num(item.suggestedPeriodMs()) + "ms",
+                    Durations.formatMillis(item.periodMs()), Durations.formatMillis(item.suggestedPeriodMs()),
                     item.message()));
         }
         return sb.toString();
@@ -57,7 +58,7 @@ public final class AnalysisText {
     }
 
     private static String ms(double v) {
-        return PeriodAdvisor.num(PeriodAdvisor.round3(v)) + "ms";
+        return Durations.formatMillis(v);
     }
 
     private static String response(Double v) {

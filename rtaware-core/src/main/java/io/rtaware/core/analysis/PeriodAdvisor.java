@@ -2,6 +2,7 @@ package io.rtaware.core.analysis;
 
 import io.rtaware.core.report.DataReport;
 import io.rtaware.core.report.Report;
+import io.rtaware.core.report.Rounding;
 import io.rtaware.core.report.TaskReport;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -170,15 +171,21 @@ public final class PeriodAdvisor {
     }
 
     static double round2(double v) {
-        return Math.round(v * 100.0) / 100.0;
+        return Rounding.toDecimals(v, 2);
     }
 
     static double round3(double v) {
-        return Math.round(v * 1000.0) / 1000.0;
+        return Rounding.toDecimals(v, 3);
     }
 
+    /** Milliseconds for a message: up to three decimals, never a dangling point; tiny values in %g. */
     static String num(double v) {
-        return v == Math.rint(v) ? Long.toString((long) v)
-                : String.format(Locale.ROOT, "%.3f", v).replaceAll("0+$", "");
+        if (v == Math.rint(v) && Math.abs(v) < 1e15) {
+            return Long.toString((long) v);
+        }
+        if (v != 0 && Math.abs(v) < 0.0005 || !Double.isFinite(v) || Math.abs(v) >= 1e15) {
+            return String.format(Locale.ROOT, "%.3g", v);
+        }
+        return String.format(Locale.ROOT, "%.3f", v).replaceAll("0+$", "").replaceAll("\\.$", "");
     }
 }

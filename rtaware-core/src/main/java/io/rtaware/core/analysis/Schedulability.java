@@ -1,6 +1,7 @@
 package io.rtaware.core.analysis;
 
 import io.rtaware.core.report.Report;
+import io.rtaware.core.report.Rounding;
 import io.rtaware.core.report.TaskReport;
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -165,6 +166,6 @@ public final class Schedulability {
     }
 
     private static double round4(double v) {
-        return Math.round(v * 10_000.0) / 10_000.0;
+        return Rounding.toDecimals(v, 4);
     }
 }

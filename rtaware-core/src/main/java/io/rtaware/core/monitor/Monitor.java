@@ -98,6 +98,17 @@ public final class Monitor {
     }
 
     /**
+     * What the monitor itself keeps per task on the heap (histograms of execution time and
+     * lateness, counters), so that a command can refuse a task set that cannot fit before it
+     * allocates anything. Measured from HdrHistogram's footprint estimate, not guessed.
+     *
+     * @return bytes per task, not counting the task's own data
+     */
+    public static long estimatedHeapBytesPerTask() {
+        return TaskRuntime.estimatedHeapBytes();
+    }
+
+    /**
      * @param clock the world clock every task and measurement uses
      * @return a builder
      */

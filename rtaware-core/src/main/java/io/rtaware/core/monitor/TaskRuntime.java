@@ -1,6 +1,7 @@
 package io.rtaware.core.monitor;
 
 import io.rtaware.core.report.Percentiles;
+import io.rtaware.core.report.Rounding;
 import io.rtaware.core.report.TaskReport;
 import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.Schedule;
@@ -44,6 +45,20 @@ final class TaskRuntime implements TaskInfo {
     private static final long HIGHEST_TRACKABLE_NS = 3_600_000_000_000L;
     /** Cycles whose execution times {@link #counters()} summarizes as a live p99. */
     static final int RECENT_EXEC_CYCLES = 128;
+    /** Bookkeeping besides the histograms and the recent ring: runtime, counters, spec, thread object. */
+    private static final long FIXED_OVERHEAD_BYTES = 16 * 1024;
+
+    /**
+     * Heap bytes one task's bookkeeping takes: its two histograms (as HdrHistogram estimates
+     * their footprint), the recent-execution ring and a fixed allowance for the rest. Not the
+     * task's own data, nor its thread's stack (native memory).
+     *
+     * @return the estimate in bytes
+     */
+    static long estimatedHeapBytes() {
+        long histogram = new Histogram(1, HIGHEST_TRACKABLE_NS, 2).getEstimatedFootprintInBytes();
+        return 2 * histogram + 2L * RECENT_EXEC_CYCLES * Long.BYTES + FIXED_OVERHEAD_BYTES;
+    }
 
     private final TaskSpec spec;
     private final int index;
@@ -542,6 +557,6 @@ final class TaskRuntime implements TaskInfo {
     }
 
     static double round2(double v) {
-        return Math.round(v * 100.0) / 100.0;
+        return Rounding.toDecimals(v, 2);
     }
 }

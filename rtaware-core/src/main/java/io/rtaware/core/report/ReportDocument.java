@@ -25,7 +25,8 @@ public final class ReportDocument {
     private static final ObjectMapper MAPPER = new ObjectMapper()
             .setPropertyNamingStrategy(PropertyNamingStrategies.SNAKE_CASE)
             .enable(SerializationFeature.INDENT_OUTPUT)
-            .disable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES);
+            .disable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES)
+            .registerModule(FiniteNumbers.module());
 
     private final Report report;
     private final Map<String, Object> sections = new LinkedHashMap<>();
@@ -57,10 +58,11 @@ public final class ReportDocument {
         return Collections.unmodifiableMap(sections);
     }
 
-    /** @return the document as a JSON tree */
+    /** @return the document as a JSON tree; a non-finite number (a value the run did not give) is null */
     public ObjectNode toJson() {
         ObjectNode root = MAPPER.valueToTree(report);
         sections.forEach((name, value) -> root.set(name, MAPPER.valueToTree(value)));
+        FiniteNumbers.clean(root);
         return root;
     }
 
@@ -107,7 +109,10 @@ public final class ReportDocument {
         return doc;
     }
 
-    /** @return the mapper configured for rtaware's JSON (snake_case names, indented) */
+    /**
+     * @return the mapper configured for rtaware's JSON (snake_case names, indented, non-finite
+     *     numbers as null): every JSON file rtaware writes goes through a copy of it
+     */
     public static ObjectMapper mapper() {
         return MAPPER.copy();
     }

@@ -1,5 +1,6 @@
 package io.rtaware.core.report;
 
+import io.rtaware.core.time.Durations;
 import java.util.Locale;
 
 /**
@@ -24,7 +25,7 @@ public final class SummaryTable {
                 "exec p50", "exec p99", "exec max", "late p50", "late p99", "late max"));
         for (TaskReport t : report.tasks()) {
             sb.append(String.format(Locale.ROOT, "%-12s %-10s %8s %8d %8d %8d %7.2f %7d %7d %6d | %9s %9s %9s | %9s %9s %9s%n",
-                    t.name(), t.schedule(), t.periodMs() == null ? "-" : trim(t.periodMs()) + "ms",
+                    t.name(), t.schedule(), t.periodMs() == null ? "-" : Durations.formatMillis(t.periodMs()),
                     t.releases(), t.runs(), t.misses(), t.missPct(), t.skipped(), t.staleRuns(), t.errors(),
                     us(t.execUs().p50()), us(t.execUs().p99()), us(t.execUs().max()),
                     us(t.latenessUs().p50()), us(t.latenessUs().p99()), us(t.latenessUs().max())));

@@ -6,13 +6,13 @@ import java.util.regex.Pattern;
 
 /**
  * Parses and prints the human durations used on the command line and in files:
- * {@code 10ms}, {@code 2.5ms}, {@code 500us}, {@code 1s}, {@code 250ns}, {@code 2m}. A bare
+ * {@code 10ms}, {@code 2.5ms}, {@code 500us}, {@code 1s}, {@code 250ns}, {@code 2m}, {@code 1h}. A bare
  * number is milliseconds, the unit the paper uses for periods.
  */
 public final class Durations {
 
     private static final Pattern FORMAT =
-            Pattern.compile("\\s*([0-9]+(?:\\.[0-9]+)?|\\.[0-9]+)\\s*(ns|us|µs|ms|s|m|min)?\\s*");
+            Pattern.compile("\\s*([0-9]+(?:\\.[0-9]+)?|\\.[0-9]+)\\s*(ns|us|µs|ms|s|min|m|h)?\\s*");
 
     private Durations() {
     }
@@ -37,6 +37,7 @@ public final class Durations {
             case "us", "µs" -> 1e3;
             case "ms" -> 1e6;
             case "s" -> 1e9;
+            case "h" -> 3600e9;
             default -> 60e9;
         };
         double ns = value * nanosPerUnit;
@@ -56,8 +57,9 @@ public final class Durations {
 
     /**
      * @param ns a duration in nanoseconds
-     * @return a short human form: {@code 10ms}, {@code 2.5ms}, {@code 750us}, {@code 2s};
-     *     negative spans get a minus sign ({@code -5ms})
+     * @return a short human form that reads back to the same nanoseconds: {@code 10ms},
+     *     {@code 2.5ms}, {@code 750us}, {@code 1000.1us}, {@code 1ns}, {@code 2s}; negative
+     *     spans get a minus sign ({@code -5ms})
      */
     public static String format(long ns) {
         if (ns < 0 && ns != Long.MIN_VALUE) {
@@ -66,19 +68,41 @@ public final class Durations {
         if (ns % 1_000_000_000L == 0 && ns != 0) {
             return ns / 1_000_000_000L + "s";
         }
-        if (ns >= 1_000_000L) {
-            return trim(ns / 1e6) + "ms";
+        if (ns >= 1_000_000L && ns % 1_000L == 0) {
+            return decimal(ns / 1_000L, 3) + "ms";
         }
         if (ns >= 1_000L) {
-            return trim(ns / 1e3) + "us";
+            return decimal(ns, 3) + "us";
         }
         return ns + "ns";
     }
 
-    private static String trim(double v) {
-        if (v == Math.rint(v)) {
-            return Long.toString((long) v);
+    /**
+     * Prints a period or time given in milliseconds (as reports hold them) like {@link #format}.
+     *
+     * @param ms milliseconds; rounded to the nanosecond
+     * @return e.g. {@code 10ms}, {@code 1ns} for 1e-6 ms, or {@code -} when there is no finite value
+     */
+    public static String formatMillis(double ms) {
+        if (!Double.isFinite(ms)) {
+            return "-";
         }
-        return String.format(Locale.ROOT, "%.3f", v).replaceAll("0+$", "");
+        double ns = ms * 1e6;
+        if (Math.abs(ns) >= Long.MAX_VALUE / 2.0) {
+            return String.format(Locale.ROOT, "%.3gs", ms / 1e3);
+        }
+        return format(Math.round(ns));
+    }
+
+    /** @return units / 10^decimals without trailing zeros, e.g. (1001, 3) gives 1.001 */
+    private static String decimal(long units, int decimals) {
+        long scale = (long) Math.pow(10, decimals);
+        long whole = units / scale;
+        long fraction = units % scale;
+        if (fraction == 0) {
+            return Long.toString(whole);
+        }
+        String digits = String.format(Locale.ROOT, "%0" + decimals + "d", fraction).replaceAll("0+$", "");
+        return whole + "." + digits;
     }
 }

@@ -43,6 +43,11 @@ public final class TraceRecorder implements MonitorListener {
 
     /** Default ring capacity in events (about 29 MB). */
     public static final int DEFAULT_CAPACITY = 1 << 20;
+    /**
+     * Heap bytes one slot of the ring takes: a type byte, an int subject and three longs (the
+     * arrays are allocated in full when the recorder is made).
+     */
+    public static final int BYTES_PER_EVENT = 1 + 4 + 3 * 8;
 
     private static final byte CYCLE = 1;
     private static final byte MISS = 2;

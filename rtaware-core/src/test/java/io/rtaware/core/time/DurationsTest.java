@@ -46,4 +46,25 @@ class DurationsTest {
         assertEquals("-5ms", Durations.format(-5_000_000L), "negative spans keep their unit");
         assertEquals(Durations.parseNanos("2.5ms"), Durations.parseNanos(Durations.format(2_500_000L)), "round trip");
     }
+
+    @Test
+    void acceptsHoursLikeMinutes() {
+        assertEquals(3_600_000_000_000L, Durations.parseNanos("1h"), "1h");
+        assertEquals(5_400_000_000_000L, Durations.parseNanos("1.5h"), "1.5h");
+    }
+
+    @Test
+    void formatsEveryDurationExactlyNeverADanglingPoint() {
+        assertEquals("1ns", Durations.format(1), "1 ns");
+        assertEquals("1000.1us", Durations.format(1_000_100L), "not 1.ms");
+        assertEquals("1.001ms", Durations.format(1_001_000L), "three decimals of ms");
+        assertEquals("1ns", Durations.formatMillis(1e-6), "a period of 1e-6 ms");
+        assertEquals("10ms", Durations.formatMillis(10.0), "whole ms");
+        assertEquals("2.5ms", Durations.formatMillis(2.5), "fractional ms");
+        assertEquals("0ns", Durations.formatMillis(1e-300), "below a nanosecond");
+        assertEquals("-", Durations.formatMillis(Double.NaN), "no value");
+        for (long ns : new long[] {1, 999, 1_000, 1_001, 999_999, 1_000_001, 123_456_789L, 60_000_000_001L}) {
+            assertEquals(ns, Durations.parseNanos(Durations.format(ns)), "round trip of " + ns + " ns");
+        }
+    }
 }

@@ -42,7 +42,11 @@ public record Trajectory(int set, int run, double[] xM, double[] yM) {
                 continue;
             }
             try {
-                points.add(new double[] {Double.parseDouble(f[1]), Double.parseDouble(f[2])});
+                double x = Double.parseDouble(f[1]);
+                double y = Double.parseDouble(f[2]);
+                if (Double.isFinite(x) && Double.isFinite(y)) {
+                    points.add(new double[] {x, y}); // a pose the run did not have (NaN) is no point of the path
+                }
             } catch (NumberFormatException e) {
                 throw new IOException(file + ": not a number in line '" + line + "'", e);
             }

@@ -9,10 +9,14 @@ import java.io.BufferedInputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.util.Iterator;
 import java.util.Locale;
 import javax.imageio.ImageIO;
+import javax.imageio.ImageReader;
+import javax.imageio.stream.ImageInputStream;
 
 /**
  * Loads ROS {@code map_server} maps: a YAML file with {@code image} (PGM P5/P2 or PNG, relative
@@ -22,6 +26,12 @@ import javax.imageio.ImageIO;
  * {@code occupied_thresh} the cell is occupied, below {@code free_thresh} free, otherwise
  * unknown. Image row 0 is the top of the map (largest y). Only {@code origin} yaw 0 is
  * supported. Colour images use the mean of their colour channels.
+ *
+ * <p>Limits, checked before anything large is allocated: the image's width x height (read
+ * from its header, before any pixel is decoded) must be at most {@link #maxPixels()}, half of
+ * the JVM's maximum heap at {@value #PEAK_BYTES_PER_PIXEL} bytes per pixel (what loading and
+ * the simulator's distance field take at their peak); {@code resolution} must be from
+ * {@value #MIN_RESOLUTION_M} to {@value #MAX_RESOLUTION_M} metres per pixel.
  *
  * <p>Every failure is a {@link MapException} with a one-line message naming the file, the field
  * and the value. Stateless and thread-safe.
@@ -39,20 +49,49 @@ public final class MapLoader {
         InputStream open(String relativeName) throws IOException;
     }
 
+    /**
+     * Heap bytes per map pixel at the peak of loading: the decoded pixel values (4), the cell
+     * states (up to 8), the image itself (up to 8 for 16-bit RGBA), and the map's cells (1),
+     * distance field (4) and its squared-distance pass (8), plus slack for the pass's row buffers.
+     */
+    public static final int PEAK_BYTES_PER_PIXEL = 40;
+    /** Finest resolution accepted, metres per pixel. */
+    public static final double MIN_RESOLUTION_M = 0.001;
+    /** Coarsest resolution accepted, metres per pixel. */
+    public static final double MAX_RESOLUTION_M = 100;
+
     private static final ObjectMapper YAML = new ObjectMapper(new YAMLFactory());
 
     private MapLoader() {
     }
 
     /**
+     * @return the most pixels a map image may have in this JVM: half the maximum heap
+     *     ({@code -Xmx}) divided by {@value #PEAK_BYTES_PER_PIXEL} bytes per pixel
+     */
+    public static long maxPixels() {
+        return Runtime.getRuntime().maxMemory() / 2 / PEAK_BYTES_PER_PIXEL;
+    }
+
+    /**
      * @param yamlFile the map YAML file
      * @return the loaded map
-     * @throws MapException if the file or its image is missing or malformed
+     * @throws MapException if the file or its image is missing, malformed or too large for the heap
      */
     public static OccupancyMap load(Path yamlFile) {
+        return load(yamlFile, maxPixels());
+    }
+
+    /**
+     * @param yamlFile the map YAML file
+     * @param maxPixels the most pixels the image may have
+     * @return the loaded map
+     * @throws MapException if the file or its image is missing, malformed or too large
+     */
+    public static OccupancyMap load(Path yamlFile, long maxPixels) {
         Path dir = yamlFile.toAbsolutePath().getParent();
         try (InputStream in = Files.newInputStream(yamlFile)) {
-            return load(yamlFile.toString(), in, name -> Files.newInputStream(dir.resolve(name)));
+            return load(yamlFile.toString(), in, name -> Files.newInputStream(dir.resolve(name)), maxPixels);
         } catch (NoSuchFileException e) {
             throw new MapException(yamlFile + ": file not found");
         } catch (IOException e) {
@@ -65,9 +104,21 @@ public final class MapLoader {
      * @param yaml the YAML content
      * @param opener opens the image named in the YAML
      * @return the loaded map
-     * @throws MapException if the YAML or its image is malformed
+     * @throws MapException if the YAML or its image is malformed or too large for the heap
      */
     public static OccupancyMap load(String sourceName, InputStream yaml, Opener opener) {
+        return load(sourceName, yaml, opener, maxPixels());
+    }
+
+    /**
+     * @param sourceName the name of the YAML used in messages
+     * @param yaml the YAML content
+     * @param opener opens the image named in the YAML
+     * @param maxPixels the most pixels the image may have
+     * @return the loaded map
+     * @throws MapException if the YAML or its image is malformed or too large
+     */
+    public static OccupancyMap load(String sourceName, InputStream yaml, Opener opener, long maxPixels) {
         JsonNode root;
         try {
             root = YAML.readTree(yaml);
@@ -83,8 +134,9 @@ public final class MapLoader {
         }
         String image = imageNode.asText();
         double resolution = number(sourceName, root, "resolution");
-        if (!(resolution > 0) || Double.isInfinite(resolution)) {
-            throw new MapException(sourceName + ": field 'resolution' must be positive, got " + resolution);
+        if (!(resolution >= MIN_RESOLUTION_M && resolution <= MAX_RESOLUTION_M)) {
+            throw new MapException(sourceName + ": field 'resolution' must be from " + MIN_RESOLUTION_M + " to "
+                    + (long) MAX_RESOLUTION_M + " metres per pixel, got " + resolution);
         }
         JsonNode origin = required(sourceName, root, "origin");
         if (!origin.isArray() || origin.size() != 3 || !origin.get(0).isNumber()
@@ -116,7 +168,10 @@ public final class MapLoader {
         GrayImage gray;
         String imageName = sourceName + " -> " + image;
         try (InputStream in = new BufferedInputStream(opener.open(image))) {
-            gray = readImage(imageName, image, in);
+            gray = readImage(imageName, image, in, maxPixels);
+        } catch (InvalidPathException e) {
+            throw new MapException(sourceName + ": field 'image' is not a file name this system can use ("
+                    + e.getReason() + "; with LC_ALL=C only ASCII names work), got " + image);
         } catch (NoSuchFileException e) {
             throw new MapException(sourceName + ": field 'image' names a missing file, got " + image);
         } catch (IOException e) {
@@ -147,14 +202,25 @@ public final class MapLoader {
     private record GrayImage(int width, int height, int maxValue, int[] values) {
     }
 
-    private static GrayImage readImage(String name, String image, InputStream in) throws IOException {
+    private static GrayImage readImage(String name, String image, InputStream in, long maxPixels) throws IOException {
         String lower = image.toLowerCase(Locale.ROOT);
         if (lower.endsWith(".pgm")) {
-            return readPgm(name, in);
+            return readPgm(name, in, maxPixels);
         }
-        BufferedImage img = ImageIO.read(in);
-        if (img == null) {
-            throw new MapException(name + ": field 'image' is not a PGM or a readable PNG, got " + image);
+        BufferedImage img;
+        try (ImageInputStream stream = ImageIO.createImageInputStream(in)) {
+            Iterator<ImageReader> readers = stream == null ? null : ImageIO.getImageReaders(stream);
+            if (readers == null || !readers.hasNext()) {
+                throw new MapException(name + ": field 'image' is not a PGM or a readable PNG, got " + image);
+            }
+            ImageReader reader = readers.next();
+            try {
+                reader.setInput(stream, true, true);
+                checkSize(name, reader.getWidth(0), reader.getHeight(0), maxPixels);
+                img = reader.read(0);
+            } finally {
+                reader.dispose();
+            }
         }
         Raster raster = img.getRaster();
         int bands = raster.getNumBands();
@@ -179,7 +245,17 @@ public final class MapLoader {
         return new GrayImage(w, h, max, values);
     }
 
-    private static GrayImage readPgm(String name, InputStream in) throws IOException {
+    private static void checkSize(String name, int width, int height, long maxPixels) {
+        long pixels = (long) width * height;
+        if (pixels > maxPixels) {
+            throw new MapException(String.format(Locale.ROOT, "%s: the image is %d x %d pixels (%d); this JVM's heap "
+                    + "allows maps of at most %d pixels (%d bytes per pixel while loading, half the heap): use a smaller "
+                    + "image, or raise the heap (RTAWARE_JAVA_OPTS=\"-Xmx4g ...\", see README, Troubleshooting and limits)",
+                    name, width, height, pixels, maxPixels, PEAK_BYTES_PER_PIXEL));
+        }
+    }
+
+    private static GrayImage readPgm(String name, InputStream in, long maxPixels) throws IOException {
         String magic = token(name, in);
         boolean binary;
         if ("P5".equals(magic)) {
@@ -195,9 +271,7 @@ public final class MapLoader {
         if (max > 65535) {
             throw new MapException(name + ": PGM maxval must be at most 65535, got " + max);
         }
-        if ((long) w * h > 100_000_000L) {
-            throw new MapException(name + ": PGM size too large, got " + w + "x" + h);
-        }
+        checkSize(name, w, h, Math.min(maxPixels, Integer.MAX_VALUE / 2));
         int[] values = new int[w * h];
         if (binary) {
             int bytesPer = max < 256 ? 1 : 2;

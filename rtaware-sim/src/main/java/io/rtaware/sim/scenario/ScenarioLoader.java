@@ -12,6 +12,7 @@ import java.io.FileNotFoundException;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -46,7 +47,13 @@ public final class ScenarioLoader {
         if (PAPER_ROOM.equals(nameOrPath)) {
             return builtIn(PAPER_ROOM);
         }
-        return load(Path.of(nameOrPath));
+        try {
+            return load(Path.of(nameOrPath));
+        } catch (InvalidPathException e) {
+            throw new ScenarioException("scenario '" + nameOrPath + "' is not a file name this system can use ("
+                    + e.getReason() + "); the JVM reads file names in the locale's encoding, so with LC_ALL=C only ASCII "
+                    + "names work: use a UTF-8 locale (LC_ALL=C.UTF-8) or an ASCII path");
+        }
     }
 
     /**
@@ -126,6 +133,9 @@ public final class ScenarioLoader {
                 map = Optional.of(maps.load(mapNode.asText()));
             } catch (MapException e) {
                 throw new ScenarioException(source + ": field 'map' (" + mapNode.asText() + "): " + e.getMessage(), e);
+            } catch (InvalidPathException e) {
+                throw new ScenarioException(source + ": field 'map' is not a file name this system can use ("
+                        + e.getReason() + "; with LC_ALL=C only ASCII names work), got " + mapNode.asText());
             }
         }
         JsonNode startNode = required(source, root, "start");

@@ -1,8 +1,7 @@
 package io.rtaware.app.bench.compare;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.PropertyNamingStrategies;
-import com.fasterxml.jackson.databind.SerializationFeature;
+import io.rtaware.core.report.ReportDocument;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
@@ -32,9 +31,8 @@ public record CompareReport(String schema, int tasks, double periodMs, double wo
     /** The JSON schema name. */
     public static final String SCHEMA = "rtaware.bench-compare/1";
 
-    private static final ObjectMapper MAPPER = new ObjectMapper()
-            .setPropertyNamingStrategy(PropertyNamingStrategies.SNAKE_CASE)
-            .enable(SerializationFeature.INDENT_OUTPUT);
+    /** rtaware's JSON settings: snake_case, indented, a non-finite number written as null. */
+    private static final ObjectMapper MAPPER = ReportDocument.mapper();
 
     /**
      * @param file where to write the JSON

@@ -1,5 +1,6 @@
 package io.rtaware.app.bench.compare;
 
+import io.rtaware.core.report.Rounding;
 import org.HdrHistogram.Histogram;
 
 /**
@@ -57,6 +58,6 @@ final class ExecutorTotals {
     }
 
     static double round1(double v) {
-        return Math.round(v * 10.0) / 10.0;
+        return Rounding.toDecimals(v, 1);
     }
 }

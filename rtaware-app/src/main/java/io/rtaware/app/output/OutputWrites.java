@@ -1,0 +1,83 @@
+package io.rtaware.app.output;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.io.UncheckedIOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+
+/**
+ * The writes of one command's outputs, each on its own: a write that fails (a full disk, a file
+ * replaced by a folder meanwhile) is printed as one line naming the file and the reason, is
+ * remembered, and does not stop the others, so what can still be written is. The command then
+ * ends with {@link #exitStatus(int)}. Not thread-safe; use it from one thread (e.g. a
+ * termination handler).
+ */
+public final class OutputWrites {
+
+    /** Exit status of a command whose work finished but some output could not be written. */
+    public static final int EXIT_WRITE_FAILED = 1;
+
+    /** A write of one file. */
+    @FunctionalInterface
+    public interface Write {
+        /**
+         * @throws IOException if writing fails
+         */
+        void run() throws IOException;
+    }
+
+    private final PrintStream err;
+    private final List<Path> written = new ArrayList<>();
+    private final List<String> failures = new ArrayList<>();
+
+    /** @param err where a failure's line goes */
+    public OutputWrites(PrintStream err) {
+        this.err = err;
+    }
+
+    /**
+     * @param file the file written (named in a failure)
+     * @param write what writes it
+     * @return true if it was written
+     */
+    public boolean write(Path file, Write write) {
+        try {
+            write.run();
+            written.add(file);
+            return true;
+        } catch (IOException | UncheckedIOException | SecurityException e) {
+            Exception cause = e instanceof UncheckedIOException u ? u.getCause() : e;
+            String line = "could not write " + file + ": " + OutputFile.reason(cause);
+            failures.add(line);
+            err.println("rtaware: " + line);
+            err.flush();
+            return false;
+        }
+    }
+
+    /** @return the files written, in order */
+    public List<Path> written() {
+        return Collections.unmodifiableList(written);
+    }
+
+    /** @return one line per failed write */
+    public List<String> failures() {
+        return Collections.unmodifiableList(failures);
+    }
+
+    /** @return true if any write failed */
+    public boolean failed() {
+        return !failures.isEmpty();
+    }
+
+    /**
+     * @param status the command's status from its own work
+     * @return that status, or {@link #EXIT_WRITE_FAILED} if it was 0 and a write failed
+     */
+    public int exitStatus(int status) {
+        return status == 0 && failed() ? EXIT_WRITE_FAILED : status;
+    }
+}

@@ -1,0 +1,98 @@
+package io.rtaware.app;
+
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import io.rtaware.app.bench.BenchCommand;
+import io.rtaware.app.cli.MemoryBudget;
+import io.rtaware.app.run.RunCommand;
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import picocli.CommandLine;
+
+/** Configurations that cannot work end with one line and exit status 2, before anything runs. */
+class LimitsCliTest {
+
+    private static final long HEAP_512_MB = 512L * 1024 * 1024;
+
+    @TempDir
+    Path dir;
+
+    /** Commands as the launcher's default JVM (-Xmx512m) would see them, whatever heap the tests run in. */
+    private static final CommandLine.IFactory HEAP_512 = new CommandLine.IFactory() {
+        @Override
+        @SuppressWarnings("unchecked")
+        public <K> K create(Class<K> cls) throws Exception {
+            if (cls == BenchCommand.class) {
+                return (K) new BenchCommand(() -> new MemoryBudget(HEAP_512_MB, 0));
+            }
+            if (cls == RunCommand.class) {
+                return (K) new RunCommand(() -> new MemoryBudget(HEAP_512_MB, 0));
+            }
+            return CommandLine.defaultFactory().create(cls);
+        }
+    };
+
+    @Test
+    void benchWithMoreTasksThanTheHeapHoldsIsRefusedWithTheNumbers() {
+        CliRun r = CliRun.of(HEAP_512, "bench", "--tasks", "100000", "--duration", "1s");
+        r.assertOneLineUserError("100000 task(s)");
+        assertTrue(r.err().contains("KB of monitor bookkeeping per task") && r.err().contains("GB of heap"), r.err());
+        assertTrue(r.err().contains("-Xmx"), "says how to raise it: " + r.err());
+        assertFalse(r.out().contains("rtaware bench:"), "nothing ran");
+    }
+
+    @Test
+    void aTraceCapacityThatCannotFitIsRefused() {
+        String trace = dir.resolve("t.json").toString();
+        CliRun.of(HEAP_512, "bench", "--trace", trace, "--trace-capacity", "2000000000", "--duration", "1s")
+                .assertOneLineUserError("--trace-capacity 2000000000 (29 bytes per event)");
+        CliRun.of(HEAP_512, "run", "--trace", trace, "--trace-capacity", "2000000000", "--out",
+                dir.resolve("run").toString(), "--quiet").assertOneLineUserError("--trace-capacity 2000000000");
+    }
+
+    @Test
+    void budgetArithmeticSaturates() {
+        assertTrue(MemoryBudget.times(Long.MAX_VALUE / 2, 29) == Long.MAX_VALUE);
+        assertTrue(MemoryBudget.add(Long.MAX_VALUE, 1) == Long.MAX_VALUE);
+    }
+
+    @Test
+    void timeScaleIsBoundedInEveryCommand() {
+        for (String command : new String[] {"run", "bench", "sim", "experiment"}) {
+            CliRun.of(command, "--time-scale", "1e-300").assertOneLineUserError("time scale '1e-300' is out of range");
+            CliRun.of(command, "--time-scale", "1e300").assertOneLineUserError("time scale '1e300' is out of range");
+        }
+    }
+
+    @Test
+    void liveBindThatDoesNotResolveIsOneLine() {
+        CliRun.of("bench", "--live", "--live-bind", "no.such.invalid", "--duration", "1s")
+                .assertOneLineUserError("--live-bind: cannot resolve 'no.such.invalid'");
+        CliRun.of("run", "--live", "--live-bind", "no.such.invalid", "--out", dir.resolve("r").toString(), "--quiet")
+                .assertOneLineUserError("--live-bind: cannot resolve 'no.such.invalid'");
+    }
+
+    @Test
+    void liveBindToAForeignAddressIsOneLine() {
+        CliRun.of("bench", "--live", "--live-bind", "8.8.8.8", "--duration", "200ms", "--quiet")
+                .assertOneLineUserError("cannot serve the live view on 8.8.8.8:0");
+        CliRun.of("run", "--live", "--live-bind", "8.8.8.8", "--out", dir.resolve("r").toString(), "--quiet")
+                .assertOneLineUserError("cannot serve the live view on 8.8.8.8:0");
+    }
+
+    @Test
+    void livePortInUseIsOneLine() throws IOException {
+        try (ServerSocket taken = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            String port = Integer.toString(taken.getLocalPort());
+            CliRun.of("bench", "--live", "--live-port", port, "--duration", "200ms", "--quiet")
+                    .assertOneLineUserError("cannot serve the live view on 127.0.0.1:" + port);
+            CliRun.of("run", "--live", "--live-port", port, "--out", dir.resolve("r").toString(), "--quiet")
+                    .assertOneLineUserError("cannot serve the live view on 127.0.0.1:" + port);
+        }
+    }
+}

@@ -1,0 +1,150 @@
+package io.rtaware.experiment;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import io.rtaware.core.report.ReportDocument;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.TreeMap;
+
+/**
+ * The plan of an experiment as stored in its folder ({@value #FILE_NAME}, schema
+ * {@value #SCHEMA}: {@code sets} with their names and periods, {@code runs_per_set},
+ * {@code scenario}, {@code time_scale}, {@code seed}, {@code grid_resolution_m}), so that
+ * {@code experiment --resume --out DIR} continues exactly the experiment that is there. A folder
+ * made before this file existed gives its plan from {@code experiment.json} and the sets named in
+ * {@code results.csv} ({@link #fromFolder}). Stateless.
+ */
+public final class PlanFile {
+
+    /** The file's name inside an experiment folder. */
+    public static final String FILE_NAME = "plan.json";
+    /** Its schema. */
+    public static final String SCHEMA = "rtaware.experiment-plan/1";
+
+    private static final ObjectMapper MAPPER = ReportDocument.mapper();
+
+    private PlanFile() {
+    }
+
+    /**
+     * @param dir an experiment folder
+     * @param plan its plan
+     * @throws IOException if writing fails
+     */
+    public static void write(Path dir, ExperimentPlan plan) throws IOException {
+        ObjectNode root = MAPPER.createObjectNode();
+        root.put("schema", SCHEMA);
+        var sets = root.putArray("sets");
+        for (PeriodSet s : plan.sets()) {
+            ObjectNode set = sets.addObject();
+            set.put("name", s.name());
+            ObjectNode periods = set.putObject("periods_ms");
+            s.periodsMs().forEach(periods::put);
+        }
+        RunConditions c = plan.conditions();
+        root.put("runs_per_set", plan.runsPerSet());
+        root.put("scenario", c.scenario());
+        root.put("time_scale", c.timeScale());
+        root.put("seed", c.seed());
+        if (c.gridResolutionM() == null) {
+            root.putNull("grid_resolution_m");
+        } else {
+            root.put("grid_resolution_m", c.gridResolutionM());
+        }
+        Files.writeString(dir.resolve(FILE_NAME), MAPPER.writeValueAsString(root) + "\n");
+    }
+
+    /**
+     * @param dir an experiment folder
+     * @return its stored plan, if {@value #FILE_NAME} is there
+     * @throws IOException if it cannot be read
+     * @throws ExperimentInputException if it is malformed (naming the field)
+     */
+    public static Optional<ExperimentPlan> read(Path dir) throws IOException {
+        Path file = dir.resolve(FILE_NAME);
+        if (!Files.exists(file)) {
+            return Optional.empty();
+        }
+        JsonNode root;
+        try {
+            root = MAPPER.readTree(file.toFile());
+        } catch (IOException e) {
+            throw new ExperimentInputException(file + ": not valid JSON: " + firstLine(e.getMessage()));
+        }
+        if (root == null || !SCHEMA.equals(root.path("schema").asText())) {
+            throw new ExperimentInputException(file + ": not an rtaware plan (schema is not " + SCHEMA + ")");
+        }
+        try {
+            List<PeriodSet> sets = new ArrayList<>();
+            for (JsonNode s : required(root, "sets")) {
+                Map<String, Long> periods = new LinkedHashMap<>();
+                required(s, "periods_ms").fields().forEachRemaining(e -> periods.put(e.getKey(), e.getValue().asLong()));
+                sets.add(new PeriodSet(required(s, "name").asText(), periods));
+            }
+            JsonNode grid = root.path("grid_resolution_m");
+            RunConditions conditions = new RunConditions(required(root, "scenario").asText(),
+                    required(root, "time_scale").asDouble(), required(root, "seed").asLong(),
+                    grid.isNumber() ? grid.asDouble() : null);
+            return Optional.of(new ExperimentPlan(sets, required(root, "runs_per_set").asInt(), conditions));
+        } catch (IllegalArgumentException e) {
+            throw new ExperimentInputException(file + ": " + e.getMessage());
+        }
+    }
+
+    /**
+     * The plan of the experiment in a folder: {@value #FILE_NAME}; or, for a folder made before
+     * it existed, {@code experiment.json} (scenario, time scale, seed, grid, runs) and the sets of
+     * {@code results.csv} (which must name sets 1 to N without a gap, or a set's periods are unknown).
+     *
+     * @param dir an experiment folder
+     * @return its plan
+     * @throws IOException if a file cannot be read
+     * @throws ExperimentInputException if the folder does not say what its plan was
+     */
+    public static ExperimentPlan fromFolder(Path dir) throws IOException {
+        Optional<ExperimentPlan> stored = read(dir);
+        if (stored.isPresent()) {
+            return stored.get();
+        }
+        Path csv = dir.resolve(ResultsCsv.FILE_NAME);
+        List<RunResult> rows = Files.exists(csv) ? ResultsCsv.read(csv) : List.of();
+        if (rows.isEmpty()) {
+            throw new ExperimentInputException(dir + " holds neither " + FILE_NAME + " nor a run in " + ResultsCsv.FILE_NAME
+                    + ": nothing tells what to resume");
+        }
+        TreeMap<Integer, PeriodSet> sets = new TreeMap<>();
+        rows.forEach(r -> sets.putIfAbsent(r.set(), r.periods()));
+        if (sets.lastKey() != sets.size()) {
+            int missing = 1;
+            while (sets.containsKey(missing)) {
+                missing++;
+            }
+            throw new ExperimentInputException(dir + " has no " + FILE_NAME + " and " + ResultsCsv.FILE_NAME
+                    + " has no run of set " + missing + ", so its periods are unknown; give --sets again without --resume");
+        }
+        ExperimentProfile profile = ExperimentProfile.read(dir).orElse(ExperimentProfile.fromResults(rows));
+        int runs = Math.max(profile.runsPerSet(), rows.stream().mapToInt(RunResult::run).max().orElse(1));
+        return new ExperimentPlan(new ArrayList<>(sets.values()), runs, new RunConditions(profile.scenario(),
+                profile.timeScale(), profile.seed(), profile.gridResolutionM()));
+    }
+
+    private static JsonNode required(JsonNode node, String field) {
+        JsonNode n = node.get(field);
+        if (n == null || n.isNull()) {
+            throw new IllegalArgumentException("field '" + field + "' is missing");
+        }
+        return n;
+    }
+
+    private static String firstLine(String s) {
+        return s == null ? "" : s.lines().findFirst().orElse("");
+    }
+}
