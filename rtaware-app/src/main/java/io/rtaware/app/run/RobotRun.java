@@ -36,6 +36,7 @@ import io.rtaware.sim.scenario.ScenarioLoader;
 import io.rtaware.sim.server.PlayerSimServer;
 import io.rtaware.sim.server.ServerConfig;
 import io.rtaware.sim.server.SimCommandSupport;
+import io.rtaware.sim.world.RobotModel;
 import io.rtaware.sim.world.World;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -44,9 +45,11 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.LockSupport;
+import java.util.function.Supplier;
 
 /**
  * One robot run of the paper's course: the composition root of {@code rtaware run}. Starts the
@@ -92,6 +95,7 @@ public final class RobotRun {
      */
     public int execute() throws IOException {
         Scenario scenario = loadScenario();
+        RobotModel model = robotModel(scenario);
         Clock clock = Clock.forTimeScale(options.timeScale());
 
         PlayerSimServer server = null;
@@ -101,14 +105,14 @@ public final class RobotRun {
             if (scenario.map().isEmpty()) {
                 throw new UserError("scenario '" + scenario.name() + "' has no map; the built-in simulator needs one (or use --player HOST:PORT)");
             }
-            server = SimCommandSupport.start(scenario, clock, ServerConfig.defaults(0), options.seed());
+            server = SimCommandSupport.start(scenario, model, clock, ServerConfig.defaults(0), options.seed());
             host = ServerConfig.LOOPBACK;
             port = server.port();
         } else {
             checkReachable(host, port);
         }
         try {
-            return runAgainst(scenario, clock, host, port, server);
+            return runAgainst(scenario, model, clock, host, port, server);
         } finally {
             if (server != null) {
                 server.close();
@@ -128,6 +132,23 @@ public final class RobotRun {
         }
     }
 
+    /**
+     * The robot model: {@code --robot} if given (keeping the scenario's overrides when it names
+     * the same model), else the scenario's {@code robot:} section, else the Koala; then
+     * {@code --top-speed} if given.
+     */
+    private RobotModel robotModel(Scenario scenario) {
+        RobotModel base = scenario.robot().orElse(null);
+        String name = options.robot() != null ? options.robot() : base != null ? base.name() : RobotModel.KOALA_NAME;
+        try {
+            RobotModel model = base != null && base.name().equals(name) ? base
+                    : RobotModel.named(name, RobotModel.PAPER_TOP_SPEED_MPS);
+            return options.topSpeedMps() == null ? model : model.withTopSpeed(options.topSpeedMps());
+        } catch (IllegalArgumentException e) {
+            throw new UserError(e.getMessage());
+        }
+    }
+
     private Scenario loadScenario() {
         try {
             return ScenarioLoader.load(options.scenario());
@@ -136,9 +157,9 @@ public final class RobotRun {
         }
     }
 
-    private int runAgainst(Scenario scenario, Clock clock, String host, int port, PlayerSimServer server)
-            throws IOException {
-        NavConfig navConfig = navConfig(scenario);
+    private int runAgainst(Scenario scenario, RobotModel model, Clock clock, String host, int port,
+                           PlayerSimServer server) throws IOException {
+        NavConfig navConfig = navConfig(scenario, model);
         NavController nav = new NavController(navConfig);
         PlayerDataTask player = new PlayerDataTask(PlayerConfig.of(host, port).withReconnect(true, 500, 8000));
 
@@ -157,6 +178,9 @@ public final class RobotRun {
         List<Referee> refereeHolder = new ArrayList<>(1);
         CourseStatus course = new CourseStatus();
         long[] startNs = new long[1];
+        List<RunSection.WaypointPass> passes = new CopyOnWriteArrayList<>();
+        Supplier<Pose2d> truthNow = server != null ? () -> server.withWorld(World::pose)
+                : () -> refereeHolder.isEmpty() ? null : refereeHolder.get(0).latest();
         RunArtifacts artifacts = new RunArtifacts(options, scenario, navConfig, out);
         LiveView live = LiveView.start(options.live(), monitor, new RunScene(scenario.name(), scenario.map().orElse(null),
                 scenario.waypoints(), nav.keys(), nav::mediatorCounts, outcome::get), out);
@@ -173,7 +197,7 @@ public final class RobotRun {
             monitor.read(nav.keys().course(), course);
             long collisions = server != null ? server.withWorld(World::contactCount) : stallEdges.get();
             RunSection run = runSection(scenario, nav, course, referee, outcome.get(), reason.get(),
-                    clock.nanos() - startNs[0], collisions, server != null);
+                    clock.nanos() - startNs[0], collisions, server != null, List.copyOf(passes), model);
             live.finish(report, run);
             artifacts.write(report, run, referee, nav.finalMap().orElse(null),
                     scenario.map().orElse(null));
@@ -191,10 +215,11 @@ public final class RobotRun {
         if (!options.quiet()) {
             err.printf(Locale.ROOT, "rtaware run: scenario %s, periods %s, time scale x%s, robot %s:%d (%s), ground truth from %s%n",
                     scenario.name(), options.periods(), trim(options.timeScale()), host, port,
-                    server != null ? "built-in simulator" : "external Player server", referee.kind());
+                    server != null ? "built-in simulator, " + model.describe() : "external Player server",
+                    referee.kind());
         }
 
-        supervise(scenario, clock, startNs[0], monitor, nav, referee, course, outcome, reason);
+        supervise(scenario, clock, startNs[0], monitor, nav, referee, course, outcome, reason, truthNow, passes);
         CommandMonitor.stop(monitor, hook);
         live.close();
         return switch (outcome.get()) {
@@ -215,7 +240,8 @@ public final class RobotRun {
     /** Watches the run until it ends; records the outcome. Returns when the run is over. */
     private void supervise(Scenario scenario, Clock clock, long startNs, Monitor monitor, NavController nav,
                            Referee referee, CourseStatus course, AtomicReference<String> outcome,
-                           AtomicReference<String> reason) {
+                           AtomicReference<String> reason, Supplier<Pose2d> truthNow,
+                           List<RunSection.WaypointPass> passes) {
         long pollWallNs = Math.max(1_000_000L, Math.min(50_000_000L, (long) (50_000_000L / options.timeScale())));
         long lastStatusWallNs = System.nanoTime();
         Odometry odometry = new Odometry();
@@ -233,6 +259,7 @@ public final class RobotRun {
             double elapsedS = (clock.nanos() - startNs) / 1e9;
             monitor.read(nav.keys().course(), course);
             long odometryGeneration = monitor.read(RobotKeys.ODOMETRY, odometry);
+            recordPasses(scenario, course, odometry, truthNow, elapsedS, passes);
             monitor.read(RobotKeys.MOTOR, motor);
             if (odometry.stall && !wasStalled) {
                 stallEdges.incrementAndGet();
@@ -278,6 +305,25 @@ public final class RobotRun {
         }
     }
 
+    /**
+     * Records each waypoint the controller has newly counted as passed, with the true and the
+     * believed distance from it at this moment (polled, so up to one poll late).
+     */
+    private static void recordPasses(Scenario scenario, CourseStatus course, Odometry odometry,
+                                     Supplier<Pose2d> truthNow, double elapsedS, List<RunSection.WaypointPass> passes) {
+        int reached = Math.min(course.waypointsReached, scenario.waypoints().size());
+        if (reached <= passes.size()) {
+            return;
+        }
+        Pose2d truth = truthNow.get();
+        for (int i = passes.size(); i < reached; i++) {
+            Point2d wp = scenario.waypoints().get(i);
+            double trueM = truth == null ? Double.NaN : truth.position().distanceTo(wp);
+            double believedM = odometry.pose().position().distanceTo(wp);
+            passes.add(new RunSection.WaypointPass(i, round3(elapsedS), round3(trueM), round3(believedM)));
+        }
+    }
+
     private void printStatus(Monitor monitor, NavController nav, CourseStatus course, double elapsedS,
                              Referee referee, boolean tty) {
         StringBuilder misses = new StringBuilder();
@@ -299,8 +345,9 @@ public final class RobotRun {
         err.flush();
     }
 
-    private NavConfig navConfig(Scenario scenario) {
+    private NavConfig navConfig(Scenario scenario, RobotModel model) {
         NavConfig.Builder b = NavConfig.builder()
+                .topSpeedMps(model.topSpeedMps())
                 .periodsNs(options.periods().nanosByTask())
                 .goalToleranceM(scenario.goalToleranceM())
                 .waypoints(scenario.waypoints());
@@ -366,7 +413,7 @@ public final class RobotRun {
 
     private RunSection runSection(Scenario scenario, NavController nav, CourseStatus course,
                                   Referee referee, String outcome, String why, long elapsedNs, long collisions,
-                                  boolean simulator) {
+                                  boolean simulator, List<RunSection.WaypointPass> passes, RobotModel model) {
         Pose2d last = referee == null ? null : referee.latest();
         Point2d finish = scenario.finish();
         double toFinish = last == null ? Double.NaN : last.position().distanceTo(finish);
@@ -379,7 +426,18 @@ public final class RobotRun {
                 round3(elapsedNs / 1e9), course.waypointsReached, course.waypointsTotal, round3(toFinish),
                 round3(referee == null ? 0 : referee.travelledM()), collisions, mediator,
                 referee == null ? "odometry" : referee.kind(), simulator ? "simulator" : "stall",
-                options.timeScale(), options.seed(), options.gridResolutionM(), counts.staleStops(), why);
+                options.timeScale(), options.seed(), options.gridResolutionM(), counts.staleStops(), why,
+                RunSection.COMPLETED_MEANS, passes, robotModelSection(model, simulator));
+    }
+
+    private static Map<String, Object> robotModelSection(RobotModel model, boolean simulator) {
+        if (simulator) {
+            return model.parameters();
+        }
+        Map<String, Object> external = new LinkedHashMap<>();
+        external.put("name", "external");
+        external.put("top_speed_mps", model.topSpeedMps());
+        return external;
     }
 
     private static double round3(double v) {

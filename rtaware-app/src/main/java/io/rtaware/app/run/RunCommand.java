@@ -4,6 +4,7 @@ import io.rtaware.app.UserError;
 import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.live.LiveMixin;
+import io.rtaware.sim.world.RobotModel;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
@@ -63,6 +64,14 @@ public final class RunCommand implements Callable<Integer> {
             description = "Robot model name for ground truth through simulation:0 (default: ${DEFAULT-VALUE}).")
     String model;
 
+    @Option(names = "--robot", paramLabel = "koala|ideal",
+            description = "Robot model of the built-in simulator: koala (odometry drift, acceleration limits, command latency, URG laser timing) or ideal (the exact point robot of earlier versions); default: the scenario's, else koala.")
+    String robot;
+
+    @Option(names = "--top-speed", paramLabel = "M/S",
+            description = "The controller's top speed in m/s, up to the Koala's 0.6 (default: the scenario's, else the paper's 0.1).")
+    Double topSpeedMps;
+
     @Mixin
     TraceOptions trace;
 
@@ -84,6 +93,13 @@ public final class RunCommand implements Callable<Integer> {
         }
         if (!(gridResolutionM > 0) || gridResolutionM > 2) {
             throw new UserError("--grid-resolution must be in (0, 2] metres, got " + gridResolutionM);
+        }
+        if (robot != null && !robot.equals(RobotModel.KOALA_NAME) && !robot.equals(RobotModel.IDEAL_NAME)) {
+            throw new UserError("--robot must be koala or ideal, got '" + robot + "'");
+        }
+        if (topSpeedMps != null && !(topSpeedMps > 0 && topSpeedMps <= RobotModel.KOALA_MAX_SPEED_MPS)) {
+            throw new UserError("--top-speed must be in (0, " + RobotModel.KOALA_MAX_SPEED_MPS
+                    + "] m/s (the Koala's maximum), got " + topSpeedMps);
         }
         TaskPeriods taskPeriods = periods == null ? TaskPeriods.paperSet4()
                 : TaskPeriods.parse(periods, TaskPeriods.paperSet4());
@@ -107,6 +123,6 @@ public final class RunCommand implements Callable<Integer> {
         Path dir = out != null ? out
                 : Path.of("runs", LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
         return new RunOptions(scenario, taskPeriods, timeScale, host, port, seed, dir, quiet, stuckAfterS,
-                gridResolutionM, model, trace, realtime, live.options());
+                gridResolutionM, model, trace, realtime, live.options(), robot, topSpeedMps);
     }
 }

@@ -1,5 +1,6 @@
 package io.rtaware.app.run;
 
+import java.util.List;
 import java.util.Map;
 
 /**
@@ -8,7 +9,10 @@ import java.util.Map;
  * @param scenario the scenario's name
  * @param periodsMs periods of the four behaviors in ms
  * @param outcome {@code completed}, {@code timeout}, {@code stuck}, {@code interrupted} or {@code error}
- * @param completed true if every waypoint was reached
+ * @param completed true if the run is complete as the paper defines it: the robot, by its own
+ *     estimate (odometry), passed every waypoint and reached the finish within the time limit
+ *     without getting stuck; how near the true pose came is measured separately
+ *     ({@code distanceToFinishM}, {@code waypointPasses})
  * @param runTimeS world seconds from start to the end of the run (to the finish if completed)
  * @param waypointsReached waypoints reached
  * @param waypointsTotal waypoints in the course
@@ -23,10 +27,32 @@ import java.util.Map;
  * @param gridResolutionM the occupancy grid's resolution
  * @param staleStops stops the mediator commanded because the winning request was too old
  * @param reason why the run ended, in words
+ * @param completedMeans the definition of {@code completed}, in words ({@link #COMPLETED_MEANS})
+ * @param waypointPasses for each waypoint the robot believed it passed, in order: when, and
+ *     how far its true and its believed position were from the waypoint then
+ * @param robotModel the simulated robot model's name and parameters ({@code name}: koala or
+ *     ideal); for an external Player server {@code name} is {@code external}
  */
 public record RunSection(String scenario, Map<String, Double> periodsMs, String outcome, boolean completed,
                          double runTimeS, int waypointsReached, int waypointsTotal, double distanceToFinishM,
                          double distanceTravelledM, long collisions, Map<String, Long> mediator,
                          String measuredOn, String collisionsFrom, double timeScale, long seed,
-                         double gridResolutionM, long staleStops, String reason) {
+                         double gridResolutionM, long staleStops, String reason, String completedMeans,
+                         List<WaypointPass> waypointPasses, Map<String, Object> robotModel) {
+
+    /** What {@code completed} means, written into every report. */
+    public static final String COMPLETED_MEANS = "the robot, by its own estimate (odometry), passed every waypoint "
+            + "and reached the finish within the time limit without getting stuck (the paper's definition); "
+            + "distance_to_finish_m and waypoint_passes[].true_distance_m are measured on the true pose";
+
+    /**
+     * One waypoint the robot believed it passed.
+     *
+     * @param index the waypoint's index in the course (the last is the finish)
+     * @param tS world seconds from the start
+     * @param trueDistanceM distance from the true pose to the waypoint then, metres
+     * @param believedDistanceM distance from the robot's odometry pose to the waypoint then, metres
+     */
+    public record WaypointPass(int index, double tS, double trueDistanceM, double believedDistanceM) {
+    }
 }

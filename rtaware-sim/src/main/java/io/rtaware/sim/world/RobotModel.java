@@ -117,6 +117,65 @@ public record RobotModel(String name, RobotConfig body, double maxDecelMps2, lon
         };
     }
 
+    /**
+     * @param mps the controller's new top speed; for the ideal model also the body's
+     * @return a copy with that top speed
+     * @throws IllegalArgumentException if it is not positive or above the body's limit
+     */
+    public RobotModel withTopSpeed(double mps) {
+        if (IDEAL_NAME.equals(name) && isIdeal()) {
+            RobotConfig b = new RobotConfig(body.radiusM(), mps, body.maxTurnRateRadPerS(), body.maxAccelMps2(),
+                    body.maxTurnAccelRadPerS2(), body.odometryRateHz(), body.odometryNoiseM(), body.odometryNoiseRad());
+            return new RobotModel(name, b, maxDecelMps2, commandLatencyNs, odometry, laserTiming, mps);
+        }
+        return new RobotModel(name, body, maxDecelMps2, commandLatencyNs, odometry, laserTiming, mps);
+    }
+
+    /**
+     * Overrides one numeric parameter by its report name (a key of {@link #parameters()}:
+     * {@code top_speed_mps}, {@code accel_mps2}, {@code decel_mps2}, {@code command_latency_ms},
+     * {@code odometry_*}, {@code laser_delivery_delay_ms}); a scenario's {@code robot:} section
+     * uses the same names.
+     *
+     * @param key the parameter's name
+     * @param value its new value
+     * @return a copy with that parameter changed
+     * @throws IllegalArgumentException for an unknown or derived name, or a value out of range
+     */
+    public RobotModel with(String key, double value) {
+        OdometryError o = odometry;
+        RobotConfig b = body;
+        double decel = maxDecelMps2;
+        long latency = commandLatencyNs;
+        LaserTiming laser = laserTiming;
+        switch (key) {
+            case "top_speed_mps" -> {
+                return withTopSpeed(value);
+            }
+            case "accel_mps2" -> b = new RobotConfig(b.radiusM(), b.maxSpeedMps(), b.maxTurnRateRadPerS(), value,
+                    b.maxTurnAccelRadPerS2(), b.odometryRateHz(), b.odometryNoiseM(), b.odometryNoiseRad());
+            case "decel_mps2" -> decel = value;
+            case "command_latency_ms" -> latency = Math.round(value * 1e6);
+            case "odometry_distance_scale_error" -> o = new OdometryError(value, o.rotationScaleError(),
+                    o.headingDriftRadPerM(), o.distanceNoiseMPerSqrtM(), o.rotationNoiseRadPerSqrtRad());
+            case "odometry_rotation_scale_error" -> o = new OdometryError(o.distanceScaleError(), value,
+                    o.headingDriftRadPerM(), o.distanceNoiseMPerSqrtM(), o.rotationNoiseRadPerSqrtRad());
+            case "odometry_heading_drift_rad_per_m" -> o = new OdometryError(o.distanceScaleError(),
+                    o.rotationScaleError(), value, o.distanceNoiseMPerSqrtM(), o.rotationNoiseRadPerSqrtRad());
+            case "odometry_distance_noise_m_per_sqrt_m" -> o = new OdometryError(o.distanceScaleError(),
+                    o.rotationScaleError(), o.headingDriftRadPerM(), value, o.rotationNoiseRadPerSqrtRad());
+            case "odometry_rotation_noise_rad_per_sqrt_rad" -> o = new OdometryError(o.distanceScaleError(),
+                    o.rotationScaleError(), o.headingDriftRadPerM(), o.distanceNoiseMPerSqrtM(), value);
+            case "laser_delivery_delay_ms" -> laser = new LaserTiming(laser.sweep(), Math.round(value * 1e6));
+            default -> throw new IllegalArgumentException("unknown robot parameter '" + key + "' (known: top_speed_mps, "
+                    + "accel_mps2, decel_mps2, command_latency_ms, odometry_distance_scale_error, "
+                    + "odometry_rotation_scale_error, odometry_heading_drift_rad_per_m, "
+                    + "odometry_distance_noise_m_per_sqrt_m, odometry_rotation_noise_rad_per_sqrt_rad, "
+                    + "laser_delivery_delay_ms)");
+        }
+        return new RobotModel(name, b, decel, latency, o, laser, topSpeedMps);
+    }
+
     /** @return true for a model without latency, odometry error or laser sweep */
     public boolean isIdeal() {
         return commandLatencyNs == 0 && odometry.isNone() && !laserTiming.sweep()
