@@ -22,7 +22,7 @@ import io.rtaware.sim.map.OccupancyMap;
 import io.rtaware.sim.scenario.Scenario;
 import io.rtaware.sim.scenario.ScenarioLoader;
 import io.rtaware.sim.world.LaserConfig;
-import io.rtaware.sim.world.RobotConfig;
+import io.rtaware.sim.world.RobotModel;
 import io.rtaware.sim.world.World;
 import java.io.IOException;
 import java.io.InputStream;
@@ -33,7 +33,8 @@ import org.junit.jupiter.api.Test;
  * The ideal robot reproduces, bit for bit, the trajectory the code before the Koala model
  * (issue 17) drove: the paper's course with the default controller on the step executor
  * (no threads, manual clock), the world stepped every 10 ms, ground truth sampled every
- * 100 ms for the first 60 s. The expected CSV was recorded from that code.
+ * 100 ms for the first 60 s. The expected CSV was recorded from that code (the world's
+ * {@code RobotConfig.KOALA} constructor, before robot models existed).
  */
 class IdealTrajectoryTest {
 
@@ -102,7 +103,7 @@ class IdealTrajectoryTest {
 
     static World idealWorld(Scenario scenario) {
         OccupancyMap map = scenario.map().orElseThrow();
-        return new World(map, scenario.start(), RobotConfig.KOALA, LaserConfig.URG_04LX, 1L);
+        return new World(map, scenario.start(), RobotModel.named(RobotModel.IDEAL_NAME, 0.1), LaserConfig.URG_04LX, 1L);
     }
 
     @Test
