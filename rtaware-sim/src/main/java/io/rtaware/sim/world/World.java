@@ -352,8 +352,8 @@ public final class World {
                 if (sweepDeliveryNs > timeNs) {
                     return;
                 }
+                laser.finish(timeS(), sweepScan);
                 scan.copyFrom(sweepScan);
-                laser.finish(timeS(), scan);
                 scanFresh = true;
                 sweepDeliveryNs = -1;
                 sweepStartNs = nextDue(sweepStartNs, laserPeriodNs);

@@ -230,4 +230,30 @@ class KoalaModelTest {
         assertEquals(firstFresh + 100 * MS, secondFresh, "one scan per 100 ms turn");
         assertFalse(Double.isNaN(w.scan().rangesM[0]));
     }
+
+    @Test
+    void eachBeamIsMeasuredFromWhereTheRobotIsWhenTheMirrorPassesIt() {
+        // The paper room's west wall is at x = 0 (inner face); the robot backs away from it
+        // facing west at 0.1 m/s, so a later beam sees the wall further away.
+        OccupancyMap room = io.rtaware.sim.scenario.ScenarioLoader.load("paper-room").map().orElseThrow();
+        RobotModel koala = RobotModel.koala(0.1);
+        World w = new World(room, new Pose2d(1.0, 3.1, Math.PI), koala, LaserConfig.URG_04LX, 1L);
+        w.command(-0.1, 0);
+        for (int i = 0; i < 1000; i++) {
+            w.step(MS); // at full speed backwards after 1 s
+        }
+        int fresh = 0;
+        while (fresh < 2) {
+            w.step(MS);
+            if (w.scanFresh()) {
+                fresh++;
+            }
+        }
+        int mid = LaserConfig.URG_04LX.beams() / 2;
+        double rMid = w.scan().rangesM[mid];
+        // The middle beam was measured about 33 ms after the first and 43 ms before delivery.
+        double xAtDelivery = w.xM();
+        assertTrue(rMid < xAtDelivery - 0.002, "measured before delivery, nearer the wall: " + rMid + " vs " + xAtDelivery);
+        assertTrue(rMid > xAtDelivery - 0.02, "but within this scan's 77 ms: " + rMid + " vs " + xAtDelivery);
+    }
 }
