@@ -10,6 +10,7 @@ import io.rtaware.core.report.DataReport;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.TaskReport;
 import io.rtaware.core.task.ErrorPolicy;
+import io.rtaware.core.task.ReactionConstraint;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.Task;
 import io.rtaware.core.task.TaskSetup;
@@ -58,6 +59,8 @@ public final class Monitor {
     private final List<Consumer<Report>> terminationHandlers = new CopyOnWriteArrayList<>();
     private final List<MonitorListener> listeners;
     private final ThreadSetup threadSetup;
+    /** Reaction constraints declared by tasks at initialization, by task name. */
+    private final Map<String, ReactionConstraint> reactions;
     private final CountDownLatch terminated = new CountDownLatch(1);
     private final Object lifecycle = new Object();
     private Phase phase = Phase.READY;
@@ -83,8 +86,10 @@ public final class Monitor {
 
     private Monitor(Clock clock, List<TaskRuntime> runtimes, List<StateVariable<?>> variables,
                     Map<String, String> producers, Map<String, List<String>> consumers,
-                    List<MonitorListener> listeners, ThreadSetup threadSetup) {
+                    List<MonitorListener> listeners, ThreadSetup threadSetup,
+                    Map<String, ReactionConstraint> reactions) {
         this.clock = clock;
+        this.reactions = Map.copyOf(reactions);
         this.threadSetup = threadSetup;
         this.listeners = new ArrayList<>(listeners);
         this.runtimes = runtimes;
@@ -416,7 +421,10 @@ public final class Monitor {
     }
 
     private Report buildReport() {
-        List<TaskReport> tasks = runtimes.stream().map(TaskRuntime::report).toList();
+        List<TaskReport> tasks = runtimes.stream().map(rt -> {
+            ReactionConstraint reaction = reactions.get(rt.name());
+            return reaction == null ? rt.report() : rt.report().withReaction(reaction);
+        }).toList();
         long releases = tasks.stream().mapToLong(TaskReport::releases).sum();
         long misses = tasks.stream().mapToLong(TaskReport::misses).sum();
         List<DataReport> data = new ArrayList<>();
@@ -612,8 +620,14 @@ public final class Monitor {
                 }
                 runtimes.add(runtime);
             }
+            Map<String, ReactionConstraint> reactions = new LinkedHashMap<>();
+            for (Setup setup : setups) {
+                if (setup.reaction != null) {
+                    reactions.put(setup.spec.name(), setup.reaction);
+                }
+            }
             return new Monitor(clock, List.copyOf(runtimes), List.copyOf(variables), producers, consumersOf, listeners,
-                    threadSetup);
+                    threadSetup, reactions);
         }
 
         private static <T extends StateValue<T>> StateVariable<T> newVariable(Key<T> key) {
@@ -651,6 +665,7 @@ public final class Monitor {
         final List<InputHandle<?>> inputs = new ArrayList<>();
         final List<OutputHandle<?>> outputs = new ArrayList<>();
         final List<String> violations = new ArrayList<>();
+        ReactionConstraint reaction;
         boolean closed;
 
         Setup(TaskSpec spec, Clock clock) {
@@ -697,6 +712,12 @@ public final class Monitor {
             InputHandle<T> handle = new InputHandle<>(key, maxAgeNs);
             inputs.add(handle);
             return handle;
+        }
+
+        @Override
+        public void declareReaction(ReactionConstraint constraint) {
+            checkOpen();
+            reaction = Objects.requireNonNull(constraint, "constraint");
         }
 
         @Override

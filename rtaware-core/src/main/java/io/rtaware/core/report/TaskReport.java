@@ -1,5 +1,7 @@
 package io.rtaware.core.report;
 
+import io.rtaware.core.task.ReactionConstraint;
+
 /**
  * One task's timing over a run. Times are world time.
  *
@@ -17,9 +19,45 @@ package io.rtaware.core.report;
  * @param expiredReads reads of an input older than its declared maximum age (one per input per cycle)
  * @param execUs execution time per cycle, microseconds
  * @param latenessUs start of the cycle minus its scheduled release, microseconds
+ * @param reaction the reaction the task declared ({@link ReactionConstraint}), or null
  */
 public record TaskReport(String name, String schedule, Double periodMs, Double deadlineMs,
                          long releases, long runs, long misses, double missPct, long skipped,
                          long staleRuns, long errors, long expiredReads,
-                         Percentiles execUs, Percentiles latenessUs) {
+                         Percentiles execUs, Percentiles latenessUs, ReactionConstraint reaction) {
+
+    /**
+     * A task report without a reaction declaration.
+     *
+     * @param name the task's name
+     * @param schedule the schedule kind
+     * @param periodMs period in ms or null
+     * @param deadlineMs deadline in ms or null
+     * @param releases releases
+     * @param runs runs
+     * @param misses misses
+     * @param missPct miss percentage
+     * @param skipped skipped releases
+     * @param staleRuns stale runs
+     * @param errors errors
+     * @param expiredReads expired reads
+     * @param execUs execution time percentiles
+     * @param latenessUs lateness percentiles
+     */
+    public TaskReport(String name, String schedule, Double periodMs, Double deadlineMs,
+                      long releases, long runs, long misses, double missPct, long skipped,
+                      long staleRuns, long errors, long expiredReads,
+                      Percentiles execUs, Percentiles latenessUs) {
+        this(name, schedule, periodMs, deadlineMs, releases, runs, misses, missPct, skipped, staleRuns, errors,
+                expiredReads, execUs, latenessUs, null);
+    }
+
+    /**
+     * @param constraint the task's declared reaction
+     * @return a copy carrying it
+     */
+    public TaskReport withReaction(ReactionConstraint constraint) {
+        return new TaskReport(name, schedule, periodMs, deadlineMs, releases, runs, misses, missPct, skipped,
+                staleRuns, errors, expiredReads, execUs, latenessUs, constraint);
+    }
 }
