@@ -1,6 +1,6 @@
 package io.rtaware.experiment;
 
-import io.rtaware.nav.NavConfig;
+import io.rtaware.nav.Behavior;
 import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -18,7 +18,7 @@ import java.util.stream.Collectors;
 public record PeriodSet(String name, Map<String, Long> periodsMs) {
 
     /** The behaviors whose periods an experiment varies, in the paper's column order. */
-    public static final List<String> TASKS = NavConfig.BEHAVIORS;
+    public static final List<String> TASKS = Behavior.taskNames();
 
     /**
      * @param name the set's label

@@ -36,6 +36,7 @@ import io.rtaware.sim.scenario.ScenarioLoader;
 import io.rtaware.sim.server.PlayerSimServer;
 import io.rtaware.sim.server.ServerConfig;
 import io.rtaware.sim.server.SimCommandSupport;
+import io.rtaware.sim.world.LaserConfig;
 import io.rtaware.sim.world.RobotModel;
 import io.rtaware.sim.world.World;
 import java.io.IOException;
@@ -348,6 +349,7 @@ public final class RobotRun {
     private NavConfig navConfig(Scenario scenario, RobotModel model) {
         NavConfig.Builder b = NavConfig.builder()
                 .topSpeedMps(model.topSpeedMps())
+                .reactionLimits(model.stoppingDistanceM(model.topSpeedMps()), model.laserDelayNs(LaserConfig.URG_04LX))
                 .periodsNs(options.periods().nanosByTask())
                 .goalToleranceM(scenario.goalToleranceM())
                 .waypoints(scenario.waypoints());

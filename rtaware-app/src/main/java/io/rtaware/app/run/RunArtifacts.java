@@ -85,7 +85,7 @@ final class RunArtifacts {
                     p.index() + 1, p.tS(), p.trueDistanceM(), p.believedDistanceM()));
         }
         sb.append(String.format(Locale.ROOT, "     scenario %s, periods %s, time scale x%s, seed %d, grid %.2f m, robot %s at %s m/s%n",
-                r.scenario(), options.periods(), r.timeScale(), r.seed(), navConfig.gridResolutionM(),
+                r.scenario(), options.periods(), r.timeScale(), r.seed(), navConfig.grid().resolutionM(),
                 r.robotModel().get("name"), r.robotModel().get("top_speed_mps")));
         return sb.toString();
     }

@@ -19,7 +19,7 @@ class ObstacleAvoidanceTaskTest {
     void avoidsOnFreshScansAndStopsWhenBlind() throws Exception {
         FakeStore store = new FakeStore();
         FakeStore.Bound task = store.bind("obstacle",
-                new ObstacleAvoidanceTask(new ObstacleAvoider(0.4, 0.6, 0.25, 0.03, 0.5), 300 * MS));
+                new ObstacleAvoidanceTask(new ObstacleAvoider(0.4, 0.6, 0.25, 0.03, 0.5), 300 * MS, null));
         task.cycle(0);
         MotionRequest req = store.read(RobotKeys.MOTION_AVOID);
         assertTrue(req.active, "no scan yet: take control");

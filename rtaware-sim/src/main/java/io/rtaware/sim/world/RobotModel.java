@@ -195,6 +195,22 @@ public record RobotModel(String name, RobotConfig body, double maxDecelMps2, lon
     }
 
     /**
+     * How old a scan already is when it is delivered: for a sweeping laser, from its first beam
+     * to delivery ({@code (beams - 1)} beam intervals plus the delivery delay: 76.6 ms for the
+     * URG-04LX); 0 for an instantaneous one.
+     *
+     * @param laser the laser
+     * @return the age at delivery in world nanoseconds
+     */
+    public long laserDelayNs(LaserConfig laser) {
+        if (!laserTiming.sweep()) {
+            return 0L;
+        }
+        double beamNs = laser.periodNs() * laser.angleIncrementRad() / (2 * Math.PI);
+        return (long) ((laser.beams() - 1) * beamNs) + laserTiming.deliveryDelayNs();
+    }
+
+    /**
      * The model's parameters by name, for reports ({@code run.robot_model}), in a fixed order.
      *
      * @return a new map from parameter name (with its unit) to value
