@@ -176,10 +176,14 @@ public final class ExperimentRunner {
             throw new ExperimentInputException(where + " has set " + r.set() + " but only " + plan.sets().size()
                     + " sets are planned; use the same --sets or another --out");
         }
+        if (!plan.shard().includes(r.set(), r.run())) {
+            throw new ExperimentInputException(where + " is not a run of shard " + plan.shard()
+                    + "; use the same --shard or another --out");
+        }
         PeriodSet planned = plan.sets().get(r.set() - 1);
-        if (!planned.periodsMs().equals(r.periods().periodsMs())) {
-            throw new ExperimentInputException(where + " was made with periods " + r.periods().shortLabel()
-                    + ", the planned set has " + planned.shortLabel() + "; use the same --sets or another --out");
+        if (!planned.sameRunsAs(r.periods())) {
+            throw new ExperimentInputException(where + " was made with periods " + r.periods().label()
+                    + ", the planned set has " + planned.label() + "; use the same --sets or another --out");
         }
         RunConditions c = plan.conditions();
         RunConditions rc = r.conditions();
