@@ -38,5 +38,7 @@ class ExperimentCommandTest {
     void reportNeedsAnExperimentFolder() {
         assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("report", dir.resolve("missing").toString()));
         assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("report", dir.toString()));
+        assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("report", dir.toString(), dir.toString()));
+        assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("report", dir.toString(), "--out", dir.resolve("m").toString()));
     }
 }
