@@ -349,6 +349,7 @@ public final class RobotRun {
     private NavConfig navConfig(Scenario scenario, RobotModel model) {
         NavConfig.Builder b = NavConfig.builder()
                 .topSpeedMps(model.topSpeedMps())
+                .inflationMarginM(options.inflationMarginM())
                 .reactionLimits(model.stoppingDistanceM(model.topSpeedMps()), model.laserDelayNs(LaserConfig.URG_04LX))
                 .periodsNs(options.periods().nanosByTask())
                 .goalToleranceM(scenario.goalToleranceM())
@@ -429,7 +430,7 @@ public final class RobotRun {
                 round3(referee == null ? 0 : referee.travelledM()), collisions, mediator,
                 referee == null ? "odometry" : referee.kind(), simulator ? "simulator" : "stall",
                 options.timeScale(), options.seed(), options.gridResolutionM(), counts.staleStops(), why,
-                RunSection.COMPLETED_MEANS, passes, robotModelSection(model, simulator));
+                RunSection.COMPLETED_MEANS, passes, robotModelSection(model, simulator), options.inflationMarginM());
     }
 
     private static Map<String, Object> robotModelSection(RobotModel model, boolean simulator) {

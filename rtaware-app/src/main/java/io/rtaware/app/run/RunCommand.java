@@ -64,6 +64,10 @@ public final class RunCommand implements Callable<Integer> {
             description = "Robot model name for ground truth through simulation:0 (default: ${DEFAULT-VALUE}).")
     String model;
 
+    @Option(names = "--inflation-margin", defaultValue = "0.05", paramLabel = "METRES",
+            description = "Clearance the path planner adds to the robot's radius when it inflates obstacles (default: ${DEFAULT-VALUE}).")
+    double inflationMarginM;
+
     @Option(names = "--robot", paramLabel = "koala|ideal",
             description = "Robot model of the built-in simulator: koala (odometry drift, acceleration limits, command latency, URG laser timing) or ideal (the exact point robot of earlier versions); default: the scenario's, else koala.")
     String robot;
@@ -94,6 +98,9 @@ public final class RunCommand implements Callable<Integer> {
         if (!(gridResolutionM > 0) || gridResolutionM > 2) {
             throw new UserError("--grid-resolution must be in (0, 2] metres, got " + gridResolutionM);
         }
+        if (!(inflationMarginM >= 0) || inflationMarginM > 1) {
+            throw new UserError("--inflation-margin must be in [0, 1] metres, got " + inflationMarginM);
+        }
         if (robot != null && !robot.equals(RobotModel.KOALA_NAME) && !robot.equals(RobotModel.IDEAL_NAME)) {
             throw new UserError("--robot must be koala or ideal, got '" + robot + "'");
         }
@@ -123,6 +130,6 @@ public final class RunCommand implements Callable<Integer> {
         Path dir = out != null ? out
                 : Path.of("runs", LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
         return new RunOptions(scenario, taskPeriods, timeScale, host, port, seed, dir, quiet, stuckAfterS,
-                gridResolutionM, model, trace, realtime, live.options(), robot, topSpeedMps);
+                gridResolutionM, model, trace, realtime, live.options(), robot, topSpeedMps, inflationMarginM);
     }
 }

@@ -32,13 +32,15 @@ import java.util.Map;
  *     how far its true and its believed position were from the waypoint then
  * @param robotModel the simulated robot model's name and parameters ({@code name}: koala or
  *     ideal); for an external Player server {@code name} is {@code external}
+ * @param inflationMarginM the clearance the planner added to the robot's radius, metres
  */
 public record RunSection(String scenario, Map<String, Double> periodsMs, String outcome, boolean completed,
                          double runTimeS, int waypointsReached, int waypointsTotal, double distanceToFinishM,
                          double distanceTravelledM, long collisions, Map<String, Long> mediator,
                          String measuredOn, String collisionsFrom, double timeScale, long seed,
                          double gridResolutionM, long staleStops, String reason, String completedMeans,
-                         List<WaypointPass> waypointPasses, Map<String, Object> robotModel) {
+                         List<WaypointPass> waypointPasses, Map<String, Object> robotModel,
+                         double inflationMarginM) {
 
     /** What {@code completed} means, written into every report. */
     public static final String COMPLETED_MEANS = "the robot, by its own estimate (odometry), passed every waypoint "
