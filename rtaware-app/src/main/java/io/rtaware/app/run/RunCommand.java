@@ -64,8 +64,10 @@ public final class RunCommand implements Callable<Integer> {
             description = "Robot model name for ground truth through simulation:0 (default: ${DEFAULT-VALUE}).")
     String model;
 
-    @Option(names = "--inflation-margin", defaultValue = "0.05", paramLabel = "METRES",
-            description = "Clearance the path planner adds to the robot's radius when it inflates obstacles (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--inflation-margin", defaultValue = "0", paramLabel = "METRES",
+            description = {"Clearance the path planner adds to the robot's radius when it inflates obstacles (default: ${DEFAULT-VALUE}:",
+                    "the planner keeps the body clear, the obstacle avoider keeps the margin; 0.05 is the controller's",
+                    "library default and earlier versions' run default, under which the avoider's zone never sees an obstacle)."})
     double inflationMarginM;
 
     @Option(names = "--robot", paramLabel = "koala|ideal",
