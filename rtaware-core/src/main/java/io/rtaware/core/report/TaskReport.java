@@ -1,5 +1,6 @@
 package io.rtaware.core.report;
 
+import com.fasterxml.jackson.annotation.JsonInclude;
 import io.rtaware.core.task.ReactionConstraint;
 
 /**
@@ -19,12 +20,14 @@ import io.rtaware.core.task.ReactionConstraint;
  * @param expiredReads reads of an input older than its declared maximum age (one per input per cycle)
  * @param execUs execution time per cycle, microseconds
  * @param latenessUs start of the cycle minus its scheduled release, microseconds
- * @param reaction the reaction the task declared ({@link ReactionConstraint}), or null
+ * @param reaction the reaction the task declared ({@link ReactionConstraint}), or null; written
+ *     to JSON as {@code reaction} only when declared, so other tasks keep the schema's fields
  */
 public record TaskReport(String name, String schedule, Double periodMs, Double deadlineMs,
                          long releases, long runs, long misses, double missPct, long skipped,
                          long staleRuns, long errors, long expiredReads,
-                         Percentiles execUs, Percentiles latenessUs, ReactionConstraint reaction) {
+                         Percentiles execUs, Percentiles latenessUs,
+                         @JsonInclude(JsonInclude.Include.NON_NULL) ReactionConstraint reaction) {
 
     /**
      * A task report without a reaction declaration.
