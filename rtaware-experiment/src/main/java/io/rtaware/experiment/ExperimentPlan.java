@@ -7,16 +7,30 @@ import java.util.List;
 import java.util.Objects;
 
 /**
- * The runs of an experiment and the {@code rtaware run} arguments of each.
+ * The runs of an experiment, the share of them this process makes, and the {@code rtaware run}
+ * arguments of each.
  *
  * @param sets the sets compared, in order (set numbers count from 1 in this order)
  * @param runsPerSet runs of each set
  * @param conditions what all runs share
+ * @param shard the share of the runs this process makes ({@link Shard#WHOLE} for all)
  */
-public record ExperimentPlan(List<PeriodSet> sets, int runsPerSet, RunConditions conditions) {
+public record ExperimentPlan(List<PeriodSet> sets, int runsPerSet, RunConditions conditions, Shard shard) {
+
+    /**
+     * The whole plan.
+     *
+     * @param sets the sets compared, in order
+     * @param runsPerSet runs of each set
+     * @param conditions what all runs share
+     */
+    public ExperimentPlan(List<PeriodSet> sets, int runsPerSet, RunConditions conditions) {
+        this(sets, runsPerSet, conditions, Shard.WHOLE);
+    }
 
     /** Validates the fields. */
     public ExperimentPlan {
+        Objects.requireNonNull(shard, "shard");
         sets = List.copyOf(sets);
         if (sets.isEmpty()) {
             throw new IllegalArgumentException("an experiment needs at least one set");
@@ -28,10 +42,17 @@ public record ExperimentPlan(List<PeriodSet> sets, int runsPerSet, RunConditions
     }
 
     /**
-     * @return every run, interleaved across sets (set 1 run 1, set 2 run 1, ..., set 1 run 2, ...)
-     *     so that slow drift of the machine does not bias one set
+     * @return the runs of this plan's shard, in the order of {@link #fullOrder()}
      */
     public List<PlannedRun> order() {
+        return fullOrder().stream().filter(p -> shard.includes(p.set(), p.run())).toList();
+    }
+
+    /**
+     * @return every run of the plan, whatever the shard, interleaved across sets (set 1 run 1,
+     *     set 2 run 1, ..., set 1 run 2, ...) so that slow drift of the machine does not bias one set
+     */
+    public List<PlannedRun> fullOrder() {
         List<PlannedRun> order = new ArrayList<>();
         for (int run = 1; run <= runsPerSet; run++) {
             for (int set = 1; set <= sets.size(); set++) {
@@ -52,6 +73,10 @@ public record ExperimentPlan(List<PeriodSet> sets, int runsPerSet, RunConditions
                 "--periods", planned.periods().periodsArgument(),
                 "--time-scale", plain(conditions.timeScale()),
                 "--seed", Long.toString(conditions.seedOf(planned.run()))));
+        if (planned.periods().topSpeedMps() != null) {
+            args.add("--top-speed");
+            args.add(plain(planned.periods().topSpeedMps()));
+        }
         if (conditions.gridResolutionM() != null) {
             args.add("--grid-resolution");
             args.add(plain(conditions.gridResolutionM()));

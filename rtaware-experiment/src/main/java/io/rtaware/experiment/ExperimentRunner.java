@@ -15,8 +15,9 @@ import java.util.concurrent.TimeUnit;
  * so re-running into the same folder resumes. {@link #interrupt()} (from a shutdown hook) stops
  * the run under way and ends the loop; the folder stays valid.
  *
- * <p>Layout of the output folder: {@code results.csv}, and {@code runs/setI-runJ/} per run with
- * the run's {@code report.json}, {@code trajectory.csv} and {@code run.log} (its output).
+ * <p>Layout of the output folder: {@code results.csv}, {@code plan.json} (the plan and shard,
+ * written once the folder's rows are found to match them), and {@code runs/setI-runJ/} per run
+ * with the run's {@code report.json}, {@code trajectory.csv} and {@code run.log} (its output).
  */
 public final class ExperimentRunner {
 
@@ -74,6 +75,7 @@ public final class ExperimentRunner {
             checkMatchesPlan(r, row.line());
             done.add(r.set() + "/" + r.run());
         }
+        PlanFile.write(outDir, plan);
         List<PlannedRun> order = plan.order();
         int total = order.size();
         int finished = (int) order.stream().filter(p -> done.contains(p.set() + "/" + p.run())).count();
@@ -178,10 +180,14 @@ public final class ExperimentRunner {
             throw new ExperimentInputException(where + " has set " + r.set() + " but only " + plan.sets().size()
                     + " sets are planned; use the same --sets or another --out");
         }
+        if (!plan.shard().includes(r.set(), r.run())) {
+            throw new ExperimentInputException(where + " is not a run of shard " + plan.shard()
+                    + "; use the same --shard or another --out");
+        }
         PeriodSet planned = plan.sets().get(r.set() - 1);
-        if (!planned.periodsMs().equals(r.periods().periodsMs())) {
-            throw new ExperimentInputException(where + " was made with periods " + r.periods().shortLabel()
-                    + ", the planned set has " + planned.shortLabel() + "; use the same --sets or another --out");
+        if (!planned.sameRunsAs(r.periods())) {
+            throw new ExperimentInputException(where + " was made with periods " + r.periods().label()
+                    + ", the planned set has " + planned.label() + "; use the same --sets or another --out");
         }
         RunConditions c = plan.conditions();
         RunConditions rc = r.conditions();

@@ -1,5 +1,6 @@
 package io.rtaware.experiment;
 
+import com.fasterxml.jackson.annotation.JsonProperty;
 import io.rtaware.experiment.stats.SampleStats;
 import io.rtaware.experiment.stats.WelchTest;
 import java.util.ArrayList;
@@ -24,9 +25,15 @@ import java.util.TreeMap;
  * @param sets per set, in set order
  * @param tTests Welch tests per quantity ({@code run_time_s}, {@code distance_to_finish_m})
  * @param paper the paper's published numbers (the paper's, not ours)
+ * @param sweptTasks the tasks whose period differs between sets, in task order (see
+ *     {@link SetSummary#sweptPeriodMs()})
+ * @param claims the paper's claims with a verdict computed from these results ({@link PaperClaims})
+ * @param claimsNotEvaluated the paper's claims these results cannot decide, with the reason
  */
 public record ExperimentSummary(String schema, ExperimentProfile profile, List<SetSummary> sets,
-                                Map<String, List<PairTest>> tTests, PaperReference.Published paper) {
+                                Map<String, List<PairTest>> tTests, PaperReference.Published paper,
+                                List<String> sweptTasks, List<PaperClaims.Claim> claims,
+                                List<PaperClaims.NotEvaluated> claimsNotEvaluated) {
 
     /** The schema identifier of {@code summary.json}. */
     public static final String SCHEMA = "rtaware.experiment/1";
@@ -49,10 +56,32 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
      * @param distanceTravelledM path length over measured runs
      * @param collisions collisions summed over measured runs
      * @param misses per task and {@link #ALL_TASKS}, pooled over measured runs
+     * @param topSpeedMps the set's top speed, or null for {@code run}'s default
+     * @param measuredRuns runs that ended on the course (completed, timeout, stuck)
+     * @param runsWithCollisions measured runs with at least one collision
+     * @param sweptPeriodMs the period the swept tasks share in this set, or null when the sets do
+     *     not differ in periods or this set's swept tasks have different periods (such a set is not
+     *     on the period axis of the figures and claims)
+     * @param mediatorCycles cycles the position mediator gave each winner, summed over the measured
+     *     runs that report them; empty when none does
      */
     public record SetSummary(int set, String name, Map<String, Long> periodsMs, int runs, int completed,
                              Map<String, Integer> outcomes, SampleStats runTimeS, SampleStats distanceToFinishM,
-                             SampleStats distanceTravelledM, long collisions, Map<String, Misses> misses) {
+                             SampleStats distanceTravelledM, long collisions, Map<String, Misses> misses,
+                             Double topSpeedMps, int measuredRuns, int runsWithCollisions, Long sweptPeriodMs,
+                             Map<String, Long> mediatorCycles) {
+
+        /** @return the share of runs that completed the course, 0 to 1, or null with no runs */
+        @JsonProperty("completion_rate")
+        public Double completionRate() {
+            return runs == 0 ? null : (double) completed / runs;
+        }
+
+        /** @return the share of measured runs with a collision, 0 to 1, or null with no measured run */
+        @JsonProperty("collision_rate")
+        public Double collisionRate() {
+            return measuredRuns == 0 ? null : (double) runsWithCollisions / measuredRuns;
+        }
     }
 
     /**
@@ -63,8 +92,10 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
      * @param missPct pooled percentage, or null with no releases
      * @param staleRuns stale runs summed over runs
      * @param execP99UsMean mean over runs of the per-run p99 execution time, µs (null for {@link #ALL_TASKS})
+     * @param skipped releases skipped because the task was still running, summed over the runs
+     *     that report them (they are misses too), or null when none does
      */
-    public record Misses(long releases, long misses, Double missPct, long staleRuns, Double execP99UsMean) {
+    public record Misses(long releases, long misses, Double missPct, long staleRuns, Double execP99UsMean, Long skipped) {
     }
 
     /**
@@ -85,8 +116,10 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
     public static ExperimentSummary of(List<RunResult> rows, ExperimentProfile profile) {
         Map<Integer, List<RunResult>> bySet = new TreeMap<>();
         rows.forEach(r -> bySet.computeIfAbsent(r.set(), k -> new ArrayList<>()).add(r));
+        List<PeriodSet> periodSets = bySet.values().stream().map(r -> r.get(0).periods()).toList();
+        List<String> swept = sweptTasks(periodSets);
         List<SetSummary> sets = new ArrayList<>();
-        bySet.forEach((set, runs) -> sets.add(summarize(set, runs)));
+        bySet.forEach((set, runs) -> sets.add(summarize(set, runs, sweptPeriod(runs.get(0).periods(), swept))));
         Map<String, List<PairTest>> tests = new LinkedHashMap<>();
         List<Integer> numbers = new ArrayList<>(bySet.keySet());
         for (String quantity : TESTED) {
@@ -101,7 +134,26 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
             }
             tests.put(quantity, pairs);
         }
-        return new ExperimentSummary(SCHEMA, profile, sets, tests, PaperReference.published());
+        PaperClaims.Verdicts verdicts = PaperClaims.evaluate(sets, tests);
+        return new ExperimentSummary(SCHEMA, profile, sets, tests, PaperReference.published(), swept,
+                verdicts.claims(), verdicts.notEvaluated());
+    }
+
+    /**
+     * @param sets the sets of an experiment
+     * @return the tasks whose period is not the same in every set, in task order
+     */
+    static List<String> sweptTasks(List<PeriodSet> sets) {
+        return PeriodSet.TASKS.stream()
+                .filter(t -> sets.stream().map(s -> s.periodsMs().get(t)).distinct().count() > 1).toList();
+    }
+
+    private static Long sweptPeriod(PeriodSet set, List<String> swept) {
+        if (swept.isEmpty()) {
+            return null;
+        }
+        List<Long> periods = swept.stream().map(t -> set.periodsMs().get(t)).distinct().toList();
+        return periods.size() == 1 ? periods.get(0) : null;
     }
 
     /**
@@ -120,7 +172,7 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
         return java.util.Arrays.stream(all).filter(Double::isFinite).toArray();
     }
 
-    private static SetSummary summarize(int set, List<RunResult> runs) {
+    private static SetSummary summarize(int set, List<RunResult> runs, Long sweptPeriodMs) {
         RunResult first = runs.get(0);
         Map<String, Integer> outcomes = new TreeMap<>();
         runs.forEach(r -> outcomes.merge(r.outcome(), 1, Integer::sum));
@@ -135,18 +187,34 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
             long missed = t.stream().mapToLong(TaskResult::misses).sum();
             long stale = t.stream().mapToLong(TaskResult::staleRuns).sum();
             SampleStats p99 = SampleStats.of(t.stream().mapToDouble(TaskResult::execP99Us).toArray());
-            misses.put(task, new Misses(releases, missed, pct(missed, releases), stale, p99.mean()));
+            Long skipped = sumOrNull(t.stream().map(TaskResult::skipped).toList());
+            misses.put(task, new Misses(releases, missed, pct(missed, releases), stale, p99.mean(), skipped));
             allReleases += releases;
             allMisses += missed;
             allStale += stale;
         }
-        misses.put(ALL_TASKS, new Misses(allReleases, allMisses, pct(allMisses, allReleases), allStale, null));
+        Long allSkipped = sumOrNull(misses.values().stream().map(Misses::skipped).toList());
+        misses.put(ALL_TASKS, new Misses(allReleases, allMisses, pct(allMisses, allReleases), allStale, null, allSkipped));
         long collisions = measured.stream().map(RunResult::collisions).filter(java.util.Objects::nonNull)
                 .mapToLong(Integer::longValue).sum();
+        int withCollisions = (int) measured.stream().filter(r -> r.collisions() != null && r.collisions() > 0).count();
+        Map<String, Long> mediator = new LinkedHashMap<>();
+        for (String winner : RunResult.MEDIATOR_WINNERS) {
+            Long cycles = sumOrNull(measured.stream().map(r -> r.mediatorCycles().get(winner)).toList());
+            if (cycles != null) {
+                mediator.put(winner, cycles);
+            }
+        }
         return new SetSummary(set, first.periods().name(), first.periods().periodsMs(), runs.size(),
                 (int) runs.stream().filter(RunResult::completed).count(), outcomes,
                 SampleStats.of(sample(runs, "run_time_s")), SampleStats.of(sample(runs, "distance_to_finish_m")),
-                SampleStats.of(sample(runs, "distance_travelled_m")), collisions, misses);
+                SampleStats.of(sample(runs, "distance_travelled_m")), collisions, misses, first.periods().topSpeedMps(),
+                measured.size(), withCollisions, sweptPeriodMs, mediator);
+    }
+
+    private static Long sumOrNull(List<Long> values) {
+        List<Long> known = values.stream().filter(java.util.Objects::nonNull).toList();
+        return known.isEmpty() ? null : known.stream().mapToLong(Long::longValue).sum();
     }
 
     private static Double pct(long misses, long releases) {

@@ -12,6 +12,9 @@ public final class PaperReference {
     /** Runs per set in the paper. */
     public static final int RUNS_PER_SET = 10;
 
+    /** The paper's robot's top speed, m/s (Section VII). */
+    public static final double TOP_SPEED_MPS = 0.1;
+
     /**
      * One row of the paper's Tables I and II.
      *
@@ -70,9 +73,13 @@ public final class PaperReference {
 
     /**
      * @param periods a set's periods
-     * @return the paper's row with the same periods, or null if the paper has none
+     * @return the paper's row with the same periods and the paper's top speed (a set without a
+     *     top speed runs at {@code run}'s default, the paper's), or null if the paper has none
      */
     public static PaperSet matching(PeriodSet periods) {
+        if (periods.topSpeedMps() != null && periods.topSpeedMps() != TOP_SPEED_MPS) {
+            return null;
+        }
         return published().sets().stream().filter(s -> s.periods().periodsMs().equals(periods.periodsMs()))
                 .findFirst().orElse(null);
     }

@@ -16,11 +16,19 @@ import java.util.TreeMap;
 
 /**
  * The plan of an experiment as stored in its folder ({@value #FILE_NAME}, schema
- * {@value #SCHEMA}: {@code sets} with their names and periods, {@code runs_per_set},
- * {@code scenario}, {@code time_scale}, {@code seed}, {@code grid_resolution_m}), so that
- * {@code experiment --resume --out DIR} continues exactly the experiment that is there. A folder
- * made before this file existed gives its plan from {@code experiment.json} and the sets named in
- * {@code results.csv} ({@link #fromFolder}). Stateless.
+ * {@value #SCHEMA}): the whole plan (sets with their periods and top speeds, runs per set,
+ * scenario, time scale, seed, grid) and the shard this folder holds, so that
+ * {@code experiment --resume --out DIR} continues exactly the experiment that is there and
+ * {@code rtaware report DIR...} can tell whether several folders are shares of one plan:
+ *
+ * <pre>
+ * {"schema": "rtaware.experiment-plan/1", "sets": [{"name": "Set 1", "periods_ms": {...}, "top_speed_mps": null}, ...],
+ *  "runs_per_set": 10, "scenario": "paper-room", "time_scale": 10.0, "seed": 1, "grid_resolution_m": null,
+ *  "shard": "1/2"}
+ * </pre>
+ *
+ * A folder made before this file existed gives its plan from {@code experiment.json} and the sets
+ * named in {@code results.csv} ({@link #fromFolder}). Stateless.
  */
 public final class PlanFile {
 
@@ -36,7 +44,7 @@ public final class PlanFile {
 
     /**
      * @param dir an experiment folder
-     * @param plan its plan
+     * @param plan its plan and shard
      * @throws IOException if writing fails
      */
     public static void write(Path dir, ExperimentPlan plan) throws IOException {
@@ -48,6 +56,7 @@ public final class PlanFile {
             set.put("name", s.name());
             ObjectNode periods = set.putObject("periods_ms");
             s.periodsMs().forEach(periods::put);
+            set.put("top_speed_mps", s.topSpeedMps());
         }
         RunConditions c = plan.conditions();
         root.put("runs_per_set", plan.runsPerSet());
@@ -59,16 +68,16 @@ public final class PlanFile {
         } else {
             root.put("grid_resolution_m", c.gridResolutionM());
         }
-        Files.writeString(dir.resolve(FILE_NAME), MAPPER.writeValueAsString(root) + "\n");
+        root.put("shard", plan.shard().toString());
+        Files.writeString(dir.resolve(FILE_NAME), MAPPER.writerWithDefaultPrettyPrinter().writeValueAsString(root) + "\n");
     }
 
     /**
      * @param dir an experiment folder
      * @return its stored plan, if {@value #FILE_NAME} is there
-     * @throws IOException if it cannot be read
-     * @throws ExperimentInputException if it is malformed (naming the field)
+     * @throws ExperimentInputException if it is unreadable or malformed (naming the field)
      */
-    public static Optional<ExperimentPlan> read(Path dir) throws IOException {
+    public static Optional<ExperimentPlan> read(Path dir) {
         Path file = dir.resolve(FILE_NAME);
         if (!Files.exists(file)) {
             return Optional.empty();
@@ -87,13 +96,16 @@ public final class PlanFile {
             for (JsonNode s : required(root, "sets")) {
                 Map<String, Long> periods = new LinkedHashMap<>();
                 required(s, "periods_ms").fields().forEachRemaining(e -> periods.put(e.getKey(), e.getValue().asLong()));
-                sets.add(new PeriodSet(required(s, "name").asText(), periods));
+                JsonNode speed = s.path("top_speed_mps");
+                sets.add(new PeriodSet(required(s, "name").asText(), periods, speed.isNumber() ? speed.asDouble() : null));
             }
             JsonNode grid = root.path("grid_resolution_m");
             RunConditions conditions = new RunConditions(required(root, "scenario").asText(),
                     required(root, "time_scale").asDouble(), required(root, "seed").asLong(),
                     grid.isNumber() ? grid.asDouble() : null);
-            return Optional.of(new ExperimentPlan(sets, required(root, "runs_per_set").asInt(), conditions));
+            JsonNode shard = root.path("shard");
+            return Optional.of(new ExperimentPlan(sets, required(root, "runs_per_set").asInt(), conditions,
+                    shard.isTextual() ? Shard.parse(shard.asText()) : Shard.WHOLE));
         } catch (IllegalArgumentException e) {
             throw new ExperimentInputException(file + ": " + e.getMessage());
         }

@@ -22,12 +22,16 @@ import java.util.Map;
  * outcome, run_time_s, distance_to_finish_m, distance_travelled_m, collisions,
  * waypoints_reached, waypoints_total,
  * then for each task T of waypoint, obstacle, occupancy, planner:
- * T_releases, T_misses, T_miss_pct, T_stale_runs, T_exec_p99_us
+ * T_releases, T_misses, T_miss_pct, T_stale_runs, T_exec_p99_us,
+ * then (added later, so appended): top_speed_mps, T_skipped for each task,
+ * mediator_obstacle_cycles, mediator_waypoint_cycles, mediator_stop_cycles
  * </pre>
  *
  * RFC 4180 quoting; an empty field is a value the run did not give (an {@code error} row, or
  * {@code grid_resolution_m} when {@code run}'s default was used). Numbers are written exactly
- * (shortest decimal that reads back to the same double).
+ * (shortest decimal that reads back to the same double). A file written before the appended
+ * columns existed still reads: its header is a prefix of today's, and a missing column is an
+ * empty value.
  */
 public final class ResultsCsv {
 
@@ -38,6 +42,9 @@ public final class ResultsCsv {
 
     /** The header row's column names. */
     public static final List<String> HEADER = header();
+
+    /** The columns of the first version of the file; newer columns are appended after these. */
+    static final int FIRST_VERSION_COLUMNS = HEADER.indexOf("top_speed_mps");
 
     private ResultsCsv() {
     }
@@ -54,6 +61,13 @@ public final class ResultsCsv {
                 h.add(task + "_" + c);
             }
         }
+        h.add("top_speed_mps");
+        for (String task : PeriodSet.TASKS) {
+            h.add(task + "_skipped");
+        }
+        for (String winner : RunResult.MEDIATOR_WINNERS) {
+            h.add("mediator_" + winner + "_cycles");
+        }
         return List.copyOf(h);
     }
 
@@ -67,6 +81,7 @@ public final class ResultsCsv {
      */
     public static void append(Path file, RunResult result) throws IOException {
         repairPartialLine(file);
+        upgradeHeader(file);
         StringBuilder text = new StringBuilder();
         if (!Files.exists(file) || Files.size(file) == 0) {
             text.append(String.join(",", HEADER)).append('\n');
@@ -74,6 +89,33 @@ public final class ResultsCsv {
         text.append(format(result)).append('\n');
         Files.writeString(file, text, StandardCharsets.UTF_8, StandardOpenOption.CREATE, StandardOpenOption.APPEND,
                 StandardOpenOption.WRITE, StandardOpenOption.DSYNC);
+    }
+
+    /**
+     * Rewrites a file made before the appended columns existed with today's header (its rows
+     * get empty values there), so that new rows can be appended to it; atomic where the file
+     * system allows.
+     */
+    private static void upgradeHeader(Path file) throws IOException {
+        if (!Files.exists(file) || Files.size(file) == 0) {
+            return;
+        }
+        String first = Files.readAllLines(file, StandardCharsets.UTF_8).get(0);
+        if (split(first).equals(HEADER)) {
+            return;
+        }
+        StringBuilder text = new StringBuilder(String.join(",", HEADER)).append('\n');
+        for (RunResult r : read(file)) {
+            text.append(format(r)).append('\n');
+        }
+        Path tmp = file.resolveSibling(file.getFileName() + ".upgrade");
+        Files.writeString(tmp, text, StandardCharsets.UTF_8, StandardOpenOption.CREATE, StandardOpenOption.TRUNCATE_EXISTING,
+                StandardOpenOption.WRITE, StandardOpenOption.DSYNC);
+        try {
+            Files.move(tmp, file, java.nio.file.StandardCopyOption.REPLACE_EXISTING, java.nio.file.StandardCopyOption.ATOMIC_MOVE);
+        } catch (java.nio.file.AtomicMoveNotSupportedException e) {
+            Files.move(tmp, file, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        }
     }
 
     private static void repairPartialLine(Path file) throws IOException {
@@ -130,6 +172,16 @@ public final class ResultsCsv {
                 f.add(Long.toString(t.staleRuns()));
                 f.add(number(t.execP99Us()));
             }
+        }
+        Double speed = r.periods().topSpeedMps();
+        f.add(speed == null ? "" : number(speed));
+        for (String task : PeriodSet.TASKS) {
+            TaskResult t = r.tasks().get(task);
+            f.add(t == null || t.skipped() == null ? "" : Long.toString(t.skipped()));
+        }
+        for (String winner : RunResult.MEDIATOR_WINNERS) {
+            Long cycles = r.mediatorCycles().get(winner);
+            f.add(cycles == null ? "" : cycles.toString());
         }
         return String.join(",", f);
     }
@@ -196,7 +248,9 @@ public final class ResultsCsv {
         if (lines.isEmpty()) {
             return List.of();
         }
-        if (!split(lines.get(0)).equals(HEADER)) {
+        List<String> header = split(lines.get(0));
+        if (header.size() < FIRST_VERSION_COLUMNS || header.size() > HEADER.size()
+                || !header.equals(HEADER.subList(0, header.size()))) {
             throw new ExperimentInputException(file + ": the header is not that of rtaware's results.csv (expected "
                     + String.join(",", HEADER.subList(0, 4)) + ",...)");
         }
@@ -209,7 +263,7 @@ public final class ResultsCsv {
             }
             RunResult r;
             try {
-                r = parse(split(lines.get(i)));
+                r = parse(split(lines.get(i)), header.size());
             } catch (RuntimeException e) {
                 throw new ExperimentInputException(file + " line " + (i + 1) + ": " + e.getMessage());
             }
@@ -230,13 +284,13 @@ public final class ResultsCsv {
         return rows;
     }
 
-    private static RunResult parse(List<String> f) {
-        if (f.size() != HEADER.size()) {
-            throw new IllegalArgumentException("expected " + HEADER.size() + " fields, got " + f.size());
+    private static RunResult parse(List<String> f, int columns) {
+        if (f.size() != columns) {
+            throw new IllegalArgumentException("expected " + columns + " fields, got " + f.size());
         }
         Map<String, String> row = new LinkedHashMap<>();
         for (int i = 0; i < HEADER.size(); i++) {
-            row.put(HEADER.get(i), f.get(i));
+            row.put(HEADER.get(i), i < columns ? f.get(i) : "");
         }
         int run = Integer.parseInt(row.get("run"));
         Map<String, Long> periods = new LinkedHashMap<>();
@@ -249,13 +303,22 @@ public final class ResultsCsv {
             if (!row.get(t + "_releases").isEmpty()) {
                 tasks.put(t, new TaskResult(Long.parseLong(row.get(t + "_releases")), Long.parseLong(row.get(t + "_misses")),
                         decimal(row.get(t + "_miss_pct")), Long.parseLong(row.get(t + "_stale_runs")),
-                        decimal(row.get(t + "_exec_p99_us"))));
+                        decimal(row.get(t + "_exec_p99_us")), optionalLong(row.get(t + "_skipped"))));
             }
         }
-        return new RunResult(Integer.parseInt(row.get("set")), run, new PeriodSet(row.get("set_name"), periods), conditions,
+        Map<String, Long> mediator = new LinkedHashMap<>();
+        for (String winner : RunResult.MEDIATOR_WINNERS) {
+            Long cycles = optionalLong(row.get("mediator_" + winner + "_cycles"));
+            if (cycles != null) {
+                mediator.put(winner, cycles);
+            }
+        }
+        String speed = row.get("top_speed_mps");
+        PeriodSet set = new PeriodSet(row.get("set_name"), periods, speed.isEmpty() ? null : Double.valueOf(speed));
+        return new RunResult(Integer.parseInt(row.get("set")), run, set, conditions,
                 row.get("outcome"), decimal(row.get("run_time_s")), decimal(row.get("distance_to_finish_m")),
                 decimal(row.get("distance_travelled_m")), optionalInt(row.get("collisions")),
-                optionalInt(row.get("waypoints_reached")), optionalInt(row.get("waypoints_total")), tasks);
+                optionalInt(row.get("waypoints_reached")), optionalInt(row.get("waypoints_total")), tasks, mediator);
     }
 
     private static String number(double v) {
@@ -275,6 +338,10 @@ public final class ResultsCsv {
 
     private static Integer optionalInt(String s) {
         return s.isEmpty() ? null : Integer.valueOf(s);
+    }
+
+    private static Long optionalLong(String s) {
+        return s.isEmpty() ? null : Long.valueOf(s);
     }
 
     private static String quote(String text) {

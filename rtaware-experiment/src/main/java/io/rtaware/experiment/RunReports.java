@@ -10,8 +10,9 @@ import java.util.Map;
 
 /**
  * Turns the {@code report.json} that {@code rtaware run} writes into one {@link RunResult}:
- * the core report's tasks plus the {@code run} section (outcome, run time, distances,
- * collisions, waypoints).
+ * the core report's tasks (with their skipped releases) plus the {@code run} section (outcome,
+ * run time, distances, collisions, waypoints, and the cycles the mediator gave each winner when
+ * the report has a {@code mediator} mapping; a report without it gives none).
  */
 public final class RunReports {
 
@@ -42,13 +43,23 @@ public final class RunReports {
             TaskReport t = doc.report().task(name);
             if (t != null) {
                 tasks.put(name, new TaskResult(t.releases(), t.misses(), t.missPct(), t.staleRuns(),
-                        t.execUs() == null ? Double.NaN : t.execUs().p99()));
+                        t.execUs() == null ? Double.NaN : t.execUs().p99(), t.skipped()));
+            }
+        }
+        Map<String, Long> mediator = new LinkedHashMap<>();
+        JsonNode mediatorNode = runNode.get("mediator");
+        if (mediatorNode != null && mediatorNode.isObject()) {
+            for (String winner : RunResult.MEDIATOR_WINNERS) {
+                JsonNode v = mediatorNode.get(winner);
+                if (v != null && v.isIntegralNumber()) {
+                    mediator.put(winner, v.asLong());
+                }
             }
         }
         return new RunResult(set, run, periods, conditions, text(runNode, "outcome"),
                 number(runNode, "run_time_s"), number(runNode, "distance_to_finish_m"),
                 number(runNode, "distance_travelled_m"), integer(runNode, "collisions"),
-                integer(runNode, "waypoints_reached"), integer(runNode, "waypoints_total"), tasks);
+                integer(runNode, "waypoints_reached"), integer(runNode, "waypoints_total"), tasks, mediator);
     }
 
     private static String text(JsonNode node, String field) throws IOException {

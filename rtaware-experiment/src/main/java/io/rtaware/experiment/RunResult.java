@@ -1,5 +1,6 @@
 package io.rtaware.experiment;
 
+import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
@@ -21,11 +22,16 @@ import java.util.Set;
  * @param waypointsReached waypoints reached, or null if unknown
  * @param waypointsTotal waypoints in the course, or null if unknown
  * @param tasks per behavior of {@link PeriodSet#TASKS}; empty when the run gave no report
+ * @param mediatorCycles cycles the position mediator gave to each of {@link #MEDIATOR_WINNERS};
+ *     empty when unknown (a run report without them, or results that predate them)
  */
 public record RunResult(int set, int run, PeriodSet periods, RunConditions conditions, String outcome,
                         double runTimeS, double distanceToFinishM, double distanceTravelledM,
                         Integer collisions, Integer waypointsReached, Integer waypointsTotal,
-                        Map<String, TaskResult> tasks) {
+                        Map<String, TaskResult> tasks, Map<String, Long> mediatorCycles) {
+
+    /** What the position mediator can choose in a cycle: the avoider's request, the waypoint planner's, or a stop. */
+    public static final List<String> MEDIATOR_WINNERS = List.of("obstacle", "waypoint", "stop");
 
     /** Outcome of a run that reached the finish. */
     public static final String COMPLETED = "completed";
@@ -40,9 +46,34 @@ public record RunResult(int set, int run, PeriodSet periods, RunConditions condi
         Objects.requireNonNull(conditions, "conditions");
         Objects.requireNonNull(outcome, "outcome");
         tasks = Map.copyOf(tasks);
+        mediatorCycles = Map.copyOf(mediatorCycles);
         if (set < 1 || run < 1) {
             throw new IllegalArgumentException("set and run count from 1, got set " + set + " run " + run);
         }
+    }
+
+    /**
+     * A result without mediator counts.
+     *
+     * @param set the set's number
+     * @param run the run's number
+     * @param periods the set
+     * @param conditions the shared conditions
+     * @param outcome how the run ended
+     * @param runTimeS run time, s
+     * @param distanceToFinishM distance to the finish, m
+     * @param distanceTravelledM path length, m
+     * @param collisions collisions, or null
+     * @param waypointsReached waypoints reached, or null
+     * @param waypointsTotal waypoints in the course, or null
+     * @param tasks per behavior
+     */
+    public RunResult(int set, int run, PeriodSet periods, RunConditions conditions, String outcome,
+                     double runTimeS, double distanceToFinishM, double distanceTravelledM,
+                     Integer collisions, Integer waypointsReached, Integer waypointsTotal,
+                     Map<String, TaskResult> tasks) {
+        this(set, run, periods, conditions, outcome, runTimeS, distanceToFinishM, distanceTravelledM, collisions,
+                waypointsReached, waypointsTotal, tasks, Map.of());
     }
 
     /**

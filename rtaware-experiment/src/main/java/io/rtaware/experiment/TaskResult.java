@@ -8,6 +8,21 @@ package io.rtaware.experiment;
  * @param missPct {@code 100 * misses / releases}
  * @param staleRuns cycles that ran with no new input
  * @param execP99Us 99th percentile of the execution time per cycle, microseconds (world time)
+ * @param skipped releases skipped because the task was still running (counted in misses too),
+ *     or null when the results predate the column
  */
-public record TaskResult(long releases, long misses, double missPct, long staleRuns, double execP99Us) {
+public record TaskResult(long releases, long misses, double missPct, long staleRuns, double execP99Us, Long skipped) {
+
+    /**
+     * A result without the skipped count.
+     *
+     * @param releases grid points at which the task was due
+     * @param misses releases that missed their deadline
+     * @param missPct {@code 100 * misses / releases}
+     * @param staleRuns cycles that ran with no new input
+     * @param execP99Us p99 execution time, µs
+     */
+    public TaskResult(long releases, long misses, double missPct, long staleRuns, double execP99Us) {
+        this(releases, misses, missPct, staleRuns, execP99Us, null);
+    }
 }

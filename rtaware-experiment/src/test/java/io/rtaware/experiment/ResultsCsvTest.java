@@ -48,6 +48,38 @@ class ResultsCsvTest {
     }
 
     @Test
+    void newColumnsRoundTrip() throws Exception {
+        Path f = dir.resolve("results.csv");
+        RunResult r = new RunResult(1, 1, PeriodSet.of("fast", 100, 5, 100, 100).withTopSpeed(0.3),
+                new RunConditions("paper-room", 10, 1, null), "stuck", 80.5, 2.0, 7.25, 3, 1, 4,
+                Map.of("obstacle", new TaskResult(16000, 900, 5.625, 10, 4000, 870L)),
+                Map.of("obstacle", 12L, "waypoint", 700L, "stop", 3L));
+        ResultsCsv.append(f, r);
+        assertEquals(r, ResultsCsv.read(f).get(0));
+    }
+
+    @Test
+    void aFileFromBeforeTheAppendedColumnsLoadsAndTakesNewRows() throws Exception {
+        Path f = dir.resolve("results.csv");
+        RunResult old = new RunResult(1, 1, PeriodSet.of("S", 100, 10, 100, 100), new RunConditions("paper-room", 10, 1, null),
+                "completed", 233.5, 0.28, 25.0, 0, 4, 4, Map.of("planner", new TaskResult(2300, 20, 20 * 100.0 / 2300, 1, 5000)));
+        String row = ResultsCsv.format(old);
+        List<String> fields = ResultsCsv.split(row);
+        int columns = ResultsCsv.FIRST_VERSION_COLUMNS;
+        Files.writeString(f, String.join(",", ResultsCsv.HEADER.subList(0, columns)) + "\n"
+                + String.join(",", fields.subList(0, columns)) + "\n");
+        RunResult read = ResultsCsv.read(f).get(0);
+        assertEquals(old.toString(), read.toString());
+        assertEquals(null, read.tasks().get("planner").skipped());
+        assertEquals(Map.of(), read.mediatorCycles());
+        RunResult next = new RunResult(1, 2, old.periods(), old.conditions(), "stuck", 100, 1, 9, 2, 1, 4, Map.of(),
+                Map.of("stop", 4L));
+        ResultsCsv.append(f, next);
+        assertEquals(String.join(",", ResultsCsv.HEADER), Files.readAllLines(f).get(0));
+        assertEquals(List.of(old, next).toString(), ResultsCsv.read(f).toString());
+    }
+
+    @Test
     void aForeignFileIsAUserError() throws Exception {
         Path f = dir.resolve("results.csv");
         Files.writeString(f, "a,b,c\n1,2,3\n");

@@ -2,149 +2,260 @@ package io.rtaware.nav;
 
 import io.rtaware.robot.geometry.Point2d;
 import java.util.ArrayList;
+import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 
 /**
- * Everything the navigation controller is configured with. Immutable and thread-safe; every
- * value is validated on construction and a bad one is reported with its field name. Build one
- * with {@link #builder()}; the defaults are the paper's Set 4 periods and the Koala robot.
+ * Everything the navigation controller is configured with, in small groups: the tasks'
+ * periods, the occupancy grid, the planner, the path follower, the avoider, the robot's limits,
+ * the freshness limits of the data, and the course. Immutable and thread-safe; every value is
+ * validated on construction and a bad one is reported with its field name. Build one with
+ * {@link #builder()}; the defaults are the paper's Set 4 periods ({@link Behavior}) and the
+ * Koala at 0.1 m/s.
  *
  * <p>All positions (grid origin, waypoints) are in the odometry frame, the frame the robot
  * reports its pose in.
  *
- * @param waypointPeriodNs period of the {@code waypoint} task in ns (default 100 ms)
- * @param obstaclePeriodNs period of the {@code obstacle} task in ns (default 50 ms)
- * @param occupancyPeriodNs period of the {@code occupancy} task in ns (default 100 ms)
- * @param plannerPeriodNs period of the {@code planner} task in ns (default 100 ms)
- * @param mediatorPeriodNs period of the {@code mediator} task in ns (default: the shorter of
- *     the obstacle and waypoint periods)
- * @param gridResolutionM cell edge of the occupancy grid in metres (default 0.05). Cost on the
- *     paper's 9.6 m x 6.2 m room (NavBench, one loaded 2-core machine): at 0.05 m one 683-beam
- *     scan takes about 0.2-0.35 ms to integrate and a plan across the room 2-5 ms; at the
- *     paper's 0.5 m, about 0.07-0.11 ms and 5-11 us, but the room's gaps then vanish into whole cells
- * @param gridOriginXM x of the grid's lower-left corner in metres (default -10)
- * @param gridOriginYM y of the grid's lower-left corner in metres (default -10)
- * @param gridWidthM extent of the grid along x in metres (default 20)
- * @param gridHeightM extent of the grid along y in metres (default 20)
- * @param robotRadiusM the robot's radius in metres (default 0.2)
- * @param inflationMarginM clearance the planner adds to the robot radius in metres (default 0.05)
- * @param unknownCostFactor cost factor of driving through unknown cells, at least 1 (default 2)
- * @param topSpeedMps top forward speed in m/s (default 0.1)
- * @param maxOmegaRadPerSec turn-rate limit in rad/s (default 0.5)
- * @param lookaheadM pure-pursuit lookahead in metres (default 0.3)
- * @param turnInPlaceRad heading error above which the robot turns in place (default 0.8 rad)
- * @param goalToleranceM how near a waypoint counts as reached, in metres (default 0.25)
- * @param avoidRangeM depth of the avoider's safety zone in metres (default 0.4)
- * @param avoidHalfAngleRad half-width of the safety zone's sector in radians (default 0.6)
- * @param avoidStopRangeM nearer than this the avoider only turns, in metres (default 0.25)
- * @param avoidSpeedMps forward speed while avoiding in m/s (default 0.03)
- * @param laserMaxAgeNs oldest laser scan the avoider and the mapper trust (default 500 ms)
- * @param odometryMaxAgeNs oldest pose the mapper and the waypoint planner trust (default 500 ms)
- * @param avoidMaxAgeNs oldest avoider request the mediator trusts (default 2 obstacle periods
- *     plus one mediator period)
- * @param waypointMaxAgeNs oldest waypoint request the mediator trusts (default 2 waypoint
- *     periods plus one mediator period)
- * @param waypoints the course in order; the last is the finish; at least one
- * @param externalWaypoints true if the waypoint planner also consumes
- *     {@link NavKeys#WAYPOINTS_IN}, through which another task replaces the course (some task
- *     must then produce it)
+ * @param periods the tasks' periods
+ * @param grid the occupancy grid's extent and resolution
+ * @param planner the path planner's settings
+ * @param follower the waypoint planner's path following
+ * @param avoider the obstacle avoider's safety zone
+ * @param robot the robot's size, speed and reaction limits
+ * @param maxAges how old data may be before a task stops trusting it
+ * @param course the waypoints
  */
-public record NavConfig(
-        long waypointPeriodNs, long obstaclePeriodNs, long occupancyPeriodNs, long plannerPeriodNs,
-        long mediatorPeriodNs,
-        double gridResolutionM, double gridOriginXM, double gridOriginYM, double gridWidthM, double gridHeightM,
-        double robotRadiusM, double inflationMarginM, double unknownCostFactor,
-        double topSpeedMps, double maxOmegaRadPerSec, double lookaheadM, double turnInPlaceRad,
-        double goalToleranceM,
-        double avoidRangeM, double avoidHalfAngleRad, double avoidStopRangeM, double avoidSpeedMps,
-        long laserMaxAgeNs, long odometryMaxAgeNs, long avoidMaxAgeNs, long waypointMaxAgeNs,
-        List<Point2d> waypoints, boolean externalWaypoints) {
+public record NavConfig(Periods periods, Grid grid, Planner planner, Follower follower, Avoider avoider,
+                        Robot robot, MaxAges maxAges, Course course) {
 
-    /** Task name of the waypoint planner. */
-    public static final String WAYPOINT = "waypoint";
-    /** Task name of the obstacle avoider. */
-    public static final String OBSTACLE = "obstacle";
-    /** Task name of the occupancy grid mapper. */
-    public static final String OCCUPANCY = "occupancy";
-    /** Task name of the path planner. */
-    public static final String PLANNER = "planner";
-    /** Task name of the position mediator. */
+    /** Task name of the position mediator (not a {@link Behavior}: its period follows theirs). */
     public static final String MEDIATOR = "mediator";
-    /**
-     * The paper's four behaviors, in the order of its Table I: the tasks whose periods a user
-     * sets on the command line and an experiment varies (the mediator follows them).
-     */
-    public static final List<String> BEHAVIORS = List.of(WAYPOINT, OBSTACLE, OCCUPANCY, PLANNER);
-    /** The task names whose periods can be set, in registration order. */
-    public static final List<String> TASK_NAMES = List.of(WAYPOINT, OBSTACLE, OCCUPANCY, PLANNER, MEDIATOR);
+    /** The task names whose periods can be set, in registration order: the behaviors, then the mediator. */
+    public static final List<String> TASK_NAMES = taskNames();
 
     /** Largest grid accepted, in cells (about 30 bytes each across the tasks). */
     public static final long MAX_GRID_CELLS = 4_000_000L;
     /** Largest course accepted, in waypoints. */
     public static final int MAX_WAYPOINTS = 64;
 
-    /** Validates every value; see the field descriptions. */
+    private static List<String> taskNames() {
+        List<String> names = new ArrayList<>(Behavior.taskNames());
+        names.add(MEDIATOR);
+        return List.copyOf(names);
+    }
+
+    /** Validates that no group is missing; each group validates its own values. */
     public NavConfig {
-        positive("waypointPeriodNs", waypointPeriodNs);
-        positive("obstaclePeriodNs", obstaclePeriodNs);
-        positive("occupancyPeriodNs", occupancyPeriodNs);
-        positive("plannerPeriodNs", plannerPeriodNs);
-        positive("mediatorPeriodNs", mediatorPeriodNs);
-        positive("gridResolutionM", gridResolutionM);
-        finite("gridOriginXM", gridOriginXM);
-        finite("gridOriginYM", gridOriginYM);
-        positive("gridWidthM", gridWidthM);
-        positive("gridHeightM", gridHeightM);
-        if (gridWidthM < gridResolutionM) {
-            throw new IllegalArgumentException("gridWidthM must be at least gridResolutionM, got " + gridWidthM);
+        Objects.requireNonNull(periods, "periods");
+        Objects.requireNonNull(grid, "grid");
+        Objects.requireNonNull(planner, "planner");
+        Objects.requireNonNull(follower, "follower");
+        Objects.requireNonNull(avoider, "avoider");
+        Objects.requireNonNull(robot, "robot");
+        Objects.requireNonNull(maxAges, "maxAges");
+        Objects.requireNonNull(course, "course");
+        if (avoider.speedMps() > robot.topSpeedMps()) {
+            throw new IllegalArgumentException("avoidSpeedMps must not exceed topSpeedMps, got " + avoider.speedMps());
         }
-        if (gridHeightM < gridResolutionM) {
-            throw new IllegalArgumentException("gridHeightM must be at least gridResolutionM, got " + gridHeightM);
+    }
+
+    /**
+     * The tasks' periods.
+     *
+     * @param behaviorsNs each behavior's period in ns
+     * @param mediatorNs the mediator's period in ns
+     */
+    public record Periods(Map<Behavior, Long> behaviorsNs, long mediatorNs) {
+        /** @throws IllegalArgumentException naming a missing or non-positive period */
+        public Periods {
+            behaviorsNs = Map.copyOf(behaviorsNs);
+            for (Behavior b : Behavior.values()) {
+                Long p = behaviorsNs.get(b);
+                if (p == null) {
+                    throw new IllegalArgumentException("period of task '" + b.taskName() + "' is missing");
+                }
+                positive(b.taskName() + "PeriodNs", p);
+            }
+            positive("mediatorPeriodNs", mediatorNs);
         }
-        long cells = (long) Math.ceil(gridWidthM / gridResolutionM) * (long) Math.ceil(gridHeightM / gridResolutionM);
-        if (cells > MAX_GRID_CELLS) {
-            throw new IllegalArgumentException("grid of " + gridWidthM + " x " + gridHeightM + " m at "
-                    + gridResolutionM + " m has " + cells + " cells, more than " + MAX_GRID_CELLS);
+
+        /**
+         * @param behavior a behavior
+         * @return its period in ns
+         */
+        public long ns(Behavior behavior) {
+            return behaviorsNs.get(behavior);
         }
-        nonNegative("robotRadiusM", robotRadiusM);
-        nonNegative("inflationMarginM", inflationMarginM);
-        if (!(unknownCostFactor >= 1) || Double.isInfinite(unknownCostFactor)) {
-            throw new IllegalArgumentException("unknownCostFactor must be >= 1, got " + unknownCostFactor);
-        }
-        positive("topSpeedMps", topSpeedMps);
-        positive("maxOmegaRadPerSec", maxOmegaRadPerSec);
-        positive("lookaheadM", lookaheadM);
-        if (!(turnInPlaceRad > 0 && turnInPlaceRad <= Math.PI)) {
-            throw new IllegalArgumentException("turnInPlaceRad must be in (0, pi], got " + turnInPlaceRad);
-        }
-        positive("goalToleranceM", goalToleranceM);
-        positive("avoidRangeM", avoidRangeM);
-        positive("avoidHalfAngleRad", avoidHalfAngleRad);
-        if (!(avoidStopRangeM >= 0 && avoidStopRangeM <= avoidRangeM)) {
-            throw new IllegalArgumentException("avoidStopRangeM must be in 0..avoidRangeM, got " + avoidStopRangeM);
-        }
-        nonNegative("avoidSpeedMps", avoidSpeedMps);
-        if (avoidSpeedMps > topSpeedMps) {
-            throw new IllegalArgumentException("avoidSpeedMps must not exceed topSpeedMps, got " + avoidSpeedMps);
-        }
-        positive("laserMaxAgeNs", laserMaxAgeNs);
-        positive("odometryMaxAgeNs", odometryMaxAgeNs);
-        positive("avoidMaxAgeNs", avoidMaxAgeNs);
-        positive("waypointMaxAgeNs", waypointMaxAgeNs);
-        Objects.requireNonNull(waypoints, "waypoints");
-        if (waypoints.isEmpty() || waypoints.size() > MAX_WAYPOINTS) {
-            throw new IllegalArgumentException("waypoints must hold 1.." + MAX_WAYPOINTS + " points, got "
-                    + waypoints.size());
-        }
-        for (int i = 0; i < waypoints.size(); i++) {
-            Point2d p = waypoints.get(i);
-            if (p == null || !Double.isFinite(p.xM()) || !Double.isFinite(p.yM())) {
-                throw new IllegalArgumentException("waypoints[" + i + "] must be a finite point, got " + p);
+    }
+
+    /**
+     * The occupancy grid.
+     *
+     * @param resolutionM cell edge in metres (default 0.05). Cost on the paper's 9.6 m x 6.2 m
+     *     room (NavBench, one loaded 2-core machine): at 0.05 m one 683-beam scan takes about
+     *     0.2-0.35 ms to integrate and a plan across the room 2-5 ms; at the paper's 0.5 m, about
+     *     0.07-0.11 ms and 5-11 us, but the room's gaps then vanish into whole cells
+     * @param originXM x of the lower-left corner in metres (default -10)
+     * @param originYM y of the lower-left corner in metres (default -10)
+     * @param widthM extent along x in metres (default 20)
+     * @param heightM extent along y in metres (default 20)
+     */
+    public record Grid(double resolutionM, double originXM, double originYM, double widthM, double heightM) {
+        /** @throws IllegalArgumentException naming the bad value */
+        public Grid {
+            positive("gridResolutionM", resolutionM);
+            finite("gridOriginXM", originXM);
+            finite("gridOriginYM", originYM);
+            positive("gridWidthM", widthM);
+            positive("gridHeightM", heightM);
+            if (widthM < resolutionM) {
+                throw new IllegalArgumentException("gridWidthM must be at least gridResolutionM, got " + widthM);
+            }
+            if (heightM < resolutionM) {
+                throw new IllegalArgumentException("gridHeightM must be at least gridResolutionM, got " + heightM);
+            }
+            long cells = (long) Math.ceil(widthM / resolutionM) * (long) Math.ceil(heightM / resolutionM);
+            if (cells > MAX_GRID_CELLS) {
+                throw new IllegalArgumentException("grid of " + widthM + " x " + heightM + " m at "
+                        + resolutionM + " m has " + cells + " cells, more than " + MAX_GRID_CELLS);
             }
         }
-        waypoints = List.copyOf(waypoints);
+
+        /** @return cells along x */
+        public int widthCells() {
+            return (int) Math.ceil(widthM / resolutionM);
+        }
+
+        /** @return cells along y */
+        public int heightCells() {
+            return (int) Math.ceil(heightM / resolutionM);
+        }
+    }
+
+    /**
+     * The path planner.
+     *
+     * @param inflationMarginM clearance added to the robot radius in metres (default 0.05)
+     * @param unknownCostFactor cost factor of driving through unknown cells, at least 1 (default 2)
+     */
+    public record Planner(double inflationMarginM, double unknownCostFactor) {
+        /** @throws IllegalArgumentException naming the bad value */
+        public Planner {
+            nonNegative("inflationMarginM", inflationMarginM);
+            if (!(unknownCostFactor >= 1) || Double.isInfinite(unknownCostFactor)) {
+                throw new IllegalArgumentException("unknownCostFactor must be >= 1, got " + unknownCostFactor);
+            }
+        }
+    }
+
+    /**
+     * The waypoint planner's path following.
+     *
+     * @param lookaheadM pure-pursuit lookahead in metres (default 0.3)
+     * @param turnInPlaceRad heading error above which the robot turns in place (default 0.8 rad)
+     * @param goalToleranceM how near a waypoint counts as reached, in metres (default 0.25)
+     */
+    public record Follower(double lookaheadM, double turnInPlaceRad, double goalToleranceM) {
+        /** @throws IllegalArgumentException naming the bad value */
+        public Follower {
+            positive("lookaheadM", lookaheadM);
+            if (!(turnInPlaceRad > 0 && turnInPlaceRad <= Math.PI)) {
+                throw new IllegalArgumentException("turnInPlaceRad must be in (0, pi], got " + turnInPlaceRad);
+            }
+            positive("goalToleranceM", goalToleranceM);
+        }
+    }
+
+    /**
+     * The obstacle avoider's safety zone.
+     *
+     * @param rangeM depth of the safety zone in metres, from the laser (default 0.4)
+     * @param halfAngleRad half-width of the zone's sector in radians (default 0.6)
+     * @param stopRangeM nearer than this the avoider only turns, in metres (default 0.25)
+     * @param speedMps forward speed while avoiding in m/s (default 0.03)
+     */
+    public record Avoider(double rangeM, double halfAngleRad, double stopRangeM, double speedMps) {
+        /** @throws IllegalArgumentException naming the bad value */
+        public Avoider {
+            positive("avoidRangeM", rangeM);
+            positive("avoidHalfAngleRad", halfAngleRad);
+            if (!(stopRangeM >= 0 && stopRangeM <= rangeM)) {
+                throw new IllegalArgumentException("avoidStopRangeM must be in 0..avoidRangeM, got " + stopRangeM);
+            }
+            nonNegative("avoidSpeedMps", speedMps);
+        }
+    }
+
+    /**
+     * The robot's size, speed and reaction limits.
+     *
+     * @param radiusM the robot's radius in metres (default 0.2)
+     * @param topSpeedMps top forward speed in m/s (default 0.1)
+     * @param maxOmegaRadPerSec turn-rate limit in rad/s (default 0.5)
+     * @param stoppingDistanceM distance the robot covers from a stop command at top speed until
+     *     it stands, in metres (command latency plus braking; default 0.01, braking at 0.5 m/s^2)
+     * @param laserDelayNs age of a laser scan when it is delivered, ns (sweep and transfer;
+     *     default 0, an instantaneous laser)
+     */
+    public record Robot(double radiusM, double topSpeedMps, double maxOmegaRadPerSec, double stoppingDistanceM,
+                        long laserDelayNs) {
+        /** @throws IllegalArgumentException naming the bad value */
+        public Robot {
+            nonNegative("robotRadiusM", radiusM);
+            positive("topSpeedMps", topSpeedMps);
+            positive("maxOmegaRadPerSec", maxOmegaRadPerSec);
+            nonNegative("stoppingDistanceM", stoppingDistanceM);
+            if (laserDelayNs < 0) {
+                throw new IllegalArgumentException("laserDelayNs must be >= 0, got " + laserDelayNs);
+            }
+        }
+    }
+
+    /**
+     * How old data may be before a task stops trusting it.
+     *
+     * @param laserNs oldest laser scan the avoider and the mapper trust (default 500 ms)
+     * @param odometryNs oldest pose the mapper and the waypoint planner trust (default 500 ms)
+     * @param avoidRequestNs oldest avoider request the mediator trusts (default 2 obstacle
+     *     periods plus one mediator period)
+     * @param waypointRequestNs oldest waypoint request the mediator trusts (default 2 waypoint
+     *     periods plus one mediator period)
+     */
+    public record MaxAges(long laserNs, long odometryNs, long avoidRequestNs, long waypointRequestNs) {
+        /** @throws IllegalArgumentException naming the bad value */
+        public MaxAges {
+            positive("laserMaxAgeNs", laserNs);
+            positive("odometryMaxAgeNs", odometryNs);
+            positive("avoidMaxAgeNs", avoidRequestNs);
+            positive("waypointMaxAgeNs", waypointRequestNs);
+        }
+    }
+
+    /**
+     * The course.
+     *
+     * @param waypoints the course in order; the last is the finish; 1..{@value #MAX_WAYPOINTS}
+     * @param external true if the waypoint planner also consumes {@link NavKeys#WAYPOINTS_IN},
+     *     through which another task replaces the course (some task must then produce it)
+     */
+    public record Course(List<Point2d> waypoints, boolean external) {
+        /** @throws IllegalArgumentException naming the bad value */
+        public Course {
+            Objects.requireNonNull(waypoints, "waypoints");
+            if (waypoints.isEmpty() || waypoints.size() > MAX_WAYPOINTS) {
+                throw new IllegalArgumentException("waypoints must hold 1.." + MAX_WAYPOINTS + " points, got "
+                        + waypoints.size());
+            }
+            for (int i = 0; i < waypoints.size(); i++) {
+                Point2d p = waypoints.get(i);
+                if (p == null || !Double.isFinite(p.xM()) || !Double.isFinite(p.yM())) {
+                    throw new IllegalArgumentException("waypoints[" + i + "] must be a finite point, got " + p);
+                }
+            }
+            waypoints = List.copyOf(waypoints);
+        }
     }
 
     private static void positive(String name, long v) {
@@ -176,19 +287,9 @@ public record NavConfig(
         return new Builder();
     }
 
-    /** @return the grid's cells along x */
-    public int gridWidthCells() {
-        return (int) Math.ceil(gridWidthM / gridResolutionM);
-    }
-
-    /** @return the grid's cells along y */
-    public int gridHeightCells() {
-        return (int) Math.ceil(gridHeightM / gridResolutionM);
-    }
-
     /** @return robot radius plus margin: the planner's obstacle inflation in metres */
     public double inflationRadiusM() {
-        return robotRadiusM + inflationMarginM;
+        return robot.radiusM() + planner.inflationMarginM();
     }
 
     /**
@@ -197,27 +298,16 @@ public record NavConfig(
      * @throws IllegalArgumentException for another name
      */
     public long periodNs(String taskName) {
-        return switch (taskName) {
-            case WAYPOINT -> waypointPeriodNs;
-            case OBSTACLE -> obstaclePeriodNs;
-            case OCCUPANCY -> occupancyPeriodNs;
-            case PLANNER -> plannerPeriodNs;
-            case MEDIATOR -> mediatorPeriodNs;
-            default -> throw new IllegalArgumentException("unknown task '" + taskName + "' (known: "
-                    + String.join(", ", TASK_NAMES) + ")");
-        };
+        return MEDIATOR.equals(taskName) ? periods.mediatorNs() : periods.ns(Behavior.ofTaskName(taskName));
     }
 
     /**
-     * Collects a configuration. Periods left unset take the paper's Set 4 values; the mediator
-     * period and the mediator's maximum ages, if left unset, are derived from the periods when
-     * {@link #build()} is called. Not thread-safe.
+     * Collects a configuration. Periods left unset take their {@link Behavior}'s default (the
+     * paper's Set 4); the mediator period and the mediator's maximum ages, if left unset, are
+     * derived from the periods when {@link #build()} is called. Not thread-safe.
      */
     public static final class Builder {
-        private long waypointPeriodNs = 100_000_000L;
-        private long obstaclePeriodNs = 50_000_000L;
-        private long occupancyPeriodNs = 100_000_000L;
-        private long plannerPeriodNs = 100_000_000L;
+        private final Map<Behavior, Long> periodsNs = new EnumMap<>(Behavior.class);
         private long mediatorPeriodNs;
         private double gridResolutionM = 0.05;
         private double gridOriginXM = -10;
@@ -229,6 +319,8 @@ public record NavConfig(
         private double unknownCostFactor = 2.0;
         private double topSpeedMps = 0.1;
         private double maxOmegaRadPerSec = 0.5;
+        private double stoppingDistanceM = 0.01;
+        private long laserDelayNs;
         private double lookaheadM = 0.3;
         private double turnInPlaceRad = 0.8;
         private double goalToleranceM = 0.25;
@@ -244,55 +336,40 @@ public record NavConfig(
         private boolean externalWaypoints;
 
         private Builder() {
+            for (Behavior b : Behavior.values()) {
+                periodsNs.put(b, b.defaultPeriodNs());
+            }
         }
 
         /**
          * Sets the periods of some tasks by name, as given on a command line.
          *
-         * @param periodsNs task name ({@link #TASK_NAMES}) to period in ns
+         * @param byTaskNs task name ({@link #TASK_NAMES}) to period in ns
          * @return this
          * @throws IllegalArgumentException naming an unknown task or a period of 0 or less
          */
-        public Builder periodsNs(Map<String, Long> periodsNs) {
-            for (Map.Entry<String, Long> e : periodsNs.entrySet()) {
+        public Builder periodsNs(Map<String, Long> byTaskNs) {
+            for (Map.Entry<String, Long> e : byTaskNs.entrySet()) {
                 long p = e.getValue();
                 if (p <= 0) {
                     throw new IllegalArgumentException("period of task '" + e.getKey() + "' must be > 0, got " + p);
                 }
-                switch (e.getKey()) {
-                    case WAYPOINT -> waypointPeriodNs = p;
-                    case OBSTACLE -> obstaclePeriodNs = p;
-                    case OCCUPANCY -> occupancyPeriodNs = p;
-                    case PLANNER -> plannerPeriodNs = p;
-                    case MEDIATOR -> mediatorPeriodNs = p;
-                    default -> throw new IllegalArgumentException("unknown task '" + e.getKey() + "' (known: "
-                            + String.join(", ", TASK_NAMES) + ")");
+                if (MEDIATOR.equals(e.getKey())) {
+                    mediatorPeriodNs = p;
+                } else {
+                    periodsNs.put(Behavior.ofTaskName(e.getKey()), p);
                 }
             }
             return this;
         }
 
-        /** @param ns period of the waypoint task @return this */
-        public Builder waypointPeriodNs(long ns) {
-            waypointPeriodNs = ns;
-            return this;
-        }
-
-        /** @param ns period of the obstacle task @return this */
-        public Builder obstaclePeriodNs(long ns) {
-            obstaclePeriodNs = ns;
-            return this;
-        }
-
-        /** @param ns period of the occupancy task @return this */
-        public Builder occupancyPeriodNs(long ns) {
-            occupancyPeriodNs = ns;
-            return this;
-        }
-
-        /** @param ns period of the planner task @return this */
-        public Builder plannerPeriodNs(long ns) {
-            plannerPeriodNs = ns;
+        /**
+         * @param behavior a behavior
+         * @param ns its period
+         * @return this
+         */
+        public Builder periodNs(Behavior behavior, long ns) {
+            periodsNs.put(behavior, ns);
             return this;
         }
 
@@ -352,6 +429,17 @@ public record NavConfig(
         /** @param radPerSec turn-rate limit in rad/s @return this */
         public Builder maxOmegaRadPerSec(double radPerSec) {
             maxOmegaRadPerSec = radPerSec;
+            return this;
+        }
+
+        /**
+         * @param stoppingM distance from a stop command at top speed to standing, metres
+         * @param laserAgeNs age of a scan when delivered, ns
+         * @return this
+         */
+        public Builder reactionLimits(double stoppingM, long laserAgeNs) {
+            stoppingDistanceM = stoppingM;
+            laserDelayNs = laserAgeNs;
             return this;
         }
 
@@ -429,16 +517,19 @@ public record NavConfig(
          * @throws IllegalArgumentException naming the first bad field and its value
          */
         public NavConfig build() {
-            long mediator = mediatorPeriodNs > 0 ? mediatorPeriodNs : Math.min(obstaclePeriodNs, waypointPeriodNs);
-            long avoidAge = avoidMaxAgeNs > 0 ? avoidMaxAgeNs : 2 * obstaclePeriodNs + mediator;
-            long waypointAge = waypointMaxAgeNs > 0 ? waypointMaxAgeNs : 2 * waypointPeriodNs + mediator;
-            return new NavConfig(waypointPeriodNs, obstaclePeriodNs, occupancyPeriodNs, plannerPeriodNs, mediator,
-                    gridResolutionM, gridOriginXM, gridOriginYM, gridWidthM, gridHeightM,
-                    robotRadiusM, inflationMarginM, unknownCostFactor,
-                    topSpeedMps, maxOmegaRadPerSec, lookaheadM, turnInPlaceRad, goalToleranceM,
-                    avoidRangeM, avoidHalfAngleRad, avoidStopRangeM, avoidSpeedMps,
-                    laserMaxAgeNs, odometryMaxAgeNs, avoidAge, waypointAge,
-                    waypoints, externalWaypoints);
+            long obstacle = periodsNs.get(Behavior.OBSTACLE);
+            long waypoint = periodsNs.get(Behavior.WAYPOINT);
+            long mediator = mediatorPeriodNs > 0 ? mediatorPeriodNs : Math.min(obstacle, waypoint);
+            long avoidAge = avoidMaxAgeNs > 0 ? avoidMaxAgeNs : 2 * obstacle + mediator;
+            long waypointAge = waypointMaxAgeNs > 0 ? waypointMaxAgeNs : 2 * waypoint + mediator;
+            return new NavConfig(new Periods(periodsNs, mediator),
+                    new Grid(gridResolutionM, gridOriginXM, gridOriginYM, gridWidthM, gridHeightM),
+                    new Planner(inflationMarginM, unknownCostFactor),
+                    new Follower(lookaheadM, turnInPlaceRad, goalToleranceM),
+                    new Avoider(avoidRangeM, avoidHalfAngleRad, avoidStopRangeM, avoidSpeedMps),
+                    new Robot(robotRadiusM, topSpeedMps, maxOmegaRadPerSec, stoppingDistanceM, laserDelayNs),
+                    new MaxAges(laserMaxAgeNs, odometryMaxAgeNs, avoidAge, waypointAge),
+                    new Course(waypoints, externalWaypoints));
         }
     }
 }

@@ -1,6 +1,7 @@
 package io.rtaware.nav;
 
 import io.rtaware.core.task.ErrorPolicy;
+import io.rtaware.core.task.ReactionConstraint;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.TaskSpec;
 import io.rtaware.nav.logic.DijkstraPlanner;
@@ -16,6 +17,7 @@ import io.rtaware.nav.task.WaypointPlannerTask;
 import io.rtaware.robot.geometry.Point2d;
 import io.rtaware.robot.msg.GoalSet;
 import io.rtaware.robot.msg.OccupancyGrid;
+import io.rtaware.robot.msg.RobotKeys;
 import java.util.List;
 import java.util.Optional;
 
@@ -51,37 +53,57 @@ public final class NavController {
     public NavController(NavConfig config) {
         this.config = config;
         this.keys = new NavKeys(config);
-        int w = config.gridWidthCells();
-        int h = config.gridHeightCells();
+        NavConfig.Grid grid = config.grid();
+        NavConfig.Robot robot = config.robot();
+        NavConfig.Avoider avoid = config.avoider();
+        NavConfig.MaxAges maxAges = config.maxAges();
+        int w = grid.widthCells();
+        int h = grid.heightCells();
 
         GoalSet course = new GoalSet(NavConfig.MAX_WAYPOINTS);
-        List<Point2d> points = config.waypoints();
+        List<Point2d> points = config.course().waypoints();
         for (int i = 0; i < points.size(); i++) {
             course.add(i + 1, points.get(i).xM(), points.get(i).yM());
         }
         this.waypoint = new WaypointPlannerTask(keys.goalsWaypoint(), keys.path(), keys.course(),
-                config.externalWaypoints() ? keys.waypointsIn() : null, course,
-                new WaypointSequencer(GoalSet.DEFAULT_CAPACITY, config.goalToleranceM()),
-                new PathFollower(config.topSpeedMps(), config.maxOmegaRadPerSec(), config.lookaheadM(),
-                        config.turnInPlaceRad()),
-                config.odometryMaxAgeNs());
+                config.course().external() ? keys.waypointsIn() : null, course,
+                new WaypointSequencer(GoalSet.DEFAULT_CAPACITY, config.follower().goalToleranceM()),
+                new PathFollower(robot.topSpeedMps(), robot.maxOmegaRadPerSec(), config.follower().lookaheadM(),
+                        config.follower().turnInPlaceRad()),
+                maxAges.odometryNs());
         ObstacleAvoidanceTask obstacle = new ObstacleAvoidanceTask(
-                new ObstacleAvoider(config.avoidRangeM(), config.avoidHalfAngleRad(), config.avoidStopRangeM(),
-                        config.avoidSpeedMps(), config.maxOmegaRadPerSec()),
-                config.laserMaxAgeNs());
+                new ObstacleAvoider(avoid.rangeM(), avoid.halfAngleRad(), avoid.stopRangeM(), avoid.speedMps(),
+                        robot.maxOmegaRadPerSec()),
+                maxAges.laserNs(), reaction(config));
         this.occupancy = new OccupancyGridTask(keys.map(),
-                new LogOddsGrid(config.gridOriginXM(), config.gridOriginYM(), w, h, config.gridResolutionM()),
-                config.laserMaxAgeNs(), config.odometryMaxAgeNs());
+                new LogOddsGrid(grid.originXM(), grid.originYM(), w, h, grid.resolutionM()),
+                maxAges.laserNs(), maxAges.odometryNs());
         DijkstraPlannerTask planner = new DijkstraPlannerTask(keys.map(), keys.path(), List.of(keys.goalsWaypoint()),
-                new DijkstraPlanner(w * h, config.inflationRadiusM(), config.unknownCostFactor()),
-                REPLAN_DISTANCE_CELLS * config.gridResolutionM());
-        this.mediator = new PositionMediatorTask(config.avoidMaxAgeNs(), config.waypointMaxAgeNs());
+                new DijkstraPlanner(w * h, config.inflationRadiusM(), config.planner().unknownCostFactor()),
+                REPLAN_DISTANCE_CELLS * grid.resolutionM());
+        this.mediator = new PositionMediatorTask(maxAges.avoidRequestNs(), maxAges.waypointRequestNs());
+        NavConfig.Periods periods = config.periods();
         this.specs = List.of(
-                spec(NavConfig.WAYPOINT, config.waypointPeriodNs(), waypoint),
-                spec(NavConfig.OBSTACLE, config.obstaclePeriodNs(), obstacle),
-                spec(NavConfig.OCCUPANCY, config.occupancyPeriodNs(), occupancy),
-                spec(NavConfig.PLANNER, config.plannerPeriodNs(), planner),
-                spec(NavConfig.MEDIATOR, config.mediatorPeriodNs(), mediator));
+                spec(Behavior.WAYPOINT.taskName(), periods.ns(Behavior.WAYPOINT), waypoint),
+                spec(Behavior.OBSTACLE.taskName(), periods.ns(Behavior.OBSTACLE), obstacle),
+                spec(Behavior.OCCUPANCY.taskName(), periods.ns(Behavior.OCCUPANCY), occupancy),
+                spec(Behavior.PLANNER.taskName(), periods.ns(Behavior.PLANNER), planner),
+                spec(NavConfig.MEDIATOR, periods.mediatorNs(), mediator));
+    }
+
+    /**
+     * The avoider's reaction: what it sees at its safety range, minus the robot's radius (the
+     * laser sits at the centre; the body ends a radius ahead), must be stopped short of, at the
+     * robot's top speed, with its stopping distance, from scans as old as the laser's delay.
+     * Null when the zone does not reach beyond the body (nothing to declare).
+     */
+    private static ReactionConstraint reaction(NavConfig config) {
+        double rangeM = config.avoider().rangeM() - config.robot().radiusM();
+        if (rangeM <= 0) {
+            return null;
+        }
+        return new ReactionConstraint(RobotKeys.LASER.name(), config.robot().topSpeedMps(),
+                config.robot().stoppingDistanceM(), rangeM, config.robot().laserDelayNs() / 1e6);
     }
 
     private static TaskSpec spec(String name, long periodNs, io.rtaware.core.task.Task task) {

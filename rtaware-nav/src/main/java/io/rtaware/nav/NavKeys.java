@@ -23,7 +23,7 @@ public final class NavKeys {
     /** Prefix of the goal request keys: requester {@code r} writes {@code goals.r}. */
     public static final String GOALS_PREFIX = "goals.";
     /** Name of the waypoint planner's goal request key, produced by {@code waypoint}. */
-    public static final String GOALS_WAYPOINT = GOALS_PREFIX + NavConfig.WAYPOINT;
+    public static final String GOALS_WAYPOINT = GOALS_PREFIX + "waypoint";
     /** Name of the course status key, produced by {@code waypoint}. */
     public static final String COURSE = "course";
     /** Name of the optional key through which another task replaces the course. */
@@ -39,7 +39,7 @@ public final class NavKeys {
      * @param config the configuration the map is sized from
      */
     public NavKeys(NavConfig config) {
-        int cells = config.gridWidthCells() * config.gridHeightCells();
+        int cells = config.grid().widthCells() * config.grid().heightCells();
         this.map = Key.of(MAP, OccupancyGrid.class, () -> new OccupancyGrid(cells));
         this.path = Key.of(PATH, PlannedPath.class, PlannedPath::new);
         this.goalsWaypoint = Key.of(GOALS_WAYPOINT, GoalSet.class, GoalSet::new);

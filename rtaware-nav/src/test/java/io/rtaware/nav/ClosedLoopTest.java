@@ -80,8 +80,8 @@ class ClosedLoopTest {
                 }
             }
             VelocityCommand cmd = h.read(RobotKeys.MOTOR);
-            assertTrue(Math.abs(cmd.vxMps) <= config.topSpeedMps() + 1e-9, "speed within the top speed");
-            assertTrue(Math.abs(cmd.omegaRadPerSec) <= config.maxOmegaRadPerSec() + 1e-9, "turn rate within limit");
+            assertTrue(Math.abs(cmd.vxMps) <= config.robot().topSpeedMps() + 1e-9, "speed within the top speed");
+            assertTrue(Math.abs(cmd.omegaRadPerSec) <= config.robot().maxOmegaRadPerSec() + 1e-9, "turn rate within limit");
             room.step(cmd.vxMps, cmd.omegaRadPerSec, STEP_NS / 1e9);
             CourseStatus course = h.read(nav.keys().course());
             done = course.done;
@@ -93,7 +93,7 @@ class ClosedLoopTest {
                 + " at " + room.xM + "," + room.yM);
         assertEquals(3, course.waypointsReached);
         assertEquals(0, room.collisions, "collisions");
-        assertTrue(Math.hypot(room.xM - 0.8, room.yM - 2.0) <= config.goalToleranceM() + 0.02, "at the finish");
+        assertTrue(Math.hypot(room.xM - 0.8, room.yM - 2.0) <= config.follower().goalToleranceM() + 0.02, "at the finish");
         PositionMediatorTask.MediatorCounts counts = nav.mediatorCounts();
         assertTrue(counts.waypoint() > 0, "waypoint planner drove");
         assertEquals(nav.courseProgress().waypointsReached(), 3);

@@ -23,19 +23,22 @@ class NavConfigTest {
         assertEquals(50 * MS, c.periodNs("obstacle"));
         assertEquals(100 * MS, c.periodNs("occupancy"));
         assertEquals(100 * MS, c.periodNs("planner"));
-        assertEquals(50 * MS, c.mediatorPeriodNs(), "the faster of obstacle and waypoint");
-        assertEquals(150 * MS, c.avoidMaxAgeNs());
-        assertEquals(250 * MS, c.waypointMaxAgeNs());
-        assertEquals(0.05, c.gridResolutionM());
-        assertEquals(400, c.gridWidthCells());
+        assertEquals(50 * MS, c.periods().mediatorNs(), "the faster of obstacle and waypoint");
+        assertEquals(150 * MS, c.maxAges().avoidRequestNs());
+        assertEquals(250 * MS, c.maxAges().waypointRequestNs());
+        assertEquals(0.05, c.grid().resolutionM());
+        assertEquals(400, c.grid().widthCells());
         assertEquals(0.25, c.inflationRadiusM(), 1e-12);
+        for (Behavior b : Behavior.values()) {
+            assertEquals(b.defaultPeriodNs(), c.periods().ns(b), b.taskName());
+        }
     }
 
     @Test
     void periodsByNameAndTheirTasks() {
         NavConfig c = NavConfig.builder().waypoints(COURSE)
                 .periodsNs(Map.of("obstacle", 10 * MS, "waypoint", 20 * MS)).build();
-        assertEquals(10 * MS, c.mediatorPeriodNs());
+        assertEquals(10 * MS, c.periods().mediatorNs());
         NavController nav = new NavController(c);
         List<TaskSpec> specs = nav.taskSpecs();
         assertEquals(NavConfig.TASK_NAMES, specs.stream().map(TaskSpec::name).toList());
@@ -46,6 +49,42 @@ class NavConfigTest {
         assertEquals("goals.waypoint", nav.keys().goalsWaypoint().name());
         assertTrue(nav.finalMap().isEmpty());
         assertEquals(0, nav.mediatorCounts().obstacle());
+    }
+
+    @Test
+    void behaviorsCarryTheirNamesAndSet4Periods() {
+        assertEquals(List.of("waypoint", "obstacle", "occupancy", "planner"), Behavior.taskNames());
+        assertEquals(Map.of("waypoint", 100 * MS, "obstacle", 50 * MS, "occupancy", 100 * MS, "planner", 100 * MS),
+                Behavior.defaultPeriodsNs());
+        assertEquals(Behavior.PLANNER, Behavior.ofTaskName("planner"));
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> Behavior.ofTaskName("mapper"));
+        assertEquals("unknown behavior 'mapper' (known: waypoint, obstacle, occupancy, planner)", e.getMessage());
+        assertEquals(List.of("waypoint", "obstacle", "occupancy", "planner", "mediator"), NavConfig.TASK_NAMES);
+    }
+
+    @Test
+    void theAvoiderDeclaresItsReactionFromTheRobotLimits() {
+        NavConfig c = NavConfig.builder().waypoints(COURSE).topSpeedMps(0.2).reactionLimits(0.026, 76_600_000L).build();
+        io.rtaware.core.monitor.Monitor.Builder b = io.rtaware.core.monitor.Monitor.builder(
+                new io.rtaware.core.time.ManualClock());
+        new NavController(c).taskSpecs().forEach(b::task);
+        b.task(new TaskSpec("sim", Schedule.periodic(10 * MS), io.rtaware.core.task.ErrorPolicy.CONTINUE,
+                new io.rtaware.core.task.Task() {
+                    @Override
+                    public void initialize(io.rtaware.core.task.TaskSetup setup) {
+                        setup.produce(io.rtaware.robot.msg.RobotKeys.LASER);
+                        setup.produce(io.rtaware.robot.msg.RobotKeys.ODOMETRY);
+                        setup.consume(io.rtaware.robot.msg.RobotKeys.MOTOR);
+                    }
+
+                    @Override
+                    public void execute(long nowNs) {
+                    }
+                }));
+        io.rtaware.core.monitor.Monitor monitor = b.build();
+        monitor.startStepped().runUntil(100 * MS);
+        assertEquals(new io.rtaware.core.task.ReactionConstraint("laser", 0.2, 0.026, 0.4 - 0.2, 76.6),
+                monitor.stop().task("obstacle").reaction());
     }
 
     @Test

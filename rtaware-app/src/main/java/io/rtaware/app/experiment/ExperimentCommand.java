@@ -19,6 +19,7 @@ import io.rtaware.experiment.ProgressBar;
 import io.rtaware.experiment.ResultsCsv;
 import io.rtaware.experiment.RunConditions;
 import io.rtaware.experiment.RunResult;
+import io.rtaware.experiment.Shard;
 import io.rtaware.experiment.report.ExperimentReport;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -49,15 +50,24 @@ import picocli.CommandLine.Spec;
                 "Worst case it takes sets x runs x (360 s / time scale) plus JVM start-up.",
                 "Examples:",
                 "  rtaware experiment --sets paper --runs 2 --time-scale 20 --out experiments/quick",
+                "  rtaware experiment --sets sweep-obstacle --runs 5 --shard 1/2 --out experiments/sweep-a",
                 "  rtaware experiment --sets my-sets.yaml --runs 10 --out experiments/mine"})
 public final class ExperimentCommand implements Callable<Integer> {
 
     /** The run's time limit in world seconds (the paper's six minutes), for the worst-case ETA. */
     static final double RUN_LIMIT_S = 360;
 
-    @Option(names = "--sets", defaultValue = ExperimentSets.PAPER, paramLabel = "paper|FILE",
-            description = "'paper' (Table I: Sets 1-5) or a YAML file of sets (see README) (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--sets", defaultValue = ExperimentSets.PAPER, paramLabel = "paper|sweep-obstacle|sweep-all|FILE",
+            description = "'paper' (Table I: Sets 1-5), 'sweep-obstacle' (obstacle period 5 to 800 ms, the others 100 ms), "
+                    + "'sweep-all' (all four at 5 to 800 ms) or a YAML file of sets or of a sweep (see README) "
+                    + "(default: ${DEFAULT-VALUE}).")
     String sets;
+
+    @Option(names = "--shard", paramLabel = "K/N", defaultValue = "1/1",
+            description = "Make only share K of N of the planned runs (run j of set i when (i - 1 + j - 1) mod N = K - 1), "
+                    + "with the seeds of the whole plan; merge the shards' folders with 'rtaware report DIR... --out DIR' "
+                    + "(default: ${DEFAULT-VALUE}, all runs).")
+    String shard;
 
     @Option(names = "--runs", defaultValue = "10", description = "Runs per set (default: ${DEFAULT-VALUE}, as in the paper).")
     int runs;
@@ -111,9 +121,6 @@ public final class ExperimentCommand implements Callable<Integer> {
         String scenario = plan.conditions().scenario();
         double timeScale = plan.conditions().timeScale();
         System.setProperty("java.awt.headless", "true");
-        if (!Files.exists(dir.resolve(PlanFile.FILE_NAME))) {
-            PlanFile.write(dir, plan);
-        }
         if (!Files.exists(dir.resolve(ExperimentProfile.FILE_NAME))) {
             ExperimentProfile.of(plan, ExperimentProfile.describeThisMachine()).write(dir);
         }
@@ -122,8 +129,9 @@ public final class ExperimentCommand implements Callable<Integer> {
         ExperimentRunner runner = new ExperimentRunner(plan, JvmRunCommand.ofCurrentProcess(JvmRunCommand.RTAWARE_MAIN),
                 dir, progress);
         int total = plan.order().size();
-        System.out.printf(Locale.ROOT, "rtaware experiment: %d set(s) x %d run(s) of %s at time scale x%s into %s%n",
-                plan.sets().size(), runs, scenario, timeScale, dir);
+        System.out.printf(Locale.ROOT, "rtaware experiment: %d set(s) x %d run(s) of %s at time scale x%s into %s%s%n",
+                plan.sets().size(), runs, scenario, timeScale, dir, plan.shard().whole() ? ""
+                        : " (shard " + plan.shard() + ": " + total + " of " + plan.fullOrder().size() + " runs)");
         CountDownLatch reported = new CountDownLatch(1);
         Thread hook = new Thread(() -> {
             runner.interrupt();
@@ -172,7 +180,19 @@ public final class ExperimentCommand implements Callable<Integer> {
         } catch (ExperimentInputException e) {
             throw new UserError(e.getMessage());
         }
-        return new ExperimentPlan(periodSets, runs, new RunConditions(scenario, timeScale, seed, gridResolutionM));
+        Shard share;
+        try {
+            share = Shard.parse(shard);
+        } catch (ExperimentInputException e) {
+            throw new UserError(e.getMessage());
+        }
+        ExperimentPlan plan = new ExperimentPlan(periodSets, runs, new RunConditions(scenario, timeScale, seed, gridResolutionM),
+                share);
+        if (plan.order().isEmpty()) {
+            throw new UserError("--shard " + share + " has no runs: the plan has only " + plan.fullOrder().size()
+                    + " run(s); use fewer shards");
+        }
+        return plan;
     }
 
     private Path outputFolder() {

@@ -3,33 +3,62 @@ package io.rtaware.app.experiment;
 import io.rtaware.app.UserError;
 import io.rtaware.app.output.OutputFolder;
 import io.rtaware.experiment.ExperimentInputException;
+import io.rtaware.experiment.ExperimentMerge;
 import io.rtaware.experiment.ExperimentProfile;
 import io.rtaware.experiment.ResultsCsv;
 import io.rtaware.experiment.report.ExperimentReport;
 import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
 /**
- * {@code rtaware report DIR}: re-renders an experiment's summary.json, report.md, report.html
- * and figures from its results.csv (and the runs' trajectory.csv files).
+ * {@code rtaware report DIR...}: re-renders an experiment's summary.json, report.md, report.html
+ * and figures from its results.csv (and the runs' trajectory.csv files); with several folders
+ * (the shards of one plan) and {@code --out}, merges them into one folder first.
  */
 @Command(name = "report", mixinStandardHelpOptions = true,
         description = {"Re-render an experiment's report (summary.json, report.md, report.html, figures)",
                 "from DIR/results.csv and the runs' trajectory.csv files.",
-                "Example:", "  rtaware report experiments/paper"})
+                "With several folders (the shards of one plan, made with 'experiment --shard K/N'), merge them",
+                "into --out first; folders of different plans, or holding the same run twice, are refused.",
+                "Examples:", "  rtaware report experiments/paper",
+                "  rtaware report shard1 shard2 shard3 --out experiments/sweep"})
 public final class ReportCommand implements Callable<Integer> {
 
-    @Parameters(index = "0", paramLabel = "DIR", description = "An experiment folder (the --out of rtaware experiment).")
-    Path dir;
+    @Parameters(arity = "1..*", paramLabel = "DIR", description = "Experiment folders (the --out of rtaware experiment).")
+    List<Path> dirs;
+
+    @Option(names = "--out", paramLabel = "DIR",
+            description = "Merge the folders into this new folder and write the report there (needed with several DIRs).")
+    Path out;
 
     @Override
     public Integer call() throws IOException {
-        OutputFolder.existing("report", dir);
+        if (dirs.size() > 1 && out == null) {
+            throw new UserError("report: " + dirs.size() + " folders are merged into a new folder: add --out DIR");
+        }
+        if (out == null) {
+            OutputFolder.existing("report", dirs.get(0));
+        } else {
+            for (Path shard : dirs) {
+                if (!Files.isDirectory(shard)) {
+                    throw new UserError("report: " + shard + " is not a folder");
+                }
+            }
+            OutputFolder.of("--out", out);
+        }
         System.setProperty("java.awt.headless", "true");
+        Path dir = out == null ? dirs.get(0) : out;
         try {
+            if (out != null) {
+                int runs = ExperimentMerge.merge(dirs, out).size();
+                System.out.println("merged " + runs + " run(s) from " + dirs.size() + " folder(s) into " + out);
+            }
             String scenario = ExperimentProfile.read(dir).map(ExperimentProfile::scenario)
                     .orElseGet(() -> firstScenario(dir));
             ResultsCsv.tornLastLine(dir.resolve(ResultsCsv.FILE_NAME))

@@ -33,7 +33,8 @@ final class ResumedPlan {
         ExperimentPlan stored = PlanFile.fromFolder(dir);
         boolean anyGiven = given.hasMatchedOption("--sets") || given.hasMatchedOption("--scenario")
                 || given.hasMatchedOption("--time-scale") || given.hasMatchedOption("--seed")
-                || given.hasMatchedOption("--grid-resolution") || given.hasMatchedOption("--runs");
+                || given.hasMatchedOption("--grid-resolution") || given.hasMatchedOption("--runs")
+                || given.hasMatchedOption("--shard");
         if (!anyGiven) {
             return stored;
         }
@@ -46,8 +47,9 @@ final class ResumedPlan {
         check(given, "--seed", s.seed() == a.seed(), a.seed(), s.seed(), dir);
         check(given, "--grid-resolution", Objects.equals(s.gridResolutionM(), a.gridResolutionM()),
                 a.gridResolutionM(), s.gridResolutionM() == null ? "run's default" : s.gridResolutionM(), dir);
+        check(given, "--shard", stored.shard().equals(asked.shard()), asked.shard(), stored.shard(), dir);
         int runs = given.hasMatchedOption("--runs") ? asked.runsPerSet() : stored.runsPerSet();
-        return new ExperimentPlan(stored.sets(), runs, s);
+        return new ExperimentPlan(stored.sets(), runs, s, stored.shard());
     }
 
     private static void check(ParseResult given, String option, boolean same, Object value, Object folderValue, Path dir) {

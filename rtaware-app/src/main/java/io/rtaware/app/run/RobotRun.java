@@ -37,6 +37,8 @@ import io.rtaware.sim.scenario.ScenarioLoader;
 import io.rtaware.sim.server.PlayerSimServer;
 import io.rtaware.sim.server.ServerConfig;
 import io.rtaware.sim.server.SimCommandSupport;
+import io.rtaware.sim.world.LaserConfig;
+import io.rtaware.sim.world.RobotModel;
 import io.rtaware.sim.world.World;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -44,7 +46,9 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.LockSupport;
+import java.util.function.Supplier;
 
 /**
  * One robot run of the paper's course: the composition root of {@code rtaware run}. Starts the
@@ -86,6 +90,7 @@ public final class RobotRun {
     public int execute() throws IOException {
         Scenario scenario = loadScenario();
         CourseCheck.warnings(scenario).forEach(w -> err.println("rtaware run: warning: " + w + "; running anyway"));
+        RobotModel model = robotModel(scenario);
         Clock clock = Clock.forTimeScale(options.timeScale());
 
         PlayerSimServer server = null;
@@ -97,14 +102,14 @@ public final class RobotRun {
                 throw new UserError("scenario '" + scenario.name() + "' has no map; the built-in simulator needs one (or use --player HOST:PORT)");
             }
             simulatorLog = BuiltInSimulatorLog.install(err);
-            server = SimCommandSupport.start(scenario, clock, ServerConfig.defaults(0), options.seed());
+            server = SimCommandSupport.start(scenario, model, clock, ServerConfig.defaults(0), options.seed());
             host = ServerConfig.LOOPBACK;
             port = server.port();
         } else {
             checkReachable(host, port);
         }
         try {
-            return runAgainst(scenario, clock, host, port, server);
+            return runAgainst(scenario, model, clock, host, port, server);
         } finally {
             if (server != null) {
                 server.close();
@@ -127,6 +132,23 @@ public final class RobotRun {
         }
     }
 
+    /**
+     * The robot model: {@code --robot} if given (keeping the scenario's overrides when it names
+     * the same model), else the scenario's {@code robot:} section, else the Koala; then
+     * {@code --top-speed} if given.
+     */
+    private RobotModel robotModel(Scenario scenario) {
+        RobotModel base = scenario.robot().orElse(null);
+        String name = options.robot() != null ? options.robot() : base != null ? base.name() : RobotModel.KOALA_NAME;
+        try {
+            RobotModel model = base != null && base.name().equals(name) ? base
+                    : RobotModel.named(name, RobotModel.PAPER_TOP_SPEED_MPS);
+            return options.topSpeedMps() == null ? model : model.withTopSpeed(options.topSpeedMps());
+        } catch (IllegalArgumentException e) {
+            throw new UserError(e.getMessage());
+        }
+    }
+
     private Scenario loadScenario() {
         try {
             return ScenarioLoader.load(options.scenario());
@@ -135,9 +157,9 @@ public final class RobotRun {
         }
     }
 
-    private int runAgainst(Scenario scenario, Clock clock, String host, int port, PlayerSimServer server)
-            throws IOException {
-        NavConfig navConfig = navConfig(scenario);
+    private int runAgainst(Scenario scenario, RobotModel model, Clock clock, String host, int port,
+                           PlayerSimServer server) throws IOException {
+        NavConfig navConfig = navConfig(scenario, model);
         NavController nav = new NavController(navConfig);
         PlayerDataTask player = new PlayerDataTask(PlayerConfig.of(host, port).withReconnect(true, 500, 8000));
 
@@ -155,6 +177,10 @@ public final class RobotRun {
         // the shutdown-hook thread at any moment from here on.
         RunState state = new RunState(clock.nanos());
         CourseStatus course = new CourseStatus();
+        List<RunSection.WaypointPass> passes = new CopyOnWriteArrayList<>();
+        PlayerSimServer simulator = server;
+        Supplier<Pose2d> truthNow = simulator != null ? () -> simulator.withWorld(World::pose)
+                : () -> state.referee() == null ? null : state.referee().latest();
         RunArtifacts artifacts = new RunArtifacts(options, scenario, navConfig, out, err);
         LiveView live = LiveView.start(options.live(), monitor, new RunScene(scenario.name(), scenario.map().orElse(null),
                 scenario.waypoints(), nav.keys(), nav::mediatorCounts, () -> outcomeName(state)), out);
@@ -174,7 +200,7 @@ public final class RobotRun {
             monitor.read(nav.keys().course(), course);
             long collisions = server != null ? server.withWorld(World::contactCount) : state.stallEdges();
             RunSection run = runSection(scenario, nav, course, referee, state.ending(),
-                    clock.nanos() - state.startNs(), collisions, server != null);
+                    clock.nanos() - state.startNs(), collisions, server != null, List.copyOf(passes), model);
             live.finish(report, run);
             artifacts.write(report, run, playerSection(player, host, port, truth), referee,
                     nav.finalMap().orElse(null), scenario.map().orElse(null));
@@ -185,17 +211,19 @@ public final class RobotRun {
         monitor.start();
         long startNs = clock.nanos();
         Referee referee = new Referee(clock, startNs, SAMPLE_PERIOD_NS, truth, () -> totalMisses(monitor)).start();
-        Supervisor supervisor = new Supervisor(new MonitorView(monitor, nav, referee, player), clock, System::nanoTime,
+        MonitorView view = new MonitorView(monitor, nav, referee, player);
+        Supervisor supervisor = new Supervisor(view, clock, System::nanoTime,
                 startNs, scenario.timeLimitS(), options.stuckAfterS());
         state.started(startNs, referee, supervisor);
         live.truePose(referee::latest, referee.kind());
         if (!options.quiet()) {
             err.printf(Locale.ROOT, "rtaware run: scenario %s, periods %s, time scale x%s, robot %s:%d (%s), ground truth from %s%n",
                     scenario.name(), options.periods(), trim(options.timeScale()), host, port,
-                    server != null ? "built-in simulator" : "external Player server", referee.kind());
+                    server != null ? "built-in simulator, " + model.describe() : "external Player server",
+                    referee.kind());
         }
 
-        supervise(clock, startNs, monitor, nav, referee, supervisor, course, state);
+        supervise(scenario, clock, startNs, monitor, nav, referee, supervisor, view, course, state, truthNow, passes);
         CommandMonitor.stop(monitor, hook);
         live.close();
         return artifacts.exitStatus(state.ending().outcome().exitStatus());
@@ -276,11 +304,22 @@ public final class RobotRun {
         public String safetyFault() {
             return player.fault();
         }
+
+        /** @return the course status read at the last refresh */
+        CourseStatus course() {
+            return course;
+        }
+
+        /** @return the odometry read at the last refresh */
+        Odometry odometry() {
+            return odometry;
+        }
     }
 
     /** Watches the run until it ends; records the ending. Returns when the run is over. */
-    private void supervise(Clock clock, long startNs, Monitor monitor, NavController nav, Referee referee,
-                           Supervisor supervisor, CourseStatus course, RunState state) {
+    private void supervise(Scenario scenario, Clock clock, long startNs, Monitor monitor, NavController nav,
+                           Referee referee, Supervisor supervisor, MonitorView view, CourseStatus course,
+                           RunState state, Supplier<Pose2d> truthNow, List<RunSection.WaypointPass> passes) {
         long pollWallNs = Math.max(1_000_000L, Math.min(50_000_000L, (long) (50_000_000L / options.timeScale())));
         long lastStatusWallNs = System.nanoTime();
         boolean tty = System.console() != null;
@@ -291,6 +330,7 @@ public final class RobotRun {
             }
             double elapsedS = (clock.nanos() - startNs) / 1e9;
             RunState.Ending ending = supervisor.check();
+            recordPasses(scenario, view.course(), view.odometry(), truthNow, elapsedS, passes);
             if (ending != null) {
                 state.end(ending.outcome(), ending.reason());
                 if (!options.quiet()) {
@@ -309,6 +349,25 @@ public final class RobotRun {
                 monitor.read(nav.keys().course(), course);
                 printStatus(monitor, nav, course, elapsedS, referee, tty);
             }
+        }
+    }
+
+    /**
+     * Records each waypoint the controller has newly counted as passed, with the true and the
+     * believed distance from it at this moment (polled, so up to one poll late).
+     */
+    private static void recordPasses(Scenario scenario, CourseStatus course, Odometry odometry,
+                                     Supplier<Pose2d> truthNow, double elapsedS, List<RunSection.WaypointPass> passes) {
+        int reached = Math.min(course.waypointsReached, scenario.waypoints().size());
+        if (reached <= passes.size()) {
+            return;
+        }
+        Pose2d truth = truthNow.get();
+        for (int i = passes.size(); i < reached; i++) {
+            Point2d wp = scenario.waypoints().get(i);
+            double trueM = truth == null ? Double.NaN : truth.position().distanceTo(wp);
+            double believedM = odometry.pose().position().distanceTo(wp);
+            passes.add(new RunSection.WaypointPass(i, round3(elapsedS), round3(trueM), round3(believedM)));
         }
     }
 
@@ -333,8 +392,11 @@ public final class RobotRun {
         err.flush();
     }
 
-    private NavConfig navConfig(Scenario scenario) {
+    private NavConfig navConfig(Scenario scenario, RobotModel model) {
         NavConfig.Builder b = NavConfig.builder()
+                .topSpeedMps(model.topSpeedMps())
+                .inflationMarginM(options.inflationMarginM())
+                .reactionLimits(model.stoppingDistanceM(model.topSpeedMps()), model.laserDelayNs(LaserConfig.URG_04LX))
                 .periodsNs(options.periods().nanosByTask())
                 .goalToleranceM(scenario.goalToleranceM())
                 .waypoints(scenario.waypoints());
@@ -387,7 +449,7 @@ public final class RobotRun {
 
     private RunSection runSection(Scenario scenario, NavController nav, CourseStatus course,
                                   Referee referee, RunState.Ending ending, long elapsedNs, long collisions,
-                                  boolean simulator) {
+                                  boolean simulator, List<RunSection.WaypointPass> passes, RobotModel model) {
         double runTimeS = elapsedNs / 1e9;
         List<GroundTruthGap> gaps = referee == null ? List.of() : referee.gaps(runTimeS);
         double uncoveredS = 0;
@@ -410,7 +472,18 @@ public final class RobotRun {
                 course.waypointsTotal, toFinish, round3(referee == null ? 0 : referee.travelledM()), collisions,
                 mediator, referee == null ? "odometry" : referee.kind(), simulator ? "simulator" : "stall",
                 options.timeScale(), options.seed(), options.gridResolutionM(), counts.staleStops(), ending.reason(),
-                gaps, round3(Math.max(0, runTimeS - uncoveredS)));
+                gaps, round3(Math.max(0, runTimeS - uncoveredS)), RunSection.COMPLETED_MEANS, passes,
+                robotModelSection(model, simulator), options.inflationMarginM());
+    }
+
+    private static Map<String, Object> robotModelSection(RobotModel model, boolean simulator) {
+        if (simulator) {
+            return model.parameters();
+        }
+        Map<String, Object> external = new LinkedHashMap<>();
+        external.put("name", "external");
+        external.put("top_speed_mps", model.topSpeedMps());
+        return external;
     }
 
     private static double round3(double v) {

@@ -132,8 +132,13 @@ final class RunArtifacts {
         }
         sb.append(String.format(Locale.ROOT, "     mediator: obstacle won %d cycles, waypoint %d, stop %d (%d because a request was too old)%n",
                 r.mediator().get("obstacle"), r.mediator().get("waypoint"), r.mediator().get("stop"), r.staleStops()));
-        sb.append(String.format(Locale.ROOT, "     scenario %s, periods %s, time scale x%s, seed %d, grid %.2f m%n",
-                r.scenario(), options.periods(), r.timeScale(), r.seed(), navConfig.gridResolutionM()));
+        for (RunSection.WaypointPass p : r.waypointPasses()) {
+            sb.append(String.format(Locale.ROOT, "     waypoint %d believed passed at %.1f s: %.2f m from it in truth (%.2f m by odometry)%n",
+                    p.index() + 1, p.tS(), p.trueDistanceM(), p.believedDistanceM()));
+        }
+        sb.append(String.format(Locale.ROOT, "     scenario %s, periods %s, time scale x%s, seed %d, grid %.2f m, robot %s at %s m/s%n",
+                r.scenario(), options.periods(), r.timeScale(), r.seed(), navConfig.grid().resolutionM(),
+                r.robotModel().get("name"), r.robotModel().get("top_speed_mps")));
         return sb.toString();
     }
 

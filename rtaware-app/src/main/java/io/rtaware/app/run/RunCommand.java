@@ -6,6 +6,7 @@ import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.live.LiveMixin;
 import io.rtaware.app.output.OutputFolder;
+import io.rtaware.sim.world.RobotModel;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
@@ -66,6 +67,20 @@ public final class RunCommand implements Callable<Integer> {
             description = "Robot model name for ground truth through simulation:0 (default: ${DEFAULT-VALUE}).")
     String model;
 
+    @Option(names = "--inflation-margin", defaultValue = "0", paramLabel = "METRES",
+            description = {"Clearance the path planner adds to the robot's radius when it inflates obstacles (default: ${DEFAULT-VALUE}:",
+                    "the planner keeps the body clear, the obstacle avoider keeps the margin; 0.05 is the controller's",
+                    "library default and earlier versions' run default, under which the avoider's zone never sees an obstacle)."})
+    double inflationMarginM;
+
+    @Option(names = "--robot", paramLabel = "koala|ideal",
+            description = "Robot model of the built-in simulator: koala (odometry drift, acceleration limits, command latency, URG laser timing) or ideal (the exact point robot of earlier versions); default: the scenario's, else koala.")
+    String robot;
+
+    @Option(names = "--top-speed", paramLabel = "M/S",
+            description = "The controller's top speed in m/s, up to the Koala's 0.6 (default: the scenario's, else the paper's 0.1).")
+    Double topSpeedMps;
+
     @Mixin
     TraceOptions trace;
 
@@ -102,6 +117,16 @@ public final class RunCommand implements Callable<Integer> {
         if (!(gridResolutionM > 0) || gridResolutionM > 2) {
             throw new UserError("--grid-resolution must be in (0, 2] metres, got " + gridResolutionM);
         }
+        if (!(inflationMarginM >= 0) || inflationMarginM > 1) {
+            throw new UserError("--inflation-margin must be in [0, 1] metres, got " + inflationMarginM);
+        }
+        if (robot != null && !robot.equals(RobotModel.KOALA_NAME) && !robot.equals(RobotModel.IDEAL_NAME)) {
+            throw new UserError("--robot must be koala or ideal, got '" + robot + "'");
+        }
+        if (topSpeedMps != null && !(topSpeedMps > 0 && topSpeedMps <= RobotModel.KOALA_MAX_SPEED_MPS)) {
+            throw new UserError("--top-speed must be in (0, " + RobotModel.KOALA_MAX_SPEED_MPS
+                    + "] m/s (the Koala's maximum), got " + topSpeedMps);
+        }
         TaskPeriods taskPeriods = periods == null ? TaskPeriods.paperSet4()
                 : TaskPeriods.parse(periods, TaskPeriods.paperSet4());
         String host = null;
@@ -126,6 +151,6 @@ public final class RunCommand implements Callable<Integer> {
         OutputFolder.of("--out", dir);
         trace.checkOutput();
         return new RunOptions(scenario, taskPeriods, timeScale, host, port, seed, dir, quiet, stuckAfterS,
-                gridResolutionM, model, trace, realtime, live.options());
+                gridResolutionM, model, trace, realtime, live.options(), robot, topSpeedMps, inflationMarginM);
     }
 }

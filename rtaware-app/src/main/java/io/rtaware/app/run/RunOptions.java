@@ -21,10 +21,14 @@ import java.nio.file.Path;
  * @param trace the {@code --trace} options
  * @param realtime SCHED_FIFO task threads in rate-monotonic order, when permitted
  * @param live whether and where to serve the live view
+ * @param robot {@code koala}, {@code ideal}, or null for the scenario's model (default koala)
+ * @param topSpeedMps the controller's top speed in m/s, or null for the scenario's (default 0.1)
+ * @param inflationMarginM clearance the planner adds to the robot's radius, metres
  */
 public record RunOptions(String scenario, TaskPeriods periods, double timeScale, String playerHost, int playerPort,
                          long seed, Path outDir, boolean quiet, double stuckAfterS, double gridResolutionM,
-                         String modelName, TraceOptions trace, boolean realtime, LiveOptions live) {
+                         String modelName, TraceOptions trace, boolean realtime, LiveOptions live,
+                         String robot, Double topSpeedMps, double inflationMarginM) {
 
     /** @return true when the robot is the built-in simulator */
     public boolean builtInSimulator() {

@@ -9,7 +9,10 @@ import java.util.Map;
  * @param scenario the scenario's name
  * @param periodsMs periods of the four behaviors in ms
  * @param outcome {@code completed}, {@code timeout}, {@code stuck}, {@code interrupted} or {@code error}
- * @param completed true if every waypoint was reached
+ * @param completed true if the run is complete as the paper defines it: the robot, by its own
+ *     estimate (odometry), passed every waypoint and reached the finish within the time limit
+ *     without getting stuck; how near the true pose came is measured separately
+ *     ({@code distanceToFinishM}, {@code waypointPasses})
  * @param runTimeS world seconds from start to the end of the run (to the finish if completed)
  * @param waypointsReached waypoints reached
  * @param waypointsTotal waypoints in the course
@@ -29,11 +32,35 @@ import java.util.Map;
  * @param groundTruthGaps spans without ground truth (empty when it never failed)
  * @param groundTruthCoveredS world seconds of the run that ground truth covered (run time minus
  *     the gaps)
+ * @param completedMeans the definition of {@code completed}, in words ({@link #COMPLETED_MEANS})
+ * @param waypointPasses for each waypoint the robot believed it passed, in order: when, and
+ *     how far its true and its believed position were from the waypoint then
+ * @param robotModel the simulated robot model's name and parameters ({@code name}: koala or
+ *     ideal); for an external Player server {@code name} is {@code external}
+ * @param inflationMarginM the clearance the planner added to the robot's radius, metres
  */
 public record RunSection(String scenario, Map<String, Double> periodsMs, String outcome, boolean completed,
                          double runTimeS, int waypointsReached, int waypointsTotal, Double distanceToFinishM,
                          double distanceTravelledM, long collisions, Map<String, Long> mediator,
                          String measuredOn, String collisionsFrom, double timeScale, long seed,
                          double gridResolutionM, long staleStops, String reason,
-                         List<GroundTruthGap> groundTruthGaps, double groundTruthCoveredS) {
+                         List<GroundTruthGap> groundTruthGaps, double groundTruthCoveredS, String completedMeans,
+                         List<WaypointPass> waypointPasses, Map<String, Object> robotModel,
+                         double inflationMarginM) {
+
+    /** What {@code completed} means, written into every report. */
+    public static final String COMPLETED_MEANS = "the robot, by its own estimate (odometry), passed every waypoint "
+            + "and reached the finish within the time limit without getting stuck (the paper's definition); "
+            + "distance_to_finish_m and waypoint_passes[].true_distance_m are measured on the true pose";
+
+    /**
+     * One waypoint the robot believed it passed.
+     *
+     * @param index the waypoint's index in the course (the last is the finish)
+     * @param tS world seconds from the start
+     * @param trueDistanceM distance from the true pose to the waypoint then, metres
+     * @param believedDistanceM distance from the robot's odometry pose to the waypoint then, metres
+     */
+    public record WaypointPass(int index, double tS, double trueDistanceM, double believedDistanceM) {
+    }
 }

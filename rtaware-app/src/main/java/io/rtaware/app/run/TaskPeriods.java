@@ -2,7 +2,7 @@ package io.rtaware.app.run;
 
 import io.rtaware.app.UserError;
 import io.rtaware.core.time.Durations;
-import io.rtaware.nav.NavConfig;
+import io.rtaware.nav.Behavior;
 import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -16,7 +16,7 @@ import java.util.Map;
 public final class TaskPeriods {
 
     /** The behaviors whose periods can be set, in the paper's order (Table I). */
-    public static final List<String> TASKS = NavConfig.BEHAVIORS;
+    public static final List<String> TASKS = Behavior.taskNames();
 
     private final Map<String, Long> periodsNs;
 
@@ -24,9 +24,9 @@ public final class TaskPeriods {
         this.periodsNs = Collections.unmodifiableMap(periodsNs);
     }
 
-    /** @return the paper's Set 4 (100/50/100/100 ms), the default of {@code run} */
+    /** @return the paper's Set 4 (100/50/100/100 ms, each {@link Behavior}'s default), the default of {@code run} */
     public static TaskPeriods paperSet4() {
-        return of(100, 50, 100, 100);
+        return new TaskPeriods(Behavior.defaultPeriodsNs());
     }
 
     /**
@@ -38,10 +38,10 @@ public final class TaskPeriods {
      */
     public static TaskPeriods of(double waypointMs, double obstacleMs, double occupancyMs, double plannerMs) {
         Map<String, Long> m = new LinkedHashMap<>();
-        m.put("waypoint", Math.round(waypointMs * 1e6));
-        m.put("obstacle", Math.round(obstacleMs * 1e6));
-        m.put("occupancy", Math.round(occupancyMs * 1e6));
-        m.put("planner", Math.round(plannerMs * 1e6));
+        m.put(Behavior.WAYPOINT.taskName(), Math.round(waypointMs * 1e6));
+        m.put(Behavior.OBSTACLE.taskName(), Math.round(obstacleMs * 1e6));
+        m.put(Behavior.OCCUPANCY.taskName(), Math.round(occupancyMs * 1e6));
+        m.put(Behavior.PLANNER.taskName(), Math.round(plannerMs * 1e6));
         return new TaskPeriods(m);
     }
 

@@ -25,6 +25,12 @@ class ExperimentCommandTest {
         Files.writeString(bad, "sets:\n  - periods_ms: {waypoint: 0}\n");
         assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("experiment", "--sets", bad.toString(), "--out", out.toString()));
         assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("experiment", "--resume", "--out", out.toString()));
+        Path badSweep = dir.resolve("sweep.yaml");
+        Files.writeString(badSweep, "sweep:\n  periods_ms: [10]\n  top_speed_mps: -1\n");
+        assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("experiment", "--sets", badSweep.toString(), "--out", out.toString()));
+        assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("experiment", "--shard", "3/2", "--out", out.toString()));
+        assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("experiment", "--sets", "sweep-obstacle", "--runs", "1",
+                "--shard", "99/100", "--out", out.toString()));
         assertFalse(Files.exists(out));
     }
 
@@ -32,5 +38,7 @@ class ExperimentCommandTest {
     void reportNeedsAnExperimentFolder() {
         assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("report", dir.resolve("missing").toString()));
         assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("report", dir.toString()));
+        assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("report", dir.toString(), dir.toString()));
+        assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("report", dir.toString(), "--out", dir.resolve("m").toString()));
     }
 }

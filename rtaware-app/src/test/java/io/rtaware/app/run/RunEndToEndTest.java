@@ -51,8 +51,17 @@ class RunEndToEndTest {
         assertEquals(1, run.path("waypoints_reached").asInt());
         assertEquals(0, run.path("collisions").asInt(), "no collisions");
         assertEquals("ground_truth", run.path("measured_on").asText(), "the simulator offers simulation:0");
-        assertTrue(run.path("distance_to_finish_m").asDouble() <= 0.3 + 1e-9, "finish within tolerance: " + run);
-        assertTrue(run.path("distance_travelled_m").asDouble() > 1.5, "the robot drove the leg: " + run);
+        assertEquals("koala", run.path("robot_model").path("name").asText(), "the Koala by default: " + run);
+        assertEquals(0.1, run.path("robot_model").path("top_speed_mps").asDouble());
+        assertEquals(30.0, run.path("robot_model").path("command_latency_ms").asDouble());
+        assertTrue(run.path("completed_means").asText().contains("own estimate"), run.toString());
+        JsonNode pass = run.path("waypoint_passes").path(0);
+        assertEquals(0, pass.path("index").asInt(), "the finish was believed passed: " + run);
+        assertTrue(pass.path("believed_distance_m").asDouble() <= 0.3 + 1e-9, "by odometry within tolerance: " + run);
+        assertTrue(pass.path("true_distance_m").asDouble() >= 0, "and measured in truth: " + run);
+        assertTrue(run.path("distance_to_finish_m").asDouble() < 1.0, "near the finish in truth: " + run);
+        assertTrue(run.path("mediator").has("obstacle") && run.path("mediator").has("waypoint"), run.toString());
+        assertTrue(run.path("distance_travelled_m").asDouble() > 1.2, "the robot drove the leg (odometry may stop it short): " + run);
         assertEquals(100.0, run.path("periods_ms").path("waypoint").asDouble());
         for (String task : new String[] {"player", "waypoint", "obstacle", "occupancy", "planner", "mediator"}) {
             boolean found = false;
@@ -70,6 +79,15 @@ class RunEndToEndTest {
     @Test
     void unreachablePlayerServerIsAOneLineUserError() {
         assertEquals(2, RtawareCli.execute("run", "--player", "127.0.0.1:1", "--out", dir.resolve("x").toString(),
+                "--quiet"));
+    }
+
+    @Test
+    void badRobotOrTopSpeedIsAOneLineUserError() {
+        assertEquals(2, RtawareCli.execute("run", "--robot", "pioneer", "--out", dir.resolve("x").toString(), "--quiet"));
+        assertEquals(2, RtawareCli.execute("run", "--top-speed", "0.7", "--out", dir.resolve("x").toString(), "--quiet"));
+        assertEquals(2, RtawareCli.execute("run", "--top-speed", "0", "--out", dir.resolve("x").toString(), "--quiet"));
+        assertEquals(2, RtawareCli.execute("run", "--inflation-margin", "-0.1", "--out", dir.resolve("x").toString(),
                 "--quiet"));
     }
 

@@ -4,6 +4,7 @@ import io.rtaware.core.report.DataReport;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.Rounding;
 import io.rtaware.core.report.TaskReport;
+import io.rtaware.core.task.ReactionConstraint;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -11,7 +12,7 @@ import java.util.Locale;
 import java.util.Map;
 
 /**
- * Derives period advice from a finished run. Three rules, applied to every periodic task:
+ * Derives period advice from a finished run. Four rules, applied to every periodic task:
  * <ol>
  *   <li><b>nyquist</b>: a task that samples an input must run at least twice as fast as that
  *   input changes, so its period must be at most {@code 1 / (2 * rate)} of every key it
@@ -28,6 +29,15 @@ import java.util.Map;
  *   p99 at {@value #TARGET_EXEC_PCT}% of it. If that period would break the Nyquist bound of
  *   one of its inputs the advice says to do less work (to at most
  *   {@value #TARGET_EXEC_PCT}% of the period); otherwise it says to lengthen the period.</li>
+ *   <li><b>reaction</b>, a rule from physics beside the Nyquist rule, for a task that declared a
+ *   {@link ReactionConstraint} (it turns an input into motion): something that appears in the
+ *   input at the declared range must be reacted to, and the motion stopped, before it is
+ *   reached, so {@code speed * (period + input age p99) + stopping distance <= range}. The
+ *   input's age at a read is its declared delay at commit plus the time since its last commit,
+ *   whose p99 for reads that are not synchronized with the commits is {@code 0.99} of the
+ *   measured commit interval ({@code 1 / rate}). The advice always names the largest safe
+ *   period {@code 1000 * (range - stopping) / speed - age p99} ms, and says whether the task's
+ *   period is within it.</li>
  * </ol>
  * Stateless and thread-safe.
  */
@@ -69,6 +79,7 @@ public final class PeriodAdvisor {
             nyquist(task, fastest, boundMs, items);
             mostlyStale(task, fastest, boundMs, items);
             execNearPeriod(task, fastest, boundMs, items);
+            reaction(task, report, items);
         }
         return items;
     }
@@ -160,6 +171,58 @@ public final class PeriodAdvisor {
                     num(workTargetMs));
         }
         items.add(new AdviceItem(task.name(), "exec_near_period", period, suggested, evidence, message));
+    }
+
+    /**
+     * @param constraint a declared reaction
+     * @param inputRateHz the measured commit rate of its input (0 if unknown: no wait counted)
+     * @return the input's age p99 at a read in ms: the declared delay plus 0.99 of one interval
+     */
+    public static double inputAgeP99Ms(ReactionConstraint constraint, double inputRateHz) {
+        return constraint.inputDelayMs() + (inputRateHz > 0 ? 0.99 * 1000.0 / inputRateHz : 0.0);
+    }
+
+    private static void reaction(TaskReport task, Report report, List<AdviceItem> items) {
+        ReactionConstraint r = task.reaction();
+        if (r == null) {
+            return;
+        }
+        double rate = report.data().stream().filter(d -> d.name().equals(r.input()))
+                .mapToDouble(DataReport::rateHz).findFirst().orElse(0.0);
+        double ageMs = inputAgeP99Ms(r, rate);
+        double boundMs = r.maxPeriodMs(ageMs);
+        double period = task.periodMs();
+        double needM = r.speedMps() * (period + ageMs) / 1000.0 + r.stoppingDistanceM();
+        Map<String, Object> evidence = new LinkedHashMap<>();
+        evidence.put("input", r.input());
+        evidence.put("input_rate_hz", rate);
+        evidence.put("input_delay_ms", round3(r.inputDelayMs()));
+        evidence.put("input_age_p99_ms", round3(ageMs));
+        evidence.put("speed_mps", r.speedMps());
+        evidence.put("stopping_distance_m", round3(r.stoppingDistanceM()));
+        evidence.put("range_m", r.rangeM());
+        evidence.put("needed_m", round3(needM));
+        evidence.put("max_safe_period_ms", round3(boundMs));
+        evidence.put("safe", boundMs > 0 && period <= boundMs);
+        String message;
+        double suggested;
+        if (boundMs <= 0) {
+            suggested = period;
+            message = String.format(Locale.ROOT,
+                    "'%s' cannot react in time at any period: at %s m/s the input's age (%s ms p99) and the stopping"
+                            + " distance (%s m) already use up the %s m range; lower the speed or extend the range",
+                    task.name(), num(r.speedMps()), num(round3(ageMs)), num(round3(r.stoppingDistanceM())),
+                    num(r.rangeM()));
+        } else {
+            suggested = Math.min(period, floorTenth(boundMs));
+            message = String.format(Locale.ROOT,
+                    "'%s' must react within %s m at %s m/s: %s m/s x (%s ms period + %s ms input age p99) + %s m stopping"
+                            + " = %s m; the largest safe period is %s ms (%s)",
+                    task.name(), num(r.rangeM()), num(r.speedMps()), num(r.speedMps()), num(period),
+                    num(round3(ageMs)), num(round3(r.stoppingDistanceM())), num(round3(needM)),
+                    num(floorTenth(boundMs)), period <= boundMs ? "the period is within it" : "shorten the period");
+        }
+        items.add(new AdviceItem(task.name(), "reaction", period, suggested, evidence, message));
     }
 
     static double floorTenth(double ms) {

@@ -5,6 +5,7 @@ import io.rtaware.core.data.Key;
 import io.rtaware.core.data.StateValue;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.task.ErrorPolicy;
+import io.rtaware.core.task.ReactionConstraint;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.Task;
 import io.rtaware.core.task.TaskSpec;
@@ -13,7 +14,9 @@ import io.rtaware.core.time.ManualClock;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
@@ -46,6 +49,8 @@ public final class Monitor {
     private final ThreadSetup threadSetup;
     private final ListenerFanOut events;
     private final FrameworkFaults faults;
+    /** Reaction constraints declared by tasks at initialization, by task name. */
+    private final Map<String, ReactionConstraint> reactions;
     private final CountDownLatch terminated = new CountDownLatch(1);
     private final Object lifecycle = new Object();
     private Phase phase = Phase.READY;
@@ -57,7 +62,8 @@ public final class Monitor {
     private volatile boolean tasksStopped;
 
     private Monitor(Clock clock, List<TaskRuntime> runtimes, DataGraph graph, List<MonitorListener> listeners,
-                    ThreadSetup threadSetup, ListenerFanOut events, FrameworkFaults faults) {
+                    ThreadSetup threadSetup, ListenerFanOut events, FrameworkFaults faults,
+                    Map<String, ReactionConstraint> reactions) {
         this.clock = clock;
         this.runtimes = runtimes;
         this.graph = graph;
@@ -65,6 +71,7 @@ public final class Monitor {
         this.threadSetup = threadSetup;
         this.events = events;
         this.faults = faults;
+        this.reactions = Map.copyOf(reactions);
     }
 
     /**
@@ -307,7 +314,8 @@ public final class Monitor {
                 }
                 runtime.setState(TaskState.TERMINATED, stopNs);
             }
-            report = ReportBuilder.build(clock.timeScale(), stopNs - startNs, runtimes, graph, faults.count());
+            report = ReportBuilder.build(clock.timeScale(), stopNs - startNs, runtimes, graph, faults.count(),
+                    reactions);
             for (Consumer<Report> handler : terminationHandlers) {
                 try {
                     handler.accept(report);
@@ -513,7 +521,13 @@ public final class Monitor {
                 }
                 runtimes.add(runtime);
             }
-            return new Monitor(clock, List.copyOf(runtimes), graph, listeners, threadSetup, events, faults);
+            Map<String, ReactionConstraint> reactions = new LinkedHashMap<>();
+            for (TaskDeclarations declarations : declared) {
+                if (declarations.reaction() != null) {
+                    reactions.put(declarations.spec.name(), declarations.reaction());
+                }
+            }
+            return new Monitor(clock, List.copyOf(runtimes), graph, listeners, threadSetup, events, faults, reactions);
         }
     }
 }

@@ -5,9 +5,11 @@ import io.rtaware.core.data.StateVariable;
 import io.rtaware.core.report.DataReport;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.TaskReport;
+import io.rtaware.core.task.ReactionConstraint;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+import java.util.Map;
 
 /**
  * Builds the termination {@link Report} from the tasks' statistics and the data graph's feeds.
@@ -24,11 +26,15 @@ final class ReportBuilder {
      * @param runtimes the tasks, in registration order
      * @param graph the data graph
      * @param frameworkErrors framework faults so far
+     * @param reactions the reaction constraints tasks declared, by task name
      * @return the report
      */
     static Report build(double timeScale, long durationNs, List<TaskRuntime> runtimes, DataGraph graph,
-                        long frameworkErrors) {
-        List<TaskReport> tasks = runtimes.stream().map(TaskRuntime::report).toList();
+                        long frameworkErrors, Map<String, ReactionConstraint> reactions) {
+        List<TaskReport> tasks = runtimes.stream().map(rt -> {
+            ReactionConstraint reaction = reactions.get(rt.name());
+            return reaction == null ? rt.report() : rt.report().withReaction(reaction);
+        }).toList();
         long releases = tasks.stream().mapToLong(TaskReport::releases).sum();
         long misses = tasks.stream().mapToLong(TaskReport::misses).sum();
         List<DataReport> data = new ArrayList<>();

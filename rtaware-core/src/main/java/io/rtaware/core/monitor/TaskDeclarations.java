@@ -4,6 +4,7 @@ import io.rtaware.core.data.Input;
 import io.rtaware.core.data.Key;
 import io.rtaware.core.data.Output;
 import io.rtaware.core.data.StateValue;
+import io.rtaware.core.task.ReactionConstraint;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.TaskSetup;
 import io.rtaware.core.task.TaskSpec;
@@ -11,6 +12,7 @@ import io.rtaware.core.time.Clock;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Objects;
 
 /**
  * What one task declares during its initialization: the {@link TaskSetup} it is handed. Records
@@ -24,6 +26,7 @@ final class TaskDeclarations implements TaskSetup {
     final List<InputHandle<?>> inputs = new ArrayList<>();
     final List<OutputHandle<?>> outputs = new ArrayList<>();
     final List<String> violations = new ArrayList<>();
+    private ReactionConstraint reaction;
     private boolean closed;
 
     TaskDeclarations(TaskSpec spec, Clock clock) {
@@ -72,6 +75,17 @@ final class TaskDeclarations implements TaskSetup {
         InputHandle<T> handle = new InputHandle<>(key, maxAgeNs);
         inputs.add(handle);
         return handle;
+    }
+
+    @Override
+    public void declareReaction(ReactionConstraint constraint) {
+        checkOpen();
+        reaction = Objects.requireNonNull(constraint, "constraint");
+    }
+
+    /** @return the reaction the task declared, or null */
+    ReactionConstraint reaction() {
+        return reaction;
     }
 
     @Override

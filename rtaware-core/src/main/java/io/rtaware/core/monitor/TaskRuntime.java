@@ -477,7 +477,7 @@ final class TaskRuntime implements TaskInfo {
         return new TaskReport(name(), spec.schedule().kind(), period, deadline, rel, statistics.runs(), miss,
                 rel == 0 ? 0.0 : round2(100.0 * miss / rel), statistics.skippedReleases(), statistics.staleRuns(),
                 statistics.errors(), statistics.expiredReads(), statistics.execUs(), statistics.latenessUs(),
-                statistics.listenerErrors());
+                statistics.listenerErrors(), null);
     }
 
     static double round2(double v) {

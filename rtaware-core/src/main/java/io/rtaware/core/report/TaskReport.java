@@ -1,5 +1,8 @@
 package io.rtaware.core.report;
 
+import com.fasterxml.jackson.annotation.JsonInclude;
+import io.rtaware.core.task.ReactionConstraint;
+
 /**
  * One task's timing over a run. Times are world time.
  *
@@ -19,17 +22,46 @@ package io.rtaware.core.report;
  * @param latenessUs start of the cycle minus its scheduled release, microseconds
  * @param listenerErrors faults of listeners (and the trace recorder) on this task's events,
  *     contained by the monitor: the task went on regardless
+ * @param reaction the reaction the task declared ({@link ReactionConstraint}), or null; written
+ *     to JSON as {@code reaction} only when declared, so other tasks keep the schema's fields
  */
 public record TaskReport(String name, String schedule, Double periodMs, Double deadlineMs,
                          long releases, long runs, long misses, double missPct, long skipped,
                          long staleRuns, long errors, long expiredReads,
-                         Percentiles execUs, Percentiles latenessUs, long listenerErrors) {
+                         Percentiles execUs, Percentiles latenessUs, long listenerErrors,
+                         @JsonInclude(JsonInclude.Include.NON_NULL) ReactionConstraint reaction) {
 
-    /** A report without listener faults (for reports built outside a monitor). */
+    /**
+     * A report without listener faults or a reaction (for reports built outside a monitor).
+     *
+     * @param name the task's name
+     * @param schedule the schedule kind
+     * @param periodMs period in ms or null
+     * @param deadlineMs deadline in ms or null
+     * @param releases releases
+     * @param runs runs
+     * @param misses misses
+     * @param missPct miss percentage
+     * @param skipped skipped releases
+     * @param staleRuns stale runs
+     * @param errors errors
+     * @param expiredReads expired reads
+     * @param execUs execution time percentiles
+     * @param latenessUs lateness percentiles
+     */
     public TaskReport(String name, String schedule, Double periodMs, Double deadlineMs, long releases, long runs,
                       long misses, double missPct, long skipped, long staleRuns, long errors, long expiredReads,
                       Percentiles execUs, Percentiles latenessUs) {
         this(name, schedule, periodMs, deadlineMs, releases, runs, misses, missPct, skipped, staleRuns, errors,
-                expiredReads, execUs, latenessUs, 0);
+                expiredReads, execUs, latenessUs, 0, null);
+    }
+
+    /**
+     * @param constraint the task's declared reaction
+     * @return a copy carrying it
+     */
+    public TaskReport withReaction(ReactionConstraint constraint) {
+        return new TaskReport(name, schedule, periodMs, deadlineMs, releases, runs, misses, missPct, skipped,
+                staleRuns, errors, expiredReads, execUs, latenessUs, listenerErrors, constraint);
     }
 }

@@ -52,4 +52,16 @@ public interface TaskSetup {
      * @return the output handle, with a buffer this task owns
      */
     <T extends StateValue<T>> Output<T> produce(Key<T> key);
+
+    /**
+     * Declares that this task turns an input into motion and must react within a distance:
+     * the run's report carries the declaration with the task, and the period advice checks the
+     * task's period against it ({@code reaction} rule). At most one per task; a later
+     * declaration replaces an earlier one. Setups that do not build a report (test doubles)
+     * may ignore it, which this default does.
+     *
+     * @param constraint the reaction the task must achieve
+     */
+    default void declareReaction(ReactionConstraint constraint) {
+    }
 }

@@ -18,7 +18,7 @@ class ObstacleAvoidanceTaskTest {
     @Test
     void avoidsOnFreshScansAndStopsWhenBlind() {
         TaskHarness h = TaskHarness.builder().input(RobotKeys.LASER)
-                .task("obstacle", new ObstacleAvoidanceTask(new ObstacleAvoider(0.4, 0.6, 0.25, 0.03, 0.5), 300 * MS))
+                .task("obstacle", new ObstacleAvoidanceTask(new ObstacleAvoider(0.4, 0.6, 0.25, 0.03, 0.5), 300 * MS, null))
                 .build();
         h.cycle("obstacle", 0);
         MotionRequest req = h.read(RobotKeys.MOTION_AVOID);

@@ -3,6 +3,7 @@ package io.rtaware.sim.scenario;
 import io.rtaware.robot.geometry.Point2d;
 import io.rtaware.robot.geometry.Pose2d;
 import io.rtaware.sim.map.OccupancyMap;
+import io.rtaware.sim.world.RobotModel;
 import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
@@ -18,9 +19,26 @@ import java.util.Optional;
  * @param waypoints the waypoints in order, at least one; the last is the finish
  * @param goalToleranceM distance in metres within which a waypoint counts as reached
  * @param timeLimitS the time limit in seconds
+ * @param robot the robot model the scenario asks for (its {@code robot:} section); empty for
+ *     the default (the Koala at the paper's top speed)
  */
 public record Scenario(String name, Optional<OccupancyMap> map, Pose2d start, List<Point2d> waypoints,
-                       double goalToleranceM, double timeLimitS) {
+                       double goalToleranceM, double timeLimitS, Optional<RobotModel> robot) {
+
+    /**
+     * A scenario without a {@code robot:} section.
+     *
+     * @param name the scenario's name
+     * @param map the world map
+     * @param start the start pose
+     * @param waypoints the waypoints in order
+     * @param goalToleranceM waypoint tolerance in metres
+     * @param timeLimitS time limit in seconds
+     */
+    public Scenario(String name, Optional<OccupancyMap> map, Pose2d start, List<Point2d> waypoints,
+                    double goalToleranceM, double timeLimitS) {
+        this(name, map, start, waypoints, goalToleranceM, timeLimitS, Optional.empty());
+    }
 
     /**
      * @throws IllegalArgumentException naming the field and value if anything is out of range
@@ -29,6 +47,7 @@ public record Scenario(String name, Optional<OccupancyMap> map, Pose2d start, Li
         Objects.requireNonNull(name, "name");
         Objects.requireNonNull(map, "map");
         Objects.requireNonNull(start, "start");
+        Objects.requireNonNull(robot, "robot");
         if (!Double.isFinite(start.xM()) || !Double.isFinite(start.yM()) || !Double.isFinite(start.yawRad())) {
             throw new IllegalArgumentException("start must be finite, got " + start);
         }

@@ -8,6 +8,7 @@ import io.rtaware.robot.geometry.Pose2d;
 import io.rtaware.sim.map.MapException;
 import io.rtaware.sim.map.MapLoader;
 import io.rtaware.sim.map.OccupancyMap;
+import io.rtaware.sim.world.RobotModel;
 import java.io.FileNotFoundException;
 import java.io.IOException;
 import java.io.InputStream;
@@ -16,6 +17,8 @@ import java.nio.file.InvalidPathException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Iterator;
+import java.util.Map;
 import java.util.List;
 import java.util.Optional;
 
@@ -23,7 +26,9 @@ import java.util.Optional;
  * Loads scenarios: {@link #load(String)} takes a built-in name ({@value #PAPER_ROOM}) or a
  * path to a YAML file with the fields {@code map} (optional, a map_server YAML relative to the
  * scenario file), {@code start: {x, y, yaw}}, {@code waypoints: [{x, y}, ...]},
- * {@code goal_tolerance_m} and {@code time_limit_s}. Unknown fields are ignored. Failures are a
+ * {@code goal_tolerance_m}, {@code time_limit_s} and optionally {@code robot: {model: koala|ideal,
+ * PARAMETER: VALUE, ...}} (the robot model and overrides of its numeric parameters, named as in
+ * {@link RobotModel#with(String, double)}). Unknown top-level fields are ignored. Failures are a
  * {@link ScenarioException} with a one-line message naming the file, the field and the value.
  * Stateless and thread-safe.
  */
@@ -163,7 +168,37 @@ public final class ScenarioLoader {
         if (!(limit > 0)) {
             throw new ScenarioException(source + ": field 'time_limit_s' must be positive, got " + limit);
         }
-        return new Scenario(name, map, start, waypoints, tolerance, limit);
+        return new Scenario(name, map, start, waypoints, tolerance, limit, robot(source, root.get("robot")));
+    }
+
+    private static Optional<RobotModel> robot(String source, JsonNode node) {
+        if (node == null || node.isNull()) {
+            return Optional.empty();
+        }
+        if (!node.isObject()) {
+            throw new ScenarioException(source + ": field 'robot' must be a mapping {model: koala|ideal, ...}, got " + node);
+        }
+        JsonNode modelNode = node.get("model");
+        String modelName = modelNode == null ? RobotModel.KOALA_NAME : modelNode.asText();
+        RobotModel model;
+        try {
+            model = RobotModel.named(modelName, RobotModel.PAPER_TOP_SPEED_MPS);
+        } catch (IllegalArgumentException e) {
+            throw new ScenarioException(source + ": field 'robot.model': " + e.getMessage(), e);
+        }
+        for (Iterator<Map.Entry<String, JsonNode>> it = node.fields(); it.hasNext(); ) {
+            Map.Entry<String, JsonNode> f = it.next();
+            if (f.getKey().equals("model")) {
+                continue;
+            }
+            double v = number(source, node, "robot." + f.getKey(), f.getKey());
+            try {
+                model = model.with(f.getKey(), v);
+            } catch (IllegalArgumentException e) {
+                throw new ScenarioException(source + ": field 'robot." + f.getKey() + "': " + e.getMessage(), e);
+            }
+        }
+        return Optional.of(model);
     }
 
     private static JsonNode required(String source, JsonNode parent, String field) {

@@ -6,7 +6,7 @@ import io.rtaware.sim.map.OccupancyMap;
 import io.rtaware.sim.scenario.Scenario;
 import io.rtaware.sim.scenario.ScenarioLoader;
 import io.rtaware.sim.world.LaserConfig;
-import io.rtaware.sim.world.RobotConfig;
+import io.rtaware.sim.world.RobotModel;
 import io.rtaware.sim.world.World;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -22,7 +22,8 @@ public final class SimCommandSupport {
     }
 
     /**
-     * Builds the world of a scenario and serves it, stepping on {@code clock}.
+     * Builds the world of a scenario and serves it, stepping on {@code clock}, with the
+     * scenario's robot model (default: the Koala at the paper's top speed).
      *
      * @param scenario the scenario; it must have a map
      * @param clock world time (share it with the controller in the same process)
@@ -34,9 +35,27 @@ public final class SimCommandSupport {
      */
     public static PlayerSimServer start(Scenario scenario, Clock clock, ServerConfig config, long seed)
             throws IOException {
+        return start(scenario, scenario.robot().orElseGet(() -> RobotModel.koala(RobotModel.PAPER_TOP_SPEED_MPS)),
+                clock, config, seed);
+    }
+
+    /**
+     * Builds the world of a scenario with a given robot model and serves it.
+     *
+     * @param scenario the scenario; it must have a map
+     * @param model the robot model
+     * @param clock world time
+     * @param config address, port and limits
+     * @param seed seed of all noise and of the run's odometry errors
+     * @return the running server; close it when done
+     * @throws IOException if the port cannot be bound
+     * @throws IllegalArgumentException if the scenario has no map
+     */
+    public static PlayerSimServer start(Scenario scenario, RobotModel model, Clock clock, ServerConfig config,
+                                        long seed) throws IOException {
         OccupancyMap map = scenario.map().orElseThrow(() -> new IllegalArgumentException(
                 "scenario '" + scenario.name() + "' has no map: the simulator needs one"));
-        World world = new World(map, scenario.start(), RobotConfig.KOALA, LaserConfig.URG_04LX, seed);
+        World world = new World(map, scenario.start(), model, LaserConfig.URG_04LX, seed);
         return PlayerSimServer.start(world, clock, config);
     }
 

@@ -49,13 +49,33 @@ public final class Laser {
      */
     public void scan(double xM, double yM, double yawRad, double timeS, RandomGenerator noise, LaserScan out) {
         int n = config.beams();
+        measure(0, n, xM, yM, yawRad, noise, out);
+        finish(timeS, out);
+    }
+
+    /**
+     * Measures beams {@code from} (inclusive) to {@code to} (exclusive) from one pose, leaving
+     * the other beams and the scan's header as they are: a sweeping scanner measures its
+     * beams one after another while the robot moves. Finish the scan with
+     * {@link #finish(double, LaserScan)}.
+     *
+     * @param from first beam
+     * @param to one past the last beam, at most the beam count
+     * @param xM sensor x in metres
+     * @param yM sensor y in metres
+     * @param yawRad sensor heading in radians
+     * @param noise source of range noise (not used when the noise sigma is 0)
+     * @param out the scan to fill; its capacity must be at least the beam count
+     */
+    public void measure(int from, int to, double xM, double yM, double yawRad, RandomGenerator noise,
+                        LaserScan out) {
         double c = StrictMath.cos(yawRad);
         double s = StrictMath.sin(yawRad);
         double maxRange = config.maxRangeM();
         double minRange = config.minRangeM();
         double sigma = config.noiseSigmaM();
         float[] ranges = out.rangesM;
-        for (int i = 0; i < n; i++) {
+        for (int i = from; i < to; i++) {
             double dx = c * cosBearing[i] - s * sinBearing[i];
             double dy = s * cosBearing[i] + c * sinBearing[i];
             double r = caster.castM(xM, yM, dx, dy, maxRange);
@@ -67,6 +87,17 @@ public final class Laser {
             }
             ranges[i] = (float) r;
         }
+    }
+
+    /**
+     * Completes a scan's header: beam count, angles, maximum range and timestamp.
+     *
+     * @param timeS timestamp to put in the scan, seconds
+     * @param out the scan
+     */
+    public void finish(double timeS, LaserScan out) {
+        int n = config.beams();
+        double maxRange = config.maxRangeM();
         out.setCount(n);
         out.minAngleRad = config.minAngleRad();
         out.maxAngleRad = config.maxAngleRad();

@@ -22,10 +22,17 @@ import java.util.SplittableRandom;
  * a disc). Moves that increase the clearance are always allowed, so a robot placed inside an
  * obstacle can drive out.
  *
- * <p>Odometry (pose in the world frame, like Stage with {@code gps} localization, with
- * optional seeded noise) and laser scans are produced at their world-time rates; the step that
- * produced one sets {@link #odometryFresh()} / {@link #scanFresh()}. Both are also produced at
- * time zero. Same seed, same commands and same steps give bit-identical results.
+ * <p>Odometry and laser scans are produced at their world-time rates; the step that produced
+ * one sets {@link #odometryFresh()} / {@link #scanFresh()}. Both are also produced at time zero.
+ * Same seed, same commands and same steps give bit-identical results.
+ *
+ * <p>The {@link RobotModel} decides how real the robot is. The ideal model follows a command
+ * at once, reports its true pose as odometry (like Stage with {@code gps} localization, with
+ * optional seeded white noise) and takes each scan at one instant. The Koala model applies a
+ * command after the model's latency, brakes at its own deceleration limit, dead-reckons its
+ * odometry from the true motion with per-run scale errors and noise ({@link OdometryError}:
+ * the odometry starts at the start pose in the world frame and drifts from there), and sweeps
+ * each scan's beams over the laser's turn, delivering it later ({@link LaserTiming}).
  *
  * <p>Not thread-safe: one thread owns a world (the server's sim thread or a test).
  */
@@ -38,8 +45,12 @@ public final class World {
 
     private static final int BISECTION_STEPS = 12;
     private static final long ODOMETRY_SEED_SALT = 0x9E3779B97F4A7C15L;
+    private static final long DRIFT_SEED_SALT = 0xC2B2AE3D27D4EB4FL;
+    /** Commands waiting for the latency to pass; a newer command beyond this drops the oldest. */
+    private static final int MAX_PENDING_COMMANDS = 256;
 
     private final OccupancyMap map;
+    private final RobotModel model;
     private final RobotConfig robot;
     private final Laser laser;
     private final SplittableRandom laserNoise;
@@ -48,6 +59,24 @@ public final class World {
     private final LaserScan scan;
     private final long odometryPeriodNs;
     private final long laserPeriodNs;
+    private final SplittableRandom driftNoise;
+    /** This run's systematic odometry errors, drawn once at creation. */
+    private final double distanceScale;
+    private final double rotationScale;
+    private final double headingDriftRadPerM;
+    private final long[] pendingDueNs = new long[MAX_PENDING_COMMANDS];
+    private final double[] pendingV = new double[MAX_PENDING_COMMANDS];
+    private final double[] pendingW = new double[MAX_PENDING_COMMANDS];
+    private int pendingHead;
+    private int pendingCount;
+    private final LaserScan sweepScan;
+    private final double beamIntervalNs;
+    private long sweepStartNs;
+    private int sweepNextBeam;
+    private long sweepDeliveryNs = -1;
+    private double odoXM;
+    private double odoYM;
+    private double odoYawRad;
 
     private long timeNs;
     private double xM;
@@ -77,19 +106,55 @@ public final class World {
      * @param seed seed of all noise
      */
     public World(OccupancyMap map, Pose2d start, RobotConfig robot, LaserConfig laserConfig, long seed) {
+        this(map, start, RobotModel.ideal(Objects.requireNonNull(robot, "robot")), laserConfig, seed);
+    }
+
+    /**
+     * Creates the world at time zero with the robot at {@code start}, publishing a first
+     * odometry and scan.
+     *
+     * @param map the world map
+     * @param start the robot's initial pose (also the odometry's starting estimate)
+     * @param model the robot model
+     * @param laserConfig the laser's parameters
+     * @param seed seed of all noise and of the run's systematic odometry errors
+     * @throws IllegalArgumentException if a sweeping laser's scan and delivery do not fit in its period
+     */
+    public World(OccupancyMap map, Pose2d start, RobotModel model, LaserConfig laserConfig, long seed) {
         this.map = Objects.requireNonNull(map, "map");
-        this.robot = Objects.requireNonNull(robot, "robot");
+        this.model = Objects.requireNonNull(model, "model");
+        this.robot = model.body();
         this.laser = new Laser(Objects.requireNonNull(laserConfig, "laserConfig"), new RayCaster(map));
         this.scan = new LaserScan(laserConfig.beams());
+        this.sweepScan = new LaserScan(laserConfig.beams());
         this.laserNoise = new SplittableRandom(seed);
         this.odometryNoise = new SplittableRandom(seed ^ ODOMETRY_SEED_SALT);
+        this.driftNoise = new SplittableRandom(seed ^ DRIFT_SEED_SALT);
+        OdometryError e = model.odometry();
+        this.distanceScale = 1.0 + uniform(e.distanceScaleError());
+        this.rotationScale = 1.0 + uniform(e.rotationScaleError());
+        this.headingDriftRadPerM = uniform(e.headingDriftRadPerM());
         this.odometryPeriodNs = robot.odometryPeriodNs();
         this.laserPeriodNs = laserConfig.periodNs();
+        this.beamIntervalNs = laserPeriodNs * laserConfig.angleIncrementRad() / (2 * Math.PI);
+        if (model.laserTiming().sweep()
+                && beamIntervalNs * (laserConfig.beams() - 1) + model.laserTiming().deliveryDelayNs() >= laserPeriodNs) {
+            throw new IllegalArgumentException("a laser sweep plus its delivery delay of "
+                    + model.laserTiming().deliveryDelayNs() + " ns must fit in the scan period of " + laserPeriodNs + " ns");
+        }
         placeAt(start);
+        odoXM = xM;
+        odoYM = yM;
+        odoYawRad = yawRad;
         publishOdometry();
         publishScan();
         nextOdometryNs = odometryPeriodNs;
         nextScanNs = laserPeriodNs;
+    }
+
+    /** A draw from [-bound, bound], or exactly 0 for a bound of 0 (no draw). */
+    private double uniform(double bound) {
+        return bound == 0 ? 0.0 : bound * (2 * driftNoise.nextDouble() - 1);
     }
 
     /**
@@ -100,8 +165,42 @@ public final class World {
      * @param omegaRadPerS turn rate in rad/s, counter-clockwise positive
      */
     public void command(double vMps, double omegaRadPerS) {
-        this.cmdVMps = clamp(Double.isFinite(vMps) ? vMps : 0.0, robot.maxSpeedMps());
-        this.cmdOmegaRadPerS = clamp(Double.isFinite(omegaRadPerS) ? omegaRadPerS : 0.0, robot.maxTurnRateRadPerS());
+        double v = clamp(Double.isFinite(vMps) ? vMps : 0.0, robot.maxSpeedMps());
+        double w = clamp(Double.isFinite(omegaRadPerS) ? omegaRadPerS : 0.0, robot.maxTurnRateRadPerS());
+        if (model.commandLatencyNs() == 0) {
+            this.cmdVMps = v;
+            this.cmdOmegaRadPerS = w;
+            return;
+        }
+        if (pendingCount == MAX_PENDING_COMMANDS) {
+            pendingHead = (pendingHead + 1) % MAX_PENDING_COMMANDS;
+            pendingCount--;
+        }
+        int at = (pendingHead + pendingCount) % MAX_PENDING_COMMANDS;
+        pendingDueNs[at] = timeNs + model.commandLatencyNs();
+        pendingV[at] = v;
+        pendingW[at] = w;
+        pendingCount++;
+    }
+
+    /** Moves every pending command due by {@code nowNs} to the wheels, in order. */
+    private void applyDueCommands(long nowNs) {
+        while (pendingCount > 0 && pendingDueNs[pendingHead] <= nowNs) {
+            cmdVMps = pendingV[pendingHead];
+            cmdOmegaRadPerS = pendingW[pendingHead];
+            pendingHead = (pendingHead + 1) % MAX_PENDING_COMMANDS;
+            pendingCount--;
+        }
+    }
+
+    /** @return the robot model */
+    public RobotModel model() {
+        return model;
+    }
+
+    /** @return the forward speed the wheels are following now (after the latency), m/s */
+    public double wheelCommandMps() {
+        return cmdVMps;
     }
 
     /**
@@ -132,6 +231,14 @@ public final class World {
     }
 
     /**
+     * @return the robot's own pose estimate (its odometry, updated every sub-step, not only
+     *     when published), allocates; for the ideal model the ground truth
+     */
+    public Pose2d odometryPose() {
+        return model.odometry().isNone() ? pose() : new Pose2d(odoXM, odoYM, odoYawRad);
+    }
+
+    /**
      * Advances the world by {@code dtNs} of world time.
      *
      * @param dtNs the step in world nanoseconds, not negative
@@ -147,25 +254,111 @@ public final class World {
         double dtS = dtNs * 1e-9;
         int substeps = (int) Math.max(1L, (long) Math.ceil(robot.maxSpeedMps() * dtS / MAX_SUBSTEP_M));
         double h = dtS / substeps;
-        double targetV = motorsEnabled ? cmdVMps : 0.0;
-        double targetW = motorsEnabled ? cmdOmegaRadPerS : 0.0;
+        boolean dead = !model.odometry().isNone();
         for (int i = 0; i < substeps && dtNs > 0; i++) {
-            vMps = approach(vMps, targetV, robot.maxAccelMps2() * h);
+            if (pendingCount > 0) {
+                applyDueCommands(timeNs + (long) (i * (double) dtNs / substeps));
+            }
+            double targetV = motorsEnabled ? cmdVMps : 0.0;
+            double targetW = motorsEnabled ? cmdOmegaRadPerS : 0.0;
+            double accel = braking(vMps, targetV) ? model.maxDecelMps2() : robot.maxAccelMps2();
+            vMps = approach(vMps, targetV, accel * h);
             omegaRadPerS = approach(omegaRadPerS, targetW, robot.maxTurnAccelRadPerS2() * h);
-            integrate(h);
+            if (dead) {
+                double x0 = xM;
+                double y0 = yM;
+                double yaw0 = yawRad;
+                integrate(h);
+                deadReckon(x0, y0, yaw0);
+            } else {
+                integrate(h);
+            }
         }
         if (inContact && map.clearanceM(xM, yM, robot.radiusM() + 2 * CONTACT_RELEASE_M)
                 > robot.radiusM() + CONTACT_RELEASE_M) {
             inContact = false;
         }
         timeNs += dtNs;
+        if (pendingCount > 0) {
+            applyDueCommands(timeNs);
+        }
         if (timeNs >= nextOdometryNs) {
             publishOdometry();
             nextOdometryNs = nextDue(nextOdometryNs, odometryPeriodNs);
         }
-        if (timeNs >= nextScanNs) {
+        if (model.laserTiming().sweep()) {
+            sweep();
+        } else if (timeNs >= nextScanNs) {
             publishScan();
             nextScanNs = nextDue(nextScanNs, laserPeriodNs);
+        }
+    }
+
+    private static boolean braking(double v, double target) {
+        return Math.abs(target) < Math.abs(v) || target * v < 0;
+    }
+
+    /**
+     * Adds one sub-step's true motion to the odometry estimate, as the wheel encoders see it:
+     * the distance along the heading and the rotation, each with this run's scale error and
+     * random-walk noise, plus the run's heading drift per metre.
+     */
+    private void deadReckon(double x0, double y0, double yaw0) {
+        double dTheta = Angles.normalize(yawRad - yaw0);
+        double mid = yaw0 + 0.5 * dTheta;
+        double dd = (xM - x0) * StrictMath.cos(mid) + (yM - y0) * StrictMath.sin(mid);
+        if (dd == 0 && dTheta == 0) {
+            return;
+        }
+        OdometryError e = model.odometry();
+        double ddOdo = dd * distanceScale;
+        double dThetaOdo = dTheta * rotationScale + headingDriftRadPerM * dd;
+        if (e.distanceNoiseMPerSqrtM() > 0 && dd != 0) {
+            ddOdo += e.distanceNoiseMPerSqrtM() * Math.sqrt(Math.abs(dd)) * driftNoise.nextGaussian();
+        }
+        if (e.rotationNoiseRadPerSqrtRad() > 0 && dTheta != 0) {
+            dThetaOdo += e.rotationNoiseRadPerSqrtRad() * Math.sqrt(Math.abs(dTheta)) * driftNoise.nextGaussian();
+        }
+        double odoMid = odoYawRad + 0.5 * dThetaOdo;
+        odoXM += ddOdo * StrictMath.cos(odoMid);
+        odoYM += ddOdo * StrictMath.sin(odoMid);
+        odoYawRad = Angles.normalize(odoYawRad + dThetaOdo);
+    }
+
+    /**
+     * Advances a sweeping laser: measures every beam whose time has come from the current
+     * pose, delivers a finished scan once its delivery time has come, and starts the next
+     * sweep on the laser's period grid.
+     */
+    private void sweep() {
+        int beams = laser.config().beams();
+        while (true) {
+            if (sweepNextBeam < beams) {
+                int to = sweepNextBeam;
+                while (to < beams && sweepStartNs + (long) (to * beamIntervalNs) <= timeNs) {
+                    to++;
+                }
+                if (to > sweepNextBeam) {
+                    laser.measure(sweepNextBeam, to, xM, yM, yawRad, laserNoise, sweepScan);
+                    sweepNextBeam = to;
+                }
+                if (sweepNextBeam < beams) {
+                    return;
+                }
+                sweepDeliveryNs = sweepStartNs + (long) ((beams - 1) * beamIntervalNs)
+                        + model.laserTiming().deliveryDelayNs();
+            }
+            if (sweepDeliveryNs >= 0) {
+                if (sweepDeliveryNs > timeNs) {
+                    return;
+                }
+                laser.finish(timeS(), sweepScan);
+                scan.copyFrom(sweepScan);
+                scanFresh = true;
+                sweepDeliveryNs = -1;
+                sweepStartNs = nextDue(sweepStartNs, laserPeriodNs);
+                sweepNextBeam = 0;
+            }
         }
     }
 
@@ -253,9 +446,10 @@ public final class World {
         if (robot.odometryNoiseRad() > 0) {
             nyaw = robot.odometryNoiseRad() * odometryNoise.nextGaussian();
         }
-        odometry.xM = xM + nx;
-        odometry.yM = yM + ny;
-        odometry.yawRad = Angles.normalize(yawRad + nyaw);
+        boolean dead = !model.odometry().isNone();
+        odometry.xM = (dead ? odoXM : xM) + nx;
+        odometry.yM = (dead ? odoYM : yM) + ny;
+        odometry.yawRad = Angles.normalize((dead ? odoYawRad : yawRad) + nyaw);
         odometry.vxMps = vMps;
         odometry.vyMps = 0.0;
         odometry.omegaRadPerSec = omegaRadPerS;

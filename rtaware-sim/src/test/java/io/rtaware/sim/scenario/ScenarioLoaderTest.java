@@ -73,6 +73,29 @@ class ScenarioLoaderTest {
     }
 
     @Test
+    void robotSectionChoosesTheModelAndOverridesItsParameters() throws IOException {
+        Path f = dir.resolve("robot.yaml");
+        Files.writeString(f, GOOD + "robot: {model: koala, top_speed_mps: 0.3, command_latency_ms: 50,"
+                + " odometry_rotation_scale_error: 0.1}\n");
+        io.rtaware.sim.world.RobotModel m = ScenarioLoader.load(f).robot().orElseThrow();
+        assertEquals("koala", m.name());
+        assertEquals(0.3, m.topSpeedMps());
+        assertEquals(50_000_000L, m.commandLatencyNs());
+        assertEquals(0.1, m.odometry().rotationScaleError());
+        assertEquals(io.rtaware.sim.world.OdometryError.KOALA.distanceScaleError(), m.odometry().distanceScaleError());
+        Files.writeString(f, GOOD + "robot: {model: ideal}\n");
+        assertTrue(ScenarioLoader.load(f).robot().orElseThrow().isIdeal());
+        Files.writeString(f, GOOD);
+        assertTrue(ScenarioLoader.load(f).robot().isEmpty(), "no section: the command's default");
+        String e = error(GOOD + "robot: {model: pioneer}\n");
+        assertTrue(e.contains("'robot.model'") && e.contains("pioneer"), e);
+        e = error(GOOD + "robot: {model: koala, wheels: 4}\n");
+        assertTrue(e.contains("'robot.wheels'") && e.contains("unknown robot parameter"), e);
+        e = error(GOOD + "robot: {top_speed_mps: 2}\n");
+        assertTrue(e.contains("'robot.top_speed_mps'") && e.contains("2.0"), e);
+    }
+
+    @Test
     void missingFileAndUnknownBuiltIn() {
         ScenarioException e = assertThrows(ScenarioException.class, () -> ScenarioLoader.load("no/such.yaml"));
         assertTrue(e.getMessage().contains("no/such.yaml"));

@@ -1,0 +1,495 @@
+package io.rtaware.experiment;
+
+import com.fasterxml.jackson.annotation.JsonValue;
+import io.rtaware.experiment.ExperimentSummary.Misses;
+import io.rtaware.experiment.ExperimentSummary.PairTest;
+import io.rtaware.experiment.ExperimentSummary.SetSummary;
+import io.rtaware.experiment.stats.WelchTest;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.function.Function;
+import org.apache.commons.math3.stat.correlation.SpearmansCorrelation;
+
+/**
+ * The paper's claims, each given a verdict computed from an experiment's results by an
+ * explicit rule (stated with each verdict and in the report), never set by hand. A claim whose
+ * data the experiment does not have (no set above 100 ms, no paper Set 4, no variance for a
+ * t-test) is not given a verdict but listed as not evaluated, with the reason.
+ *
+ * <p>The period of a set, for the claims about periods, is {@link SetSummary#sweptPeriodMs()}:
+ * the period its swept tasks share. Claims about too-slow and too-fast periods are judged per
+ * top speed when the sets differ in speed. Tables I and II and Fig. 7 are judged on the sets
+ * whose periods are those of a paper set and whose top speed is the paper's (or {@code run}'s
+ * default).
+ */
+public final class PaperClaims {
+
+    /** A verdict on a claim. */
+    public enum Verdict {
+        /** The results show what the paper claims. */
+        REPRODUCED,
+        /** The results do not show it. */
+        NOT_REPRODUCED,
+        /** The results show it in part. */
+        MIXED;
+
+        /** @return the name in {@code summary.json}: {@code reproduced}, {@code not_reproduced} or {@code mixed} */
+        @JsonValue
+        public String json() {
+            return name().toLowerCase(Locale.ROOT);
+        }
+    }
+
+    /**
+     * One claim with its verdict.
+     *
+     * @param claim what the paper says
+     * @param verdict what the results say
+     * @param evidence the numbers the verdict rests on
+     * @param rule how the verdict follows from the numbers
+     */
+    public record Claim(String claim, Verdict verdict, String evidence, String rule) {
+    }
+
+    /**
+     * A claim these results cannot decide.
+     *
+     * @param claim what the paper says
+     * @param reason which data is missing
+     */
+    public record NotEvaluated(String claim, String reason) {
+    }
+
+    /**
+     * @param claims the claims with a verdict
+     * @param notEvaluated the claims without one
+     */
+    public record Verdicts(List<Claim> claims, List<NotEvaluated> notEvaluated) {
+    }
+
+    /** Periods above this are "too slow" in the paper's claim, ms. */
+    public static final long SLOW_ABOVE_MS = 100;
+    /** Periods at or below this are "too fast" in the paper's claim, ms. */
+    public static final long FAST_AT_MOST_MS = 5;
+    /** Share of runs that makes an effect the rule for a set ("at least half its runs"). */
+    public static final double MAJORITY = 0.5;
+    /** Spearman's rank correlation at or below which misses "fall" as periods grow. */
+    public static final double FALLS_RHO = -0.7;
+    /** Distinct periods a series needs before a trend is read from it. */
+    public static final int MIN_PERIODS = 3;
+    /** Significance level of the t-tests, as the paper's "statistically different". */
+    public static final double ALPHA = 0.05;
+    /** Confidence range (1 - p) read as "on the verge of significance", from the paper's 79-85%. */
+    public static final double VERGE_MIN = 0.75;
+    /** Upper end of that range: at or above it a difference is significant, not on the verge. */
+    public static final double VERGE_MAX = 1 - ALPHA;
+    /** Largest spread of the set means, over their mean, for run times to be "almost identical" (paper: 4.2%). */
+    public static final double SAME_RUN_TIME = 0.05;
+    /** The same for distances to the finish (paper: 13.6%). */
+    public static final double SAME_DISTANCE = 0.15;
+
+    static final String SLOW = "periods above 100 ms: the robot hits walls and obstacles";
+    static final String FAST = "periods of 5 ms or less: the system locks up";
+    static final String MISSES_FALL = "misses fall as periods grow";
+    static final String T_SET1 = "Table I t-tests: the run times of Sets 1 and 4, and of Sets 1 and 5, are statistically "
+            + "different (Set 1 faster)";
+    static final String T_VERGE = "Table I t-tests: the run times of Sets 2 and 4, 3 and 4, and 4 and 5 are on the verge "
+            + "of significance (confidence 82%, 85%, 79%)";
+    static final String T_DISTANCE = "Table II t-tests: the distances to the finish of no two sets are statistically different";
+    static final String SET3 = "Table I: Set 3 has the fastest mean run time and the highest standard deviation";
+    static final String SAME = "Tables I and II: run times and distances to the finish are almost identical across sets";
+    static final String FIG7 = "Fig. 7: in Sets 1, 4 and 5 the planner misses most, then occupancy, waypoint and obstacle";
+
+    private static final List<String> FIG7_ORDER = List.of("planner", "occupancy", "waypoint", "obstacle");
+
+    private final List<SetSummary> sets;
+    private final Map<String, List<PairTest>> tests;
+    private final List<Claim> claims = new ArrayList<>();
+    private final List<NotEvaluated> notEvaluated = new ArrayList<>();
+
+    private PaperClaims(List<SetSummary> sets, Map<String, List<PairTest>> tests) {
+        this.sets = sets;
+        this.tests = tests;
+    }
+
+    /**
+     * @param sets the experiment's sets, summarized
+     * @param tests its Welch tests per quantity
+     * @return the verdicts, in a fixed order of claims
+     */
+    public static Verdicts evaluate(List<SetSummary> sets, Map<String, List<PairTest>> tests) {
+        PaperClaims c = new PaperClaims(sets, tests);
+        Map<String, List<SetSummary>> bySpeed = new LinkedHashMap<>();
+        sets.forEach(s -> bySpeed.computeIfAbsent(speedLabel(s.topSpeedMps()), k -> new ArrayList<>()).add(s));
+        bySpeed.forEach((speed, group) -> c.slow(group, bySpeed.size() > 1 ? " (at " + speed + ")" : ""));
+        bySpeed.forEach((speed, group) -> c.fast(group, bySpeed.size() > 1 ? " (at " + speed + ")" : ""));
+        c.missesFall();
+        Map<Integer, SetSummary> paper = c.paperSets();
+        c.setOneDiffers(paper);
+        c.onTheVerge(paper);
+        c.distancesAlike(paper);
+        c.setThree(paper);
+        c.almostIdentical(paper);
+        c.fig7(paper);
+        return new Verdicts(List.copyOf(c.claims), List.copyOf(c.notEvaluated));
+    }
+
+    private void slow(List<SetSummary> group, String suffix) {
+        String claim = SLOW + suffix;
+        List<SetSummary> above = onAxis(group).stream().filter(s -> s.sweptPeriodMs() > SLOW_ABOVE_MS && s.measuredRuns() > 0)
+                .toList();
+        if (above.isEmpty()) {
+            notEvaluated.add(new NotEvaluated(claim, "no set with a period above " + SLOW_ABOVE_MS
+                    + " ms and a run that ended on the course" + periodsHere(group)));
+            return;
+        }
+        List<SetSummary> below = onAxis(group).stream().filter(s -> s.sweptPeriodMs() <= SLOW_ABOVE_MS).toList();
+        int belowRuns = below.stream().mapToInt(SetSummary::measuredRuns).sum();
+        int belowHits = below.stream().mapToInt(SetSummary::runsWithCollisions).sum();
+        boolean baselineClean = belowRuns == 0 || (double) belowHits / belowRuns < MAJORITY;
+        boolean allMost = above.stream().allMatch(s -> s.collisionRate() >= MAJORITY);
+        boolean none = above.stream().allMatch(s -> s.runsWithCollisions() == 0);
+        Verdict v = allMost && baselineClean ? Verdict.REPRODUCED : none ? Verdict.NOT_REPRODUCED : Verdict.MIXED;
+        List<String> parts = new ArrayList<>();
+        for (SetSummary s : above) {
+            parts.add(s.name() + " (" + s.sweptPeriodMs() + " ms): " + s.runsWithCollisions() + " of " + s.measuredRuns()
+                    + " runs collided (" + s.collisions() + " collisions), " + s.completed() + " of " + s.runs() + " completed");
+        }
+        String evidence = String.join("; ", parts) + ". At or below " + SLOW_ABOVE_MS + " ms: "
+                + (belowRuns == 0 ? "no runs" : belowHits + " of " + belowRuns + " runs collided") + ". "
+                + firstCollision(group);
+        claims.add(new Claim(claim, v, evidence, "reproduced if every set above " + SLOW_ABOVE_MS
+                + " ms has a collision in at least " + pct(MAJORITY) + " of its runs and the sets at or below "
+                + SLOW_ABOVE_MS + " ms (if any) in fewer than " + pct(MAJORITY) + "; not reproduced if no run above "
+                + SLOW_ABOVE_MS + " ms collided; mixed otherwise"));
+    }
+
+    private static String firstCollision(List<SetSummary> group) {
+        return onAxis(group).stream().filter(s -> s.runsWithCollisions() > 0)
+                .min(Comparator.comparingLong(SetSummary::sweptPeriodMs))
+                .map(s -> "Shortest period with a collision: " + s.sweptPeriodMs() + " ms (" + s.name() + ").")
+                .orElse("No run collided at any period.");
+    }
+
+    private void fast(List<SetSummary> group, String suffix) {
+        String claim = FAST + suffix;
+        List<SetSummary> fastSets = onAxis(group).stream().filter(s -> s.sweptPeriodMs() <= FAST_AT_MOST_MS).toList();
+        if (fastSets.isEmpty()) {
+            notEvaluated.add(new NotEvaluated(claim, "no set with a period of " + FAST_AT_MOST_MS + " ms or less"
+                    + periodsHere(group)));
+            return;
+        }
+        boolean allMost = fastSets.stream().allMatch(s -> errors(s) >= MAJORITY * s.runs());
+        boolean none = fastSets.stream().allMatch(s -> errors(s) == 0);
+        Verdict v = allMost ? Verdict.REPRODUCED : none ? Verdict.NOT_REPRODUCED : Verdict.MIXED;
+        List<String> parts = new ArrayList<>();
+        for (SetSummary s : fastSets) {
+            parts.add(robot(s));
+        }
+        onAxis(group).stream().filter(s -> s.sweptPeriodMs() == SLOW_ABOVE_MS).findFirst()
+                .ifPresent(s -> parts.add("for comparison, " + robot(s)));
+        claims.add(new Claim(claim, v, String.join("; ", parts) + ".", "a run 'locks up' when its process fails or "
+                + "leaves no report (outcome error); reproduced if at least " + pct(MAJORITY) + " of the runs of every set at "
+                + FAST_AT_MOST_MS + " ms or less lock up; not reproduced if none does (the controller keeps running, "
+                + "skips the releases it cannot make and reports them); mixed otherwise"));
+    }
+
+    private static String robot(SetSummary s) {
+        Misses all = s.misses().get(ExperimentSummary.ALL_TASKS);
+        String skipped = all.skipped() == null ? "skipped releases not recorded"
+                : all.skipped() + " releases skipped (" + pct(all.releases() == 0 ? 0 : (double) all.skipped() / all.releases())
+                + " of " + all.releases() + ")";
+        return s.name() + " (" + s.sweptPeriodMs() + " ms): " + errors(s) + " of " + s.runs() + " runs locked up, "
+                + s.completed() + " completed, outcomes " + s.outcomes() + ", " + s.runsWithCollisions() + " of "
+                + s.measuredRuns() + " collided, misses " + num(all.missPct(), 2) + "% of all four tasks' releases, " + skipped
+                + (s.runTimeS().mean() == null ? "" : ", mean run time " + num(s.runTimeS().mean(), 1) + " s");
+    }
+
+    private static int errors(SetSummary s) {
+        return s.outcomes().getOrDefault(RunResult.ERROR, 0);
+    }
+
+    private void missesFall() {
+        Map<String, List<double[]>> series = new LinkedHashMap<>();
+        for (String task : PeriodSet.TASKS) {
+            List<double[]> points = new ArrayList<>();
+            for (SetSummary s : sets) {
+                Double pct = s.misses().get(task).missPct();
+                if (pct != null) {
+                    points.add(new double[] {s.periodsMs().get(task), pct});
+                }
+            }
+            series.put(task, points);
+        }
+        List<double[]> all = new ArrayList<>();
+        for (SetSummary s : onAxis(sets)) {
+            Double pct = s.misses().get(ExperimentSummary.ALL_TASKS).missPct();
+            if (pct != null) {
+                all.add(new double[] {s.sweptPeriodMs(), pct});
+            }
+        }
+        series.put("all four (against the swept period)", all);
+        series.values().removeIf(points -> points.stream().mapToDouble(p -> p[0]).distinct().count() < MIN_PERIODS);
+        if (series.isEmpty()) {
+            notEvaluated.add(new NotEvaluated(MISSES_FALL, "no task's period takes " + MIN_PERIODS
+                    + " or more values across the sets"));
+            return;
+        }
+        List<String> parts = new ArrayList<>();
+        int falls = 0;
+        for (Map.Entry<String, List<double[]>> e : series.entrySet()) {
+            double[] x = e.getValue().stream().mapToDouble(p -> p[0]).toArray();
+            double[] y = e.getValue().stream().mapToDouble(p -> p[1]).toArray();
+            double rho = new SpearmansCorrelation().correlation(x, y);
+            boolean fall = rho <= FALLS_RHO;
+            falls += fall ? 1 : 0;
+            double[] first = e.getValue().stream().min(Comparator.comparingDouble(p -> p[0])).orElseThrow();
+            double[] last = e.getValue().stream().max(Comparator.comparingDouble(p -> p[0])).orElseThrow();
+            parts.add(e.getKey() + ": rho " + (Double.isNaN(rho) ? "undefined (the same miss % everywhere)" : num(rho, 2))
+                    + " over " + x.length + " sets, " + num(first[1], 2) + "% at " + (long) first[0] + " ms, "
+                    + num(last[1], 2) + "% at " + (long) last[0] + " ms");
+        }
+        Verdict v = falls == series.size() ? Verdict.REPRODUCED : falls == 0 ? Verdict.NOT_REPRODUCED : Verdict.MIXED;
+        claims.add(new Claim(MISSES_FALL, v, String.join("; ", parts) + ".", "for each task whose period takes at least "
+                + MIN_PERIODS + " values across the sets (its miss % against its period), and for all four tasks against "
+                + "the swept period: Spearman's rank correlation rho; a series falls if rho <= " + FALLS_RHO
+                + "; reproduced if every series falls, not reproduced if none does, mixed otherwise"));
+    }
+
+    private Map<Integer, SetSummary> paperSets() {
+        Map<Integer, SetSummary> paper = new TreeMap<>();
+        List<PaperReference.PaperSet> published = PaperReference.published().sets();
+        for (SetSummary s : sets) {
+            PaperReference.PaperSet match = PaperReference.matching(new PeriodSet(s.name(), s.periodsMs(), s.topSpeedMps()));
+            if (match != null) {
+                paper.putIfAbsent(published.indexOf(match) + 1, s);
+            }
+        }
+        return paper;
+    }
+
+    private void setOneDiffers(Map<Integer, SetSummary> paper) {
+        List<int[]> pairs = List.of(new int[] {1, 4}, new int[] {1, 5});
+        List<String> parts = new ArrayList<>();
+        int agree = 0;
+        for (int[] pair : pairs) {
+            WelchTest t = test(paper, pair[0], pair[1], "run_time_s");
+            String missing = missing(paper, pair, t);
+            if (missing != null) {
+                notEvaluated.add(new NotEvaluated(T_SET1, missing));
+                return;
+            }
+            double a = paper.get(pair[0]).runTimeS().mean();
+            double b = paper.get(pair[1]).runTimeS().mean();
+            boolean ok = t.p() < ALPHA && a < b;
+            agree += ok ? 1 : 0;
+            parts.add("Set " + pair[0] + " vs Set " + pair[1] + ": " + num(a, 2) + " s vs " + num(b, 2) + " s, p = "
+                    + num(t.p(), 4));
+        }
+        claims.add(new Claim(T_SET1, verdict(agree, pairs.size()), String.join("; ", parts)
+                + " (paper: 266.95 s vs 276.97 s and 272.68 s, both statistically different).",
+                "Welch's two-sided t-test on the completed runs; a pair agrees if p < " + ALPHA
+                        + " and Set 1's mean is the lower; reproduced if both agree, not reproduced if neither, mixed otherwise"));
+    }
+
+    private void onTheVerge(Map<Integer, SetSummary> paper) {
+        List<int[]> pairs = List.of(new int[] {2, 4}, new int[] {3, 4}, new int[] {4, 5});
+        List<String> paperConfidence = List.of("82%", "85%", "79%");
+        List<String> parts = new ArrayList<>();
+        int agree = 0;
+        for (int i = 0; i < pairs.size(); i++) {
+            int[] pair = pairs.get(i);
+            WelchTest t = test(paper, pair[0], pair[1], "run_time_s");
+            String missing = missing(paper, pair, t);
+            if (missing != null) {
+                notEvaluated.add(new NotEvaluated(T_VERGE, missing));
+                return;
+            }
+            agree += t.confidence() >= VERGE_MIN && t.confidence() < VERGE_MAX ? 1 : 0;
+            parts.add("Set " + pair[0] + " vs Set " + pair[1] + ": confidence " + pct(t.confidence()) + " (paper "
+                    + paperConfidence.get(i) + ")");
+        }
+        claims.add(new Claim(T_VERGE, verdict(agree, pairs.size()), String.join("; ", parts) + ".",
+                "Welch's two-sided t-test on the completed runs, confidence = 1 - p; a pair agrees if its confidence is at least "
+                        + pct(VERGE_MIN) + " and below " + pct(VERGE_MAX) + "; reproduced if all three agree, not reproduced "
+                        + "if none does, mixed otherwise"));
+    }
+
+    private void distancesAlike(Map<Integer, SetSummary> paper) {
+        List<String> parts = new ArrayList<>();
+        List<String> skipped = new ArrayList<>();
+        int different = 0;
+        int tested = 0;
+        List<Integer> numbers = new ArrayList<>(paper.keySet());
+        for (int i = 0; i < numbers.size(); i++) {
+            for (int j = i + 1; j < numbers.size(); j++) {
+                WelchTest t = test(paper, numbers.get(i), numbers.get(j), "distance_to_finish_m");
+                String pair = "Set " + numbers.get(i) + " vs Set " + numbers.get(j);
+                if (t == null || !t.applicable()) {
+                    skipped.add(pair);
+                    continue;
+                }
+                tested++;
+                if (t.p() < ALPHA) {
+                    different++;
+                    parts.add(pair + " p = " + num(t.p(), 4));
+                }
+            }
+        }
+        if (tested == 0) {
+            notEvaluated.add(new NotEvaluated(T_DISTANCE, numbers.size() < 2
+                    ? "fewer than two of the paper's sets (at the paper's top speed) were run"
+                    : "no t-test between the paper's sets is defined (" + String.join(", ", skipped)
+                            + ": fewer than two runs, or no variance)"));
+            return;
+        }
+        Verdict v = different == 0 ? Verdict.REPRODUCED : different * 2 >= tested ? Verdict.NOT_REPRODUCED : Verdict.MIXED;
+        String evidence = different + " of " + tested + " pairs of the paper's sets (" + names(numbers)
+                + ") differ with p < " + ALPHA + (parts.isEmpty() ? "" : ": " + String.join("; ", parts))
+                + (skipped.isEmpty() ? "" : "; not testable: " + String.join(", ", skipped)) + ".";
+        claims.add(new Claim(T_DISTANCE, v, evidence, "Welch's two-sided t-test between every pair of the paper's sets "
+                + "present, on every run that ended on the course; reproduced if no pair has p < " + ALPHA
+                + ", not reproduced if at least half the pairs do, mixed otherwise (no correction for multiple tests, "
+                + "like the paper)"));
+    }
+
+    private void setThree(Map<Integer, SetSummary> paper) {
+        if (paper.size() < 5 || paper.values().stream().anyMatch(s -> s.runTimeS().sd() == null)) {
+            notEvaluated.add(new NotEvaluated(SET3, "needs all five paper sets with at least two completed runs each; have "
+                    + (paper.isEmpty() ? "none" : names(new ArrayList<>(paper.keySet())))));
+            return;
+        }
+        int fastest = argBest(paper, s -> -s.runTimeS().mean());
+        int widest = argBest(paper, s -> s.runTimeS().sd());
+        int agree = (fastest == 3 ? 1 : 0) + (widest == 3 ? 1 : 0);
+        claims.add(new Claim(SET3, verdict(agree, 2), "fastest mean run time: Set " + fastest + " ("
+                + num(paper.get(fastest).runTimeS().mean(), 2) + " s); highest SD: Set " + widest + " ("
+                + num(paper.get(widest).runTimeS().sd(), 2) + " s); Set 3: " + num(paper.get(3).runTimeS().mean(), 2)
+                + " s +- " + num(paper.get(3).runTimeS().sd(), 2) + " s (paper: 265.89 +- 11.19 s).",
+                "reproduced if Set 3 has both the lowest mean and the highest standard deviation of the run time, "
+                        + "not reproduced if neither, mixed if one"));
+    }
+
+    private void almostIdentical(Map<Integer, SetSummary> paper) {
+        List<SetSummary> withTimes = paper.values().stream().filter(s -> s.runTimeS().mean() != null).toList();
+        List<SetSummary> withDistances = paper.values().stream().filter(s -> s.distanceToFinishM().mean() != null).toList();
+        if (withTimes.size() < 2 || withDistances.size() < 2) {
+            notEvaluated.add(new NotEvaluated(SAME, "needs at least two of the paper's sets with a mean run time and a mean "
+                    + "distance to the finish; have " + withTimes.size() + " and " + withDistances.size()));
+            return;
+        }
+        double time = spread(withTimes, s -> s.runTimeS().mean());
+        double distance = spread(withDistances, s -> s.distanceToFinishM().mean());
+        int agree = (time <= SAME_RUN_TIME ? 1 : 0) + (distance <= SAME_DISTANCE ? 1 : 0);
+        claims.add(new Claim(SAME, verdict(agree, 2), "over " + names(new ArrayList<>(paper.keySet()))
+                + ": the set means of the run time span " + pct(time) + " of their mean, those of the distance to the finish "
+                + pct(distance) + " (paper: 4.2% and 13.6%).", "spread = (largest set mean - smallest) / mean of the set "
+                + "means; reproduced if at most " + pct(SAME_RUN_TIME) + " for run time and at most " + pct(SAME_DISTANCE)
+                + " for distance (the paper's own spreads, rounded up), not reproduced if neither, mixed if one"));
+    }
+
+    private void fig7(Map<Integer, SetSummary> paper) {
+        List<String> parts = new ArrayList<>();
+        int agree = 0;
+        int judged = 0;
+        for (int n : List.of(1, 4, 5)) {
+            SetSummary s = paper.get(n);
+            if (s == null || FIG7_ORDER.stream().anyMatch(t -> s.misses().get(t).missPct() == null)) {
+                continue;
+            }
+            judged++;
+            List<String> order = FIG7_ORDER.stream()
+                    .sorted(Comparator.comparingDouble((String t) -> s.misses().get(t).missPct()).reversed()).toList();
+            boolean strict = true;
+            for (int i = 1; i < FIG7_ORDER.size(); i++) {
+                strict &= s.misses().get(FIG7_ORDER.get(i - 1)).missPct() > s.misses().get(FIG7_ORDER.get(i)).missPct();
+            }
+            agree += strict ? 1 : 0;
+            List<String> ranked = new ArrayList<>();
+            order.forEach(t -> ranked.add(t + " " + num(s.misses().get(t).missPct(), 2) + "%"));
+            parts.add("Set " + n + ": " + String.join(" > ", ranked));
+        }
+        if (judged == 0) {
+            notEvaluated.add(new NotEvaluated(FIG7, "none of the paper's Sets 1, 4 and 5 (at the paper's top speed) was run"));
+            return;
+        }
+        claims.add(new Claim(FIG7, verdict(agree, judged), String.join("; ", parts) + ".",
+                "a set agrees if its miss % is strictly ordered planner > occupancy > waypoint > obstacle; reproduced if "
+                        + "every one of Sets 1, 4 and 5 present agrees, not reproduced if none does, mixed otherwise"));
+    }
+
+    private static Verdict verdict(int agree, int of) {
+        return agree == of ? Verdict.REPRODUCED : agree == 0 ? Verdict.NOT_REPRODUCED : Verdict.MIXED;
+    }
+
+    private WelchTest test(Map<Integer, SetSummary> paper, int a, int b, String quantity) {
+        SetSummary x = paper.get(a);
+        SetSummary y = paper.get(b);
+        if (x == null || y == null) {
+            return null;
+        }
+        for (PairTest p : tests.getOrDefault(quantity, List.of())) {
+            if (p.setA() == x.set() && p.setB() == y.set() || p.setA() == y.set() && p.setB() == x.set()) {
+                return p.test();
+            }
+        }
+        return null;
+    }
+
+    private static String missing(Map<Integer, SetSummary> paper, int[] pair, WelchTest t) {
+        for (int n : pair) {
+            if (!paper.containsKey(n)) {
+                return "the paper's Set " + n + " (" + PaperReference.published().sets().get(n - 1).periods().shortLabel()
+                        + " ms at the paper's top speed) was not run";
+            }
+        }
+        if (t == null || !t.applicable()) {
+            return "the t-test of Set " + pair[0] + " vs Set " + pair[1] + " is not defined"
+                    + (t == null ? "" : ": " + t.note());
+        }
+        return null;
+    }
+
+    private static int argBest(Map<Integer, SetSummary> paper, Function<SetSummary, Double> score) {
+        return paper.entrySet().stream().max(Comparator.comparingDouble(e -> score.apply(e.getValue())))
+                .orElseThrow().getKey();
+    }
+
+    private static double spread(List<SetSummary> sets, Function<SetSummary, Double> mean) {
+        double max = sets.stream().mapToDouble(mean::apply).max().orElseThrow();
+        double min = sets.stream().mapToDouble(mean::apply).min().orElseThrow();
+        double avg = sets.stream().mapToDouble(mean::apply).average().orElseThrow();
+        return (max - min) / avg;
+    }
+
+    private static List<SetSummary> onAxis(List<SetSummary> group) {
+        return group.stream().filter(s -> s.sweptPeriodMs() != null).toList();
+    }
+
+    private static String periodsHere(List<SetSummary> group) {
+        List<Long> periods = onAxis(group).stream().map(SetSummary::sweptPeriodMs).distinct().sorted().toList();
+        return periods.isEmpty() ? " (the sets do not differ in one swept period)"
+                : " (periods here: " + String.join(", ", periods.stream().map(p -> p + " ms").toList()) + ")";
+    }
+
+    private static String names(List<Integer> numbers) {
+        return String.join(", ", numbers.stream().map(n -> "Set " + n).toList());
+    }
+
+    private static String speedLabel(Double speedMps) {
+        return speedMps == null ? "run's default top speed" : PeriodSet.plainSpeed(speedMps) + " m/s";
+    }
+
+    private static String pct(double share) {
+        return num(100 * share, 1) + "%";
+    }
+
+    private static String num(Double v, int decimals) {
+        return v == null || !Double.isFinite(v) ? "n/a" : String.format(Locale.ROOT, "%." + decimals + "f", v);
+    }
+}

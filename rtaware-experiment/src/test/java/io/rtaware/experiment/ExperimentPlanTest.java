@@ -1,0 +1,74 @@
+package io.rtaware.experiment;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+
+class ExperimentPlanTest {
+
+    private static final RunConditions CONDITIONS = new RunConditions("paper-room", 10, 40, null);
+
+    @Test
+    void aSetsTopSpeedIsPassedToRunAsTopSpeed() {
+        PeriodSet fast = PeriodSet.of("fast", 100, 20, 100, 100).withTopSpeed(0.35);
+        ExperimentPlan plan = new ExperimentPlan(List.of(fast, PeriodSet.of("default", 100, 20, 100, 100)), 2, CONDITIONS);
+        List<PlannedRun> order = plan.order();
+        assertEquals(List.of("--scenario", "paper-room", "--periods", "waypoint=100,obstacle=20,occupancy=100,planner=100",
+                "--time-scale", "10", "--seed", "41", "--top-speed", "0.35", "--out", "o", "--quiet"),
+                plan.runArguments(order.get(2), Path.of("o")));
+        assertFalse(plan.runArguments(order.get(1), Path.of("o")).contains("--top-speed"));
+    }
+
+    @Test
+    void shardsPartitionTheWholePlanWithTheSameSeeds() {
+        List<PeriodSet> sets = ExperimentSets.resolve("sweep-obstacle");
+        ExperimentPlan whole = new ExperimentPlan(sets, 10, CONDITIONS);
+        for (int n = 1; n <= 12; n++) {
+            List<String> seen = new ArrayList<>();
+            for (int k = 1; k <= n; k++) {
+                ExperimentPlan shard = new ExperimentPlan(sets, 10, CONDITIONS, new Shard(k, n));
+                List<PlannedRun> mine = shard.order();
+                if (10 % n == 0) {
+                    assertEquals(80 / n, mine.size(), "shard " + k + "/" + n + ": equal shares when N divides the runs");
+                }
+                for (PlannedRun p : mine) {
+                    seen.add(p.folderName() + " " + shard.runArguments(p, Path.of(p.folderName())));
+                }
+                assertEquals(whole.fullOrder().stream().filter(mine::contains).toList(), mine, "whole plan's order");
+            }
+            List<String> expected = whole.fullOrder().stream()
+                    .map(p -> p.folderName() + " " + whole.runArguments(p, Path.of(p.folderName()))).toList();
+            assertEquals(new HashSet<>(expected), new HashSet<>(seen), "every run with its arguments and seed, n = " + n);
+            assertEquals(expected.size(), seen.size(), "no run twice, n = " + n);
+        }
+    }
+
+    @Test
+    void eachSetsRunsAreSpreadEvenlyOverTheShards() {
+        ExperimentPlan a = new ExperimentPlan(ExperimentSets.resolve("sweep-all"), 10, CONDITIONS, new Shard(1, 2));
+        for (int set = 1; set <= 8; set++) {
+            int s = set;
+            assertEquals(5, a.order().stream().filter(p -> p.set() == s).count(), "set " + set);
+        }
+        Set<Integer> sets = new HashSet<>();
+        new ExperimentPlan(ExperimentSets.paper(), 3, CONDITIONS, new Shard(3, 3)).order().forEach(p -> sets.add(p.set()));
+        assertEquals(Set.of(1, 2, 3, 4, 5), sets);
+    }
+
+    @Test
+    void shardTextIsKOverN() {
+        assertEquals(new Shard(2, 4), Shard.parse("2/4"));
+        for (String bad : List.of("0/4", "5/4", "2", "a/b", "1/0", "1/2/3", "")) {
+            ExperimentInputException e = assertThrows(ExperimentInputException.class, () -> Shard.parse(bad));
+            assertTrue(e.getMessage().contains("'" + bad + "'"), e.getMessage());
+        }
+    }
+}

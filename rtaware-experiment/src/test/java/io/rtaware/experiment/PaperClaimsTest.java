@@ -1,0 +1,204 @@
+package io.rtaware.experiment;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import io.rtaware.experiment.PaperClaims.Claim;
+import io.rtaware.experiment.PaperClaims.Verdict;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.ToDoubleBiFunction;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** Verdicts on the paper's claims from synthetic results.csv rows, one test per verdict and claim. */
+class PaperClaimsTest {
+
+    @TempDir
+    Path dir;
+
+    private static final RunConditions CONDITIONS = new RunConditions("paper-room", 10, 1, null);
+
+    /** How a synthetic run turns out. */
+    private interface Outcome {
+        /** @return outcome, run time, distance, collisions for set s (period p) run r */
+        Object[] of(PeriodSet s, long periodMs, int run);
+    }
+
+    private List<RunResult> rows(List<PeriodSet> sets, int runs, Outcome outcome, ToDoubleBiFunction<String, Long> missPct) {
+        List<RunResult> rows = new ArrayList<>();
+        for (int run = 1; run <= runs; run++) {
+            for (int i = 0; i < sets.size(); i++) {
+                PeriodSet s = sets.get(i);
+                long period = s.periodsMs().values().stream().mapToLong(Long::longValue).max().orElseThrow();
+                if (s.periodsMs().get("obstacle") != 100) {
+                    period = s.periodsMs().get("obstacle");
+                }
+                Object[] o = outcome.of(s, period, run);
+                Map<String, TaskResult> tasks = new LinkedHashMap<>();
+                if (!RunResult.ERROR.equals(o[0])) {
+                    for (String t : PeriodSet.TASKS) {
+                        double pct = missPct.applyAsDouble(t, s.periodsMs().get(t));
+                        long misses = Math.round(pct * 100);
+                        tasks.put(t, new TaskResult(10_000, misses, 100.0 * misses / 10_000, 0, 50, misses / 2));
+                    }
+                }
+                rows.add(new RunResult(i + 1, run, s, CONDITIONS, (String) o[0], (double) o[1], (double) o[2], 20.0,
+                        RunResult.ERROR.equals(o[0]) ? null : (Integer) o[3], 4, 4, tasks, Map.of()));
+            }
+        }
+        // Through results.csv, as the report reads them.
+        Path csv = dir.resolve("results-" + System.nanoTime() + ".csv");
+        try {
+            for (RunResult r : rows) {
+                ResultsCsv.append(csv, r);
+            }
+            return ResultsCsv.read(csv);
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
+    private static ExperimentSummary summary(List<RunResult> rows) {
+        return ExperimentSummary.of(rows, ExperimentProfile.fromResults(rows));
+    }
+
+    private static Claim claim(ExperimentSummary s, String text) {
+        return s.claims().stream().filter(c -> c.claim().equals(text)).findFirst()
+                .orElseThrow(() -> new AssertionError(text + " not evaluated: " + s.claimsNotEvaluated()));
+    }
+
+    private static boolean notEvaluated(ExperimentSummary s, String text) {
+        return s.claimsNotEvaluated().stream().anyMatch(n -> n.claim().equals(text));
+    }
+
+    private static Object[] completed(double runTime) {
+        return new Object[] {"completed", runTime, 0.3, 0};
+    }
+
+    private static final ToDoubleBiFunction<String, Long> FALLING = (task, period) -> 50.0 / period;
+
+    @Test
+    void slowPeriodsCollideReproducedMixedAndNot() {
+        List<PeriodSet> sweep = ExperimentSets.resolve("sweep-obstacle");
+        ExperimentSummary reproduced = summary(rows(sweep, 4, (s, p, r) -> p > 100
+                ? new Object[] {"stuck", 120.0, 3.0, r <= 3 ? 2 : 0} : completed(230), FALLING));
+        Claim c = claim(reproduced, PaperClaims.SLOW);
+        assertEquals(Verdict.REPRODUCED, c.verdict(), c.evidence());
+        assertTrue(c.evidence().contains("obstacle 200 ms (200 ms): 3 of 4 runs collided (6 collisions), 0 of 4 completed"),
+                c.evidence());
+        assertTrue(c.evidence().contains("At or below 100 ms: 0 of 20 runs collided"), c.evidence());
+        assertTrue(c.evidence().contains("Shortest period with a collision: 200 ms"), c.evidence());
+
+        ExperimentSummary mixed = summary(rows(sweep, 4, (s, p, r) -> p == 800 && r == 1
+                ? new Object[] {"completed", 240.0, 0.3, 1} : completed(230), FALLING));
+        assertEquals(Verdict.MIXED, claim(mixed, PaperClaims.SLOW).verdict());
+
+        ExperimentSummary clean = summary(rows(sweep, 2, (s, p, r) -> completed(230), FALLING));
+        Claim not = claim(clean, PaperClaims.SLOW);
+        assertEquals(Verdict.NOT_REPRODUCED, not.verdict());
+        assertTrue(not.evidence().contains("No run collided at any period."), not.evidence());
+
+        // Collisions everywhere: not the period's doing.
+        ExperimentSummary everywhere = summary(rows(sweep, 2, (s, p, r) -> new Object[] {"completed", 230.0, 0.3, 1}, FALLING));
+        assertEquals(Verdict.MIXED, claim(everywhere, PaperClaims.SLOW).verdict());
+    }
+
+    @Test
+    void fastPeriodsLockUpReproducedMixedAndNot() {
+        List<PeriodSet> sweep = ExperimentSets.resolve("sweep-all");
+        ExperimentSummary locked = summary(rows(sweep, 2, (s, p, r) -> p <= 5
+                ? new Object[] {RunResult.ERROR, Double.NaN, Double.NaN, null} : completed(230), FALLING));
+        assertEquals(Verdict.REPRODUCED, claim(locked, PaperClaims.FAST).verdict());
+
+        ExperimentSummary half = summary(rows(sweep, 3, (s, p, r) -> p <= 5 && r == 1
+                ? new Object[] {RunResult.ERROR, Double.NaN, Double.NaN, null} : completed(230), FALLING));
+        assertEquals(Verdict.MIXED, claim(half, PaperClaims.FAST).verdict());
+
+        ExperimentSummary running = summary(rows(sweep, 2, (s, p, r) -> p <= 5
+                ? new Object[] {"timeout", 360.0, 4.0, 0} : completed(230), FALLING));
+        Claim c = claim(running, PaperClaims.FAST);
+        assertEquals(Verdict.NOT_REPRODUCED, c.verdict());
+        // what happens to the robot, from the data: 10 % of releases missed at 5 ms, half of them skipped
+        assertTrue(c.evidence().contains("all 5 ms (5 ms): 0 of 2 runs locked up, 0 completed, outcomes {timeout=2}"),
+                c.evidence());
+        assertTrue(c.evidence().contains("misses 10.00% of all four tasks' releases, 4000 releases skipped (5.0% of 80000)"),
+                c.evidence());
+        assertTrue(c.evidence().contains("for comparison, all 100 ms (100 ms): 0 of 2 runs locked up, 2 completed"),
+                c.evidence());
+    }
+
+    @Test
+    void missesFallReproducedMixedAndNot() {
+        List<PeriodSet> sweep = ExperimentSets.resolve("sweep-all");
+        Claim falls = claim(summary(rows(sweep, 1, (s, p, r) -> completed(230), FALLING)), PaperClaims.MISSES_FALL);
+        assertEquals(Verdict.REPRODUCED, falls.verdict());
+        assertTrue(falls.evidence().contains("planner: rho -1.00 over 8 sets, 10.00% at 5 ms, 0.06% at 800 ms"),
+                falls.evidence());
+
+        Claim mixed = claim(summary(rows(sweep, 1, (s, p, r) -> completed(230),
+                (task, period) -> "planner".equals(task) ? period / 100.0 : 50.0 / period)), PaperClaims.MISSES_FALL);
+        assertEquals(Verdict.MIXED, mixed.verdict(), mixed.evidence());
+
+        Claim flat = claim(summary(rows(sweep, 1, (s, p, r) -> completed(230), (task, period) -> 0)), PaperClaims.MISSES_FALL);
+        assertEquals(Verdict.NOT_REPRODUCED, flat.verdict());
+        assertTrue(flat.evidence().contains("undefined (the same miss % everywhere)"), flat.evidence());
+    }
+
+    @Test
+    void tableOneAndTwoClaimsOnThePaperSets() {
+        List<PeriodSet> paper = ExperimentSets.paper();
+        // Set 1 fast, Sets 4 and 5 slow; Set 3 fastest but widest? No: Set 1 fastest here.
+        double[][] times = {{250, 251, 252}, {270, 262, 278}, {262, 270, 278}, {280, 281, 282}, {280, 282, 284}};
+        List<RunResult> rows = rows(paper, 3, (s, p, r) -> {
+            int set = paper.indexOf(s);
+            return new Object[] {"completed", times[set][r - 1], 2.0 + 0.1 * ((set + r) % 3), 0};
+        }, (task, period) -> ("planner".equals(task) ? 40 : "occupancy".equals(task) ? 30 : "waypoint".equals(task) ? 20 : 5)
+                / (double) period);
+        ExperimentSummary s = summary(rows);
+        Claim t1 = claim(s, PaperClaims.T_SET1);
+        assertEquals(Verdict.REPRODUCED, t1.verdict(), t1.evidence());
+        assertEquals(Verdict.NOT_REPRODUCED, claim(s, PaperClaims.SET3).verdict());
+        assertEquals(Verdict.REPRODUCED, claim(s, PaperClaims.FIG7).verdict());
+        Claim same = claim(s, PaperClaims.SAME);
+        assertEquals(Verdict.MIXED, same.verdict(), same.evidence());
+        assertEquals(Verdict.REPRODUCED, claim(s, PaperClaims.T_DISTANCE).verdict());
+        Claim verge = claim(s, PaperClaims.T_VERGE);
+        assertTrue(verge.evidence().contains("Set 2 vs Set 4: confidence"), verge.evidence());
+
+        // Set 1 slowest: the Set 1 claim fails both ways.
+        List<RunResult> reversed = rows(paper, 3, (x, p, r) -> completed(paper.indexOf(x) == 0 ? 300 + r : 250 + r),
+                (task, period) -> 1);
+        assertEquals(Verdict.NOT_REPRODUCED, claim(summary(reversed), PaperClaims.T_SET1).verdict());
+    }
+
+    @Test
+    void claimsWithoutTheirDataAreListedAsNotEvaluatedWithTheReason() {
+        List<PeriodSet> two = List.of(PeriodSet.of("a", 20, 20, 20, 20), PeriodSet.of("b", 50, 50, 50, 50));
+        ExperimentSummary s = summary(rows(two, 2, (x, p, r) -> completed(230), FALLING));
+        assertTrue(notEvaluated(s, PaperClaims.SLOW));
+        assertTrue(notEvaluated(s, PaperClaims.FAST));
+        assertTrue(notEvaluated(s, PaperClaims.MISSES_FALL), "two periods are no trend");
+        assertTrue(notEvaluated(s, PaperClaims.T_SET1));
+        assertTrue(s.claimsNotEvaluated().stream().anyMatch(n -> n.reason().contains("(periods here: 20 ms, 50 ms)")),
+                s.claimsNotEvaluated().toString());
+        assertTrue(s.claimsNotEvaluated().stream().anyMatch(n -> n.reason().contains("Set 1 (10/10/10/10 ms")),
+                s.claimsNotEvaluated().toString());
+        assertEquals(List.of(), s.claims().stream().filter(c -> c.claim().startsWith("Table I t")).toList());
+    }
+
+    @Test
+    void slowAndFastArePerTopSpeedWhenSpeedIsSwept() throws Exception {
+        Path f = dir.resolve("grid.yaml");
+        java.nio.file.Files.writeString(f, "sweep:\n  tasks: [obstacle]\n  periods_ms: [5, 100, 400]\n  top_speed_mps: [0.1, 0.5]\n");
+        List<PeriodSet> grid = ExperimentSets.resolve(f.toString());
+        ExperimentSummary s = summary(rows(grid, 2, (x, p, r) -> x.topSpeedMps() > 0.2 && p > 100
+                ? new Object[] {"stuck", 50.0, 3.0, 1} : completed(230), FALLING));
+        assertEquals(Verdict.NOT_REPRODUCED, claim(s, PaperClaims.SLOW + " (at 0.1 m/s)").verdict());
+        assertEquals(Verdict.REPRODUCED, claim(s, PaperClaims.SLOW + " (at 0.5 m/s)").verdict());
+        assertEquals(Verdict.NOT_REPRODUCED, claim(s, PaperClaims.FAST + " (at 0.5 m/s)").verdict());
+    }
+}
