@@ -349,7 +349,7 @@ public final class PaperClaims {
             return;
         }
         Verdict v = different == 0 ? Verdict.REPRODUCED : different * 2 >= tested ? Verdict.NOT_REPRODUCED : Verdict.MIXED;
-        String evidence = different + " of " + tested + " pairs of the paper's sets (" + names(numbers)
+        String evidence = different + " of " + tested + " pairs of the paper's sets (" + names(paper, numbers)
                 + ") differ with p < " + ALPHA + (parts.isEmpty() ? "" : ": " + String.join("; ", parts))
                 + (skipped.isEmpty() ? "" : "; not testable: " + String.join(", ", skipped)) + ".";
         claims.add(new Claim(T_DISTANCE, v, evidence, "Welch's two-sided t-test between every pair of the paper's sets "
@@ -361,7 +361,7 @@ public final class PaperClaims {
     private void setThree(Map<Integer, SetSummary> paper) {
         if (paper.size() < 5 || paper.values().stream().anyMatch(s -> s.runTimeS().sd() == null)) {
             notEvaluated.add(new NotEvaluated(SET3, "needs all five paper sets with at least two completed runs each; have "
-                    + (paper.isEmpty() ? "none" : names(new ArrayList<>(paper.keySet())))));
+                    + (paper.isEmpty() ? "none" : names(paper, new ArrayList<>(paper.keySet())))));
             return;
         }
         int fastest = argBest(paper, s -> -s.runTimeS().mean());
@@ -386,7 +386,7 @@ public final class PaperClaims {
         double time = spread(withTimes, s -> s.runTimeS().mean());
         double distance = spread(withDistances, s -> s.distanceToFinishM().mean());
         int agree = (time <= SAME_RUN_TIME ? 1 : 0) + (distance <= SAME_DISTANCE ? 1 : 0);
-        claims.add(new Claim(SAME, verdict(agree, 2), "over " + names(new ArrayList<>(paper.keySet()))
+        claims.add(new Claim(SAME, verdict(agree, 2), "over " + names(paper, new ArrayList<>(paper.keySet()))
                 + ": the set means of the run time span " + pct(time) + " of their mean, those of the distance to the finish "
                 + pct(distance) + " (paper: 4.2% and 13.6%).", "spread = (largest set mean - smallest) / mean of the set "
                 + "means; reproduced if at most " + pct(SAME_RUN_TIME) + " for run time and at most " + pct(SAME_DISTANCE)
@@ -477,8 +477,12 @@ public final class PaperClaims {
                 : " (periods here: " + String.join(", ", periods.stream().map(p -> p + " ms").toList()) + ")";
     }
 
-    private static String names(List<Integer> numbers) {
-        return String.join(", ", numbers.stream().map(n -> "Set " + n).toList());
+    /** @return e.g. {@code Set 2 (our "obstacle 10 ms"), Set 5}: the paper's numbers, with our name where it differs */
+    private static String names(Map<Integer, SetSummary> paper, List<Integer> numbers) {
+        return String.join(", ", numbers.stream().map(n -> {
+            String ours = paper.get(n).name();
+            return ours.equals("Set " + n) ? "Set " + n : "Set " + n + " (our '" + ours + "')";
+        }).toList());
     }
 
     private static String speedLabel(Double speedMps) {
