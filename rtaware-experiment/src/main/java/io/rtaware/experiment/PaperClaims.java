@@ -11,6 +11,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Objects;
 import java.util.TreeMap;
 import java.util.function.Function;
 import org.apache.commons.math3.stat.correlation.SpearmansCorrelation;
@@ -162,7 +163,7 @@ public final class PaperClaims {
         }
         String evidence = String.join("; ", parts) + ". At or below " + SLOW_ABOVE_MS + " ms: "
                 + (belowRuns == 0 ? "no runs" : belowHits + " of " + belowRuns + " runs collided") + ". "
-                + firstCollision(group);
+                + firstCollision(group) + reactionBound(group);
         claims.add(new Claim(claim, v, evidence, "reproduced if every set above " + SLOW_ABOVE_MS
                 + " ms has a collision in at least " + pct(MAJORITY) + " of its runs and the sets at or below "
                 + SLOW_ABOVE_MS + " ms (if any) in fewer than " + pct(MAJORITY) + "; not reproduced if no run above "
@@ -174,6 +175,34 @@ public final class PaperClaims {
                 .min(Comparator.comparingLong(SetSummary::sweptPeriodMs))
                 .map(s -> "Shortest period with a collision: " + s.sweptPeriodMs() + " ms (" + s.name() + ").")
                 .orElse("No run collided at any period.");
+    }
+
+    /**
+     * @param group the sets of one top speed
+     * @return how the shortest period with a collision compares with the largest safe period the
+     *     runs' advice gave by the reaction rule, or "" when no run reports that bound
+     */
+    static String reactionBound(List<SetSummary> group) {
+        for (String task : PeriodSet.TASKS) {
+            double[] bounds = group.stream().map(s -> s.misses().get(task).maxSafePeriodMsMean()).filter(Objects::nonNull)
+                    .mapToDouble(Double::doubleValue).toArray();
+            if (bounds.length == 0) {
+                continue;
+            }
+            double bound = java.util.Arrays.stream(bounds).average().orElseThrow();
+            String text = " Reaction rule (the runs' advice): largest safe period of " + task + " " + num(bound, 1)
+                    + " ms (mean over " + bounds.length + " set(s)); ";
+            var first = onAxis(group).stream().filter(s -> s.runsWithCollisions() > 0)
+                    .min(Comparator.comparingLong(SetSummary::sweptPeriodMs));
+            if (first.isPresent()) {
+                return text + "the shortest period with a collision, " + first.get().sweptPeriodMs() + " ms, is "
+                        + num(first.get().sweptPeriodMs() / bound, 2) + " x that bound.";
+            }
+            long longest = onAxis(group).stream().mapToLong(SetSummary::sweptPeriodMs).max().orElse(0);
+            return text + "no run collided up to the longest period, " + longest + " ms (" + num(longest / bound, 2)
+                    + " x that bound).";
+        }
+        return "";
     }
 
     private void fast(List<SetSummary> group, String suffix) {

@@ -43,7 +43,8 @@ class PaperClaimsTest {
                     for (String t : PeriodSet.TASKS) {
                         double pct = missPct.applyAsDouble(t, s.periodsMs().get(t));
                         long misses = Math.round(pct * 100);
-                        tasks.put(t, new TaskResult(10_000, misses, 100.0 * misses / 10_000, 0, 50, misses / 2));
+                        tasks.put(t, new TaskResult(10_000, misses, 100.0 * misses / 10_000, 0, 50, misses / 2,
+                                "obstacle".equals(t) ? 250.0 : null));
                     }
                 }
                 rows.add(new RunResult(i + 1, run, s, CONDITIONS, (String) o[0], (double) o[1], (double) o[2], 20.0,
@@ -92,6 +93,8 @@ class PaperClaimsTest {
                 c.evidence());
         assertTrue(c.evidence().contains("At or below 100 ms: 0 of 20 runs collided"), c.evidence());
         assertTrue(c.evidence().contains("Shortest period with a collision: 200 ms"), c.evidence());
+        assertTrue(c.evidence().contains("Reaction rule (the runs' advice): largest safe period of obstacle 250.0 ms (mean "
+                + "over 8 set(s)); the shortest period with a collision, 200 ms, is 0.80 x that bound."), c.evidence());
 
         ExperimentSummary mixed = summary(rows(sweep, 4, (s, p, r) -> p == 800 && r == 1
                 ? new Object[] {"completed", 240.0, 0.3, 1} : completed(230), FALLING));

@@ -285,9 +285,9 @@ public final class ExperimentReport {
                             x.topSpeedMps() == null ? "default" : PeriodSet.plainSpeed(x.topSpeedMps()),
                             rate(x.completionRate()), rate(x.collisionRate()), num(x.runTimeS().mean(), 2),
                             num(x.distanceToFinishM().mean(), 2),
-                            num(x.misses().get(ExperimentSummary.ALL_TASKS).missPct(), 2))));
+                            num(x.misses().get(ExperimentSummary.ALL_TASKS).missPct(), 2), reactionBound(x))));
             b.table(List.of("period (ms)", "set", "top speed (m/s)", "completed", "collided", "mean run time (s)",
-                    "mean distance to finish (m)", "misses, all four (%)"), rows);
+                    "mean distance to finish (m)", "misses, all four (%)", "largest safe period, reaction rule (ms)"), rows);
             b.figure(SweepFigures.PERIOD_RATES + ".png", "Completed and collided runs against the period (log axis)");
             b.figure(SweepFigures.PERIOD_RUNTIME + ".png", "Run time of the completed runs against the period");
             b.figure(SweepFigures.PERIOD_DISTANCE + ".png", "Distance from the finish against the period");
@@ -301,6 +301,17 @@ public final class ExperimentReport {
             b.figure(p + "distance.png", "Distance from the finish against the top speed");
             b.figure(p + "misses.png", "Missed deadlines against the top speed");
         }
+    }
+
+    /** @return the reaction rule's largest safe period of the first task that has one, e.g. {@code 694.4 (obstacle)} */
+    private static String reactionBound(SetSummary set) {
+        for (String task : PeriodSet.TASKS) {
+            Double bound = set.misses().get(task).maxSafePeriodMsMean();
+            if (bound != null) {
+                return num(bound, 1) + " (" + task + ")";
+            }
+        }
+        return NA;
     }
 
     private static String rate(Double share) {
