@@ -94,8 +94,11 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
      * @param execP99UsMean mean over runs of the per-run p99 execution time, µs (null for {@link #ALL_TASKS})
      * @param skipped releases skipped because the task was still running, summed over the runs
      *     that report them (they are misses too), or null when none does
+     * @param maxSafePeriodMsMean mean over runs of the largest safe period the run's advice gave
+     *     the task by the reaction rule, or null when no run gives one (and for {@link #ALL_TASKS})
      */
-    public record Misses(long releases, long misses, Double missPct, long staleRuns, Double execP99UsMean, Long skipped) {
+    public record Misses(long releases, long misses, Double missPct, long staleRuns, Double execP99UsMean, Long skipped,
+                         Double maxSafePeriodMsMean) {
     }
 
     /**
@@ -188,13 +191,16 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
             long stale = t.stream().mapToLong(TaskResult::staleRuns).sum();
             SampleStats p99 = SampleStats.of(t.stream().mapToDouble(TaskResult::execP99Us).toArray());
             Long skipped = sumOrNull(t.stream().map(TaskResult::skipped).toList());
-            misses.put(task, new Misses(releases, missed, pct(missed, releases), stale, p99.mean(), skipped));
+            SampleStats safe = SampleStats.of(t.stream().map(TaskResult::maxSafePeriodMs).filter(java.util.Objects::nonNull)
+                    .mapToDouble(Double::doubleValue).toArray());
+            misses.put(task, new Misses(releases, missed, pct(missed, releases), stale, p99.mean(), skipped, safe.mean()));
             allReleases += releases;
             allMisses += missed;
             allStale += stale;
         }
         Long allSkipped = sumOrNull(misses.values().stream().map(Misses::skipped).toList());
-        misses.put(ALL_TASKS, new Misses(allReleases, allMisses, pct(allMisses, allReleases), allStale, null, allSkipped));
+        misses.put(ALL_TASKS, new Misses(allReleases, allMisses, pct(allMisses, allReleases), allStale, null, allSkipped,
+                null));
         long collisions = measured.stream().map(RunResult::collisions).filter(java.util.Objects::nonNull)
                 .mapToLong(Integer::longValue).sum();
         int withCollisions = (int) measured.stream().filter(r -> r.collisions() != null && r.collisions() > 0).count();

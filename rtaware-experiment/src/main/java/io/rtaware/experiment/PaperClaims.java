@@ -11,6 +11,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Objects;
 import java.util.TreeMap;
 import java.util.function.Function;
 import org.apache.commons.math3.stat.correlation.SpearmansCorrelation;
@@ -162,7 +163,7 @@ public final class PaperClaims {
         }
         String evidence = String.join("; ", parts) + ". At or below " + SLOW_ABOVE_MS + " ms: "
                 + (belowRuns == 0 ? "no runs" : belowHits + " of " + belowRuns + " runs collided") + ". "
-                + firstCollision(group);
+                + firstCollision(group) + reactionBound(group);
         claims.add(new Claim(claim, v, evidence, "reproduced if every set above " + SLOW_ABOVE_MS
                 + " ms has a collision in at least " + pct(MAJORITY) + " of its runs and the sets at or below "
                 + SLOW_ABOVE_MS + " ms (if any) in fewer than " + pct(MAJORITY) + "; not reproduced if no run above "
@@ -174,6 +175,34 @@ public final class PaperClaims {
                 .min(Comparator.comparingLong(SetSummary::sweptPeriodMs))
                 .map(s -> "Shortest period with a collision: " + s.sweptPeriodMs() + " ms (" + s.name() + ").")
                 .orElse("No run collided at any period.");
+    }
+
+    /**
+     * @param group the sets of one top speed
+     * @return how the shortest period with a collision compares with the largest safe period the
+     *     runs' advice gave by the reaction rule, or "" when no run reports that bound
+     */
+    static String reactionBound(List<SetSummary> group) {
+        for (String task : PeriodSet.TASKS) {
+            double[] bounds = group.stream().map(s -> s.misses().get(task).maxSafePeriodMsMean()).filter(Objects::nonNull)
+                    .mapToDouble(Double::doubleValue).toArray();
+            if (bounds.length == 0) {
+                continue;
+            }
+            double bound = java.util.Arrays.stream(bounds).average().orElseThrow();
+            String text = " Reaction rule (the runs' advice): largest safe period of " + task + " " + num(bound, 1)
+                    + " ms (mean over " + bounds.length + " set(s)); ";
+            var first = onAxis(group).stream().filter(s -> s.runsWithCollisions() > 0)
+                    .min(Comparator.comparingLong(SetSummary::sweptPeriodMs));
+            if (first.isPresent()) {
+                return text + "the shortest period with a collision, " + first.get().sweptPeriodMs() + " ms, is "
+                        + num(first.get().sweptPeriodMs() / bound, 2) + " x that bound.";
+            }
+            long longest = onAxis(group).stream().mapToLong(SetSummary::sweptPeriodMs).max().orElse(0);
+            return text + "no run collided up to the longest period, " + longest + " ms (" + num(longest / bound, 2)
+                    + " x that bound).";
+        }
+        return "";
     }
 
     private void fast(List<SetSummary> group, String suffix) {
@@ -349,7 +378,7 @@ public final class PaperClaims {
             return;
         }
         Verdict v = different == 0 ? Verdict.REPRODUCED : different * 2 >= tested ? Verdict.NOT_REPRODUCED : Verdict.MIXED;
-        String evidence = different + " of " + tested + " pairs of the paper's sets (" + names(numbers)
+        String evidence = different + " of " + tested + " pairs of the paper's sets (" + names(paper, numbers)
                 + ") differ with p < " + ALPHA + (parts.isEmpty() ? "" : ": " + String.join("; ", parts))
                 + (skipped.isEmpty() ? "" : "; not testable: " + String.join(", ", skipped)) + ".";
         claims.add(new Claim(T_DISTANCE, v, evidence, "Welch's two-sided t-test between every pair of the paper's sets "
@@ -361,7 +390,7 @@ public final class PaperClaims {
     private void setThree(Map<Integer, SetSummary> paper) {
         if (paper.size() < 5 || paper.values().stream().anyMatch(s -> s.runTimeS().sd() == null)) {
             notEvaluated.add(new NotEvaluated(SET3, "needs all five paper sets with at least two completed runs each; have "
-                    + (paper.isEmpty() ? "none" : names(new ArrayList<>(paper.keySet())))));
+                    + (paper.isEmpty() ? "none" : names(paper, new ArrayList<>(paper.keySet())))));
             return;
         }
         int fastest = argBest(paper, s -> -s.runTimeS().mean());
@@ -386,7 +415,7 @@ public final class PaperClaims {
         double time = spread(withTimes, s -> s.runTimeS().mean());
         double distance = spread(withDistances, s -> s.distanceToFinishM().mean());
         int agree = (time <= SAME_RUN_TIME ? 1 : 0) + (distance <= SAME_DISTANCE ? 1 : 0);
-        claims.add(new Claim(SAME, verdict(agree, 2), "over " + names(new ArrayList<>(paper.keySet()))
+        claims.add(new Claim(SAME, verdict(agree, 2), "over " + names(paper, new ArrayList<>(paper.keySet()))
                 + ": the set means of the run time span " + pct(time) + " of their mean, those of the distance to the finish "
                 + pct(distance) + " (paper: 4.2% and 13.6%).", "spread = (largest set mean - smallest) / mean of the set "
                 + "means; reproduced if at most " + pct(SAME_RUN_TIME) + " for run time and at most " + pct(SAME_DISTANCE)
@@ -477,8 +506,12 @@ public final class PaperClaims {
                 : " (periods here: " + String.join(", ", periods.stream().map(p -> p + " ms").toList()) + ")";
     }
 
-    private static String names(List<Integer> numbers) {
-        return String.join(", ", numbers.stream().map(n -> "Set " + n).toList());
+    /** @return e.g. {@code Set 2 (our "obstacle 10 ms"), Set 5}: the paper's numbers, with our name where it differs */
+    private static String names(Map<Integer, SetSummary> paper, List<Integer> numbers) {
+        return String.join(", ", numbers.stream().map(n -> {
+            String ours = paper.get(n).name();
+            return ours.equals("Set " + n) ? "Set " + n : "Set " + n + " (our '" + ours + "')";
+        }).toList());
     }
 
     private static String speedLabel(Double speedMps) {

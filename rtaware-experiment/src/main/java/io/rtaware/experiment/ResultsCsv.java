@@ -24,7 +24,8 @@ import java.util.Map;
  * then for each task T of waypoint, obstacle, occupancy, planner:
  * T_releases, T_misses, T_miss_pct, T_stale_runs, T_exec_p99_us,
  * then (added later, so appended): top_speed_mps, T_skipped for each task,
- * mediator_obstacle_cycles, mediator_waypoint_cycles, mediator_stop_cycles
+ * mediator_obstacle_cycles, mediator_waypoint_cycles, mediator_stop_cycles,
+ * T_max_safe_period_ms for each task
  * </pre>
  *
  * RFC 4180 quoting; an empty field is a value the run did not give (an {@code error} row, or
@@ -67,6 +68,9 @@ public final class ResultsCsv {
         }
         for (String winner : RunResult.MEDIATOR_WINNERS) {
             h.add("mediator_" + winner + "_cycles");
+        }
+        for (String task : PeriodSet.TASKS) {
+            h.add(task + "_max_safe_period_ms");
         }
         return List.copyOf(h);
     }
@@ -182,6 +186,10 @@ public final class ResultsCsv {
         for (String winner : RunResult.MEDIATOR_WINNERS) {
             Long cycles = r.mediatorCycles().get(winner);
             f.add(cycles == null ? "" : cycles.toString());
+        }
+        for (String task : PeriodSet.TASKS) {
+            TaskResult t = r.tasks().get(task);
+            f.add(t == null || t.maxSafePeriodMs() == null ? "" : number(t.maxSafePeriodMs()));
         }
         return String.join(",", f);
     }
@@ -303,7 +311,8 @@ public final class ResultsCsv {
             if (!row.get(t + "_releases").isEmpty()) {
                 tasks.put(t, new TaskResult(Long.parseLong(row.get(t + "_releases")), Long.parseLong(row.get(t + "_misses")),
                         decimal(row.get(t + "_miss_pct")), Long.parseLong(row.get(t + "_stale_runs")),
-                        decimal(row.get(t + "_exec_p99_us")), optionalLong(row.get(t + "_skipped"))));
+                        decimal(row.get(t + "_exec_p99_us")), optionalLong(row.get(t + "_skipped")),
+                        optionalDouble(row.get(t + "_max_safe_period_ms"))));
             }
         }
         Map<String, Long> mediator = new LinkedHashMap<>();
@@ -338,6 +347,10 @@ public final class ResultsCsv {
 
     private static Integer optionalInt(String s) {
         return s.isEmpty() ? null : Integer.valueOf(s);
+    }
+
+    private static Double optionalDouble(String s) {
+        return s.isEmpty() ? null : Double.valueOf(s);
     }
 
     private static Long optionalLong(String s) {

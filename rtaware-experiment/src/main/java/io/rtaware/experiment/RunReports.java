@@ -10,7 +10,8 @@ import java.util.Map;
 
 /**
  * Turns the {@code report.json} that {@code rtaware run} writes into one {@link RunResult}:
- * the core report's tasks (with their skipped releases) plus the {@code run} section (outcome,
+ * the core report's tasks (with their skipped releases, and the largest safe period of the
+ * {@code advice} section's {@code reaction} item when there is one) plus the {@code run} section (outcome,
  * run time, distances, collisions, waypoints, and the cycles the mediator gave each winner when
  * the report has a {@code mediator} mapping; a report without it gives none).
  */
@@ -38,12 +39,13 @@ public final class RunReports {
         if (!(section instanceof JsonNode runNode) || !runNode.isObject()) {
             throw new IOException(reportFile + " has no 'run' section");
         }
+        Map<String, Double> safe = maxSafePeriods(doc.sections().get("advice"));
         Map<String, TaskResult> tasks = new LinkedHashMap<>();
         for (String name : PeriodSet.TASKS) {
             TaskReport t = doc.report().task(name);
             if (t != null) {
                 tasks.put(name, new TaskResult(t.releases(), t.misses(), t.missPct(), t.staleRuns(),
-                        t.execUs() == null ? Double.NaN : t.execUs().p99(), t.skipped()));
+                        t.execUs() == null ? Double.NaN : t.execUs().p99(), t.skipped(), safe.get(name)));
             }
         }
         Map<String, Long> mediator = new LinkedHashMap<>();
@@ -60,6 +62,23 @@ public final class RunReports {
                 number(runNode, "run_time_s"), number(runNode, "distance_to_finish_m"),
                 number(runNode, "distance_travelled_m"), integer(runNode, "collisions"),
                 integer(runNode, "waypoints_reached"), integer(runNode, "waypoints_total"), tasks, mediator);
+    }
+
+    /**
+     * @param advice the report's {@code advice} section (a list of items), or null
+     * @return per task, {@code evidence.max_safe_period_ms} of its {@code reaction} item, where positive
+     */
+    private static Map<String, Double> maxSafePeriods(Object advice) {
+        Map<String, Double> safe = new LinkedHashMap<>();
+        if (advice instanceof JsonNode items && items.isArray()) {
+            for (JsonNode item : items) {
+                JsonNode bound = item.path("evidence").path("max_safe_period_ms");
+                if ("reaction".equals(item.path("rule").asText()) && bound.isNumber() && bound.asDouble() > 0) {
+                    safe.put(item.path("task").asText(), bound.asDouble());
+                }
+            }
+        }
+        return safe;
     }
 
     private static String text(JsonNode node, String field) throws IOException {

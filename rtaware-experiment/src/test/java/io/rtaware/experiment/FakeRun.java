@@ -53,7 +53,7 @@ public final class FakeRun {
             long releases = 200_000 / e.getValue();
             long misses = releases * (rank + 1) / (e.getValue() + 10);
             tasks.add(new TaskReport(e.getKey(), "periodic", (double) e.getValue(), (double) e.getValue(), releases,
-                    releases - misses, misses, 100.0 * misses / releases, 0, rank, 0, 0,
+                    releases - misses, misses, 100.0 * misses / releases, misses / 2, rank, 0, 0,
                     new Percentiles(1, 2, 100.0 * (rank + 1), 400, 1), new Percentiles(1, 2, 3, 4, 1)));
             rank++;
         }
@@ -71,8 +71,11 @@ public final class FakeRun {
         run.put("distance_travelled_m", 25.0);
         run.put("collisions", 0);
         run.put("mediator", Map.of("obstacle", 1, "waypoint", 2, "stop", 0));
+        List<Map<String, Object>> advice = List.of(Map.of("task", "obstacle", "rule", "reaction",
+                "evidence", Map.of("max_safe_period_ms", 600.0 + seed)), Map.of("task", "planner", "rule", "nyquist",
+                "evidence", Map.of("max_safe_period_ms", 1.0)));
         new ReportDocument(new Report(Report.SCHEMA, 1.0, runTime, 1.0, tasks, List.of())).section("run", run)
-                .write(out.resolve("report.json"));
+                .section("advice", advice).write(out.resolve("report.json"));
         StringBuilder csv = new StringBuilder("t_s,x_m,y_m,yaw_rad\n");
         for (int i = 0; i <= 100; i++) {
             double a = i / 100.0 * Math.PI;

@@ -43,7 +43,8 @@ class PaperClaimsTest {
                     for (String t : PeriodSet.TASKS) {
                         double pct = missPct.applyAsDouble(t, s.periodsMs().get(t));
                         long misses = Math.round(pct * 100);
-                        tasks.put(t, new TaskResult(10_000, misses, 100.0 * misses / 10_000, 0, 50, misses / 2));
+                        tasks.put(t, new TaskResult(10_000, misses, 100.0 * misses / 10_000, 0, 50, misses / 2,
+                                "obstacle".equals(t) ? 250.0 : null));
                     }
                 }
                 rows.add(new RunResult(i + 1, run, s, CONDITIONS, (String) o[0], (double) o[1], (double) o[2], 20.0,
@@ -92,6 +93,8 @@ class PaperClaimsTest {
                 c.evidence());
         assertTrue(c.evidence().contains("At or below 100 ms: 0 of 20 runs collided"), c.evidence());
         assertTrue(c.evidence().contains("Shortest period with a collision: 200 ms"), c.evidence());
+        assertTrue(c.evidence().contains("Reaction rule (the runs' advice): largest safe period of obstacle 250.0 ms (mean "
+                + "over 8 set(s)); the shortest period with a collision, 200 ms, is 0.80 x that bound."), c.evidence());
 
         ExperimentSummary mixed = summary(rows(sweep, 4, (s, p, r) -> p == 800 && r == 1
                 ? new Object[] {"completed", 240.0, 0.3, 1} : completed(230), FALLING));
@@ -188,6 +191,42 @@ class PaperClaimsTest {
         assertTrue(s.claimsNotEvaluated().stream().anyMatch(n -> n.reason().contains("Set 1 (10/10/10/10 ms")),
                 s.claimsNotEvaluated().toString());
         assertEquals(List.of(), s.claims().stream().filter(c -> c.claim().startsWith("Table I t")).toList());
+    }
+
+    @Test
+    void theReportStatesTheClaimsAndDrawsTheSweepAgainstPeriodAndSpeed() throws Exception {
+        Path f = dir.resolve("grid.yaml");
+        java.nio.file.Files.writeString(f, "sweep:\n  tasks: [obstacle]\n  periods_ms: [5, 100, 800]\n"
+                + "  top_speed_mps: [0.1, 0.6]\n");
+        List<RunResult> rows = rows(ExperimentSets.resolve(f.toString()), 2, (x, p, r) -> x.topSpeedMps() * p > 50
+                ? new Object[] {"stuck", 90.0 + r, 2.5, 2} : completed(200 + 10 * r + p / 100.0), FALLING);
+        Path out = java.nio.file.Files.createDirectories(dir.resolve("report"));
+        for (RunResult r : rows) {
+            ResultsCsv.append(out.resolve(ResultsCsv.FILE_NAME), r);
+        }
+        ExperimentSummary s = io.rtaware.experiment.report.ExperimentReport.render(out,
+                io.rtaware.experiment.report.MapBackground.none());
+        for (String name : List.of("sweep-rates", "sweep-runtime", "sweep-distance", "sweep-misses", "speed-rates",
+                "speed-runtime", "speed-distance", "speed-misses")) {
+            assertTrue(java.nio.file.Files.size(out.resolve(name + ".png")) > 5000, name);
+            assertTrue(java.nio.file.Files.exists(out.resolve(name + ".svg")), name);
+        }
+        String md = java.nio.file.Files.readString(out.resolve("report.md"));
+        assertTrue(md.contains("## Claims of the paper"), md);
+        assertTrue(md.contains("| " + PaperClaims.SLOW + " (at 0.1 m/s) | **reproduced** | "), md);
+        assertTrue(md.contains("| " + PaperClaims.SLOW + " (at 0.6 m/s) | **mixed** | "), md);
+        assertTrue(md.contains("| 800 | obstacle 800 ms at 0.1 m/s | 0.1 | 0% | 100% |"), md);
+        assertTrue(md.contains("![Completed and collided runs against the period (log axis)](sweep-rates.png)"), md);
+        com.fasterxml.jackson.databind.JsonNode json = io.rtaware.core.report.ReportDocument.mapper()
+                .readTree(out.resolve("summary.json").toFile());
+        assertEquals(s.claims().size(), json.get("claims").size());
+        assertEquals("reproduced", json.get("claims").get(0).get("verdict").asText(), json.get("claims").toString());
+        assertEquals("mixed", json.get("claims").get(1).get("verdict").asText(), json.get("claims").toString());
+        assertTrue(json.get("claims").get(0).has("evidence"));
+        assertTrue(json.get("claims_not_evaluated").size() > 0);
+        assertEquals(1.0, json.get("sets").get(0).get("completion_rate").asDouble(), 1e-9);
+        assertEquals(0.0, json.get("sets").get(2).get("completion_rate").asDouble(), 1e-9);
+        assertEquals(1.0, json.get("sets").get(2).get("collision_rate").asDouble(), 1e-9);
     }
 
     @Test

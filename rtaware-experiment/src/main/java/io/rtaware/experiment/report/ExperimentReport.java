@@ -9,6 +9,7 @@ import io.rtaware.experiment.ExperimentSummary;
 import io.rtaware.experiment.ExperimentSummary.Misses;
 import io.rtaware.experiment.ExperimentSummary.PairTest;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
+import io.rtaware.experiment.PaperClaims;
 import io.rtaware.experiment.PaperReference;
 import io.rtaware.experiment.PaperReference.PaperSet;
 import io.rtaware.experiment.PeriodSet;
@@ -83,6 +84,7 @@ public final class ExperimentReport {
         Figures.boxPlot(distances, "Distance from the finish at the end of the run", "distance to finish (m)", dir,
                 Figures.DISTANCE_BOX);
         Figures.trajectories(summary, trajectories(dir, rows), background, dir);
+        SweepFigures.write(summary, dir);
 
         Blocks blocks = content(summary);
         Files.writeString(dir.resolve(MARKDOWN_FILE), blocks.markdown());
@@ -121,6 +123,8 @@ public final class ExperimentReport {
                 + "deadlines over every run that ended on the course (completed, timeout, stuck); `error` runs are only counted. "
                 + "Missed deadlines are pooled: 100 x (misses summed over runs) / (releases summed over runs). "
                 + "Columns marked **paper** are the paper's published numbers, not ours.");
+
+        claims(b, s);
 
         b.heading(2, "Table I: periods and run time");
         List<List<String>> rows = new ArrayList<>();
@@ -179,6 +183,9 @@ public final class ExperimentReport {
         PeriodSet.TASKS.forEach(t -> h2.add(t + ": stale runs / mean exec p99 (µs)"));
         b.table(h2, rows);
 
+        robot(b, s);
+        sweep(b, s);
+
         b.heading(2, "Welch t-tests between sets (two-sided)");
         b.text("t = (mean of A - mean of B) / standard error; df by Welch–Satterthwaite; p from Apache Commons Math; "
                 + "confidence = 1 - p, as the paper quotes it. A p below 0.05 (confidence above 95%) is the usual threshold "
@@ -210,6 +217,105 @@ public final class ExperimentReport {
         }
         b.table(List.of("set", "mean distance travelled (m)", "SD (m)", "collisions (all runs)"), rows);
         return b;
+    }
+
+    private static void claims(Blocks b, ExperimentSummary s) {
+        b.heading(2, "Claims of the paper");
+        b.text("Each verdict (reproduced, not reproduced, mixed) is computed from the results below by the rule in its row, "
+                + "never set by hand. Thresholds: too slow means a period above " + PaperClaims.SLOW_ABOVE_MS
+                + " ms, too fast " + PaperClaims.FAST_AT_MOST_MS + " ms or less (the set's swept period); an effect holds for a "
+                + "set when it shows in at least " + num(100 * PaperClaims.MAJORITY, 0) + "% of its runs; misses fall when "
+                + "Spearman's rho of miss % against period is at most " + PaperClaims.FALLS_RHO + " (over at least "
+                + PaperClaims.MIN_PERIODS + " periods); t-tests at p < " + PaperClaims.ALPHA + ", 'on the verge' at a "
+                + "confidence of " + num(100 * PaperClaims.VERGE_MIN, 0) + "-" + num(100 * PaperClaims.VERGE_MAX, 0)
+                + "%; 'almost identical' set means within " + num(100 * PaperClaims.SAME_RUN_TIME, 0) + "% (run time) and "
+                + num(100 * PaperClaims.SAME_DISTANCE, 0) + "% (distance) of their mean. Table I/II claims use the sets "
+                + "whose periods are a paper set's, at the paper's top speed.");
+        List<List<String>> rows = new ArrayList<>();
+        for (PaperClaims.Claim c : s.claims()) {
+            rows.add(List.of(c.claim(), "**" + c.verdict().json().replace('_', ' ') + "**", c.evidence(), c.rule()));
+        }
+        if (rows.isEmpty()) {
+            b.text("No claim can be decided from these sets (see below).");
+        } else {
+            b.table(List.of("claim", "verdict", "evidence", "rule"), rows);
+        }
+        if (!s.claimsNotEvaluated().isEmpty()) {
+            b.text("Not evaluated (the data is not in this experiment):");
+            b.table(List.of("claim", "why not"), s.claimsNotEvaluated().stream()
+                    .map(n -> List.of(n.claim(), n.reason())).toList());
+        }
+    }
+
+    private static void robot(Blocks b, ExperimentSummary s) {
+        b.heading(2, "The robot: completion, collisions, skipped releases and the mediator");
+        b.text("Collisions over the runs that ended on the course; skipped releases are releases a task could not start "
+                + "because its previous cycle was still running (they count as misses too); mediator cycles: how many "
+                + "cycles the position mediator gave the obstacle avoider's request, the waypoint planner's, or a stop, "
+                + "summed over the runs (empty where the run reports do not give them).");
+        List<List<String>> rows = new ArrayList<>();
+        for (SetSummary set : s.sets()) {
+            Misses all = set.misses().get(ExperimentSummary.ALL_TASKS);
+            Map<String, Long> m = set.mediatorCycles();
+            rows.add(List.of(set.name(), new PeriodSet(set.name(), set.periodsMs()).shortLabel(),
+                    set.topSpeedMps() == null ? "default" : PeriodSet.plainSpeed(set.topSpeedMps()),
+                    set.completed() + " of " + set.runs(), set.runsWithCollisions() + " of " + set.measuredRuns(),
+                    Long.toString(set.collisions()), all.skipped() == null ? NA : all.skipped() + " of " + all.releases(),
+                    m.isEmpty() ? NA : RunResult.MEDIATOR_WINNERS.stream()
+                            .map(w -> m.containsKey(w) ? Long.toString(m.get(w)) : NA).collect(java.util.stream.Collectors.joining(" / "))));
+        }
+        b.table(List.of("set", "periods (ms) w/o/oc/p", "top speed (m/s)", "completed", "runs with a collision", "collisions",
+                "skipped releases (all four)", "mediator cycles obstacle / waypoint / stop"), rows);
+    }
+
+    private static void sweep(Blocks b, ExperimentSummary s) {
+        if (SweepFigures.hasPeriodAxis(s)) {
+            b.heading(2, "Against the period");
+            List<String> off = s.sets().stream().filter(x -> x.sweptPeriodMs() == null).map(SetSummary::name).toList();
+            b.text("The swept period is that of " + String.join(", ", s.sweptTasks()) + " (the tasks whose period differs "
+                    + "between sets); the others keep theirs. "
+                    + (off.isEmpty() ? "" : "Not on this axis (their swept tasks have different periods): "
+                    + String.join(", ", off) + ". ") + "Completed: share of all runs; collided: share of the runs that ended "
+                    + "on the course with at least one collision.");
+            List<List<String>> rows = new ArrayList<>();
+            s.sets().stream().filter(x -> x.sweptPeriodMs() != null)
+                    .sorted(java.util.Comparator.comparing((SetSummary x) -> x.topSpeedMps() == null ? 0 : x.topSpeedMps())
+                            .thenComparing(SetSummary::sweptPeriodMs))
+                    .forEach(x -> rows.add(List.of(Long.toString(x.sweptPeriodMs()), x.name(),
+                            x.topSpeedMps() == null ? "default" : PeriodSet.plainSpeed(x.topSpeedMps()),
+                            rate(x.completionRate()), rate(x.collisionRate()), num(x.runTimeS().mean(), 2),
+                            num(x.distanceToFinishM().mean(), 2),
+                            num(x.misses().get(ExperimentSummary.ALL_TASKS).missPct(), 2), reactionBound(x))));
+            b.table(List.of("period (ms)", "set", "top speed (m/s)", "completed", "collided", "mean run time (s)",
+                    "mean distance to finish (m)", "misses, all four (%)", "largest safe period, reaction rule (ms)"), rows);
+            b.figure(SweepFigures.PERIOD_RATES + ".png", "Completed and collided runs against the period (log axis)");
+            b.figure(SweepFigures.PERIOD_RUNTIME + ".png", "Run time of the completed runs against the period");
+            b.figure(SweepFigures.PERIOD_DISTANCE + ".png", "Distance from the finish against the period");
+            b.figure(SweepFigures.PERIOD_MISSES + ".png", "Missed deadlines per task against the period");
+        }
+        if (SweepFigures.hasSpeedAxis(s)) {
+            b.heading(2, "Against the top speed");
+            String p = SweepFigures.SPEED_PREFIX;
+            b.figure(p + "rates.png", "Completed and collided runs against the top speed");
+            b.figure(p + "runtime.png", "Run time of the completed runs against the top speed");
+            b.figure(p + "distance.png", "Distance from the finish against the top speed");
+            b.figure(p + "misses.png", "Missed deadlines against the top speed");
+        }
+    }
+
+    /** @return the reaction rule's largest safe period of the first task that has one, e.g. {@code 694.4 (obstacle)} */
+    private static String reactionBound(SetSummary set) {
+        for (String task : PeriodSet.TASKS) {
+            Double bound = set.misses().get(task).maxSafePeriodMsMean();
+            if (bound != null) {
+                return num(bound, 1) + " (" + task + ")";
+            }
+        }
+        return NA;
+    }
+
+    private static String rate(Double share) {
+        return share == null ? NA : num(100 * share, 0) + "%";
     }
 
     private static String name(ExperimentSummary s, int set) {

@@ -239,7 +239,7 @@ public final class Figures {
         return chart;
     }
 
-    private static void style(Styler styler) {
+    static void style(Styler styler) {
         styler.setChartTitleFont(new Font(Font.SANS_SERIF, Font.BOLD, 18));
         styler.setLegendFont(new Font(Font.SANS_SERIF, Font.PLAIN, 13));
         styler.setChartBackgroundColor(Color.WHITE);
@@ -265,7 +265,7 @@ public final class Figures {
         return v == null ? 0.0 : v;
     }
 
-    private static void save(Chart<?, ?> chart, Path dir, String name) throws IOException {
+    static void save(Chart<?, ?> chart, Path dir, String name) throws IOException {
         BitmapEncoder.saveBitmap(chart, dir.resolve(name + ".png").toString(), BitmapEncoder.BitmapFormat.PNG);
         saveSvg(chart, dir, name);
     }
@@ -284,7 +284,7 @@ public final class Figures {
         }
     }
 
-    private static void noData(String title, Path dir, String name) throws IOException {
+    static void noData(String title, Path dir, String name) throws IOException {
         BufferedImage img = new BufferedImage(WIDTH, 200, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = img.createGraphics();
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
