@@ -58,6 +58,8 @@ public final class Monitor {
     private final List<Consumer<Report>> terminationHandlers = new CopyOnWriteArrayList<>();
     private final List<MonitorListener> listeners;
     private final ThreadSetup threadSetup;
+    private final ListenerFanOut events;
+    private final FrameworkFaults faults;
     private final CountDownLatch terminated = new CountDownLatch(1);
     private final Object lifecycle = new Object();
     private Phase phase = Phase.READY;
@@ -68,23 +70,13 @@ public final class Monitor {
     /** Set once every task thread has returned: their own state may then be read. */
     private volatile boolean tasksStopped;
 
-    /** An executor: how task cycles get onto threads. */
-    interface Executor {
-        /**
-         * Starts the tasks.
-         *
-         * @return the start instant: release k of a periodic task is at start + offset + k * period
-         */
-        long start();
-
-        /** Stops releasing tasks and waits for every task thread to return. */
-        void stopAndJoin();
-    }
-
     private Monitor(Clock clock, List<TaskRuntime> runtimes, List<StateVariable<?>> variables,
                     Map<String, String> producers, Map<String, List<String>> consumers,
-                    List<MonitorListener> listeners, ThreadSetup threadSetup) {
+                    List<MonitorListener> listeners, ThreadSetup threadSetup, ListenerFanOut events,
+                    FrameworkFaults faults) {
         this.clock = clock;
+        this.events = events;
+        this.faults = faults;
         this.threadSetup = threadSetup;
         this.listeners = new ArrayList<>(listeners);
         this.runtimes = runtimes;
@@ -248,7 +240,21 @@ public final class Monitor {
      * @throws IllegalStateException if already started
      */
     public void start() {
-        begin(new ThreadedExecutor(clock, runtimes, this::requestStopFromTask, threadSetup));
+        ClockWaiter waiter = clock instanceof ManualClock manual
+                ? new ManualClockWaiter(manual, runtimes.size() + 1) : new ParkingClockWaiter(clock);
+        begin(new ThreadedExecutor(clock, waiter, runtimes, this::requestStopFromTask, threadSetup, faults));
+    }
+
+    /** @return the executor once started, else null (tests on a manual clock step through it) */
+    Executor executor() {
+        synchronized (lifecycle) {
+            return executor;
+        }
+    }
+
+    /** @return framework faults so far (see {@link FrameworkErrorHandler}) */
+    public long frameworkErrors() {
+        return faults.count();
     }
 
     /**
@@ -262,7 +268,7 @@ public final class Monitor {
         if (!(clock instanceof ManualClock manual)) {
             throw new IllegalStateException("the step executor needs a ManualClock, not " + clock);
         }
-        StepExecutor step = new StepExecutor(manual, runtimes, this);
+        StepExecutor step = new StepExecutor(manual, runtimes, this::stop, faults);
         begin(step);
         return step;
     }
@@ -274,8 +280,7 @@ public final class Monitor {
             }
             phase = Phase.RUNNING;
             executor = newExecutor;
-            MonitorListener[] all = listeners.toArray(new MonitorListener[0]);
-            runtimes.forEach(r -> r.listeners(all));
+            events.listeners(listeners.toArray(new MonitorListener[0]));
         }
         long started = executor.start();
         synchronized (lifecycle) {
@@ -336,8 +341,8 @@ public final class Monitor {
             for (Consumer<Report> handler : terminationHandlers) {
                 try {
                     handler.accept(report);
-                } catch (RuntimeException e) {
-                    System.err.println("rtaware: termination handler failed: " + e);
+                } catch (Throwable t) {
+                    faults.report("termination handler", t);
                 }
             }
         } finally {
@@ -430,7 +435,7 @@ public final class Monitor {
         }
         data.sort((a, b) -> a.name().compareTo(b.name()));
         return new Report(Report.SCHEMA, clock.timeScale(), Math.round((stopNs - startNs) / 1e6) / 1e3,
-                releases == 0 ? 0.0 : TaskRuntime.round2(100.0 * misses / releases), tasks, data);
+                releases == 0 ? 0.0 : TaskRuntime.round2(100.0 * misses / releases), tasks, data, faults.count());
     }
 
     private static double ms(double ns) {
@@ -448,6 +453,7 @@ public final class Monitor {
         private ErrorPolicy defaultPolicy = ErrorPolicy.CONTINUE;
         private AdaptivePolicy adaptivePolicy;
         private ThreadSetup threadSetup;
+        private FrameworkErrorHandler errorHandler;
 
         private Builder(Clock clock) {
             this.clock = Objects.requireNonNull(clock, "clock");
@@ -501,6 +507,17 @@ public final class Monitor {
          */
         public Builder threadSetup(ThreadSetup setup) {
             this.threadSetup = setup;
+            return this;
+        }
+
+        /**
+         * @param handler receives every fault on the framework's side (listeners, termination
+         *     handlers, thread setup, executors), each already contained and counted; default: a
+         *     {@link RateLimitedErrorPrinter} on standard error
+         * @return this builder
+         */
+        public Builder errorHandler(FrameworkErrorHandler handler) {
+            this.errorHandler = Objects.requireNonNull(handler, "handler");
             return this;
         }
 
@@ -596,6 +613,9 @@ public final class Monitor {
                 byName.put(entry.getKey(), variable);
                 producers.put(entry.getKey(), producerOf.get(entry.getKey()).spec.name());
             }
+            FrameworkFaults faults = new FrameworkFaults(
+                    errorHandler != null ? errorHandler : new RateLimitedErrorPrinter());
+            ListenerFanOut events = new ListenerFanOut(faults);
             List<TaskRuntime> runtimes = new ArrayList<>();
             for (Setup setup : setups) {
                 for (OutputHandle<?> out : setup.outputs) {
@@ -605,7 +625,7 @@ public final class Monitor {
                 for (InputHandle<?> in : setup.inputs) {
                     in.bind(byName.get(in.key().name()));
                 }
-                TaskRuntime runtime = new TaskRuntime(setup.spec, runtimes.size(), clock, new MonitorListener[0],
+                TaskRuntime runtime = new TaskRuntime(setup.spec, runtimes.size(), clock, events,
                         setup.inputs.toArray(new InputHandle<?>[0]), setup.outputs.toArray(new OutputHandle<?>[0]));
                 if (adaptivePolicy != null) {
                     runtime.adaptive(adaptivePolicy);
@@ -613,7 +633,7 @@ public final class Monitor {
                 runtimes.add(runtime);
             }
             return new Monitor(clock, List.copyOf(runtimes), List.copyOf(variables), producers, consumersOf, listeners,
-                    threadSetup);
+                    threadSetup, events, faults);
         }
 
         private static <T extends StateValue<T>> StateVariable<T> newVariable(Key<T> key) {

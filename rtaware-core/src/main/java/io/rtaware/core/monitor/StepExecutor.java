@@ -5,7 +5,9 @@ import java.util.List;
 
 /**
  * Runs tasks one cycle at a time on a {@link ManualClock}, for exact tests of the timing rules:
- * no threads, no sleeping, same result every time.
+ * no threads, no sleeping, same result every time. It only waits and calls (see
+ * {@link Executor}): "waiting" is advancing the manual clock to the earliest due release; every
+ * rule of what a cycle means is the {@link TaskRuntime}'s, the same as on real threads.
  *
  * <p>Tasks run one at a time, like tasks sharing one core: the due release with the earliest
  * time runs first (ties in registration order). A task simulates its execution time by
@@ -16,25 +18,24 @@ import java.util.List;
  *
  * <p>Not thread-safe: one test thread drives it.
  */
-public final class StepExecutor implements Monitor.Executor {
+public final class StepExecutor implements Executor {
 
-    private static final long DEFAULT_IDLE_STEP_NS = 1_000_000;
+    /** The idle step of zero-duration continuous cycles. */
+    static final long DEFAULT_IDLE_STEP_NS = 1_000_000;
 
     private final ManualClock clock;
-    private final List<TaskRuntime> runtimes;
-    private final Monitor monitor;
-    private final long[] nextIndex;
-    private final long[] nextReleaseNs;
+    private final TaskRuntime[] runtimes;
+    private final Runnable stop;
+    private final FrameworkFaults faults;
     private TaskRuntime current;
     private Runnable unsubscribe;
     private boolean stopped;
 
-    StepExecutor(ManualClock clock, List<TaskRuntime> runtimes, Monitor monitor) {
+    StepExecutor(ManualClock clock, List<TaskRuntime> runtimes, Runnable stop, FrameworkFaults faults) {
         this.clock = clock;
-        this.runtimes = runtimes;
-        this.monitor = monitor;
-        this.nextIndex = new long[runtimes.size()];
-        this.nextReleaseNs = new long[runtimes.size()];
+        this.runtimes = runtimes.toArray(new TaskRuntime[0]);
+        this.stop = stop;
+        this.faults = faults;
     }
 
     /** @return world time a zero-duration continuous cycle waits before its next release */
@@ -52,8 +53,7 @@ public final class StepExecutor implements Monitor.Executor {
             }
         });
         for (TaskRuntime runtime : runtimes) {
-            runtime.begin(startNs);
-            nextReleaseNs[runtime.index()] = runtime.releaseTimeNs(0);
+            runtime.begin(startNs, stop, idleStepNs());
         }
         return startNs;
     }
@@ -64,16 +64,11 @@ public final class StepExecutor implements Monitor.Executor {
      * @return false if no task is left to release, or the monitor was stopped
      */
     public boolean step() {
-        int chosen = -1;
-        for (int i = 0; i < runtimes.size(); i++) {
-            if (nextReleaseNs[i] != Long.MAX_VALUE && (chosen < 0 || nextReleaseNs[i] < nextReleaseNs[chosen])) {
-                chosen = i;
-            }
-        }
-        if (chosen < 0 || stopped) {
+        TaskRuntime next = earliestDueBefore(TaskRuntime.NEVER);
+        if (next == null || stopped) {
             return false;
         }
-        runOne(runtimes.get(chosen));
+        runOne(next);
         return true;
     }
 
@@ -84,16 +79,11 @@ public final class StepExecutor implements Monitor.Executor {
      */
     public void runUntil(long endNs) {
         while (!stopped) {
-            int chosen = -1;
-            for (int i = 0; i < runtimes.size(); i++) {
-                if (nextReleaseNs[i] < endNs && (chosen < 0 || nextReleaseNs[i] < nextReleaseNs[chosen])) {
-                    chosen = i;
-                }
-            }
-            if (chosen < 0) {
+            TaskRuntime next = earliestDueBefore(endNs);
+            if (next == null) {
                 break;
             }
-            runOne(runtimes.get(chosen));
+            runOne(next);
         }
         clock.advanceTo(endNs);
     }
@@ -105,50 +95,60 @@ public final class StepExecutor implements Monitor.Executor {
         runUntil(clock.nanos() + durationNs);
     }
 
-    private void runOne(TaskRuntime runtime) {
-        int i = runtime.index();
-        long k = nextIndex[i];
-        long releaseNs = nextReleaseNs[i];
-        clock.advanceTo(releaseNs);
-        long startNs = clock.nanos(); // later than the release if another cycle ran past it
-        current = runtime;
-        TaskRuntime.Outcome outcome;
+    /**
+     * Releases a continuous task now, outside the order of {@link #step()}, and runs one cycle of
+     * it with its real inputs and outputs: for tests that drive a task by hand (see
+     * {@code io.rtaware.core.testing.TaskHarness}). Every rule of the cycle applies as usual.
+     *
+     * @param task the task's name
+     * @throws IllegalArgumentException if there is no such task
+     * @throws IllegalStateException if it is not continuous, is disabled, or the monitor stopped
+     */
+    public void releaseNow(String task) {
+        if (stopped) {
+            throw new IllegalStateException("the monitor has stopped");
+        }
+        TaskRuntime chosen = null;
+        for (TaskRuntime runtime : runtimes) {
+            if (runtime.name().equals(task)) {
+                chosen = runtime;
+            }
+        }
+        if (chosen == null) {
+            throw new IllegalArgumentException("no task '" + task + "'");
+        }
+        current = chosen;
         try {
-            outcome = runtime.runCycle(k, releaseNs);
+            chosen.releaseNow(clock.nanos());
         } finally {
             current = null;
         }
-        long endNs = runtime.lastCycleEndNs();
-        switch (outcome) {
-            case DISABLE -> {
-                runtime.setState(TaskState.DISABLED, endNs);
-                nextReleaseNs[i] = Long.MAX_VALUE;
-                return;
-            }
-            case STOP_ALL -> {
-                nextReleaseNs[i] = Long.MAX_VALUE;
-                monitor.stop();
-                return;
-            }
-            default -> {
+    }
+
+    /** @return the task with the earliest release before {@code limitNs} (ties: lowest index), or null */
+    private TaskRuntime earliestDueBefore(long limitNs) {
+        TaskRuntime chosen = null;
+        for (TaskRuntime runtime : runtimes) {
+            long due = runtime.nextReleaseNs();
+            if (due < limitNs && (chosen == null || due < chosen.nextReleaseNs())) {
+                chosen = runtime;
             }
         }
-        switch (runtime.schedule().kind()) {
-            case "periodic" -> {
-                long next = runtime.nextIndexAfter(k, endNs);
-                nextIndex[i] = next;
-                nextReleaseNs[i] = runtime.releaseTimeNs(next);
-            }
-            case "continuous" -> {
-                nextIndex[i] = k + 1;
-                // Compare with the start, not the release: a zero-duration cycle that started late
-                // must still wait one idle step, or it would run twice at the same instant.
-                nextReleaseNs[i] = endNs > startNs ? endNs : endNs + idleStepNs();
-            }
-            default -> {
-                runtime.setState(TaskState.FINISHED, endNs);
-                nextReleaseNs[i] = Long.MAX_VALUE;
-            }
+        return chosen;
+    }
+
+    private void runOne(TaskRuntime runtime) {
+        clock.advanceTo(runtime.nextReleaseNs());
+        current = runtime;
+        try {
+            runtime.runCycle();
+        } catch (VirtualMachineError fatal) {
+            throw fatal;
+        } catch (Throwable fault) {
+            faults.report("executor, cycle of task '" + runtime.name() + "'", fault);
+            runtime.recoverAfterFault(clock.nanos());
+        } finally {
+            current = null;
         }
     }
 

@@ -1,131 +1,106 @@
 package io.rtaware.core.monitor;
 
-import io.rtaware.core.report.Percentiles;
 import io.rtaware.core.report.TaskReport;
 import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Clock;
-import java.util.Arrays;
-import java.util.concurrent.atomic.AtomicLong;
-import java.util.concurrent.atomic.AtomicLongArray;
-import org.HdrHistogram.Histogram;
+import java.util.ArrayList;
+import java.util.List;
 
 /**
- * One task under the monitor: its inputs and outputs, the timing rules, and its statistics.
- * Both executors drive a task through this class only, so the rules are the same on real
- * threads and in the step executor:
+ * One task under the monitor, and the rulebook of its timing: every rule of when a cycle is
+ * released, skipped, late, missed, paused after an error or re-anchored after a period change
+ * lives here, in world time. Executors ({@link Executor}) only wait and call: they wait until
+ * {@link #nextReleaseNs()}, call {@link #runCycle()}, and repeat while the next release is not
+ * {@link #NEVER}; a watchdog calls {@link #checkDeadline(long)}. The rules:
  * <ul>
  *   <li>release k of a periodic task is at {@code base + k * period}, with
- *   {@code base = start + offset};</li>
+ *   {@code base = start + offset} ({@link ReleaseGrid});</li>
  *   <li>a cycle that has not returned by {@code release + deadline} is a miss, reported by the
- *   watchdog at that moment ({@link #checkDeadline(long)}) or, failing that, when it returns;</li>
+ *   watchdog at that moment ({@link #checkDeadline(long)}) or, failing that, when it returns
+ *   ({@link CycleToken} makes it exactly one of the two);</li>
  *   <li>a cycle that returns after later releases came due skips to the first grid point at or
  *   after its end; every skipped release counts as a release and a miss, and is never run
  *   (no catch-up bursts);</li>
  *   <li>a cycle whose inputs had no new data is a stale run (tasks without inputs never are);</li>
+ *   <li>a cycle that throws commits nothing (its publishes are discarded) and counts as an error;
+ *   its task's {@link ErrorPolicy} then decides: go on, disable the task, or stop the monitor;</li>
+ *   <li>a continuous task is released again at the end of its cycle, or
+ *   {@link #CONTINUOUS_ERROR_PAUSE_NS} later if the cycle threw (so a failing input cannot spin a
+ *   core); a once task finishes after its single cycle;</li>
  *   <li>with an {@link AdaptivePolicy} and a period range, the period moves at the end of an
- *   evaluation window ({@link #nextIndexAfter}); the grid is then re-anchored at the next
- *   release n on the old grid: release {@code n + j} is at {@code t_n + j * newPeriod}.</li>
+ *   evaluation window ({@link AdaptivePeriodController}); the grid is then re-anchored at the
+ *   next release n on the old grid: release {@code n + j} is at {@code t_n + j * newPeriod}.</li>
  * </ul>
  *
- * <p>Thread-safety: {@link #runCycle} and {@link #nextIndexAfter} are called by the task's own
- * thread only; {@link #checkDeadline(long)} by the watchdog, concurrently, coordinated with the
- * task thread through one atomic cycle token. Counters are safe to read at any time; the
- * histograms and the period history only after the task thread has stopped. The grid is one
- * immutable object in a volatile field, replaced only between cycles by the task's thread, so
- * the watchdog always sees a consistent grid.
+ * <p>Where a recorder of every cycle hooks in: {@link #runCycle()} knows, in one place, the
+ * release, start and end of the cycle, its lateness and execution time, whether it was stale,
+ * threw or missed, and the generation each input held ({@code inputs()[i].generation()}).
+ *
+ * <p>Thread-safety: {@link #runCycle()} is called by one thread at a time (the task's own
+ * thread, or whichever worker an executor hands the task to, with a happens-before edge between
+ * consecutive callers); {@link #checkDeadline(long)} by the watchdog, concurrently, coordinated
+ * through the {@link CycleToken}. Counters are safe to read at any time; the distributions and
+ * the period history only after the task's cycles have stopped. The grid is one immutable object
+ * in a volatile field, replaced only between cycles, so the watchdog always sees a consistent one.
  */
 final class TaskRuntime implements TaskInfo {
 
-    /** Result of one cycle, telling the executor what to do next. */
-    enum Outcome { CONTINUE, DISABLE, STOP_ALL }
+    /** {@link #nextReleaseNs()} of a task that will not be released again. */
+    static final long NEVER = Long.MAX_VALUE;
+    /** World time a continuous task waits after a cycle that threw, before it is released again. */
+    static final long CONTINUOUS_ERROR_PAUSE_NS = 20_000_000L;
 
-    private static final long HIGHEST_TRACKABLE_NS = 3_600_000_000_000L;
-    /** Cycles whose execution times {@link #counters()} summarizes as a live p99. */
-    static final int RECENT_EXEC_CYCLES = 128;
+    /** How the task is released: the only switch on the schedule's kind. */
+    private enum Release { PERIODIC, CONTINUOUS, ONCE }
 
     private final TaskSpec spec;
     private final int index;
     private final Clock clock;
-    private MonitorListener[] listeners;
+    private final ListenerFanOut events;
     private final InputHandle<?>[] inputs;
     private final OutputHandle<?>[] outputs;
-    private final boolean periodic;
+    private final Release release;
     private final long offsetNs;
-    private long startNs;
-
-    /**
-     * The release grid: release k is at {@code baseNs + (k - baseIndex) * periodNs}.
-     *
-     * @param baseIndex the release index at {@code baseNs}
-     * @param baseNs the grid's anchor in world time
-     * @param periodNs the period
-     * @param deadlineNs the relative deadline
-     */
-    private record Grid(long baseIndex, long baseNs, long periodNs, long deadlineNs) {
-        long releaseNs(long k) {
-            return baseNs + (k - baseIndex) * periodNs;
-        }
-    }
-
-    private volatile Grid grid;
-
-    /** Adaptive periods: null unless enabled on the monitor and the schedule has a range. */
-    private AdaptivePolicy adaptive;
-    private final java.util.List<PeriodChange> periodHistory = new java.util.ArrayList<>();
-    private long windowReleases;
-    private long windowMisses;
-    private long windowRuns;
-    private long windowStale;
-    private long windowExecMaxNs;
-
-    /** Odd {@code 2k+1}: cycle k is running. Even: no cycle running (claims move it to 2k+2). */
-    private final AtomicLong cycleToken = new AtomicLong(0);
-
-    private final AtomicLong releases = new AtomicLong();
-    private final AtomicLong runs = new AtomicLong();
-    private final AtomicLong misses = new AtomicLong();
-    private final AtomicLong skipped = new AtomicLong();
-    private final AtomicLong staleRuns = new AtomicLong();
-    private final AtomicLong errors = new AtomicLong();
-    private final AtomicLong expiredReads = new AtomicLong();
+    private final CycleStatistics statistics = new CycleStatistics();
+    private final CycleToken token = new CycleToken();
+    private volatile ReleaseGrid grid;
+    /** Null unless adaptive periods are enabled on the monitor and the schedule has a range. */
+    private AdaptivePeriodController adaptive;
+    private final List<PeriodChange> periodHistory = new ArrayList<>();
     private volatile TaskState state = TaskState.INITIALIZED;
-    /** Called on the task thread once a periodic cycle is marked running; null if none. */
+
+    // Set by the executor at begin(); read by the cycle's thread.
+    private long startNs;
+    private Runnable stopAllRequest;
+    private long zeroCycleSpacingNs;
+    /** Called on the cycle's thread once a periodic cycle is marked running; null if none. */
     private Runnable cycleStarted;
 
-    private final Histogram execNs = new Histogram(1, HIGHEST_TRACKABLE_NS, 2);
-    private final Histogram latenessNs = new Histogram(1, HIGHEST_TRACKABLE_NS, 2);
-    private long execMaxNs;
-    private double execSumNs;
-    /** Execution times of the latest cycles, a ring written by the task thread, read by anyone. */
-    private final AtomicLongArray recentExecNs = new AtomicLongArray(RECENT_EXEC_CYCLES);
-    /** Next slot of {@link #recentExecNs}; task thread only. */
-    private int recentExecSlot;
-    private long latenessMaxNs;
-    /** End of the latest cycle; task thread only. */
-    private long lastCycleEndNs;
-    /** Whether the latest cycle threw; task thread only. */
-    private boolean lastCycleFailed;
-    private double latenessSumNs;
+    // The next release, written by the cycle's thread between cycles.
+    private long nextIndex;
+    private long nextReleaseNs = NEVER;
+    /** {@link #nextIndex} for the watchdog; -1 before the start and once never released again. */
+    private volatile long pendingIndex = -1;
 
-    TaskRuntime(TaskSpec spec, int index, Clock clock, MonitorListener[] listeners,
-                InputHandle<?>[] inputs, OutputHandle<?>[] outputs) {
+    TaskRuntime(TaskSpec spec, int index, Clock clock, ListenerFanOut events, InputHandle<?>[] inputs,
+                OutputHandle<?>[] outputs) {
         this.spec = spec;
         this.index = index;
         this.clock = clock;
-        this.listeners = listeners;
+        this.events = events;
         this.inputs = inputs;
         this.outputs = outputs;
         Schedule schedule = spec.schedule();
         if (schedule instanceof Schedule.Periodic p) {
-            periodic = true;
+            release = Release.PERIODIC;
             offsetNs = p.offsetNs();
-            grid = new Grid(0, 0, p.periodNs(), p.deadlineNs());
+            grid = new ReleaseGrid(0, 0, p.periodNs(), p.deadlineNs());
         } else {
-            periodic = false;
+            release = schedule instanceof Schedule.Once ? Release.ONCE : Release.CONTINUOUS;
             offsetNs = schedule instanceof Schedule.Once o ? o.offsetNs() : 0;
-            grid = new Grid(0, 0, 0, 0);
+            grid = new ReleaseGrid(0, 0, 0, 0);
         }
     }
 
@@ -144,11 +119,6 @@ final class TaskRuntime implements TaskInfo {
         return spec.schedule();
     }
 
-    /** Replaces the listeners; only before the task's thread starts (the start publishes it). */
-    void listeners(MonitorListener[] all) {
-        this.listeners = all;
-    }
-
     TaskSpec spec() {
         return spec;
     }
@@ -161,23 +131,27 @@ final class TaskRuntime implements TaskInfo {
         return inputs;
     }
 
+    CycleStatistics statistics() {
+        return statistics;
+    }
+
     boolean isPeriodic() {
-        return periodic;
+        return release == Release.PERIODIC;
     }
 
     /**
      * Enables adaptive periods for this task if its schedule declares a range; only before the
-     * task's thread starts.
+     * task's cycles start.
      */
     void adaptive(AdaptivePolicy policy) {
         if (spec.schedule() instanceof Schedule.Periodic p && p.isAdaptive()) {
-            this.adaptive = policy;
+            this.adaptive = new AdaptivePeriodController(policy, p, inputs.length > 0);
         }
     }
 
     /**
-     * Sets the hook run on the task thread right after a periodic cycle is marked running (the
-     * threaded executor wakes its watchdog there). Call before the task's thread starts.
+     * Sets the hook run on the cycle's thread right after a periodic cycle is marked running (the
+     * threaded executor wakes its watchdog there). Call before {@link #begin}.
      *
      * @param hook must not allocate or block
      */
@@ -185,24 +159,45 @@ final class TaskRuntime implements TaskInfo {
         this.cycleStarted = hook;
     }
 
-    /** Fixes the grid: release k of a periodic task is at {@code startNs + offset + k * period}. */
-    void begin(long startNs) {
+    /**
+     * The start: fixes the grid (release k of a periodic task at {@code startNs + offset + k *
+     * period}; a once task at {@code startNs + offset}; a continuous task at {@code startNs}).
+     *
+     * @param startNs the start instant, the same for every task of the monitor
+     * @param stopAllRequest how the executor stops the monitor when a task's policy says
+     *     {@link ErrorPolicy#STOP_ALL}; called on the cycle's thread
+     * @param zeroCycleSpacingNs how long after its start a continuous cycle that took no world
+     *     time is released again: 0 on a real clock, the step executor's idle step on a manual one
+     *     (where time only moves if someone moves it)
+     */
+    void begin(long startNs, Runnable stopAllRequest, long zeroCycleSpacingNs) {
         this.startNs = startNs;
-        Grid g = grid;
-        grid = new Grid(0, startNs + offsetNs, g.periodNs(), g.deadlineNs());
+        this.stopAllRequest = stopAllRequest;
+        this.zeroCycleSpacingNs = zeroCycleSpacingNs;
+        grid = grid.anchoredAt(startNs + offsetNs);
+        nextIndex = 0;
+        nextReleaseNs = release == Release.PERIODIC ? grid.releaseNs(0) : startNs + offsetNs;
+        pendingIndex = release == Release.PERIODIC ? 0 : -1;
         setState(TaskState.RUNNING, startNs);
+    }
+
+    /**
+     * @return the world time at which {@link #runCycle()} is due next, or {@link #NEVER}; read
+     *     by the thread that runs the task's cycles
+     */
+    long nextReleaseNs() {
+        return nextReleaseNs;
     }
 
     /** @return the world time of release k (periodic), or of the single run (once/continuous) */
     long releaseTimeNs(long k) {
-        Grid g = grid;
-        return periodic ? g.releaseNs(k) : g.baseNs();
+        ReleaseGrid g = grid;
+        return release == Release.PERIODIC ? g.releaseNs(k) : g.baseNs();
     }
 
     /** @return the absolute deadline of release k, or {@link Long#MAX_VALUE} if not periodic */
     long deadlineOf(long k) {
-        Grid g = grid;
-        return periodic ? g.releaseNs(k) + g.deadlineNs() : Long.MAX_VALUE;
+        return release == Release.PERIODIC ? grid.deadlineOf(k) : Long.MAX_VALUE;
     }
 
     /** @return the current period in world nanoseconds (0 unless periodic) */
@@ -210,29 +205,19 @@ final class TaskRuntime implements TaskInfo {
         return grid.periodNs();
     }
 
-    /** @return every period change so far; call only after the task thread has stopped */
-    java.util.List<PeriodChange> periodHistory() {
-        return java.util.List.copyOf(periodHistory);
+    /** @return every period change so far; call only after the task's cycles have stopped */
+    List<PeriodChange> periodHistory() {
+        return List.copyOf(periodHistory);
     }
 
-    /** Index of the release the task's thread waits for next; -1 before the first. */
-    private volatile long pendingIndex = -1;
-
     /**
-     * Publishes the release the task's thread is about to wait for, so the watchdog can sleep
-     * until the earliest deadline that could be missed instead of being woken at every cycle start.
+     * For the watchdog, which sleeps until the earliest deadline that could be missed instead of
+     * being woken at every cycle start.
      *
-     * @param k the next release index
-     */
-    void pending(long k) {
-        pendingIndex = k;
-    }
-
-    /**
      * @return the deadline of the running cycle, or else of the release the task waits for; or
-     *     {@link Long#MAX_VALUE} if not periodic or not yet waiting
+     *     {@link Long#MAX_VALUE} if not periodic or not released again
      */
-    long pendingDeadlineNs() {
+    long watchDeadlineNs() {
         long running = runningDeadlineNs();
         if (running != Long.MAX_VALUE) {
             return running;
@@ -245,29 +230,23 @@ final class TaskRuntime implements TaskInfo {
      * @return the absolute deadline of the cycle running now, or {@link Long#MAX_VALUE} if none
      */
     long runningDeadlineNs() {
-        long token = cycleToken.get();
-        return (token & 1) == 1 ? deadlineOf((token - 1) >>> 1) : Long.MAX_VALUE;
+        long k = token.running();
+        return k < 0 ? Long.MAX_VALUE : deadlineOf(k);
     }
 
     /**
-     * Runs one cycle for release {@code k}: copy-in, execute, commit, bookkeeping.
-     *
-     * @param k the release index (for continuous tasks a running count)
-     * @param releaseNs the scheduled release time
-     * @return what the executor must do next
+     * Runs the due release: copy-in, execute, commit, bookkeeping, then decides the next release
+     * ({@link #nextReleaseNs()}), the task's new state, and, under STOP_ALL, asks the executor to
+     * stop. Listener faults are contained; only a {@link VirtualMachineError} of the task escapes.
      */
-    Outcome runCycle(long k, long releaseNs) {
-        long startNs = clock.nanos();
-        releases.incrementAndGet();
-        runs.incrementAndGet();
-        long lateness = Math.max(0, startNs - releaseNs);
-        record(latenessNs, lateness);
-        latenessSumNs += lateness;
-        if (lateness > latenessMaxNs) {
-            latenessMaxNs = lateness;
-        }
+    void runCycle() {
+        long k = nextIndex;
+        long releaseNs = nextReleaseNs;
+        long cycleStartNs = clock.nanos();
+        statistics.released(Math.max(0, cycleStartNs - releaseNs));
+        boolean periodic = release == Release.PERIODIC;
         if (periodic) {
-            cycleToken.set(2 * k + 1);
+            token.start(k);
             if (cycleStarted != null) {
                 cycleStarted.run();
             }
@@ -275,24 +254,20 @@ final class TaskRuntime implements TaskInfo {
 
         boolean anyNew = false;
         for (InputHandle<?> input : inputs) {
-            anyNew |= input.refresh(startNs);
+            anyNew |= input.refresh(cycleStartNs);
             if (input.isExpired()) {
-                expiredReads.incrementAndGet();
-                for (MonitorListener l : listeners) {
-                    l.onExpiredInput(this, input.key().name(), input.ageNs(), input.maxAgeNs(), startNs);
-                }
+                statistics.expiredRead();
+                events.onExpiredInput(this, input.key().name(), input.ageNs(), input.maxAgeNs(), cycleStartNs);
             }
         }
         if (inputs.length > 0 && !anyNew) {
-            staleRuns.incrementAndGet();
-            for (MonitorListener l : listeners) {
-                l.onStaleRun(this, startNs);
-            }
+            statistics.staleRun();
+            events.onStaleRun(this, cycleStartNs);
         }
 
         Throwable failure = null;
         try {
-            spec.task().execute(startNs);
+            spec.task().execute(cycleStartNs);
         } catch (VirtualMachineError fatal) {
             throw fatal;
         } catch (Throwable t) {
@@ -305,9 +280,7 @@ final class TaskRuntime implements TaskInfo {
             for (OutputHandle<?> output : outputs) {
                 long generation = output.commitIfMarked(endNs);
                 if (generation != 0) {
-                    for (MonitorListener l : listeners) {
-                        l.onCommit(this, output.keyIndex(), generation, endNs);
-                    }
+                    events.onCommit(this, output.keyIndex(), generation, endNs);
                 }
             }
         } else {
@@ -317,49 +290,106 @@ final class TaskRuntime implements TaskInfo {
             endNs = clock.nanos();
         }
 
-        if (periodic && cycleToken.compareAndSet(2 * k + 1, 2 * k + 2)) {
+        if (periodic && token.finish(k)) {
             // The watchdog had not claimed this cycle: a late finish is reported now.
             long deadline = deadlineOf(k);
             if (endNs > deadline) {
-                misses.incrementAndGet();
-                for (MonitorListener l : listeners) {
-                    l.onDeadlineMiss(this, releaseNs, deadline, endNs, false);
+                statistics.missed();
+                events.onDeadlineMiss(this, releaseNs, deadline, endNs, false);
+            }
+        }
+        long execNs = endNs - cycleStartNs;
+        statistics.cycleEnded(execNs);
+        if (adaptive != null) {
+            adaptive.cycleEnded(execNs);
+        }
+        events.onCycle(this, releaseNs, cycleStartNs, endNs);
+        if (failure != null) {
+            statistics.error();
+            events.onTaskError(this, failure, spec.errorPolicy(), endNs);
+            switch (spec.errorPolicy()) {
+                case DISABLE_TASK -> {
+                    neverAgain();
+                    setState(TaskState.DISABLED, endNs);
+                    return;
+                }
+                case STOP_ALL -> {
+                    neverAgain();
+                    stopAllRequest.run();
+                    return;
+                }
+                default -> {
                 }
             }
         }
-        lastCycleEndNs = endNs;
-        long exec = endNs - startNs;
-        if (exec > windowExecMaxNs) {
-            windowExecMaxNs = exec;
-        }
-        record(execNs, exec);
-        recentExecNs.setRelease(recentExecSlot, Math.max(exec, 1));
-        recentExecSlot = (recentExecSlot + 1) % RECENT_EXEC_CYCLES;
-        execSumNs += exec;
-        if (exec > execMaxNs) {
-            execMaxNs = exec;
-        }
-        for (MonitorListener l : listeners) {
-            l.onCycle(this, releaseNs, startNs, endNs);
-        }
-        lastCycleFailed = failure != null;
-        if (failure != null) {
-            return fail(failure, endNs);
-        }
-        return Outcome.CONTINUE;
+        scheduleNext(k, cycleStartNs, endNs, failure != null);
     }
 
-    private Outcome fail(Throwable failure, long nowNs) {
-        errors.incrementAndGet();
-        ErrorPolicy policy = spec.errorPolicy();
-        for (MonitorListener l : listeners) {
-            l.onTaskError(this, failure, policy, nowNs);
+    /**
+     * Releases a continuous task at {@code nowNs}, whatever its own next release, and runs the
+     * cycle: a continuous task is released when its previous cycle has ended, and a test that
+     * drives it by hand decides when that is. Its next release then follows the usual rule.
+     *
+     * @param nowNs world time of the release (the clock's time)
+     * @throws IllegalStateException if the task is not continuous, or will not be released again
+     *     (disabled)
+     */
+    void releaseNow(long nowNs) {
+        if (release != Release.CONTINUOUS) {
+            throw new IllegalStateException("task '" + name() + "' is " + spec.schedule().kind()
+                    + ": only a continuous task can be released by hand");
         }
-        return switch (policy) {
-            case CONTINUE -> Outcome.CONTINUE;
-            case DISABLE_TASK -> Outcome.DISABLE;
-            case STOP_ALL -> Outcome.STOP_ALL;
-        };
+        if (nextReleaseNs == NEVER) {
+            throw new IllegalStateException("task '" + name() + "' is " + state + " and will not run again");
+        }
+        nextReleaseNs = nowNs;
+        runCycle();
+    }
+
+    /**
+     * After an executor's own fault around {@link #runCycle()} (a framework bug, reported by the
+     * executor): releases the task again by the same rules as after a cycle that threw and
+     * ended now, so the executor neither spins on the same release nor loses the task.
+     *
+     * @param nowNs world time
+     */
+    void recoverAfterFault(long nowNs) {
+        long k = nextIndex;
+        if (release == Release.PERIODIC) {
+            token.finish(k);
+        }
+        scheduleNext(k, Math.min(nowNs, nextReleaseNs), nowNs, true);
+    }
+
+    /** The release rules after cycle k, which started at {@code cycleStartNs} and ended at {@code endNs}. */
+    private void scheduleNext(long k, long cycleStartNs, long endNs, boolean failed) {
+        switch (release) {
+            case PERIODIC -> {
+                long next = nextAfter(k, endNs);
+                nextIndex = next;
+                nextReleaseNs = grid.releaseNs(next);
+                pendingIndex = next;
+            }
+            case CONTINUOUS -> {
+                nextIndex = k + 1;
+                if (failed) {
+                    nextReleaseNs = endNs + CONTINUOUS_ERROR_PAUSE_NS;
+                } else {
+                    // Compare with the start, not the release: a zero-duration cycle that started
+                    // late must still be spaced, or it would run twice at the same instant.
+                    nextReleaseNs = endNs > cycleStartNs ? endNs : cycleStartNs + zeroCycleSpacingNs;
+                }
+            }
+            case ONCE -> {
+                neverAgain();
+                setState(TaskState.FINISHED, endNs);
+            }
+        }
+    }
+
+    private void neverAgain() {
+        nextReleaseNs = NEVER;
+        pendingIndex = -1;
     }
 
     /**
@@ -369,176 +399,70 @@ final class TaskRuntime implements TaskInfo {
      * @param nowNs world time
      */
     void checkDeadline(long nowNs) {
-        long token = cycleToken.get();
-        if ((token & 1) == 0) {
+        long k = token.running();
+        if (k < 0) {
             return;
         }
-        long k = (token - 1) >>> 1;
         long deadline = deadlineOf(k);
-        if (nowNs <= deadline || !cycleToken.compareAndSet(token, token + 1)) {
+        if (nowNs <= deadline || !token.claim(k)) {
             return;
         }
-        misses.incrementAndGet();
-        for (MonitorListener l : listeners) {
-            l.onDeadlineMiss(this, releaseTimeNs(k), deadline, nowNs, true);
-        }
+        statistics.missed();
+        events.onDeadlineMiss(this, releaseTimeNs(k), deadline, nowNs, true);
     }
 
     /**
-     * The release to run after release {@code k} whose cycle ended at {@code endNs}: the next grid
-     * point, or, if the cycle overran, the first grid point at or after its end. Each grid point
-     * passed over is counted as a release, a skipped release and a miss. With adaptive periods,
-     * this is also where an evaluation window ends and the grid may be re-anchored.
-     *
-     * @param k the release just run
-     * @param endNs when its cycle ended
-     * @return the index of the next release to run
+     * The release to run after release {@code k} whose cycle ended at {@code endNs}
+     * ({@link ReleaseGrid#nextAfter}); each grid point passed over is counted as a release, a
+     * skipped release and a miss. With adaptive periods, this is also where an evaluation window
+     * ends and the grid may be re-anchored.
      */
-    long nextIndexAfter(long k, long endNs) {
-        Grid g = grid;
-        long periodNs = g.periodNs();
-        long next = k + 1;
-        long since = endNs - g.baseNs();
-        if (since > (next - g.baseIndex()) * periodNs) {
-            // ceil: first grid point >= end
-            long first = g.baseIndex() + Math.floorDiv(since + periodNs - 1, periodNs);
-            long passed = first - next;
-            releases.addAndGet(passed);
-            skipped.addAndGet(passed);
-            misses.addAndGet(passed);
-            for (MonitorListener l : listeners) {
-                l.onSkippedReleases(this, passed, endNs);
-            }
-            next = first;
+    private long nextAfter(long k, long endNs) {
+        ReleaseGrid g = grid;
+        long next = g.nextAfter(k, endNs);
+        long passed = next - (k + 1);
+        if (passed > 0) {
+            statistics.skipped(passed);
+            events.onSkippedReleases(this, passed, endNs);
         }
         if (adaptive != null) {
-            adapt(next, endNs);
+            PeriodChange change = adaptive.evaluate(name(), g.releaseNs(next) - startNs, g.periodNs(),
+                    statistics.releases(), statistics.misses(), statistics.runs(), statistics.staleRuns());
+            if (change != null) {
+                grid = g.reanchoredAt(next, change.toPeriodNs(), adaptive.deadlineFor(change.toPeriodNs()));
+                periodHistory.add(change);
+                events.onPeriodChange(this, change, endNs);
+            }
         }
         return next;
     }
 
-    /**
-     * Ends an evaluation window when it is full and applies the {@link AdaptivePolicy}; a change
-     * re-anchors the grid at release {@code next}, which stays where the old grid put it.
-     */
-    private void adapt(long next, long endNs) {
-        long rel = releases.get() - windowReleases;
-        if (rel < adaptive.windowReleases()) {
-            return;
-        }
-        long miss = misses.get() - windowMisses;
-        long ran = runs.get() - windowRuns;
-        long stale = staleRuns.get() - windowStale;
-        long execMax = windowExecMaxNs;
-        windowReleases += rel;
-        windowMisses += miss;
-        windowRuns += ran;
-        windowStale += stale;
-        windowExecMaxNs = 0;
-
-        Schedule.Periodic declared = (Schedule.Periodic) spec.schedule();
-        Grid g = grid;
-        long period = g.periodNs();
-        long longer = Math.min(declared.maxPeriodNs(), roundToMicros(period * adaptive.stepFactor()));
-        long shorter = Math.max(declared.minPeriodNs(), roundToMicros(period / adaptive.stepFactor()));
-        long target = period;
-        PeriodChange.Reason reason = null;
-        if (miss > 0) {
-            target = longer;
-            reason = PeriodChange.Reason.MISSES;
-        } else if (inputs.length > 0 && stale * 100.0 >= adaptive.staleLongerPct() * ran) {
-            target = longer;
-            reason = PeriodChange.Reason.STALE;
-        } else if ((inputs.length == 0 || stale * 100.0 <= adaptive.staleShorterPct() * ran)
-                && execMax * 100.0 <= adaptive.headroomPct() * shorter) {
-            target = shorter;
-            reason = PeriodChange.Reason.FRESH_WITH_HEADROOM;
-        }
-        if (target == period) {
-            return;
-        }
-        long anchorNs = g.releaseNs(next);
-        long deadline = declared.withPeriod(target).deadlineNs();
-        grid = new Grid(next, anchorNs, target, deadline);
-        PeriodChange change = new PeriodChange(name(), anchorNs - startNs, period, target, reason, rel, miss, ran,
-                stale, execMax);
-        periodHistory.add(change);
-        for (MonitorListener l : listeners) {
-            l.onPeriodChange(this, change, endNs);
-        }
-    }
-
-    private static long roundToMicros(double ns) {
-        return Math.max(1_000, Math.round(ns / 1_000) * 1_000);
-    }
-
-    /** @return true if the latest cycle threw (task thread only) */
-    boolean lastCycleFailed() {
-        return lastCycleFailed;
-    }
-
-    /** @return world time at which the latest cycle ended (task thread only) */
-    long lastCycleEndNs() {
-        return lastCycleEndNs;
-    }
-
     void setState(TaskState newState, long nowNs) {
         state = newState;
-        for (MonitorListener l : listeners) {
-            l.onStateChange(this, newState, nowNs);
-        }
+        events.onStateChange(this, newState, nowNs);
     }
 
     TaskState state() {
         return state;
     }
 
-    long misses() {
-        return misses.get();
-    }
-
-    long releases() {
-        return releases.get();
-    }
-
-    private static void record(Histogram histogram, long valueNs) {
-        histogram.recordValue(Math.min(Math.max(valueNs, 1), HIGHEST_TRACKABLE_NS));
-    }
-
     /** Live counters, safe at any time from any thread; allocates (not for task threads). */
     TaskCounters counters() {
-        return new TaskCounters(releases.get(), runs.get(), misses.get(), skipped.get(), staleRuns.get(),
-                errors.get(), expiredReads.get(), recentExecP99Ns());
+        return statistics.counters();
     }
 
-    /** p99 (nearest rank) of the execution times in the ring, 0 before the first cycle. */
-    private long recentExecP99Ns() {
-        long[] values = new long[RECENT_EXEC_CYCLES];
-        int n = 0;
-        for (int i = 0; i < RECENT_EXEC_CYCLES; i++) {
-            long v = recentExecNs.getAcquire(i);
-            if (v > 0) {
-                values[n++] = v;
-            }
-        }
-        if (n == 0) {
-            return 0;
-        }
-        Arrays.sort(values, 0, n);
-        return values[(int) Math.ceil(0.99 * n) - 1];
-    }
-
-    /** Builds the report; call only after the task thread has stopped. */
+    /** Builds the report; call only after the task's cycles have stopped. */
     TaskReport report() {
-        long rel = releases.get();
-        long miss = misses.get();
-        Grid g = grid;
+        long rel = statistics.releases();
+        long miss = statistics.misses();
+        ReleaseGrid g = grid;
+        boolean periodic = release == Release.PERIODIC;
         Double period = periodic ? g.periodNs() / 1e6 : null;
         Double deadline = periodic ? g.deadlineNs() / 1e6 : null;
-        return new TaskReport(name(), spec.schedule().kind(), period, deadline, rel, runs.get(), miss,
-                rel == 0 ? 0.0 : round2(100.0 * miss / rel), skipped.get(), staleRuns.get(), errors.get(),
-                expiredReads.get(), Percentiles.ofNanos(execNs, execMaxNs, execSumNs),
-                Percentiles.ofNanos(latenessNs, latenessMaxNs, latenessSumNs));
+        return new TaskReport(name(), spec.schedule().kind(), period, deadline, rel, statistics.runs(), miss,
+                rel == 0 ? 0.0 : round2(100.0 * miss / rel), statistics.skippedReleases(), statistics.staleRuns(),
+                statistics.errors(), statistics.expiredReads(), statistics.execUs(), statistics.latenessUs(),
+                statistics.listenerErrors());
     }
 
     static double round2(double v) {

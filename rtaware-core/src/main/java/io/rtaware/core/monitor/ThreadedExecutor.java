@@ -2,51 +2,63 @@ package io.rtaware.core.monitor;
 
 import io.rtaware.core.time.Clock;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 
 /**
  * One named platform thread per task, as in the paper, plus a watchdog thread that reports
- * deadline misses at the deadline. Periodic tasks wait for their absolute release time with
- * {@link LockSupport#parkNanos} (never {@code Thread.sleep}, which rounds to whole
- * milliseconds on JDK 17); lateness is measured against the scheduled release.
+ * deadline misses at the deadline. Each task thread only waits and calls (see {@link Executor}):
+ * it waits with its {@link ClockWaiter} until the task's next release, runs the cycle, and
+ * repeats; every rule of what a cycle means is the {@link TaskRuntime}'s.
  *
  * <p>Task threads get rate-monotonic Java priorities as a hint to the JVM (shorter period,
  * higher priority: rank 0 gets {@code MAX_PRIORITY - 1}, down to {@code NORM_PRIORITY}; tasks
  * without a period get {@code NORM_PRIORITY}; the watchdog has {@code MAX_PRIORITY}). An
  * optional {@link ThreadSetup} runs on each task thread before its first release.
  *
- * <p>A continuous task whose cycle throws is released again only after
- * {@value #CONTINUOUS_ERROR_PAUSE_NS} ns of wall time, so a failing input cannot spin a core.
+ * <p>No fault of the framework stops a task thread or the watchdog: listener faults are
+ * contained by the runtime, anything else thrown around a cycle or in the watchdog's scan is
+ * reported to the {@link FrameworkFaults} and the loop goes on. Only a
+ * {@link VirtualMachineError} of a task stops the monitor.
  *
  * <p>Thread-safe: started once, stopped once, by the monitor.
  */
-final class ThreadedExecutor implements Monitor.Executor {
+final class ThreadedExecutor implements Executor {
 
     private static final long JOIN_TIMEOUT_MS = 5_000;
-    /** Wall time a continuous task waits after a cycle that threw, before it is released again. */
-    static final long CONTINUOUS_ERROR_PAUSE_NS = 20_000_000L;
 
     private final Clock clock;
+    private final ClockWaiter waiter;
     private final List<TaskRuntime> runtimes;
     /** The same tasks as an array: the watchdog loops over it on every wake without an iterator. */
     private final TaskRuntime[] watched;
     private final Runnable stopAllRequest;
     private final ThreadSetup threadSetup;
+    private final FrameworkFaults faults;
+    private final int watchdogParty;
     private final List<Thread> threads = new ArrayList<>();
     private volatile boolean running;
     private Thread watchdog;
     /** The world time the watchdog sleeps until; task threads wake it for an earlier deadline. */
     private volatile long watchdogWakeNs = Long.MAX_VALUE;
 
-    ThreadedExecutor(Clock clock, List<TaskRuntime> runtimes, Runnable stopAllRequest, ThreadSetup threadSetup) {
+    ThreadedExecutor(Clock clock, ClockWaiter waiter, List<TaskRuntime> runtimes, Runnable stopAllRequest,
+                     ThreadSetup threadSetup, FrameworkFaults faults) {
         this.clock = clock;
+        this.waiter = waiter;
         this.runtimes = runtimes;
         this.watched = runtimes.toArray(new TaskRuntime[0]);
         this.stopAllRequest = stopAllRequest;
         this.threadSetup = threadSetup;
+        this.faults = faults;
+        this.watchdogParty = runtimes.size();
+    }
+
+    /** @return the waiter its threads wait with (tests on a manual clock step through it) */
+    ClockWaiter waiter() {
+        return waiter;
     }
 
     /**
@@ -56,7 +68,7 @@ final class ThreadedExecutor implements Monitor.Executor {
     static int[] rateMonotonicRanks(List<TaskRuntime> runtimes) {
         List<TaskRuntime> order = new ArrayList<>(runtimes);
         // Stable sort: equal periods keep registration order; tasks without a period go last.
-        order.sort(java.util.Comparator.comparingLong(r -> r.isPeriodic() ? r.periodNs() : Long.MAX_VALUE));
+        order.sort(Comparator.comparingLong(r -> r.isPeriodic() ? r.periodNs() : Long.MAX_VALUE));
         int[] ranks = new int[runtimes.size()];
         for (int rank = 0; rank < order.size(); rank++) {
             ranks[order.get(rank).index()] = rank;
@@ -72,6 +84,7 @@ final class ThreadedExecutor implements Monitor.Executor {
         watchdog = new Thread(this::watch, "rtaware-monitor");
         watchdog.setDaemon(true);
         watchdog.setPriority(Thread.MAX_PRIORITY);
+        waiter.register(watchdogParty, watchdog);
         int[] ranks = rateMonotonicRanks(runtimes);
         for (TaskRuntime runtime : runtimes) {
             runtime.onCycleStart(() -> wakeWatchdogFor(runtime));
@@ -80,6 +93,7 @@ final class ThreadedExecutor implements Monitor.Executor {
             thread.setDaemon(true);
             thread.setPriority(runtime.isPeriodic()
                     ? Math.max(Thread.NORM_PRIORITY, Thread.MAX_PRIORITY - 1 - rank) : Thread.NORM_PRIORITY);
+            waiter.register(runtime.index(), thread);
             threads.add(thread);
         }
         threads.forEach(Thread::start);
@@ -88,7 +102,7 @@ final class ThreadedExecutor implements Monitor.Executor {
         awaitUninterruptibly(ready);
         long startNs = clock.nanos();
         for (TaskRuntime runtime : runtimes) {
-            runtime.begin(startNs);
+            runtime.begin(startNs, stopAllRequest, waiter.zeroCycleSpacingNs());
         }
         watchdog.start();
         go.countDown();
@@ -111,63 +125,37 @@ final class ThreadedExecutor implements Monitor.Executor {
     }
 
     private void runTask(TaskRuntime runtime, int rank, CountDownLatch ready, CountDownLatch go) {
+        int party = runtime.index();
         try {
             if (threadSetup != null) {
                 threadSetup.onTaskThreadStart(runtime, rank, runtimes.size());
             }
-        } catch (RuntimeException e) {
-            System.err.println("rtaware: thread setup failed for task '" + runtime.name() + "': " + e);
+        } catch (Throwable t) {
+            faults.report("thread setup of task '" + runtime.name() + "'", t);
         } finally {
             ready.countDown();
         }
         awaitUninterruptibly(go);
         try {
-            switch (runtime.schedule().kind()) {
-                case "periodic" -> runPeriodic(runtime);
-                case "continuous" -> runContinuous(runtime);
-                default -> runOnce(runtime);
+            while (running) {
+                long due = runtime.nextReleaseNs();
+                if (due == TaskRuntime.NEVER || !waitUntil(party, due)) {
+                    return;
+                }
+                try {
+                    runtime.runCycle();
+                } catch (VirtualMachineError fatal) {
+                    throw fatal;
+                } catch (Throwable fault) {
+                    faults.report("executor, cycle of task '" + runtime.name() + "'", fault);
+                    runtime.recoverAfterFault(clock.nanos());
+                }
             }
         } catch (VirtualMachineError fatal) {
-            System.err.println("rtaware: task '" + runtime.name() + "' hit a fatal VM error: " + fatal);
+            faults.report("task '" + runtime.name() + "' (fatal VM error: stopping every task)", fatal);
             stopAllRequest.run();
-        }
-    }
-
-    private void runPeriodic(TaskRuntime runtime) {
-        long k = 0;
-        while (running) {
-            long releaseNs = runtime.releaseTimeNs(k);
-            runtime.pending(k);
-            if (!waitUntil(releaseNs)) {
-                return;
-            }
-            TaskRuntime.Outcome outcome = runtime.runCycle(k, releaseNs);
-            if (!handle(runtime, outcome)) {
-                return;
-            }
-            k = runtime.nextIndexAfter(k, runtime.lastCycleEndNs());
-        }
-    }
-
-    private void runContinuous(TaskRuntime runtime) {
-        long k = 0;
-        while (running) {
-            TaskRuntime.Outcome outcome = runtime.runCycle(k++, clock.nanos());
-            if (!handle(runtime, outcome)) {
-                return;
-            }
-            if (runtime.lastCycleFailed()) {
-                // A continuous task that keeps throwing (a lost connection, say) would otherwise
-                // spin a core and flood the error count; each failure pauses it briefly.
-                LockSupport.parkNanos(CONTINUOUS_ERROR_PAUSE_NS);
-            }
-        }
-    }
-
-    private void runOnce(TaskRuntime runtime) {
-        long releaseNs = runtime.releaseTimeNs(0);
-        if (waitUntil(releaseNs) && handle(runtime, runtime.runCycle(0, releaseNs))) {
-            runtime.setState(TaskState.FINISHED, clock.nanos());
+        } finally {
+            waiter.done(party);
         }
     }
 
@@ -178,35 +166,18 @@ final class ThreadedExecutor implements Monitor.Executor {
      */
     private void wakeWatchdogFor(TaskRuntime runtime) {
         if (runtime.runningDeadlineNs() < watchdogWakeNs) {
+            waiter.busy(watchdogParty);
             LockSupport.unpark(watchdog);
         }
     }
 
-    /** @return true if the task goes on */
-    private boolean handle(TaskRuntime runtime, TaskRuntime.Outcome outcome) {
-        switch (outcome) {
-            case DISABLE -> {
-                runtime.setState(TaskState.DISABLED, clock.nanos());
-                return false;
-            }
-            case STOP_ALL -> {
-                stopAllRequest.run();
-                return false;
-            }
-            default -> {
-                return true;
-            }
-        }
-    }
-
-    /** Parks until the world clock reaches {@code targetNs}; false if stopped meanwhile. */
-    private boolean waitUntil(long targetNs) {
+    /** Waits until the world clock reaches {@code targetNs}; false if stopped meanwhile. */
+    private boolean waitUntil(int party, long targetNs) {
         while (running) {
-            long remainingNs = targetNs - clock.nanos();
-            if (remainingNs <= 0) {
+            if (clock.nanos() >= targetNs) {
                 return true;
             }
-            LockSupport.parkNanos(clock.toWallNanos(remainingNs));
+            waiter.park(party, targetNs);
         }
         return false;
     }
@@ -218,24 +189,28 @@ final class ThreadedExecutor implements Monitor.Executor {
      * scan per period, not one per cycle start.
      */
     private void watch() {
-        while (running) {
-            long now = clock.nanos();
-            long earliest = Long.MAX_VALUE;
-            for (TaskRuntime runtime : watched) {
-                runtime.checkDeadline(now);
-                long deadline = runtime.pendingDeadlineNs();
-                // A deadline already past belongs to a task between cycles, about to publish its next.
-                if (deadline > now && deadline < earliest) {
-                    earliest = deadline;
+        try {
+            while (running) {
+                long earliest = Long.MAX_VALUE;
+                try {
+                    long now = clock.nanos();
+                    for (TaskRuntime runtime : watched) {
+                        runtime.checkDeadline(now);
+                        long deadline = runtime.watchDeadlineNs();
+                        // A deadline already past belongs to a task between cycles, about to publish its next.
+                        if (deadline > now && deadline < earliest) {
+                            earliest = deadline;
+                        }
+                    }
+                } catch (Throwable fault) {
+                    faults.report("watchdog", fault);
                 }
-            }
-            watchdogWakeNs = earliest;
-            long remaining = earliest == Long.MAX_VALUE ? TimeUnit.MILLISECONDS.toNanos(100)
-                    : clock.toWallNanos(earliest - clock.nanos()) + 1_000;
-            if (remaining > 0) {
+                watchdogWakeNs = earliest;
                 // Wake just after the deadline: a miss is a cycle still running past it.
-                LockSupport.parkNanos(remaining);
+                waiter.park(watchdogParty, earliest == Long.MAX_VALUE ? Long.MAX_VALUE : earliest + 1);
             }
+        } finally {
+            waiter.done(watchdogParty);
         }
     }
 
@@ -270,5 +245,6 @@ final class ThreadedExecutor implements Monitor.Executor {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
+        waiter.close();
     }
 }

@@ -12,9 +12,18 @@ import java.util.List;
  * @param missesTotalPct misses over all tasks' releases, percent
  * @param tasks per-task timing, in registration order
  * @param data per-key feed statistics, sorted by key name
+ * @param frameworkErrors faults on the framework's side up to the report (listeners, the trace
+ *     recorder, thread setup, executors), each contained: see
+ *     {@code io.rtaware.core.monitor.FrameworkErrorHandler}
  */
 public record Report(String schema, double timeScale, double durationS, double missesTotalPct,
-                     List<TaskReport> tasks, List<DataReport> data) {
+                     List<TaskReport> tasks, List<DataReport> data, long frameworkErrors) {
+
+    /** A report without framework faults (for reports built outside a monitor). */
+    public Report(String schema, double timeScale, double durationS, double missesTotalPct,
+                  List<TaskReport> tasks, List<DataReport> data) {
+        this(schema, timeScale, durationS, missesTotalPct, tasks, data, 0);
+    }
 
     /** The schema identifier written in every report. */
     public static final String SCHEMA = "rtaware.report/1";

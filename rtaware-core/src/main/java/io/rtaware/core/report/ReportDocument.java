@@ -113,5 +113,6 @@ public final class ReportDocument {
     }
 
     private static final java.util.Set<String> CORE_FIELDS =
-            java.util.Set.of("schema", "time_scale", "duration_s", "misses_total_pct", "tasks", "data");
+            java.util.Set.of("schema", "time_scale", "duration_s", "misses_total_pct", "tasks", "data",
+                    "framework_errors");
 }

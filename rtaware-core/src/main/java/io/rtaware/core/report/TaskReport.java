@@ -17,9 +17,19 @@ package io.rtaware.core.report;
  * @param expiredReads reads of an input older than its declared maximum age (one per input per cycle)
  * @param execUs execution time per cycle, microseconds
  * @param latenessUs start of the cycle minus its scheduled release, microseconds
+ * @param listenerErrors faults of listeners (and the trace recorder) on this task's events,
+ *     contained by the monitor: the task went on regardless
  */
 public record TaskReport(String name, String schedule, Double periodMs, Double deadlineMs,
                          long releases, long runs, long misses, double missPct, long skipped,
                          long staleRuns, long errors, long expiredReads,
-                         Percentiles execUs, Percentiles latenessUs) {
+                         Percentiles execUs, Percentiles latenessUs, long listenerErrors) {
+
+    /** A report without listener faults (for reports built outside a monitor). */
+    public TaskReport(String name, String schedule, Double periodMs, Double deadlineMs, long releases, long runs,
+                      long misses, double missPct, long skipped, long staleRuns, long errors, long expiredReads,
+                      Percentiles execUs, Percentiles latenessUs) {
+        this(name, schedule, periodMs, deadlineMs, releases, runs, misses, missPct, skipped, staleRuns, errors,
+                expiredReads, execUs, latenessUs, 0);
+    }
 }

@@ -1,5 +1,6 @@
 package io.rtaware.core.monitor;
 
+import static io.rtaware.core.Ms.ms;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -9,7 +10,7 @@ import io.rtaware.core.report.Report;
 import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.TaskSpec;
-import io.rtaware.core.time.Clock;
+import io.rtaware.core.time.ManualClock;
 import io.rtaware.core.time.SystemClock;
 import java.time.Duration;
 import java.util.concurrent.CountDownLatch;
@@ -20,16 +21,17 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
- * Real threads: tolerant checks that the threaded executor works. Each rule is also tested
- * exactly on the manual clock; these tests only prove the wiring.
+ * The threaded executor with its real threads, on a manual clock stepped by the test (see
+ * {@link SteppedThreads}): the same exact counts as the step executor, because both follow the
+ * one rulebook in {@link TaskRuntime}. One test on the wall clock proves the real waiting.
  */
 @Tag("threads")
 class ThreadedExecutorTest {
 
-    private final Clock clock = new SystemClock();
+    private final ManualClock clock = new ManualClock();
 
     @Test
-    void periodicTaskRunsRoughlyOncePerPeriod() throws InterruptedException {
+    void periodicTaskRunsOncePerPeriodOnItsOwnThread() {
         AtomicInteger runs = new AtomicInteger();
         AtomicBoolean rightThread = new AtomicBoolean(true);
         Monitor monitor = Monitor.builder(clock).task("tick", Schedule.periodic(Duration.ofMillis(10)), FnTask.of(now -> {
@@ -39,89 +41,136 @@ class ThreadedExecutorTest {
             }
         })).build();
         monitor.start();
-        Thread.sleep(300);
+        new SteppedThreads(monitor, clock).runUntil(ms(300));
         Report report = monitor.stop();
 
-        int n = runs.get();
-        assertTrue(n >= 15 && n <= 32, "about 30 runs of a 10 ms task in ~300 ms, got " + n);
-        assertEquals(n, report.task("tick").runs(), "the report counts every run");
-        assertEquals(report.task("tick").releases(), report.task("tick").runs() + report.task("tick").skipped(),
-                "releases = runs + skipped");
+        assertEquals(30, runs.get(), "releases at 0, 10, ..., 290 ms");
+        assertEquals(30, report.task("tick").releases());
+        assertEquals(30, report.task("tick").runs());
+        assertEquals(0, report.task("tick").misses());
+        assertEquals(0.0, report.task("tick").latenessUs().max(), "each release ran at its instant");
         assertTrue(rightThread.get(), "the task runs on its own thread named rtaware-<task>");
     }
 
     @Test
-    void aContinuousTaskThatKeepsThrowingIsPausedNotSpun() throws InterruptedException {
+    void anOverrunSkipsToTheNextGridPointExactlyAsOnTheStepExecutor() {
+        AtomicInteger cycle = new AtomicInteger();
+        Monitor monitor = Monitor.builder(clock).task("slow", Schedule.periodic(ms(10)), FnTask.of(now -> {
+            if (cycle.getAndIncrement() == 2) {
+                clock.advance(ms(25)); // release 2 at 20 ms ends at 45 ms: releases 3 and 4 are skipped
+            }
+        })).build();
+        monitor.start();
+        new SteppedThreads(monitor, clock).runUntil(ms(100));
+        Report report = monitor.stop();
+
+        assertEquals(10, report.task("slow").releases(), "0..90 ms");
+        assertEquals(8, report.task("slow").runs());
+        assertEquals(2, report.task("slow").skipped());
+        assertEquals(3, report.task("slow").misses(), "the late cycle plus two skipped releases");
+        assertEquals(0.0, report.task("slow").latenessUs().max(), "the first run after the overrun, release 5 at"
+                + " 50 ms, is on time: no catch-up of the skipped releases");
+    }
+
+    @Test
+    void aContinuousTaskThatKeepsThrowingIsPausedTwentyMillisecondsOfWorldTime() {
         Monitor monitor = Monitor.builder(clock).task("broken", Schedule.continuous(), FnTask.of(now -> {
             throw new IllegalStateException("connection lost");
         })).build();
         monitor.start();
-        Thread.sleep(300);
+        new SteppedThreads(monitor, clock).runUntil(ms(300));
         Report report = monitor.stop();
 
-        long errors = report.task("broken").errors();
-        // Without the pause this loop ran millions of cycles in a few seconds; with a 20 ms pause,
-        // about 15 fit in 300 ms. The bound leaves room for a slow machine either way.
-        assertTrue(errors >= 2 && errors <= 100, "a failing continuous task is paused after each error, got "
-                + errors + " errors in ~300 ms");
-        assertEquals(report.task("broken").runs(), errors, "every run failed and was counted");
+        assertEquals(15, report.task("broken").errors(), "one failing cycle every 20 ms: 0, 20, ..., 280 ms");
+        assertEquals(15, report.task("broken").runs());
+    }
+
+    @Test
+    void aContinuousTaskThatTakesNoTimeIsReleasedEveryIdleStep() {
+        Monitor monitor = Monitor.builder(clock).task("spin", Schedule.continuous(), FnTask.of(now -> { })).build();
+        monitor.start();
+        new SteppedThreads(monitor, clock).runUntil(ms(50));
+        Report report = monitor.stop();
+
+        assertEquals(50, report.task("spin").runs(), "released every 1 ms idle step, as on the step executor");
     }
 
     @Test
     void stopAllFromATaskThreadTerminatesTheMonitor() throws InterruptedException {
         CountDownLatch handled = new CountDownLatch(1);
         Monitor monitor = Monitor.builder(clock)
-                .task(new TaskSpec("bomb", Schedule.periodic(Duration.ofMillis(5)), ErrorPolicy.STOP_ALL, FnTask.of(now -> {
+                .task(new TaskSpec("bomb", Schedule.periodic(ms(5)), ErrorPolicy.STOP_ALL, FnTask.of(now -> {
                     throw new IllegalStateException("boom");
                 })))
-                .task("bystander", Schedule.periodic(Duration.ofMillis(5)), FnTask.of(now -> { })).build();
+                .task("bystander", Schedule.periodic(ms(5)), FnTask.of(now -> { })).build();
         monitor.onTermination(r -> handled.countDown());
         monitor.start();
 
         assertTrue(monitor.awaitTermination(Duration.ofSeconds(10)), "STOP_ALL terminates the monitor");
         assertTrue(handled.await(10, TimeUnit.SECONDS), "the termination handler ran");
         assertEquals(1, monitor.report().task("bomb").errors(), "one error: the task was not released again");
+        assertEquals(1, monitor.report().task("bystander").runs(), "the clock never moved: release 0 only");
     }
 
     @Test
-    void stopIsIdempotentAndReturnsTheReport() throws InterruptedException {
+    void stopIsIdempotentAndReturnsTheReport() {
         FnTask task = FnTask.of(now -> { });
         Monitor monitor = Monitor.builder(clock).task("t", Schedule.continuous(), task).build();
         monitor.start();
-        Thread.sleep(20);
+        new SteppedThreads(monitor, clock).runUntil(ms(3));
         Report first = monitor.stop();
         Report second = monitor.stop();
         assertSame(first, second, "stop() returns the same report every time");
         assertEquals(1, task.terminations, "terminate() once");
-        assertTrue(first.task("t").runs() > 0, "the continuous task ran");
+        assertEquals(3, first.task("t").runs(), "at 0, 1 and 2 ms");
     }
 
     @Test
-    void watchdogReportsAMissWhileTheTaskIsStillRunning() throws InterruptedException {
+    void watchdogReportsAMissAtTheDeadlineWhileTheTaskIsStillRunning() throws InterruptedException {
         CountDownLatch missReported = new CountDownLatch(1);
         AtomicBoolean sawItWhileRunning = new AtomicBoolean();
         AtomicBoolean stillRunningFlag = new AtomicBoolean();
+        long[] detectedNs = new long[1];
         AtomicInteger cycle = new AtomicInteger();
         MonitorListener listener = new MonitorListener() {
             @Override
-            public void onDeadlineMiss(TaskInfo task, long releaseNs, long deadlineNs, long detectedNs, boolean stillRunning) {
+            public void onDeadlineMiss(TaskInfo task, long releaseNs, long deadlineNs, long detectedAt,
+                                       boolean stillRunning) {
                 stillRunningFlag.set(stillRunning);
+                detectedNs[0] = detectedAt;
                 missReported.countDown();
             }
         };
         Monitor monitor = Monitor.builder(clock).listener(listener)
-                .task("stuck", Schedule.periodic(Duration.ofMillis(10)), FnTask.of(now -> {
+                .task("stuck", Schedule.periodic(ms(10)), FnTask.of(now -> {
                     if (cycle.getAndIncrement() == 0) {
+                        clock.advance(ms(12));
                         // Stay in the cycle until the watchdog has reported the miss (or give up).
                         sawItWhileRunning.set(missReported.await(10, TimeUnit.SECONDS));
                     }
                 })).build();
         monitor.start();
-        assertTrue(missReported.await(10, TimeUnit.SECONDS), "a miss is reported");
+        new SteppedThreads(monitor, clock).runUntil(ms(30));
         Report report = monitor.stop();
 
         assertTrue(sawItWhileRunning.get(), "the miss was reported while the cycle was still running");
         assertTrue(stillRunningFlag.get(), "reported with stillRunning = true");
-        assertTrue(report.task("stuck").misses() >= 1, "counted in the report");
+        assertEquals(ms(12), detectedNs[0], "detected at the advance that passed the deadline");
+        assertEquals(1, report.task("stuck").skipped(), "release 1 (10 ms) came due during the 12 ms cycle");
+        assertEquals(2, report.task("stuck").misses(), "the late cycle counted once, plus the skipped release");
+    }
+
+    @Test
+    void onTheWallClockTheTaskThreadsReallyWait() throws InterruptedException {
+        CountDownLatch threeRuns = new CountDownLatch(3);
+        Monitor monitor = Monitor.builder(new SystemClock())
+                .task("tick", Schedule.periodic(ms(10)), FnTask.of(now -> threeRuns.countDown())).build();
+        monitor.start();
+        assertTrue(threeRuns.await(10, TimeUnit.SECONDS), "three cycles ran");
+        Report report = monitor.stop();
+
+        assertTrue(report.task("tick").runs() >= 3);
+        assertEquals(report.task("tick").releases(), report.task("tick").runs() + report.task("tick").skipped(),
+                "releases = runs + skipped");
     }
 }

@@ -1,0 +1,45 @@
+package io.rtaware.core.monitor;
+
+import java.util.concurrent.atomic.AtomicLong;
+
+/**
+ * Which of a periodic task's cycles is running, shared by the task's thread and the watchdog so
+ * that each miss is reported exactly once: whoever claims a running cycle past its deadline
+ * (the watchdog at the deadline, or the task's thread when the cycle returns) reports it.
+ *
+ * <p>One atomic long: odd {@code 2k+1} while cycle k runs; even when none runs (a claim moves
+ * {@code 2k+1} to {@code 2k+2}). Thread-safe and allocation-free.
+ */
+final class CycleToken {
+
+    private final AtomicLong token = new AtomicLong(0);
+
+    /** Marks cycle {@code k} running (task thread). */
+    void start(long k) {
+        token.set(2 * k + 1);
+    }
+
+    /**
+     * Ends cycle {@code k} (task thread).
+     *
+     * @return true if the watchdog had not claimed it: a late end is then the caller's to report
+     */
+    boolean finish(long k) {
+        return token.compareAndSet(2 * k + 1, 2 * k + 2);
+    }
+
+    /** @return the index of the running cycle, or -1 if none runs */
+    long running() {
+        long t = token.get();
+        return (t & 1) == 1 ? (t - 1) >>> 1 : -1;
+    }
+
+    /**
+     * Claims cycle {@code k} for the watchdog if it is still the running one.
+     *
+     * @return true if claimed: the caller reports its miss
+     */
+    boolean claim(long k) {
+        return token.compareAndSet(2 * k + 1, 2 * k + 2);
+    }
+}

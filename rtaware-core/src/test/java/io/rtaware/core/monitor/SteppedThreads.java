@@ -1,0 +1,32 @@
+package io.rtaware.core.monitor;
+
+import io.rtaware.core.time.ManualClock;
+
+/**
+ * Drives a monitor started with {@link Monitor#start()} on a {@link ManualClock}: its real task
+ * threads and watchdog wait on the manual clock, and this steps the clock from one moment
+ * something is due to the next, waiting each time until every thread has reacted and waits
+ * again (as WPILib steps a TimedRobot on paused time). Exact, no sleeps.
+ */
+final class SteppedThreads {
+
+    private final ManualClock clock;
+    private final ManualClockWaiter waiter;
+
+    SteppedThreads(Monitor monitor, ManualClock clock) {
+        this.clock = clock;
+        this.waiter = (ManualClockWaiter) ((ThreadedExecutor) monitor.executor()).waiter();
+    }
+
+    /** Runs every release before {@code endNs}; the clock stays at the last moment something was due. */
+    void runUntil(long endNs) {
+        while (true) {
+            waiter.awaitIdle();
+            long next = waiter.nextWakeNs();
+            if (next >= endNs) {
+                return;
+            }
+            clock.advanceTo(next);
+        }
+    }
+}
