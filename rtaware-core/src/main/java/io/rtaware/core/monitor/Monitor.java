@@ -116,6 +116,14 @@ public final class Monitor {
     }
 
     /**
+     * @return the keys by key index (see {@link MonitorListener#onCommitValue}), in the order
+     *     of {@link #keyNames()}
+     */
+    public List<Key<?>> keys() {
+        return variables.stream().<Key<?>>map(StateVariable::key).toList();
+    }
+
+    /**
      * @param task a task's name
      * @return its live counters
      * @throws IllegalArgumentException naming the task and the known tasks if there is none
