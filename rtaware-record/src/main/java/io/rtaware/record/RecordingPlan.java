@@ -26,8 +26,9 @@ public final class RecordingPlan {
     private final Map<String, String> frames = new HashMap<>();
     private final Map<String, String> metadata = new HashMap<>();
     private Compression compression = Compression.ZSTD;
-    private int valueSlots = 32;
-    private int cycleSlots = 4096;
+    private int valueSlots = 1024;
+    private long valueBytesPerKey = 4L << 20;
+    private int cycleSlots = 16384;
     private int eventSlots = 4096;
 
     /**
@@ -88,7 +89,8 @@ public final class RecordingPlan {
     }
 
     /**
-     * @param commitsPerKey slots of each key's commit ring
+     * @param commitsPerKey most slots of each key's commit ring (fewer for large values: see
+     *     {@link #valueBytesPerKey()})
      * @param cyclesPerTask slots of each task's cycle ring
      * @param events slots of the event ring
      * @return this plan
@@ -105,6 +107,14 @@ public final class RecordingPlan {
 
     int valueSlots() {
         return valueSlots;
+    }
+
+    /**
+     * @return memory a key's commit ring may take: a key whose value takes more than this
+     *     divided by {@link #slots}'s count gets fewer slots (at least 8)
+     */
+    long valueBytesPerKey() {
+        return valueBytesPerKey;
     }
 
     int cycleSlots() {

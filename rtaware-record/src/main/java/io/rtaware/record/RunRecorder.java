@@ -4,6 +4,7 @@ import io.rtaware.core.data.Key;
 import io.rtaware.core.data.StateValue;
 import io.rtaware.record.encode.ByteBuf;
 import io.rtaware.record.encode.JsonStateCodec;
+import io.rtaware.record.encode.StateFields;
 import io.rtaware.record.encode.TimingTypes;
 import io.rtaware.record.mcap.McapWriter;
 import io.rtaware.ros2msg.Ros2Codec;
@@ -315,9 +316,13 @@ public final class RunRecorder {
         final String frame;
 
         KeyRing(Key<?> key, RecordingPlan plan) throws IOException {
-            int n = plan.valueSlots();
+            StateValue<?> first = key.newBuffer();
+            long valueBytes = StateFields.of(key.type()).estimateBytes(first);
+            int n = (int) Math.max(Math.min(8, plan.valueSlots()),
+                    Math.min(plan.valueSlots(), plan.valueBytesPerKey() / Math.max(1, valueBytes)));
             slots = new StateValue<?>[n];
-            for (int i = 0; i < n; i++) {
+            slots[0] = first;
+            for (int i = 1; i < n; i++) {
                 slots[i] = key.newBuffer();
             }
             times = new long[n];

@@ -2,6 +2,7 @@ package io.rtaware.app.run;
 
 import io.rtaware.app.UserError;
 import io.rtaware.app.cli.CommandMonitor;
+import io.rtaware.app.cli.RecordOptions;
 import io.rtaware.app.live.LiveView;
 import io.rtaware.app.live.RunScene;
 import io.rtaware.core.monitor.ConsoleReporter;
@@ -13,6 +14,7 @@ import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.trace.TraceRecorder;
+import io.rtaware.record.RunRecorder;
 import io.rtaware.app.rt.RealtimeThreads;
 import io.rtaware.nav.NavConfig;
 import io.rtaware.nav.NavController;
@@ -70,6 +72,7 @@ public final class RobotRun {
     private final AtomicLong stallEdges = new AtomicLong();
     private final PrintStream out;
     private final PrintStream err;
+    private RecordOptions record = new RecordOptions();
 
     /**
      * @param options what to run
@@ -80,6 +83,15 @@ public final class RobotRun {
         this.options = options;
         this.out = out;
         this.err = err;
+    }
+
+    /**
+     * @param recording the {@code --record} option
+     * @return this run
+     */
+    public RobotRun recording(RecordOptions recording) {
+        this.record = recording;
+        return this;
     }
 
     /**
@@ -151,6 +163,7 @@ public final class RobotRun {
         Monitor monitor = CommandMonitor.build(builder);
         ConsoleReporter console = CommandMonitor.console(monitor, options.quiet(), err);
         TraceRecorder trace = options.trace().attach(monitor);
+        RunRecorder recorder = record.attach(monitor, RunRecording.plan(scenario, options));
 
         AtomicReference<String> outcome = new AtomicReference<>();
         AtomicReference<String> reason = new AtomicReference<>();
@@ -170,6 +183,7 @@ public final class RobotRun {
             if (referee != null) {
                 referee.close();
             }
+            artifacts.section("recording", RecordOptions.finish(recorder, out, err));
             monitor.read(nav.keys().course(), course);
             long collisions = server != null ? server.withWorld(World::contactCount) : stallEdges.get();
             RunSection run = runSection(scenario, nav, course, referee, outcome.get(), reason.get(),
@@ -182,7 +196,7 @@ public final class RobotRun {
         Thread hook = monitor.installShutdownHook();
 
         // Connected before the start, so the first ground-truth sample is the pose at the start.
-        Referee.PoseSource truth = poseSource(host, port, monitor);
+        Referee.PoseSource truth = RunRecording.recordingGroundTruth(poseSource(host, port, monitor), recorder, clock);
         monitor.start();
         startNs[0] = clock.nanos();
         Referee referee = new Referee(clock, startNs[0], SAMPLE_PERIOD_NS, truth, () -> totalMisses(monitor));

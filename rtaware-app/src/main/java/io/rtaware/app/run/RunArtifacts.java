@@ -16,8 +16,10 @@ import java.io.PrintStream;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 
 /**
  * Writes a run's output folder: {@code report.json} (core report plus the {@code run} section),
@@ -31,6 +33,7 @@ final class RunArtifacts {
     private final Scenario scenario;
     private final NavConfig navConfig;
     private final PrintStream out;
+    private final Map<String, Object> sections = new LinkedHashMap<>();
 
     RunArtifacts(RunOptions options, Scenario scenario, NavConfig navConfig, PrintStream out) {
         this.options = options;
@@ -39,10 +42,23 @@ final class RunArtifacts {
         this.out = out;
     }
 
+    /**
+     * Adds a section to {@code report.json} (null values are left out).
+     *
+     * @param name the section's key
+     * @param value its content
+     */
+    void section(String name, Object value) {
+        if (value != null) {
+            sections.put(name, value);
+        }
+    }
+
     void write(Report report, RunSection run, Referee referee, OccupancyGrid builtMap, OccupancyMap worldMap) {
         String table = SummaryTable.format(report);
         String runText = runText(run);
         ReportDocument doc = new ReportDocument(report).section("run", run);
+        sections.forEach(doc::section);
         String analysis = ReportSections.enrich(doc, Runtime.getRuntime().availableProcessors()).text();
         out.println();
         out.print(table);

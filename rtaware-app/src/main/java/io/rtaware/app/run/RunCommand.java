@@ -2,6 +2,7 @@ package io.rtaware.app.run;
 
 import io.rtaware.app.UserError;
 import io.rtaware.app.cli.TimeScaleConverter;
+import io.rtaware.app.cli.RecordOptions;
 import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.live.LiveMixin;
 import java.io.IOException;
@@ -66,6 +67,9 @@ public final class RunCommand implements Callable<Integer> {
     @Mixin
     TraceOptions trace;
 
+    @Mixin
+    RecordOptions record;
+
     @Option(names = "--realtime",
             description = "SCHED_FIFO task threads in rate-monotonic order and 1 ns timer slack (Linux, root or CAP_SYS_NICE); one line and normal threads otherwise.")
     boolean realtime;
@@ -75,7 +79,7 @@ public final class RunCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        return new RobotRun(options(), System.out, System.err).execute();
+        return new RobotRun(options(), System.out, System.err).recording(record).execute();
     }
 
     RunOptions options() {

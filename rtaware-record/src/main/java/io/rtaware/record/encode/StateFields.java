@@ -95,6 +95,38 @@ public final class StateFields {
     }
 
     /**
+     * @param value an instance
+     * @return roughly how many bytes its recorded fields take (8 per scalar, arrays by length)
+     */
+    public long estimateBytes(Object value) {
+        long bytes = 16;
+        try {
+            for (Field f : fields) {
+                if (f.getType().isArray()) {
+                    Object array = f.get(value);
+                    bytes += array == null ? 0 : (long) java.lang.reflect.Array.getLength(array) * elementBytes(f.getType());
+                } else {
+                    bytes += 8;
+                }
+            }
+        } catch (IllegalAccessException e) {
+            throw new IllegalStateException("field of " + type.getName() + " not readable", e);
+        }
+        return bytes;
+    }
+
+    private static int elementBytes(Class<?> arrayType) {
+        Class<?> c = arrayType.getComponentType();
+        if (c == double.class || c == long.class) {
+            return 8;
+        }
+        if (c == float.class || c == int.class) {
+            return 4;
+        }
+        return c == short.class || c == char.class ? 2 : 1;
+    }
+
+    /**
      * Sets the private {@code count} field (replay).
      *
      * @param value an instance
