@@ -26,7 +26,7 @@ public final class RecordingPlan {
     private final Map<String, String> frames = new HashMap<>();
     private final Map<String, String> metadata = new HashMap<>();
     private Compression compression = Compression.ZSTD;
-    private int valueSlots = 1024;
+    private int valueSlots = 8192;
     private long valueBytesPerKey = 4L << 20;
     private int cycleSlots = 16384;
     private int eventSlots = 4096;

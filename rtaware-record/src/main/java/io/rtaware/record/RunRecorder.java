@@ -66,7 +66,7 @@ public final class RunRecorder {
     private static final String[] EVENT_KINDS = {"deadline_miss", "expired_read", "period_change", "task_error"};
 
     private static final long IDLE_PARK_NS = 1_000_000;
-    private static final int CDR_CAPACITY = 8 << 20;
+    private static final int CDR_CAPACITY = 2 << 20;
 
     private final Path file;
     private final McapWriter writer;
