@@ -100,6 +100,31 @@ class RecordRunTest {
     }
 
     @Test
+    void inspectSummarizesTheRecordingAndPlotsLateness() throws Exception {
+        Path png = dir.resolve("plots/lateness.png");
+        PrintStream saved = System.out;
+        ByteArrayOutputStream stdout = new ByteArrayOutputStream();
+        int status;
+        try {
+            System.setOut(new PrintStream(stdout, true, StandardCharsets.UTF_8));
+            status = RtawareCli.execute("inspect", recording.toString(), "--plot", png.toString());
+        } finally {
+            System.setOut(saved);
+        }
+        String text = stdout.toString(StandardCharsets.UTF_8);
+        assertEquals(0, status, text);
+        assertTrue(text.contains("sensor_msgs/msg/LaserScan"), text);
+        assertTrue(text.contains("task timing"), text);
+        long plannerRuns = new ObjectMapper().readTree(out.resolve("report.json").toFile()).path("tasks").findValues("name")
+                .stream().filter(n -> n.asText().equals("planner")).count();
+        assertEquals(1, plannerRuns);
+        assertTrue(text.lines().anyMatch(l -> l.startsWith("planner ")), "a timing row per task:\n" + text);
+        assertTrue(Files.size(png) > 1000, "plot written");
+        assertEquals(2, RtawareCli.execute("inspect", out.resolve("report.json").toString()), "not MCAP: user error");
+        assertEquals(2, RtawareCli.execute("inspect", dir.resolve("none.mcap").toString()), "missing: user error");
+    }
+
+    @Test
     void independentPythonReadersDecodeEveryRos2MessageAndAgreeWithTheRun() throws Exception {
         String python = System.getenv("RTAWARE_PEER_PYTHON");
         if (python == null || python.isBlank()) {
