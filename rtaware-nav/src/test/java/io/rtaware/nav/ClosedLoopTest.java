@@ -1,13 +1,14 @@
 package io.rtaware.nav;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.TaskSpec;
+import io.rtaware.core.testing.TaskHarness;
 import io.rtaware.nav.map.PgmMapWriter;
 import io.rtaware.nav.task.PositionMediatorTask;
-import io.rtaware.nav.testing.FakeStore;
 import io.rtaware.nav.testing.SimRoom;
 import io.rtaware.robot.geometry.Point2d;
 import io.rtaware.robot.msg.CourseStatus;
@@ -52,13 +53,15 @@ class ClosedLoopTest {
                 .waypoints(List.of(new Point2d(5.2, 2.0), new Point2d(3.0, 3.4), new Point2d(0.8, 2.0)))
                 .build();
         NavController nav = new NavController(config);
-        FakeStore store = new FakeStore();
-        List<FakeStore.Bound> bound = new ArrayList<>();
+        TaskHarness.Builder harness = TaskHarness.builder().input(RobotKeys.ODOMETRY).input(RobotKeys.LASER);
+        List<String> names = new ArrayList<>();
         List<Long> periods = new ArrayList<>();
         for (TaskSpec spec : nav.taskSpecs()) {
-            bound.add(store.bind(spec.name(), spec.task()));
+            harness.task(spec.name(), spec.task());
+            names.add(spec.name());
             periods.add(((Schedule.Periodic) spec.schedule()).periodNs());
         }
+        TaskHarness h = harness.build();
         LaserScan scan = new LaserScan(SimRoom.BEAMS);
         Odometry odom = new Odometry();
         long limitNs = 400_000_000_000L;
@@ -66,28 +69,26 @@ class ClosedLoopTest {
         boolean done = false;
         while (now < limitNs && !done) {
             room.odometry(odom);
-            store.write(RobotKeys.ODOMETRY, odom, now);
+            h.publish(RobotKeys.ODOMETRY, odom, now);
             if (now % LASER_PERIOD_NS == 0) {
                 room.scan(scan);
-                store.write(RobotKeys.LASER, scan, now);
+                h.publish(RobotKeys.LASER, scan, now);
             }
-            for (int i = 0; i < bound.size(); i++) {
+            for (int i = 0; i < names.size(); i++) {
                 if (now % periods.get(i) == 0) {
-                    bound.get(i).cycle(now);
+                    assertNull(h.cycle(names.get(i), now), "cycle of " + names.get(i));
                 }
             }
-            VelocityCommand cmd = store.read(RobotKeys.MOTOR);
+            VelocityCommand cmd = h.read(RobotKeys.MOTOR);
             assertTrue(Math.abs(cmd.vxMps) <= config.topSpeedMps() + 1e-9, "speed within the top speed");
             assertTrue(Math.abs(cmd.omegaRadPerSec) <= config.maxOmegaRadPerSec() + 1e-9, "turn rate within limit");
             room.step(cmd.vxMps, cmd.omegaRadPerSec, STEP_NS / 1e9);
-            CourseStatus course = store.read(nav.keys().course());
+            CourseStatus course = h.read(nav.keys().course());
             done = course.done;
             now += STEP_NS;
         }
-        for (TaskSpec spec : nav.taskSpecs()) {
-            spec.task().terminate();
-        }
-        CourseStatus course = store.read(nav.keys().course());
+        h.stop();
+        CourseStatus course = h.read(nav.keys().course());
         assertTrue(course.done, "course done within the limit; reached " + course.waypointsReached
                 + " at " + room.xM + "," + room.yM);
         assertEquals(3, course.waypointsReached);

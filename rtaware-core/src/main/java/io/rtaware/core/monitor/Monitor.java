@@ -1,30 +1,20 @@
 package io.rtaware.core.monitor;
 
 import io.rtaware.core.data.FeedStats;
-import io.rtaware.core.data.Input;
 import io.rtaware.core.data.Key;
-import io.rtaware.core.data.Output;
 import io.rtaware.core.data.StateValue;
-import io.rtaware.core.data.StateVariable;
-import io.rtaware.core.report.DataReport;
 import io.rtaware.core.report.Report;
-import io.rtaware.core.report.TaskReport;
 import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.Task;
-import io.rtaware.core.task.TaskSetup;
 import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Clock;
-import io.rtaware.core.time.Durations;
 import io.rtaware.core.time.ManualClock;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collections;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Objects;
-import java.util.TreeMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -50,11 +40,7 @@ public final class Monitor {
 
     private final Clock clock;
     private final List<TaskRuntime> runtimes;
-    private final List<StateVariable<?>> variables;
-    private final Map<String, String> producers;
-    private final Map<String, List<String>> consumers;
-    private final List<String> keyNames;
-    private final Map<String, StateVariable<?>> variablesByName;
+    private final DataGraph graph;
     private final List<Consumer<Report>> terminationHandlers = new CopyOnWriteArrayList<>();
     private final List<MonitorListener> listeners;
     private final ThreadSetup threadSetup;
@@ -70,23 +56,15 @@ public final class Monitor {
     /** Set once every task thread has returned: their own state may then be read. */
     private volatile boolean tasksStopped;
 
-    private Monitor(Clock clock, List<TaskRuntime> runtimes, List<StateVariable<?>> variables,
-                    Map<String, String> producers, Map<String, List<String>> consumers,
-                    List<MonitorListener> listeners, ThreadSetup threadSetup, ListenerFanOut events,
-                    FrameworkFaults faults) {
+    private Monitor(Clock clock, List<TaskRuntime> runtimes, DataGraph graph, List<MonitorListener> listeners,
+                    ThreadSetup threadSetup, ListenerFanOut events, FrameworkFaults faults) {
         this.clock = clock;
+        this.runtimes = runtimes;
+        this.graph = graph;
+        this.listeners = new ArrayList<>(listeners);
+        this.threadSetup = threadSetup;
         this.events = events;
         this.faults = faults;
-        this.threadSetup = threadSetup;
-        this.listeners = new ArrayList<>(listeners);
-        this.runtimes = runtimes;
-        this.variables = variables;
-        this.producers = producers;
-        this.consumers = consumers;
-        this.keyNames = variables.stream().map(v -> v.key().name()).toList();
-        Map<String, StateVariable<?>> byName = new LinkedHashMap<>();
-        variables.forEach(v -> byName.put(v.key().name(), v));
-        this.variablesByName = Map.copyOf(byName);
     }
 
     /**
@@ -112,7 +90,7 @@ public final class Monitor {
      *     producing tasks declared them
      */
     public List<String> keyNames() {
-        return keyNames;
+        return graph.keyNames();
     }
 
     /**
@@ -145,15 +123,7 @@ public final class Monitor {
      * @return its live feed statistics
      */
     public FeedStats feed(String key) {
-        return variable(key).feedStats();
-    }
-
-    private StateVariable<?> variable(String key) {
-        StateVariable<?> variable = variablesByName.get(key);
-        if (variable == null) {
-            throw new IllegalArgumentException("no key '" + key + "'; keys: " + keyNames);
-        }
-        return variable;
+        return graph.variable(key).feedStats();
     }
 
     /**
@@ -168,16 +138,7 @@ public final class Monitor {
      * @throws IllegalArgumentException if no task produces the key or its type differs
      */
     public <T extends StateValue<T>> long read(Key<T> key, T target) {
-        StateVariable<?> variable = variable(key.name());
-        if (!variable.key().type().equals(key.type())) {
-            throw new IllegalArgumentException("key '" + key.name() + "' holds " + variable.key().type().getSimpleName()
-                    + ", not " + key.type().getSimpleName());
-        }
-        @SuppressWarnings("unchecked")
-        StateVariable<T> typed = (StateVariable<T>) variable;
-        StateVariable.ReadCursor cursor = new StateVariable.ReadCursor();
-        typed.copyTo(target, -1, cursor);
-        return cursor.generation();
+        return graph.read(key, target);
     }
 
     /**
@@ -186,8 +147,7 @@ public final class Monitor {
      * @throws IllegalArgumentException if no task produces it
      */
     public String producer(String key) {
-        variable(key);
-        return producers.get(key);
+        return graph.producer(key);
     }
 
     /**
@@ -196,8 +156,7 @@ public final class Monitor {
      * @throws IllegalArgumentException if no task produces it
      */
     public List<String> consumers(String key) {
-        producer(key);
-        return List.copyOf(consumers.getOrDefault(key, List.of()));
+        return graph.consumers(key);
     }
 
     /**
@@ -205,7 +164,7 @@ public final class Monitor {
      * @return true if some task produces it
      */
     public boolean hasKey(String key) {
-        return variablesByName.containsKey(key);
+        return graph.hasKey(key);
     }
 
     private TaskRuntime runtime(String task) {
@@ -345,7 +304,7 @@ public final class Monitor {
                 }
                 runtime.setState(TaskState.TERMINATED, stopNs);
             }
-            report = buildReport();
+            report = ReportBuilder.build(clock.timeScale(), stopNs - startNs, runtimes, graph, faults.count());
             for (Consumer<Report> handler : terminationHandlers) {
                 try {
                     handler.accept(report);
@@ -426,28 +385,6 @@ public final class Monitor {
     /** @return the final report, or null before termination */
     public Report report() {
         return report;
-    }
-
-    private Report buildReport() {
-        List<TaskReport> tasks = runtimes.stream().map(TaskRuntime::report).toList();
-        long releases = tasks.stream().mapToLong(TaskReport::releases).sum();
-        long misses = tasks.stream().mapToLong(TaskReport::misses).sum();
-        List<DataReport> data = new ArrayList<>();
-        for (StateVariable<?> variable : variables) {
-            String name = variable.key().name();
-            FeedStats feed = variable.feedStats();
-            data.add(new DataReport(name, producers.get(name), consumers.getOrDefault(name, List.of()),
-                    feed.commits(), TaskRuntime.round2(feed.rateHz()),
-                    new DataReport.Interval(ms(feed.minIntervalNs()), ms(feed.meanIntervalNs()),
-                            ms(feed.maxIntervalNs()))));
-        }
-        data.sort((a, b) -> a.name().compareTo(b.name()));
-        return new Report(Report.SCHEMA, clock.timeScale(), Math.round((stopNs - startNs) / 1e6) / 1e3,
-                releases == 0 ? 0.0 : TaskRuntime.round2(100.0 * misses / releases), tasks, data, faults.count());
-    }
-
-    private static double ms(double ns) {
-        return Math.round(ns / 1e3) / 1e3;
     }
 
     /**
@@ -546,203 +483,34 @@ public final class Monitor {
          * @throws ConfigurationException listing every violation found
          */
         public Monitor build() {
-            List<String> violations = new ArrayList<>();
-            Map<String, Integer> seen = new LinkedHashMap<>();
+            List<TaskDeclarations> declared = new ArrayList<>();
             for (TaskSpec spec : specs) {
-                if (seen.merge(spec.name(), 1, Integer::sum) == 2) {
-                    violations.add("task name '" + spec.name() + "' is used by more than one task; names must be unique");
-                }
-                if (spec.name().isBlank()) {
-                    violations.add("a task has an empty name");
-                }
-                checkSchedule(spec, violations);
-            }
-
-            List<Setup> setups = new ArrayList<>();
-            for (TaskSpec spec : specs) {
-                Setup setup = new Setup(spec, clock);
+                TaskDeclarations declarations = new TaskDeclarations(spec, clock);
                 try {
-                    spec.task().initialize(setup);
+                    spec.task().initialize(declarations);
                 } catch (Exception e) {
-                    violations.add("task '" + spec.name() + "' failed to initialize: " + e.getClass().getSimpleName()
-                            + (e.getMessage() == null ? "" : ": " + e.getMessage()));
+                    declarations.violations.add(0, "task '" + spec.name() + "' failed to initialize: "
+                            + e.getClass().getSimpleName() + (e.getMessage() == null ? "" : ": " + e.getMessage()));
                 }
-                setup.closed = true;
-                setup.violations.forEach(violations::add);
-                setups.add(setup);
+                declarations.close();
+                declared.add(declarations);
             }
+            DataGraph graph = GraphValidator.validateAndBind(declared);
 
-            // Declaration order: error messages list produced keys as the tasks declared them.
-            Map<String, Setup> producerOf = new LinkedHashMap<>();
-            Map<String, Key<?>> producedKey = new LinkedHashMap<>();
-            for (Setup setup : setups) {
-                for (OutputHandle<?> out : setup.outputs) {
-                    String key = out.key().name();
-                    Setup other = producerOf.get(key);
-                    if (other == setup) {
-                        continue; // declared twice by one task: already reported by its setup
-                    }
-                    if (other != null) {
-                        violations.add("key '" + key + "' is produced by tasks '" + other.spec.name() + "' and '"
-                                + setup.spec.name() + "'; a key has exactly one producer");
-                    } else {
-                        producerOf.put(key, setup);
-                        producedKey.put(key, out.key());
-                    }
-                }
-            }
-            Map<String, List<String>> consumersOf = new TreeMap<>();
-            for (Setup setup : setups) {
-                for (InputHandle<?> in : setup.inputs) {
-                    String key = in.key().name();
-                    Key<?> produced = producedKey.get(key);
-                    if (produced == null) {
-                        violations.add("task '" + setup.spec.name() + "' consumes '" + key
-                                + "' but no task produces it; produced keys: "
-                                + (producedKey.isEmpty() ? "(none)" : String.join(", ", producedKey.keySet())));
-                    } else if (!produced.type().equals(in.key().type())) {
-                        violations.add("task '" + setup.spec.name() + "' consumes '" + key + "' as "
-                                + in.key().type().getSimpleName() + " but task '" + producerOf.get(key).spec.name()
-                                + "' produces it as " + produced.type().getSimpleName());
-                    }
-                    consumersOf.computeIfAbsent(key, k -> new ArrayList<>()).add(setup.spec.name());
-                }
-            }
-            if (!violations.isEmpty()) {
-                throw new ConfigurationException(violations);
-            }
-
-            List<StateVariable<?>> variables = new ArrayList<>();
-            Map<String, StateVariable<?>> byName = new LinkedHashMap<>();
-            Map<String, String> producers = new LinkedHashMap<>();
-            for (Map.Entry<String, Key<?>> entry : producedKey.entrySet()) {
-                StateVariable<?> variable = newVariable(entry.getValue());
-                variables.add(variable);
-                byName.put(entry.getKey(), variable);
-                producers.put(entry.getKey(), producerOf.get(entry.getKey()).spec.name());
-            }
             FrameworkFaults faults = new FrameworkFaults(
                     errorHandler != null ? errorHandler : new RateLimitedErrorPrinter());
             ListenerFanOut events = new ListenerFanOut(faults);
             List<TaskRuntime> runtimes = new ArrayList<>();
-            for (Setup setup : setups) {
-                for (OutputHandle<?> out : setup.outputs) {
-                    String key = out.key().name();
-                    out.bind(byName.get(key), variables.indexOf(byName.get(key)));
-                }
-                for (InputHandle<?> in : setup.inputs) {
-                    in.bind(byName.get(in.key().name()));
-                }
-                TaskRuntime runtime = new TaskRuntime(setup.spec, runtimes.size(), clock, events,
-                        setup.inputs.toArray(new InputHandle<?>[0]), setup.outputs.toArray(new OutputHandle<?>[0]));
+            for (TaskDeclarations declarations : declared) {
+                TaskRuntime runtime = new TaskRuntime(declarations.spec, runtimes.size(), clock, events,
+                        declarations.inputs.toArray(new InputHandle<?>[0]),
+                        declarations.outputs.toArray(new OutputHandle<?>[0]));
                 if (adaptivePolicy != null) {
                     runtime.adaptive(adaptivePolicy);
                 }
                 runtimes.add(runtime);
             }
-            return new Monitor(clock, List.copyOf(runtimes), List.copyOf(variables), producers, consumersOf, listeners,
-                    threadSetup, events, faults);
-        }
-
-        private static <T extends StateValue<T>> StateVariable<T> newVariable(Key<T> key) {
-            return new StateVariable<>(key);
-        }
-
-        private static void checkSchedule(TaskSpec spec, List<String> violations) {
-            String task = "task '" + spec.name() + "'";
-            if (spec.schedule() instanceof Schedule.Periodic p) {
-                if (p.periodNs() <= 0) {
-                    violations.add(task + " has period " + Durations.format(p.periodNs()) + "; a period must be positive");
-                } else if (p.deadlineNs() <= 0 || p.deadlineNs() > p.periodNs()) {
-                    violations.add(task + " has deadline " + Durations.format(p.deadlineNs())
-                            + "; it must be positive and at most the period " + Durations.format(p.periodNs()));
-                }
-                if (p.isAdaptive() && p.periodNs() > 0
-                        && (p.minPeriodNs() <= 0 || p.minPeriodNs() > p.periodNs() || p.periodNs() > p.maxPeriodNs())) {
-                    violations.add(task + " has period range " + Durations.format(p.minPeriodNs()) + ".."
-                            + Durations.format(p.maxPeriodNs()) + " and period " + Durations.format(p.periodNs())
-                            + "; it needs 0 < min <= period <= max");
-                }
-                if (p.offsetNs() < 0) {
-                    violations.add(task + " has offset " + Durations.format(p.offsetNs()) + "; an offset cannot be negative");
-                }
-            } else if (spec.schedule() instanceof Schedule.Once o && o.offsetNs() < 0) {
-                violations.add(task + " has offset " + Durations.format(o.offsetNs()) + "; an offset cannot be negative");
-            }
-        }
-    }
-
-    /** The declarations of one task during initialization. */
-    private static final class Setup implements TaskSetup {
-        final TaskSpec spec;
-        final Clock clock;
-        final List<InputHandle<?>> inputs = new ArrayList<>();
-        final List<OutputHandle<?>> outputs = new ArrayList<>();
-        final List<String> violations = new ArrayList<>();
-        boolean closed;
-
-        Setup(TaskSpec spec, Clock clock) {
-            this.spec = spec;
-            this.clock = clock;
-        }
-
-        @Override
-        public String taskName() {
-            return spec.name();
-        }
-
-        @Override
-        public Schedule schedule() {
-            return spec.schedule();
-        }
-
-        @Override
-        public Clock clock() {
-            return clock;
-        }
-
-        @Override
-        public <T extends StateValue<T>> Input<T> consume(Key<T> key) {
-            return addInput(key, Long.MAX_VALUE);
-        }
-
-        @Override
-        public <T extends StateValue<T>> Input<T> consume(Key<T> key, Duration maxAge) {
-            long maxAgeNs = maxAge.toNanos();
-            if (maxAgeNs <= 0) {
-                violations.add("task '" + spec.name() + "' declares max age " + maxAge + " for '" + key.name()
-                        + "'; it must be positive");
-            }
-            return addInput(key, maxAgeNs);
-        }
-
-        private <T extends StateValue<T>> Input<T> addInput(Key<T> key, long maxAgeNs) {
-            checkOpen();
-            if (inputs.stream().anyMatch(i -> i.key().name().equals(key.name()))
-                    || outputs.stream().anyMatch(o -> o.key().name().equals(key.name()))) {
-                violations.add("task '" + spec.name() + "' declares '" + key.name() + "' more than once");
-            }
-            InputHandle<T> handle = new InputHandle<>(key, maxAgeNs);
-            inputs.add(handle);
-            return handle;
-        }
-
-        @Override
-        public <T extends StateValue<T>> Output<T> produce(Key<T> key) {
-            checkOpen();
-            if (inputs.stream().anyMatch(i -> i.key().name().equals(key.name()))
-                    || outputs.stream().anyMatch(o -> o.key().name().equals(key.name()))) {
-                violations.add("task '" + spec.name() + "' declares '" + key.name() + "' more than once");
-            }
-            OutputHandle<T> handle = new OutputHandle<>(key);
-            outputs.add(handle);
-            return handle;
-        }
-
-        private void checkOpen() {
-            if (closed) {
-                throw new IllegalStateException("task '" + spec.name() + "' declared data after initialization");
-            }
+            return new Monitor(clock, List.copyOf(runtimes), graph, listeners, threadSetup, events, faults);
         }
     }
 }

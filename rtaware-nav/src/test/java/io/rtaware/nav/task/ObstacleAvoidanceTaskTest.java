@@ -5,7 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.rtaware.nav.logic.ObstacleAvoider;
-import io.rtaware.nav.testing.FakeStore;
+import io.rtaware.core.testing.TaskHarness;
 import io.rtaware.robot.msg.LaserScan;
 import io.rtaware.robot.msg.MotionRequest;
 import io.rtaware.robot.msg.RobotKeys;
@@ -16,12 +16,12 @@ class ObstacleAvoidanceTaskTest {
     private static final long MS = 1_000_000L;
 
     @Test
-    void avoidsOnFreshScansAndStopsWhenBlind() throws Exception {
-        FakeStore store = new FakeStore();
-        FakeStore.Bound task = store.bind("obstacle",
-                new ObstacleAvoidanceTask(new ObstacleAvoider(0.4, 0.6, 0.25, 0.03, 0.5), 300 * MS));
-        task.cycle(0);
-        MotionRequest req = store.read(RobotKeys.MOTION_AVOID);
+    void avoidsOnFreshScansAndStopsWhenBlind() {
+        TaskHarness h = TaskHarness.builder().input(RobotKeys.LASER)
+                .task("obstacle", new ObstacleAvoidanceTask(new ObstacleAvoider(0.4, 0.6, 0.25, 0.03, 0.5), 300 * MS))
+                .build();
+        h.cycle("obstacle", 0);
+        MotionRequest req = h.read(RobotKeys.MOTION_AVOID);
         assertTrue(req.active, "no scan yet: take control");
         assertEquals(0.0, req.vxMps);
         assertEquals(0.0, req.omegaRadPerSec);
@@ -34,17 +34,17 @@ class ObstacleAvoidanceTaskTest {
         scan.rangesM[0] = 3f;
         scan.rangesM[1] = 3f;
         scan.rangesM[2] = 3f;
-        store.write(RobotKeys.LASER, scan, 50 * MS);
-        task.cycle(100 * MS);
-        assertFalse(store.read(RobotKeys.MOTION_AVOID).active, "open space: request nothing");
+        h.publish(RobotKeys.LASER, scan, 50 * MS);
+        h.cycle("obstacle", 100 * MS);
+        assertFalse(h.read(RobotKeys.MOTION_AVOID).active, "open space: request nothing");
 
         scan.rangesM[2] = 0.3f; // left
-        store.write(RobotKeys.LASER, scan, 150 * MS);
-        task.cycle(200 * MS);
-        assertEquals(-0.5, store.read(RobotKeys.MOTION_AVOID).omegaRadPerSec);
+        h.publish(RobotKeys.LASER, scan, 150 * MS);
+        h.cycle("obstacle", 200 * MS);
+        assertEquals(-0.5, h.read(RobotKeys.MOTION_AVOID).omegaRadPerSec);
 
-        task.cycle(500 * MS); // scan 350 ms old
-        req = store.read(RobotKeys.MOTION_AVOID);
+        h.cycle("obstacle", 500 * MS); // scan 350 ms old
+        req = h.read(RobotKeys.MOTION_AVOID);
         assertTrue(req.active);
         assertEquals(0.0, req.vxMps);
         assertEquals(0.0, req.omegaRadPerSec);

@@ -1,2 +1,2 @@
-/** Test doubles of the core's data store and task setup, and a tiny simulated room. */
+/** A tiny simulated room for the nav tests (the tasks run on the core's {@code TaskHarness}). */
 package io.rtaware.nav.testing;
