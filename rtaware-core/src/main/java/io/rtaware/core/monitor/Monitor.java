@@ -98,7 +98,7 @@ public final class Monitor {
      *     of {@link #keyNames()}
      */
     public List<Key<?>> keys() {
-        return variables.stream().<Key<?>>map(StateVariable::key).toList();
+        return graph.variables().stream().<Key<?>>map(v -> v.key()).toList();
     }
 
     /**
