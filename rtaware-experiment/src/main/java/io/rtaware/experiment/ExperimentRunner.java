@@ -3,6 +3,7 @@ package io.rtaware.experiment;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Objects;
@@ -25,6 +26,8 @@ public final class ExperimentRunner {
     public static final String RUNS_DIR = "runs";
     /** The file in each run's folder that receives the run's stdout and stderr. */
     public static final String LOG_FILE = "run.log";
+    /** Name of a run's recording in its folder, with {@link #recordEachRun(boolean)}. */
+    public static final String RECORDING_FILE = "run.mcap";
 
     private static final long STOP_GRACE_S = 10;
     private static final int EXIT_SIGINT = 130;
@@ -36,6 +39,7 @@ public final class ExperimentRunner {
     private final ProgressBar progress;
     private volatile boolean interrupted;
     private volatile Process current;
+    private boolean record;
 
     /**
      * @param plan the runs to make
@@ -127,12 +131,25 @@ public final class ExperimentRunner {
         return interrupted;
     }
 
+    /**
+     * @param enabled true to record each run to {@link #RECORDING_FILE} in its folder ({@code run --record})
+     * @return this runner
+     */
+    public ExperimentRunner recordEachRun(boolean enabled) {
+        this.record = enabled;
+        return this;
+    }
+
     private RunResult runOne(PlannedRun planned) throws IOException, InterruptedException {
         Path runDir = outDir.resolve(RUNS_DIR).resolve(planned.folderName());
         deleteRecursively(runDir);
         Files.createDirectories(runDir);
         Path log = runDir.resolve(LOG_FILE);
-        List<String> cmd = command.commandLine(plan.runArguments(planned, runDir));
+        List<String> arguments = new ArrayList<>(plan.runArguments(planned, runDir));
+        if (record) {
+            arguments.addAll(List.of("--record", runDir.resolve(RECORDING_FILE).toString()));
+        }
+        List<String> cmd = command.commandLine(arguments);
         Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();
         current = p;
         int exit;

@@ -73,6 +73,16 @@ class ExperimentRunnerTest {
     }
 
     @Test
+    void withRecordingEachRunIsAskedToRecordIntoItsOwnFolder() throws Exception {
+        runner(List.of(ExperimentSets.paper().get(0)), 2, "paper-room").recordEachRun(true).run();
+        for (int run = 1; run <= 2; run++) {
+            List<String> args = started.get(run - 1);
+            assertEquals(dir.resolve("runs/set1-run" + run).resolve(ExperimentRunner.RECORDING_FILE).toString(),
+                    args.get(args.indexOf("--record") + 1));
+        }
+    }
+
+    @Test
     void rerunningIntoTheSameFolderSkipsRunsAlreadyThere() throws Exception {
         runner(twoSets(), 1, "paper-room").run();
         String before = Files.readString(dir.resolve(ResultsCsv.FILE_NAME));

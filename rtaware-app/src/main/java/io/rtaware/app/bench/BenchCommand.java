@@ -9,6 +9,7 @@ import io.rtaware.app.bench.compare.RunResult;
 import io.rtaware.app.cli.CommandMonitor;
 import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.app.cli.MemoryBudget;
+import io.rtaware.app.cli.RecordOptions;
 import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.live.LiveMixin;
 import io.rtaware.app.live.LiveView;
@@ -23,6 +24,9 @@ import io.rtaware.core.report.SummaryTable;
 import io.rtaware.app.rt.RealtimeThreads;
 import io.rtaware.core.monitor.AdaptivePolicy;
 import io.rtaware.core.trace.TraceRecorder;
+import io.rtaware.record.RecordingPlan;
+import io.rtaware.record.RecordingStats;
+import io.rtaware.record.RunRecorder;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.Durations;
 import java.io.IOException;
@@ -121,6 +125,9 @@ public final class BenchCommand implements Callable<Integer> {
     @Mixin
     TraceOptions trace;
 
+    @Mixin
+    RecordOptions record;
+
     @Option(names = "--adaptive",
             description = "Move the period of tasks declared with a range (a:5ms..50ms:1ms) from run-time evidence.")
     boolean adaptive;
@@ -174,8 +181,8 @@ public final class BenchCommand implements Callable<Integer> {
         if (!(gcPressureMbps >= 0) || Double.isInfinite(gcPressureMbps)) {
             throw new UserError("--gc-pressure must be 0 or more MB/s, got " + gcPressureMbps);
         }
-        if (compare && (spec != null || chain || timeScale != 1.0 || live.options().enabled())) {
-            throw new UserError("--compare takes --tasks, --period and --work (not --spec, --chain, --time-scale or --live)");
+        if (compare && (spec != null || chain || timeScale != 1.0 || live.options().enabled() || record.enabled())) {
+            throw new UserError("--compare takes --tasks, --period and --work (not --spec, --chain, --time-scale, --live or --record)");
         }
         if (compare && segmentNs < 2 * specs.stream().mapToLong(BenchSpec::periodNs).max().orElse(0)) {
             throw new UserError("--segment must be at least two periods, got " + Durations.format(segmentNs));
@@ -233,12 +240,15 @@ public final class BenchCommand implements Callable<Integer> {
         Monitor monitor = CommandMonitor.build(builder);
         ConsoleReporter console = CommandMonitor.console(monitor, quiet, System.err);
         TraceRecorder recorder = trace.attach(monitor);
+        RunRecorder recording = record.attach(monitor, new RecordingPlan().metadata("command", "bench")
+                .metadata("tasks", String.join(",", specs.stream().map(s -> s.name() + ":" + Durations.format(s.periodNs())
+                        + ":" + Durations.format(s.workNs())).toList())));
         out.printf("rtaware bench: %d task(s)%s for %s of world time (time scale x%s)%n", specs.size(),
                 chain ? " in a chain" : "", Durations.format(durationNs), timeScale);
         LiveView liveView = LiveView.start(live.options(), monitor, out);
         Thread hook = monitor.installShutdownHook();
         OutputWrites writes = new OutputWrites(System.err);
-        monitor.onTermination(report -> finish(monitor, report, console, recorder, out, writes));
+        monitor.onTermination(report -> finish(monitor, report, console, recorder, recording, out, writes));
         monitor.onTermination(report -> liveView.finish(report, null));
         monitor.start();
         long wallNs = clock.toWallNanos(durationNs);
@@ -276,7 +286,7 @@ public final class BenchCommand implements Callable<Integer> {
     }
 
     private void finish(Monitor monitor, Report report, ConsoleReporter console, TraceRecorder recorder,
-                        PrintStream out, OutputWrites writes) {
+                        RunRecorder recording, PrintStream out, OutputWrites writes) {
         if (console != null) {
             console.close();
         }
@@ -291,6 +301,10 @@ public final class BenchCommand implements Callable<Integer> {
             out.print(history);
         }
         trace.write(recorder, out, writes);
+        RecordingStats stats = RecordOptions.finish(recording, out, System.err);
+        if (stats != null) {
+            doc.section("recording", stats);
+        }
         if (json != null && writes.write(json, () -> doc.write(json))) {
             out.println("report written to " + json);
         }

@@ -11,8 +11,12 @@ import java.util.Set;
  */
 public final class ThreadAllocation {
 
-    /** Threads of the monitor that are not on the per-release path (they print, or stop). */
-    private static final Set<String> OFF_PATH = Set.of("rtaware-console", "rtaware-shutdown", "rtaware-stop");
+    /**
+     * Threads of the monitor that are not on the per-release path (they print, stop, or write a
+     * recording from what the task threads handed over).
+     */
+    private static final Set<String> OFF_PATH = Set.of("rtaware-console", "rtaware-shutdown", "rtaware-stop",
+            "rtaware-recorder");
 
     private final com.sun.management.ThreadMXBean bean;
     private final long[] ids;

@@ -92,6 +92,10 @@ public final class ExperimentCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "DIR", description = "Output folder (default: experiments/<timestamp>).")
     Path out;
 
+    @Option(names = "--record",
+            description = "Record each run to run.mcap in its folder (see rtaware run --record).")
+    boolean record;
+
     @Option(names = "--resume", description = "Continue the experiment in --out with the plan stored there (sets, runs, "
             + "scenario, time scale, seed, grid), skipping the runs already in its results.csv.")
     boolean resume;
@@ -127,7 +131,7 @@ public final class ExperimentCommand implements Callable<Integer> {
         ProgressBar progress = new ProgressBar(System.err, System.console() != null, System::nanoTime,
                 RUN_LIMIT_S / timeScale);
         ExperimentRunner runner = new ExperimentRunner(plan, JvmRunCommand.ofCurrentProcess(JvmRunCommand.RTAWARE_MAIN),
-                dir, progress);
+                dir, progress).recordEachRun(record);
         int total = plan.order().size();
         System.out.printf(Locale.ROOT, "rtaware experiment: %d set(s) x %d run(s) of %s at time scale x%s into %s%s%n",
                 plan.sets().size(), runs, scenario, timeScale, dir, plan.shard().whole() ? ""

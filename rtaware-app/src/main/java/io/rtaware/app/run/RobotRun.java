@@ -2,6 +2,7 @@ package io.rtaware.app.run;
 
 import io.rtaware.app.UserError;
 import io.rtaware.app.cli.CommandMonitor;
+import io.rtaware.app.cli.RecordOptions;
 import io.rtaware.app.live.LiveView;
 import io.rtaware.app.live.RunScene;
 import io.rtaware.core.monitor.ConsoleReporter;
@@ -14,6 +15,7 @@ import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.trace.TraceRecorder;
+import io.rtaware.record.RunRecorder;
 import io.rtaware.app.rt.RealtimeThreads;
 import io.rtaware.nav.NavConfig;
 import io.rtaware.nav.NavController;
@@ -67,6 +69,7 @@ public final class RobotRun {
     private final RunOptions options;
     private final PrintStream out;
     private final PrintStream err;
+    private RecordOptions record = new RecordOptions();
 
     /**
      * @param options what to run
@@ -77,6 +80,15 @@ public final class RobotRun {
         this.options = options;
         this.out = out;
         this.err = err;
+    }
+
+    /**
+     * @param recording the {@code --record} option
+     * @return this run
+     */
+    public RobotRun recording(RecordOptions recording) {
+        this.record = recording;
+        return this;
     }
 
     /**
@@ -172,6 +184,7 @@ public final class RobotRun {
         Monitor monitor = CommandMonitor.build(builder);
         ConsoleReporter console = CommandMonitor.console(monitor, options.quiet(), err);
         TraceRecorder trace = options.trace().attach(monitor);
+        RunRecorder recorder = record.attach(monitor, RunRecording.plan(scenario, options));
 
         // Everything the termination handler reads exists before the start: Ctrl-C may run it on
         // the shutdown-hook thread at any moment from here on.
@@ -185,7 +198,8 @@ public final class RobotRun {
         LiveView live = LiveView.start(options.live(), monitor, new RunScene(scenario.name(), scenario.map().orElse(null),
                 scenario.waypoints(), nav.keys(), nav::mediatorCounts, () -> outcomeName(state)), out);
         // Connected before the start, so the first ground-truth sample is the pose at the start.
-        Referee.PoseSource truth = poseSource(host, port, clock, monitor);
+        Referee.PoseSource truthSource = poseSource(host, port, clock, monitor);
+        Referee.PoseSource truth = RunRecording.recordingGroundTruth(truthSource, recorder, clock);
         monitor.onTermination(report -> {
             if (console != null) {
                 console.close();
@@ -197,12 +211,13 @@ public final class RobotRun {
             } else {
                 closeQuietly(truth); // stopped before the start: no referee owns the source yet
             }
+            artifacts.section("recording", RecordOptions.finish(recorder, out, err));
             monitor.read(nav.keys().course(), course);
             long collisions = server != null ? server.withWorld(World::contactCount) : state.stallEdges();
             RunSection run = runSection(scenario, nav, course, referee, state.ending(),
                     clock.nanos() - state.startNs(), collisions, server != null, List.copyOf(passes), model);
             live.finish(report, run);
-            artifacts.write(report, run, playerSection(player, host, port, truth), referee,
+            artifacts.write(report, run, playerSection(player, host, port, truthSource), referee,
                     nav.finalMap().orElse(null), scenario.map().orElse(null));
             options.trace().write(trace, out, artifacts.writes());
         });

@@ -17,8 +17,10 @@ import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 
 /**
  * Writes a run's output folder: {@code report.json} (core report plus the {@code run} and
@@ -37,6 +39,7 @@ final class RunArtifacts {
     private final NavConfig navConfig;
     private final PrintStream out;
     private final OutputWrites writes;
+    private final Map<String, Object> sections = new LinkedHashMap<>();
 
     RunArtifacts(RunOptions options, Scenario scenario, NavConfig navConfig, PrintStream out, PrintStream err) {
         this.options = options;
@@ -59,11 +62,24 @@ final class RunArtifacts {
         return writes.exitStatus(status);
     }
 
+    /**
+     * Adds a section to {@code report.json} (null values are left out).
+     *
+     * @param name the section's key
+     * @param value its content
+     */
+    void section(String name, Object value) {
+        if (value != null) {
+            sections.put(name, value);
+        }
+    }
+
     void write(Report report, RunSection run, PlayerSection player, Referee referee, OccupancyGrid builtMap,
                OccupancyMap worldMap) {
         String table = SummaryTable.format(report);
         String runText = runText(run, player);
         ReportDocument doc = new ReportDocument(report).section("run", run).section("player", player);
+        sections.forEach(doc::section);
         String analysis = ReportSections.enrich(doc, Runtime.getRuntime().availableProcessors()).text();
         out.println();
         out.print(table);

@@ -3,6 +3,7 @@ package io.rtaware.app.run;
 import io.rtaware.app.UserError;
 import io.rtaware.app.cli.MemoryBudget;
 import io.rtaware.app.cli.TimeScaleConverter;
+import io.rtaware.app.cli.RecordOptions;
 import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.live.LiveMixin;
 import io.rtaware.app.output.OutputFolder;
@@ -84,6 +85,9 @@ public final class RunCommand implements Callable<Integer> {
     @Mixin
     TraceOptions trace;
 
+    @Mixin
+    RecordOptions record;
+
     @Option(names = "--realtime",
             description = "SCHED_FIFO task threads in rate-monotonic order and 1 ns timer slack (Linux, root or CAP_SYS_NICE); one line and normal threads otherwise.")
     boolean realtime;
@@ -107,7 +111,7 @@ public final class RunCommand implements Callable<Integer> {
     public Integer call() throws IOException {
         RunOptions options = options();
         memory.get().require(trace.heapBytes(), trace.describe());
-        return new RobotRun(options, System.out, System.err).execute();
+        return new RobotRun(options, System.out, System.err).recording(record).execute();
     }
 
     RunOptions options() {

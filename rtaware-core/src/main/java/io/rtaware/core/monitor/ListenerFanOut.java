@@ -111,6 +111,28 @@ final class ListenerFanOut {
         }
     }
 
+    void onCommitValue(TaskRuntime task, int keyIndex, long generation, long nowNs,
+                       io.rtaware.core.data.StateValue<?> value) {
+        for (MonitorListener l : listeners) {
+            try {
+                l.onCommitValue(task, keyIndex, generation, nowNs, value);
+            } catch (Throwable t) {
+                contain(task, l, "onCommitValue", t);
+            }
+        }
+    }
+
+    void onCycleRecord(TaskRuntime task, CycleOutcome outcome, long releaseNs, long startNs, long endNs,
+                       long[] inputGenerations) {
+        for (MonitorListener l : listeners) {
+            try {
+                l.onCycleRecord(task, outcome, releaseNs, startNs, endNs, inputGenerations);
+            } catch (Throwable t) {
+                contain(task, l, "onCycleRecord", t);
+            }
+        }
+    }
+
     void onPeriodChange(TaskRuntime task, PeriodChange change, long nowNs) {
         for (MonitorListener l : listeners) {
             try {

@@ -112,6 +112,14 @@ public final class Monitor {
     }
 
     /**
+     * @return the keys by key index (see {@link MonitorListener#onCommitValue}), in the order
+     *     of {@link #keyNames()}
+     */
+    public List<Key<?>> keys() {
+        return graph.variables().stream().<Key<?>>map(v -> v.key()).toList();
+    }
+
+    /**
      * @param task a task's name
      * @return its live counters
      * @throws IllegalArgumentException naming the task and the known tasks if there is none

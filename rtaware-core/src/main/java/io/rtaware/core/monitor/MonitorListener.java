@@ -108,4 +108,38 @@ public interface MonitorListener {
      */
     default void onPeriodChange(TaskInfo task, PeriodChange change, long nowNs) {
     }
+
+    /**
+     * The value just committed, right after {@link #onCommit}, on the producer's thread: the
+     * producer's own buffer, which it does not touch until the call returns. Valid only during
+     * the call: copy what you keep (without allocating, {@code copyFrom} into a buffer of your
+     * own). Same rules as {@link #onCommit}: fast, no blocking, no allocation.
+     *
+     * @param producer the producing task
+     * @param keyIndex dense index of the key (see {@link Monitor#keys()})
+     * @param generation the new generation
+     * @param nowNs commit time
+     * @param value the committed value
+     */
+    default void onCommitValue(TaskInfo producer, int keyIndex, long generation, long nowNs,
+                               io.rtaware.core.data.StateValue<?> value) {
+    }
+
+    /**
+     * The record of a finished cycle, after {@link #onCycle} (and {@link #onTaskError} for a
+     * cycle that threw), on the task's thread: how it ended and the generation each input held
+     * during the cycle, in the order of {@link TaskInfo#inputKeys()} (0: never written). The array
+     * is the task's own and is reused: read it during the call only. Fast, no blocking, no
+     * allocation.
+     *
+     * @param task the task
+     * @param outcome how the cycle ended
+     * @param releaseNs the scheduled release (the start, for continuous tasks)
+     * @param startNs cycle start
+     * @param endNs cycle end
+     * @param inputGenerations generation of each input read
+     */
+    default void onCycleRecord(TaskInfo task, CycleOutcome outcome, long releaseNs, long startNs, long endNs,
+                               long[] inputGenerations) {
+    }
 }

@@ -15,4 +15,12 @@ public interface TaskInfo {
 
     /** @return the declared schedule */
     Schedule schedule();
+
+    /**
+     * @return the names of the keys the task consumes, in the order of the generations in
+     *     {@link MonitorListener#onCycleRecord} (empty unless the task is one of a monitor's)
+     */
+    default java.util.List<String> inputKeys() {
+        return java.util.List.of();
+    }
 }

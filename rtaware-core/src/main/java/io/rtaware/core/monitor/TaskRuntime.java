@@ -75,6 +75,9 @@ final class TaskRuntime implements TaskInfo {
     private final Clock clock;
     private final ListenerFanOut events;
     private final InputHandle<?>[] inputs;
+    /** Generation each input held in the latest cycle, for {@link MonitorListener#onCycleRecord}. */
+    private final long[] inputGenerations;
+    private final List<String> inputKeys;
     private final OutputHandle<?>[] outputs;
     private final Release release;
     private final long offsetNs;
@@ -106,6 +109,12 @@ final class TaskRuntime implements TaskInfo {
         this.clock = clock;
         this.events = events;
         this.inputs = inputs;
+        this.inputGenerations = new long[inputs.length];
+        List<String> names = new ArrayList<>(inputs.length);
+        for (InputHandle<?> input : inputs) {
+            names.add(input.key().name());
+        }
+        this.inputKeys = List.copyOf(names);
         this.outputs = outputs;
         Schedule schedule = spec.schedule();
         if (schedule instanceof Schedule.Periodic p) {
@@ -140,6 +149,11 @@ final class TaskRuntime implements TaskInfo {
 
     OutputHandle<?>[] outputs() {
         return outputs;
+    }
+
+    @Override
+    public List<String> inputKeys() {
+        return inputKeys;
     }
 
     InputHandle<?>[] inputs() {
@@ -268,8 +282,10 @@ final class TaskRuntime implements TaskInfo {
         }
 
         boolean anyNew = false;
-        for (InputHandle<?> input : inputs) {
+        for (int i = 0; i < inputs.length; i++) {
+            InputHandle<?> input = inputs[i];
             anyNew |= input.refresh(cycleStartNs);
+            inputGenerations[i] = input.generation();
             if (input.isExpired()) {
                 statistics.expiredRead();
                 events.onExpiredInput(this, input.key().name(), input.ageNs(), input.maxAgeNs(), cycleStartNs);
@@ -296,6 +312,7 @@ final class TaskRuntime implements TaskInfo {
                 long generation = output.commitIfMarked(endNs);
                 if (generation != 0) {
                     events.onCommit(this, output.keyIndex(), generation, endNs);
+                    events.onCommitValue(this, output.keyIndex(), generation, endNs, output.value());
                 }
             }
         } else {
@@ -305,13 +322,17 @@ final class TaskRuntime implements TaskInfo {
             endNs = clock.nanos();
         }
 
+        boolean missed = false;
         if (periodic && token.finish(k)) {
             // The watchdog had not claimed this cycle: a late finish is reported now.
             long deadline = deadlineOf(k);
             if (endNs > deadline) {
+                missed = true;
                 statistics.missed();
                 events.onDeadlineMiss(this, releaseNs, deadline, endNs, false);
             }
+        } else if (periodic) {
+            missed = true; // claimed by the watchdog: reported as missed while running
         }
         long execNs = endNs - cycleStartNs;
         statistics.cycleEnded(execNs);
@@ -322,6 +343,11 @@ final class TaskRuntime implements TaskInfo {
         if (failure != null) {
             statistics.error();
             events.onTaskError(this, failure, spec.errorPolicy(), endNs);
+        }
+        events.onCycleRecord(this, failure != null ? CycleOutcome.ERROR : missed ? CycleOutcome.MISS
+                : inputs.length > 0 && !anyNew ? CycleOutcome.STALE : CycleOutcome.OK,
+                releaseNs, cycleStartNs, endNs, inputGenerations);
+        if (failure != null) {
             switch (spec.errorPolicy()) {
                 case DISABLE_TASK -> {
                     neverAgain();

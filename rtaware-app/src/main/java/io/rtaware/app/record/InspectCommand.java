@@ -1,0 +1,207 @@
+package io.rtaware.app.record;
+
+import io.rtaware.app.UserError;
+import io.rtaware.record.RecordingPlan;
+import io.rtaware.record.TaskCycleMessage;
+import io.rtaware.record.mcap.McapChannel;
+import io.rtaware.record.mcap.McapFormatException;
+import io.rtaware.record.mcap.McapReader;
+import io.rtaware.record.mcap.McapSchema;
+import io.rtaware.record.mcap.McapSummary;
+import io.rtaware.record.mcap.McapVisitor;
+import io.rtaware.ros2msg.cdr.CdrException;
+import java.awt.BasicStroke;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.concurrent.Callable;
+import org.HdrHistogram.Histogram;
+import org.knowm.xchart.BitmapEncoder;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.style.markers.SeriesMarkers;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/**
+ * {@code rtaware inspect FILE.mcap}: what a recording holds (channels with types, message
+ * counts, rates, time span) and, from its {@code /rtaware/timing/<task>} channels, each task's
+ * timing; {@code --plot PNG} draws each task's lateness over time.
+ */
+@Command(name = "inspect", mixinStandardHelpOptions = true,
+        description = {"Summarize an MCAP recording: channels, counts, rates, time span, and each task's timing.",
+            "With --plot, draw each task's lateness over time."})
+public final class InspectCommand implements Callable<Integer> {
+
+    private static final long HIGHEST_NS = 3_600_000_000_000L;
+
+    @Parameters(index = "0", paramLabel = "FILE.mcap", description = "A recording (run --record, bench --record).")
+    Path file;
+
+    @Option(names = "--plot", paramLabel = "PNG", description = "Write each task's lateness over time to this PNG.")
+    Path plot;
+
+    /** Per channel: messages and the log-time span. */
+    private static final class ChannelStats {
+        long messages;
+        long firstNs = Long.MAX_VALUE;
+        long lastNs = Long.MIN_VALUE;
+    }
+
+    /** Per task: what its timing channel says. */
+    private static final class TaskTiming {
+        final Map<String, Long> outcomes = new TreeMap<>();
+        final Histogram latenessNs = new Histogram(1, HIGHEST_NS, 2);
+        final Histogram execNs = new Histogram(1, HIGHEST_NS, 2);
+        final List<Double> timeS = new ArrayList<>();
+        final List<Double> latenessMs = new ArrayList<>();
+        long cycles;
+        long skippedReleases;
+    }
+
+    @Override
+    public Integer call() throws IOException {
+        PrintStream out = System.out;
+        McapReader reader = open(file);
+        McapSummary summary;
+        try {
+            summary = reader.summary();
+        } catch (McapFormatException e) {
+            throw new UserError(e.getMessage());
+        }
+        Map<Integer, String> schemaNames = new HashMap<>();
+        for (McapSchema s : summary.schemas()) {
+            schemaNames.put(s.id(), s.name() + " (" + s.encoding() + ")");
+        }
+        Map<Integer, ChannelStats> channels = new LinkedHashMap<>();
+        Map<String, TaskTiming> tasks = new LinkedHashMap<>();
+        long startNs = summary.statistics().messageStartNs();
+        try {
+            reader.read(new McapVisitor() {
+                @Override
+                public void message(McapChannel channel, long sequence, long logTimeNs, long publishTimeNs,
+                                    byte[] data, int offset, int length) {
+                    ChannelStats c = channels.computeIfAbsent(channel.id(), id -> new ChannelStats());
+                    c.messages++;
+                    c.firstNs = Math.min(c.firstNs, logTimeNs);
+                    c.lastNs = Math.max(c.lastNs, logTimeNs);
+                    if (channel.topic().startsWith(RecordingPlan.TIMING_PREFIX)) {
+                        String task = channel.topic().substring(RecordingPlan.TIMING_PREFIX.length());
+                        timing(tasks.computeIfAbsent(task, t -> new TaskTiming()),
+                                TaskCycleMessage.decode(data, offset, length), startNs);
+                    }
+                }
+            });
+        } catch (McapFormatException | CdrException e) {
+            throw new UserError(e.getMessage());
+        }
+
+        double spanS = (summary.statistics().messageEndNs() - startNs) / 1e9;
+        out.printf(Locale.ROOT, "%s: %d bytes, %d messages in %d chunks, %d channels, %.3f s of world time "
+                        + "(%.3f .. %.3f s)%n", file, reader.sizeBytes(), summary.statistics().messageCount(),
+                summary.statistics().chunkCount(), summary.channels().size(), spanS, startNs / 1e9,
+                summary.statistics().messageEndNs() / 1e9);
+        out.println();
+        out.printf(Locale.ROOT, "%-32s %-44s %9s %10s%n", "topic", "type", "messages", "rate");
+        for (McapChannel ch : summary.channels()) {
+            ChannelStats c = channels.getOrDefault(ch.id(), new ChannelStats());
+            double rate = spanS > 0 ? c.messages / spanS : 0;
+            out.printf(Locale.ROOT, "%-32s %-44s %9d %8.2fHz%n", ch.topic(),
+                    schemaNames.getOrDefault(ch.schemaId(), "-"), c.messages, rate);
+        }
+        if (!tasks.isEmpty()) {
+            out.println();
+            out.println("task timing (from /rtaware/timing/<task>; world time):");
+            out.printf(Locale.ROOT, "%-12s %8s %7s %7s %7s %7s %8s | %10s %10s %10s | %10s %10s %10s%n", "task", "cycles",
+                    "ok", "miss", "stale", "error", "skipped", "late p50", "late p99", "late max", "exec p50",
+                    "exec p99", "exec max");
+            for (Map.Entry<String, TaskTiming> e : tasks.entrySet()) {
+                TaskTiming t = e.getValue();
+                out.printf(Locale.ROOT, "%-12s %8d %7d %7d %7d %7d %8d | %10s %10s %10s | %10s %10s %10s%n", e.getKey(),
+                        t.cycles, t.outcomes.getOrDefault("ok", 0L), t.outcomes.getOrDefault("miss", 0L),
+                        t.outcomes.getOrDefault("stale", 0L), t.outcomes.getOrDefault("error", 0L), t.skippedReleases,
+                        ms(t.latenessNs, 50), ms(t.latenessNs, 99), ms(t.latenessNs, 100),
+                        ms(t.execNs, 50), ms(t.execNs, 99), ms(t.execNs, 100));
+            }
+        }
+        if (plot != null) {
+            if (tasks.isEmpty()) {
+                throw new UserError("--plot: " + file + " has no /rtaware/timing channels to plot");
+            }
+            writePlot(tasks, plot);
+            out.println();
+            out.println("lateness plot written to " + plot);
+        }
+        return 0;
+    }
+
+    private static McapReader open(Path file) {
+        try {
+            return McapReader.open(file);
+        } catch (NoSuchFileException e) {
+            throw new UserError("no such file: " + file);
+        } catch (McapFormatException e) {
+            throw new UserError(e.getMessage());
+        } catch (IOException e) {
+            throw new UserError("cannot read " + file + ": " + e.getMessage());
+        }
+    }
+
+    private static void timing(TaskTiming t, TaskCycleMessage m, long startNs) {
+        if (m.outcome().equals("skipped")) {
+            t.skippedReleases += m.skippedReleases();
+            return;
+        }
+        t.cycles++;
+        t.outcomes.merge(m.outcome(), 1L, Long::sum);
+        long lateNs = Math.max(0, m.startNs() - m.releaseNs());
+        t.latenessNs.recordValue(Math.min(HIGHEST_NS, Math.max(1, lateNs)));
+        t.execNs.recordValue(Math.min(HIGHEST_NS, Math.max(1, m.endNs() - m.startNs())));
+        t.timeS.add((m.startNs() - startNs) / 1e9);
+        t.latenessMs.add(lateNs / 1e6);
+    }
+
+    private static String ms(Histogram h, double percentile) {
+        if (h.getTotalCount() == 0) {
+            return "-";
+        }
+        long ns = percentile >= 100 ? h.getMaxValue() : h.getValueAtPercentile(percentile);
+        return String.format(Locale.ROOT, "%.3fms", ns / 1e6);
+    }
+
+    private static void writePlot(Map<String, TaskTiming> tasks, Path png) throws IOException {
+        XYChart chart = new XYChartBuilder().width(1000).height(500)
+                .title("Release lateness per task (start - release)").xAxisTitle("world time since the first message (s)")
+                .yAxisTitle("lateness (ms)").build();
+        chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNW);
+        chart.getStyler().setMarkerSize(2);
+        for (Map.Entry<String, TaskTiming> e : tasks.entrySet()) {
+            TaskTiming t = e.getValue();
+            if (t.timeS.isEmpty()) {
+                continue;
+            }
+            XYSeries s = chart.addSeries(e.getKey(), t.timeS, t.latenessMs);
+            s.setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Line);
+            s.setMarker(SeriesMarkers.NONE);
+            s.setLineStyle(new BasicStroke(1f));
+        }
+        Path parent = png.toAbsolutePath().getParent();
+        if (parent != null) {
+            Files.createDirectories(parent);
+        }
+        String name = png.toString();
+        String base = name.toLowerCase(Locale.ROOT).endsWith(".png") ? name.substring(0, name.length() - 4) : name;
+        BitmapEncoder.saveBitmap(chart, base, BitmapEncoder.BitmapFormat.PNG);
+    }
+}

@@ -1,0 +1,2 @@
+/** Commands over recordings: {@code rtaware inspect}. */
+package io.rtaware.app.record;

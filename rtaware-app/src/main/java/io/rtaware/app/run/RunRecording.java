@@ -1,0 +1,82 @@
+package io.rtaware.app.run;
+
+import io.rtaware.core.time.Clock;
+import io.rtaware.nav.NavKeys;
+import io.rtaware.record.RecordingPlan;
+import io.rtaware.record.RosCodecs;
+import io.rtaware.record.RunRecorder;
+import io.rtaware.robot.geometry.Pose2d;
+import io.rtaware.robot.msg.RobotKeys;
+import io.rtaware.sim.scenario.Scenario;
+import java.util.Locale;
+
+/**
+ * What {@code run --record} records where: the robot's keys on the topics ROS 2 tools expect
+ * ({@code /scan}, {@code /odom}, {@code /cmd_vel}, {@code /map}, {@code /plan}), the ground truth
+ * on {@code /ground_truth}, and the run's settings as the file's {@code rtaware.run} metadata
+ * (what {@code rtaware replay} rebuilds the controller from).
+ */
+final class RunRecording {
+
+    /** Metadata: the command that recorded the file. */
+    static final String COMMAND = "command";
+
+    private RunRecording() {
+    }
+
+    /**
+     * @param scenario the scenario
+     * @param options the run's options
+     * @return the plan
+     */
+    static RecordingPlan plan(Scenario scenario, RunOptions options) {
+        return new RecordingPlan()
+                .topic(RobotKeys.LASER.name(), "/scan", RosCodecs.BASE_FRAME)
+                .topic(RobotKeys.ODOMETRY.name(), "/odom", "odom")
+                .topic(RobotKeys.MOTOR.name(), "/cmd_vel", RosCodecs.BASE_FRAME)
+                .topic(NavKeys.MAP, "/map", "map")
+                .topic(NavKeys.PATH, "/plan", "map")
+                .metadata(COMMAND, "run")
+                .metadata("scenario", scenario.name())
+                .metadata("periods", options.periods().toString())
+                .metadata("time_scale", Double.toString(options.timeScale()))
+                .metadata("seed", Long.toString(options.seed()))
+                .metadata("grid_resolution_m", Double.toString(options.gridResolutionM()))
+                .metadata("robot", options.builtInSimulator() ? "built-in simulator"
+                        : String.format(Locale.ROOT, "player %s:%d", options.playerHost(), options.playerPort()));
+    }
+
+    /**
+     * Records every pose the referee samples as {@code geometry_msgs/msg/PoseStamped}.
+     *
+     * @param source the referee's pose source
+     * @param recorder the recorder, or null (then {@code source} itself is returned)
+     * @param clock world clock
+     * @return a source that records what it returns
+     */
+    static Referee.PoseSource recordingGroundTruth(Referee.PoseSource source, RunRecorder recorder, Clock clock) {
+        if (recorder == null) {
+            return source;
+        }
+        return new Referee.PoseSource() {
+            @Override
+            public Pose2d pose() throws Exception {
+                Pose2d pose = source.pose();
+                if (pose != null) {
+                    recorder.groundTruth(clock.nanos(), pose.xM(), pose.yM(), pose.yawRad());
+                }
+                return pose;
+            }
+
+            @Override
+            public String kind() {
+                return source.kind();
+            }
+
+            @Override
+            public void close() throws Exception {
+                source.close();
+            }
+        };
+    }
+}

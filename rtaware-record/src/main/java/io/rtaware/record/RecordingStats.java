@@ -1,0 +1,13 @@
+package io.rtaware.record;
+
+/**
+ * What a recording holds: the {@code recording} section of a run's report.
+ *
+ * @param file the MCAP file
+ * @param messages messages written
+ * @param bytes the file's size in bytes
+ * @param dropped records dropped because the writer fell behind (its rings were full)
+ * @param error why the file could not be completed, or null
+ */
+public record RecordingStats(String file, long messages, long bytes, long dropped, String error) {
+}

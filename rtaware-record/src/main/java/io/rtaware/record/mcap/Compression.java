@@ -1,0 +1,20 @@
+package io.rtaware.record.mcap;
+
+/** How chunk records are compressed. */
+public enum Compression {
+    /** Uncompressed chunks. */
+    NONE(""),
+    /** Zstandard (the default of ROS 2 bags and Foxglove), through zstd-jni. */
+    ZSTD("zstd");
+
+    private final String mcapName;
+
+    Compression(String mcapName) {
+        this.mcapName = mcapName;
+    }
+
+    /** @return the name in the chunk record's {@code compression} field */
+    public String mcapName() {
+        return mcapName;
+    }
+}
