@@ -106,6 +106,7 @@ public final class CompareRun {
 
     private void runSegment(SegmentExecutor executor, List<ReleaseStats> stats, ExecutorTotals totals)
             throws InterruptedException {
+        executor.prepare(specs, stats);
         long startNs = System.nanoTime();
         long fromNs = startNs + settleNs;
         long untilNs = startNs + segmentNs;
