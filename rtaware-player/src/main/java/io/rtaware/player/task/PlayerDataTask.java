@@ -136,6 +136,12 @@ public final class PlayerDataTask implements Task {
      *     attempt fails; or if it is down and reconnection is disabled
      * @throws InterruptedException if interrupted while waiting to reconnect
      */
+    /** @return true: a cycle waits on the socket for the server's next data, so it keeps a thread of its own */
+    @Override
+    public boolean blocks() {
+        return true;
+    }
+
     @Override
     public void execute(long nowNs) throws IOException, InterruptedException {
         if (client == null && !reconnectIfDue(nowNs)) {
