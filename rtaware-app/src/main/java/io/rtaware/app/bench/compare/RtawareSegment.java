@@ -3,38 +3,50 @@ package io.rtaware.app.bench.compare;
 import io.rtaware.app.bench.BenchSpec;
 import io.rtaware.app.bench.BenchTask;
 import io.rtaware.app.bench.BusyWork;
+import io.rtaware.core.monitor.ExecutorKind;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.MonitorListener;
 import io.rtaware.core.monitor.TaskInfo;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.time.SystemClock;
 import java.util.List;
+import java.util.stream.LongStream;
 
 /**
- * rtaware's threaded executor: a {@link Monitor} with one {@link BenchTask} per task. Lateness is
- * the monitor's own measurement (the release and start it reports in
- * {@link MonitorListener#onCycle}), skipped releases are the ones it reports. The monitor's
- * watchdog thread counts as framework cost.
+ * rtaware on one of its executors (threaded: {@code rtaware}; pooled: {@code rtaware-pooled}): a
+ * {@link Monitor} with one {@link BenchTask} per task. Lateness is the monitor's own measurement
+ * (the release and start it reports in {@link MonitorListener#onCycle}), skipped releases are the
+ * ones it reports. The monitor's watchdog and pool workers count as framework cost.
  */
 final class RtawareSegment implements SegmentExecutor {
 
     private static final String WATCHDOG_THREAD = "rtaware-monitor";
+    private static final String POOL_THREADS = "rtaware-pool-";
 
     private final BusyWork work;
+    private final String name;
+    private final ExecutorKind kind;
     private Monitor monitor;
 
-    RtawareSegment(BusyWork work) {
+    /**
+     * @param work the calibrated busy loop
+     * @param name the row's name
+     * @param kind the executor
+     */
+    RtawareSegment(BusyWork work, String name, ExecutorKind kind) {
         this.work = work;
+        this.name = name;
+        this.kind = kind;
     }
 
     @Override
     public String name() {
-        return "rtaware";
+        return name;
     }
 
     @Override
     public void prepare(List<BenchSpec> specs, List<ReleaseStats> stats) {
-        Monitor.Builder builder = Monitor.builder(new SystemClock());
+        Monitor.Builder builder = Monitor.builder(new SystemClock()).executor(kind);
         for (BenchSpec s : specs) {
             builder.task(s.name(), Schedule.periodic(s.periodNs()), new BenchTask(s.name(), s.workNs(), null, work));
         }
@@ -55,7 +67,8 @@ final class RtawareSegment implements SegmentExecutor {
      */
     @Override
     public long[] helperThreadIds() {
-        return LiveThreads.idsNamed(WATCHDOG_THREAD);
+        return LongStream.concat(LongStream.of(LiveThreads.idsNamed(WATCHDOG_THREAD)),
+                LongStream.of(LiveThreads.idsNamed(POOL_THREADS))).toArray();
     }
 
     @Override
