@@ -158,6 +158,10 @@ public final class BenchCommand implements Callable<Integer> {
             description = "With --sweep-tasks: the PNG to write (default: ${DEFAULT-VALUE}).")
     Path plot;
 
+    @Option(names = "--lateness-histogram", paramLabel = "FILE",
+            description = "Write every cycle's release lateness in 1 us buckets (cyclictest's histogram format).")
+    Path latenessHistogram;
+
     @Mixin
     LiveMixin live;
 
@@ -262,6 +266,11 @@ public final class BenchCommand implements Callable<Integer> {
                     new BenchTask(s.name(), s.workNs(), chain ? previous : null, work));
             previous = s.name();
         }
+        LatenessHistogram histogram = null;
+        if (latenessHistogram != null) {
+            histogram = new LatenessHistogram();
+            builder.listener(histogram);
+        }
         Monitor monitor = CommandMonitor.build(builder);
         ConsoleReporter console = CommandMonitor.console(monitor, quiet, System.err);
         TraceRecorder recorder = trace.attach(monitor);
@@ -283,6 +292,9 @@ public final class BenchCommand implements Callable<Integer> {
         long releases = totalReleases(monitor) - releasesBefore;
         CommandMonitor.stop(monitor, hook);
         liveView.close();
+        if (histogram != null) {
+            histogram.write(latenessHistogram);
+        }
         if (endedEarly) {
             System.err.println("rtaware: the run ended before its duration (a task hit a fatal error, see above)");
             return EXIT_ENDED_EARLY;

@@ -16,9 +16,10 @@ import java.util.concurrent.locks.LockSupport;
  * <p>The timer structure is two {@link TaskHeap}s under one lock: <em>waiting</em>, ordered by
  * next release, and <em>ready</em>, the releases already due, ordered by absolute deadline
  * (earliest deadline first) or by period (rate-monotonic). A worker, holding the lock, puts back
- * the task it has just run (keyed by the release the {@link TaskRuntime} decided), moves every
- * due release to ready, takes the first ready task, and runs it outside the lock; with nothing
- * ready it parks with its {@link ClockWaiter} until the earliest waiting release. The lock is the
+ * the tasks it has just run (keyed by the release each {@link TaskRuntime} decided), moves every
+ * due release to ready, takes its share of the first ready tasks (at most {@link #MAX_BATCH}),
+ * wakes a parked worker if work is left, and runs them outside the lock; with nothing ready it
+ * parks with its {@link ClockWaiter} until the earliest waiting release. The lock is the
  * happens-before edge between the workers that run one task's consecutive cycles. Every rule of
  * what a cycle means stays the runtime's: the same grid, misses, skips and counts as on the
  * threaded executor (a release that waited for a free worker is late, and one still waiting past
@@ -38,6 +39,13 @@ import java.util.concurrent.locks.LockSupport;
 final class PooledExecutor implements Executor {
 
     private static final long JOIN_TIMEOUT_MS = 5_000;
+    /**
+     * Most due releases a worker takes at once (its share of the ready ones, in order): one lock
+     * hold for up to this many cycles instead of one per cycle, which is what lets two workers
+     * release 10 000 tasks at 100 Hz. A release claimed in a batch waits as it would in the
+     * ready heap; a later release with an earlier deadline waits for at most this many cycles.
+     */
+    static final int MAX_BATCH = 32;
 
     private final Clock clock;
     private final ClockWaiter waiter;
@@ -171,45 +179,43 @@ final class PooledExecutor implements Executor {
             waiter.done(party);
             return;
         }
-        int previous = -1;
+        int[] batch = new int[MAX_BATCH];
+        int claimed = 0;
         try {
             while (running) {
-                int slot;
-                long parkUntilNs;
+                long parkUntilNs = 0;
                 synchronized (lock) {
-                    if (previous >= 0) {
-                        long next = pooled[previous].nextReleaseNs();
+                    for (int i = 0; i < claimed; i++) {
+                        long next = pooled[batch[i]].nextReleaseNs();
                         if (next != TaskRuntime.NEVER) {
-                            waiting.push(previous, next);
+                            waiting.push(batch[i], next);
                         }
-                        previous = -1;
                     }
+                    claimed = 0;
                     long now = clock.nanos();
                     while (waiting.size() > 0 && waiting.peekKey() <= now) {
                         int due = waiting.pop();
                         ready.push(due, readyKey(pooled[due]));
                     }
-                    if (ready.size() > 0) {
-                        slot = ready.pop();
-                        parkUntilNs = 0;
+                    int share = Math.min(MAX_BATCH, Math.max(1, ready.size() / workers.length));
+                    while (claimed < share && ready.size() > 0) {
+                        batch[claimed++] = ready.pop();
+                    }
+                    if (claimed > 0) {
                         parkedUntil[worker] = NOT_PARKED;
-                        if (ready.size() > 0) {
-                            wakeParkedWorker(Long.MAX_VALUE);
-                        } else {
-                            wakeParkedWorker(waiting.peekKey());
-                        }
+                        wakeParkedWorker(ready.size() > 0 ? Long.MAX_VALUE : waiting.peekKey());
                     } else {
-                        slot = -1;
                         parkUntilNs = waiting.peekKey();
                         parkedUntil[worker] = parkUntilNs;
                     }
                 }
-                if (slot < 0) {
+                if (claimed == 0) {
                     waiter.park(party, parkUntilNs);
                     continue;
                 }
-                runCycle(worker, pooled[slot]);
-                previous = slot;
+                for (int i = 0; i < claimed && running; i++) {
+                    runCycle(worker, pooled[batch[i]]);
+                }
             }
         } catch (VirtualMachineError fatal) {
             faults.report("pool worker " + worker + " (fatal VM error: stopping every task)", fatal);
