@@ -43,13 +43,14 @@ final class CycleStatistics {
     private double execSumNs;
 
     // Reader side of the execution-time recorder, guarded by this object's monitor. Created on
-    // the first read, by the reader: a histogram of this range is ~35 KB, and a monitor of
+    // the first read that needs them (the whole run at the report, the recent windows at the
+    // first live p99), by the reader: a histogram of this range is ~35 KB, and a monitor of
     // 1000 tasks that nobody reads live would otherwise zero 140 MB of them at build time
     // (issue 16's profile: Histogram.<init> under Monitor.Builder.build was 60 % of the
     // allocation and a quarter of the main thread's samples of a 1000-task comparison).
     private Histogram execWholeRunNs;
     private Histogram execIntervalNs;
-    /** The latest cycles: the previous full window and the one filling up. */
+    /** The latest cycles since the first live read: the previous full window and the one filling up. */
     private Histogram execOlderNs;
     private Histogram execNewerNs;
     private Histogram execRecentNs;
@@ -147,6 +148,11 @@ final class CycleStatistics {
      * {@value #RECENT_EXEC_CYCLES} cycles once that many have run; 0 before the first cycle.
      */
     private synchronized long recentExecP99Ns() {
+        if (execRecentNs == null) {
+            execOlderNs = newHistogram();
+            execNewerNs = newHistogram();
+            execRecentNs = newHistogram();
+        }
         drainExecRecorder();
         execRecentNs.reset();
         execRecentNs.add(execOlderNs);
@@ -158,15 +164,15 @@ final class CycleStatistics {
     private void drainExecRecorder() {
         if (execWholeRunNs == null) {
             execWholeRunNs = newHistogram();
-            execOlderNs = newHistogram();
-            execNewerNs = newHistogram();
-            execRecentNs = newHistogram();
         }
         execIntervalNs = execRecorder.getIntervalHistogram(execIntervalNs);
         if (execIntervalNs.getTotalCount() == 0) {
             return;
         }
         execWholeRunNs.add(execIntervalNs);
+        if (execNewerNs == null) {
+            return; // nobody reads the live p99: no recent windows to keep
+        }
         execNewerNs.add(execIntervalNs);
         if (execNewerNs.getTotalCount() >= RECENT_EXEC_CYCLES) {
             Histogram full = execNewerNs;

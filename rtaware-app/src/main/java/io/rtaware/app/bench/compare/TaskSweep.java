@@ -65,7 +65,7 @@ public final class TaskSweep {
         for (int count : counts) {
             progress.printf("sweep: %d task(s)%n", count);
             for (RunResult r : comparison.forTasks(count).run()) {
-                points.add(new Point(count, r));
+                add(count, r);
             }
         }
         return this;
@@ -95,6 +95,14 @@ public final class TaskSweep {
                                         long measuredNs, long segmentNs, PrintStream progress,
                                         CompareRun.Family family, int workers) {
         return tasks -> new CompareRun(specsOf.apply(tasks), work, measuredNs, segmentNs, progress, family, workers);
+    }
+
+    /**
+     * @param tasks a task count
+     * @param run an executor's row of the comparison at that count
+     */
+    void add(int tasks, RunResult run) {
+        points.add(new Point(tasks, run));
     }
 
     /** @return every executor at every task count */
