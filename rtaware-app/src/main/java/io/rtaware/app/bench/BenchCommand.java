@@ -6,6 +6,7 @@ import io.rtaware.app.bench.compare.CompareReport;
 import io.rtaware.app.bench.compare.CompareRun;
 import io.rtaware.app.bench.compare.Goal;
 import io.rtaware.app.bench.compare.RunResult;
+import io.rtaware.app.bench.compare.TaskSweep;
 import io.rtaware.app.cli.CommandMonitor;
 import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.app.cli.MemoryBudget;
@@ -17,6 +18,7 @@ import io.rtaware.app.output.OutputFile;
 import io.rtaware.app.output.OutputWrites;
 import io.rtaware.app.report.ReportSections;
 import io.rtaware.core.monitor.ConsoleReporter;
+import io.rtaware.core.monitor.ExecutorKind;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
@@ -59,9 +61,13 @@ import picocli.CommandLine.Option;
                 "  rtaware bench --tasks 2 --period 1ms --work 100us --realtime",
                 "  rtaware bench --compare --tasks 8 --period 10ms --work 1ms --duration 30s --json c.json",
                 "",
-                "--compare runs the same task set on rtaware, on ScheduledThreadPoolExecutor (one",
-                "thread per task) and on a bare parkNanos loop (the floor for a Java thread),",
-                "interleaved in segments so all three see the same machine noise, and prints",
+                "  rtaware bench --executor pooled --tasks 10000 --period 10ms --work 0 --duration 10s",
+                "  rtaware bench --sweep-tasks 10,100,1000,10000 --period 10ms --work 0 --duration 4s",
+                "",
+                "--compare runs the same task set on rtaware (threaded and pooled executors), on",
+                "ScheduledThreadPoolExecutor (one thread per task, and one pool of --workers threads)",
+                "and on a bare parkNanos loop (the floor for a Java thread), interleaved in segments",
+                "so all of them see the same machine noise, and prints",
                 "lateness, misses, bursts, CPU and bytes allocated per release side by side",
                 "(JSON schema rtaware.bench-compare/1 with --json)."})
 public final class BenchCommand implements Callable<Integer> {
@@ -105,8 +111,9 @@ public final class BenchCommand implements Callable<Integer> {
             + "watchdog) allocated any byte in the steady state (the last two thirds of the run).")
     boolean failOnAlloc;
 
-    @Option(names = "--compare", description = "Run the task set on rtaware, ScheduledThreadPoolExecutor and a bare "
-            + "parkNanos loop, interleaved, and compare them; --duration is the measured time per executor.")
+    @Option(names = "--compare", description = "Run the task set on rtaware (threaded, pooled), ScheduledThreadPoolExecutor "
+            + "(per task, pooled) and a bare parkNanos loop, interleaved, and compare them; --duration is the "
+            + "measured time per executor.")
     boolean compare;
 
     @Option(names = "--segment", converter = DurationConverter.class, defaultValue = "2s",
@@ -143,6 +150,29 @@ public final class BenchCommand implements Callable<Integer> {
     @Option(names = "--affinity", paramLabel = "TASK=CPU,...", split = ",",
             description = "With --realtime, pin task threads to CPUs, e.g. a=1,b=0.")
     Map<String, Integer> affinity = new LinkedHashMap<>();
+
+    @Option(names = "--executor", paramLabel = "threaded|pooled",
+            description = "Executor of the periodic tasks: threaded (a thread per task) or pooled (--workers "
+                    + "threads, earliest deadline first). With --compare: compare only that family "
+                    + "(default: threaded for a run, both for --compare).")
+    String executor;
+
+    @Option(names = "--workers", paramLabel = "N",
+            description = "Worker threads of the pooled executors (default: the number of cores).")
+    Integer workers;
+
+    @Option(names = "--sweep-tasks", paramLabel = "N,N,...", split = ",",
+            description = "Run one comparison (as --compare) per task count, e.g. 10,100,1000,10000, print misses "
+                    + "and p99/p99.9 lateness per executor and count, and plot them (--plot).")
+    List<Integer> sweepTasks;
+
+    @Option(names = "--plot", paramLabel = "FILE", defaultValue = "bench-sweep.png",
+            description = "With --sweep-tasks: the PNG to write (default: ${DEFAULT-VALUE}).")
+    Path plot;
+
+    @Option(names = "--lateness-histogram", paramLabel = "FILE",
+            description = "Write every cycle's release lateness in 1 us buckets (cyclictest's histogram format).")
+    Path latenessHistogram;
 
     @Mixin
     LiveMixin live;
@@ -181,21 +211,57 @@ public final class BenchCommand implements Callable<Integer> {
         if (!(gcPressureMbps >= 0) || Double.isInfinite(gcPressureMbps)) {
             throw new UserError("--gc-pressure must be 0 or more MB/s, got " + gcPressureMbps);
         }
+        if (sweepTasks != null) {
+            if (sweepTasks.isEmpty() || sweepTasks.stream().anyMatch(n -> n == null || n < 1)) {
+                throw new UserError("--sweep-tasks needs task counts of at least 1, got " + sweepTasks);
+            }
+            compare = true;
+        }
         if (compare && (spec != null || chain || timeScale != 1.0 || live.options().enabled() || record.enabled())) {
             throw new UserError("--compare takes --tasks, --period and --work (not --spec, --chain, --time-scale, --live or --record)");
         }
         if (compare && segmentNs < 2 * specs.stream().mapToLong(BenchSpec::periodNs).max().orElse(0)) {
             throw new UserError("--segment must be at least two periods, got " + Durations.format(segmentNs));
         }
+        if (executor != null && !executor.equals("threaded") && !executor.equals("pooled")) {
+            throw new UserError("--executor must be threaded or pooled, got " + executor);
+        }
+        if (workers != null && workers < 1) {
+            throw new UserError("--workers must be at least 1, got " + workers);
+        }
         BusyWork work = BusyWork.calibrate();
         try (CpuLoad load = CpuLoad.start(loadThreads); GarbageLoad garbage = GarbageLoad.start(gcPressureMbps)) {
+            if (sweepTasks != null) {
+                return sweep(work);
+            }
             return compare ? compare(specs, work) : bench(specs, work);
         }
     }
 
+    private CompareRun.Family family() {
+        return executor == null ? CompareRun.Family.ALL
+                : executor.equals("pooled") ? CompareRun.Family.POOLED : CompareRun.Family.THREADED;
+    }
+
+    private int sweep(BusyWork work) throws IOException, InterruptedException {
+        PrintStream out = System.out;
+        List<Integer> counts = sweepTasks.stream().sorted().distinct().toList();
+        TaskSweep sweep = new TaskSweep().run(counts, TaskSweep.comparison(n -> uniform(n), work, durationNs,
+                segmentNs, System.err, family(), workerCount()), System.err);
+        out.printf(Locale.ROOT, "sweep: period %s, work %s, %s measured per executor and count; %s, %s%n",
+                Durations.format(periodNs), Durations.format(workNs), Durations.format(durationNs),
+                System.getProperty("java.vm.version"), CompareRun.collectors());
+        out.print(sweep.table());
+        sweep.plot(plot, "period " + Durations.format(periodNs) + ", work " + Durations.format(workNs) + ", "
+                + Runtime.getRuntime().availableProcessors() + " cores");
+        out.println("plot written to " + plot);
+        return 0;
+    }
+
     private int compare(List<BenchSpec> specs, BusyWork work) throws IOException, InterruptedException {
         PrintStream out = System.out;
-        CompareRun run = new CompareRun(specs, work, durationNs, segmentNs, System.err);
+        CompareRun.Family family = family();
+        CompareRun run = new CompareRun(specs, work, durationNs, segmentNs, System.err, family, workerCount());
         List<RunResult> runs = run.run();
         CompareReport report = new CompareReport(CompareReport.SCHEMA, specs.size(), specs.get(0).periodNs() / 1e6,
                 specs.get(0).workNs() / 1e6, run.measuredNs() / 1e9, segmentNs / 1e9, loadThreads, gcPressureMbps,
@@ -224,7 +290,7 @@ public final class BenchCommand implements Callable<Integer> {
                         + String.join(", ", specs.stream().map(BenchSpec::name).toList()));
             }
         }
-        Monitor.Builder builder = Monitor.builder(clock);
+        Monitor.Builder builder = Monitor.builder(clock).executor(executorKind());
         if (adaptive) {
             builder.adaptivePeriods(AdaptivePolicy.defaults());
         }
@@ -236,6 +302,11 @@ public final class BenchCommand implements Callable<Integer> {
             builder.task(s.name(), s.schedule(),
                     new BenchTask(s.name(), s.workNs(), chain ? previous : null, work));
             previous = s.name();
+        }
+        LatenessHistogram histogram = null;
+        if (latenessHistogram != null) {
+            histogram = new LatenessHistogram();
+            builder.listener(histogram);
         }
         Monitor monitor = CommandMonitor.build(builder);
         ConsoleReporter console = CommandMonitor.console(monitor, quiet, System.err);
@@ -262,6 +333,9 @@ public final class BenchCommand implements Callable<Integer> {
         long releases = totalReleases(monitor) - releasesBefore;
         CommandMonitor.stop(monitor, hook);
         liveView.close();
+        if (histogram != null) {
+            histogram.write(latenessHistogram);
+        }
         if (endedEarly) {
             System.err.println("rtaware: the run ended before its duration (a task hit a fatal error, see above)");
             return EXIT_ENDED_EARLY;
@@ -275,6 +349,16 @@ public final class BenchCommand implements Callable<Integer> {
             return EXIT_ALLOCATED;
         }
         return writes.exitStatus(0);
+    }
+
+    private int workerCount() {
+        return workers != null ? workers : Runtime.getRuntime().availableProcessors();
+    }
+
+    private ExecutorKind executorKind() {
+        return "pooled".equals(executor)
+                ? ExecutorKind.pooled(workerCount(), ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST)
+                : ExecutorKind.threaded();
     }
 
     private static long totalReleases(Monitor monitor) {
@@ -317,8 +401,13 @@ public final class BenchCommand implements Callable<Integer> {
         if (tasks < 1) {
             throw new UserError("--tasks must be at least 1, got " + tasks);
         }
+        return uniform(tasks);
+    }
+
+    /** @return {@code count} tasks t1..tN of --period and --work */
+    private List<BenchSpec> uniform(int count) {
         List<BenchSpec> specs = new ArrayList<>();
-        for (int i = 1; i <= tasks; i++) {
+        for (int i = 1; i <= count; i++) {
             specs.add(BenchSpec.of("t" + i, periodNs, workNs));
         }
         return specs;

@@ -30,7 +30,8 @@ public final class ThreadAllocation {
 
     /**
      * Snapshots the monitor's threads on the per-release path: every live thread named
-     * {@code rtaware-*} (the task threads and the watchdog {@code rtaware-monitor}) except the
+     * {@code rtaware-*} (the task threads, the pool workers {@code rtaware-pool-N} and the watchdog
+     * {@code rtaware-monitor}) except the
      * console printer and the stop helpers.
      *
      * @return the snapshot

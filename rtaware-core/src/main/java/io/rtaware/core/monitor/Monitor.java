@@ -47,6 +47,7 @@ public final class Monitor {
     private final List<Consumer<Report>> terminationHandlers = new CopyOnWriteArrayList<>();
     private final List<MonitorListener> listeners;
     private final ThreadSetup threadSetup;
+    private final ExecutorKind executorKind;
     private final ListenerFanOut events;
     private final FrameworkFaults faults;
     /** Reaction constraints declared by tasks at initialization, by task name. */
@@ -62,9 +63,10 @@ public final class Monitor {
     private volatile boolean tasksStopped;
 
     private Monitor(Clock clock, List<TaskRuntime> runtimes, DataGraph graph, List<MonitorListener> listeners,
-                    ThreadSetup threadSetup, ListenerFanOut events, FrameworkFaults faults,
+                    ThreadSetup threadSetup, ListenerFanOut events, FrameworkFaults faults, ExecutorKind executorKind,
                     Map<String, ReactionConstraint> reactions) {
         this.clock = clock;
+        this.executorKind = executorKind;
         this.runtimes = runtimes;
         this.graph = graph;
         this.listeners = new ArrayList<>(listeners);
@@ -218,16 +220,27 @@ public final class Monitor {
     }
 
     /**
-     * Starts every task on its own platform thread, named {@code rtaware-<task>}, with
-     * rate-monotonic Java priorities and the builder's {@link ThreadSetup}. Periodic tasks
-     * are released on an absolute grid from now.
+     * Starts the tasks on the builder's executor: by default every task on its own platform
+     * thread, named {@code rtaware-<task>}, with rate-monotonic Java priorities and the builder's
+     * {@link ThreadSetup}; with {@link ExecutorKind#pooled()} the periodic tasks that do not block
+     * on a few workers ({@link PooledExecutor}). Periodic tasks are released on an absolute grid
+     * from now.
      *
      * @throws IllegalStateException if already started
      */
     public void start() {
-        ClockWaiter waiter = clock instanceof ManualClock manual
-                ? new ManualClockWaiter(manual, runtimes.size() + 1) : new ParkingClockWaiter(clock);
-        begin(new ThreadedExecutor(clock, waiter, runtimes, this::requestStopFromTask, threadSetup, faults));
+        if (executorKind instanceof ExecutorKind.Pooled pool) {
+            ClockWaiter waiter = waiterFor(PooledExecutor.parties(runtimes.size(), pool.workers()));
+            begin(new PooledExecutor(clock, waiter, runtimes, pool.workers(), pool.order(), this::requestStopFromTask,
+                    threadSetup, faults));
+        } else {
+            ClockWaiter waiter = waiterFor(runtimes.size() + 1);
+            begin(new ThreadedExecutor(clock, waiter, runtimes, this::requestStopFromTask, threadSetup, faults));
+        }
+    }
+
+    private ClockWaiter waiterFor(int parties) {
+        return clock instanceof ManualClock manual ? new ManualClockWaiter(manual, parties) : new ParkingClockWaiter(clock);
     }
 
     /** @return the executor once started, else null (tests on a manual clock step through it) */
@@ -418,6 +431,7 @@ public final class Monitor {
         private AdaptivePolicy adaptivePolicy;
         private ThreadSetup threadSetup;
         private FrameworkErrorHandler errorHandler;
+        private ExecutorKind executorKind = ExecutorKind.threaded();
 
         private Builder(Clock clock) {
             this.clock = Objects.requireNonNull(clock, "clock");
@@ -486,6 +500,17 @@ public final class Monitor {
         }
 
         /**
+         * @param kind the executor {@link Monitor#start()} uses: {@link ExecutorKind#threaded()}
+         *     (default, one thread per task) or {@link ExecutorKind#pooled()} (a few workers for
+         *     the periodic tasks that do not block)
+         * @return this builder
+         */
+        public Builder executor(ExecutorKind kind) {
+            this.executorKind = Objects.requireNonNull(kind, "kind");
+            return this;
+        }
+
+        /**
          * @param listener receives every event
          * @return this builder
          */
@@ -535,7 +560,8 @@ public final class Monitor {
                     reactions.put(declarations.spec.name(), declarations.reaction());
                 }
             }
-            return new Monitor(clock, List.copyOf(runtimes), graph, listeners, threadSetup, events, faults, reactions);
+            return new Monitor(clock, List.copyOf(runtimes), graph, listeners, threadSetup, events, faults, executorKind,
+                    reactions);
         }
     }
 }

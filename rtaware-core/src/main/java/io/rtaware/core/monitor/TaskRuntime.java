@@ -218,6 +218,15 @@ final class TaskRuntime implements TaskInfo {
         return nextReleaseNs;
     }
 
+    /**
+     * @return the absolute deadline of the release {@link #nextReleaseNs()} names, or
+     *     {@link #NEVER} if not periodic or not released again; read by the thread that runs the
+     *     task's cycles (the pooled executor orders due releases by it)
+     */
+    long nextDeadlineNs() {
+        return release == Release.PERIODIC && nextReleaseNs != NEVER ? grid.deadlineOf(nextIndex) : NEVER;
+    }
+
     /** @return the world time of release k (periodic), or of the single run (once/continuous) */
     long releaseTimeNs(long k) {
         ReleaseGrid g = grid;

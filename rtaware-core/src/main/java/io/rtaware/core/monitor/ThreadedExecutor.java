@@ -46,6 +46,16 @@ final class ThreadedExecutor implements Executor {
 
     ThreadedExecutor(Clock clock, ClockWaiter waiter, List<TaskRuntime> runtimes, Runnable stopAllRequest,
                      ThreadSetup threadSetup, FrameworkFaults faults) {
+        this(clock, waiter, runtimes, stopAllRequest, threadSetup, faults, runtimes.size());
+    }
+
+    /**
+     * @param runtimes the tasks it runs: all of the monitor's, or (inside a pool) those that keep
+     *     a thread of their own; task i waits as party {@code runtime.index()}
+     * @param watchdogParty the watchdog's party number
+     */
+    ThreadedExecutor(Clock clock, ClockWaiter waiter, List<TaskRuntime> runtimes, Runnable stopAllRequest,
+                     ThreadSetup threadSetup, FrameworkFaults faults, int watchdogParty) {
         this.clock = clock;
         this.waiter = waiter;
         this.runtimes = runtimes;
@@ -53,7 +63,7 @@ final class ThreadedExecutor implements Executor {
         this.stopAllRequest = stopAllRequest;
         this.threadSetup = threadSetup;
         this.faults = faults;
-        this.watchdogParty = runtimes.size();
+        this.watchdogParty = watchdogParty;
     }
 
     /** @return the waiter its threads wait with (tests on a manual clock step through it) */
@@ -63,13 +73,13 @@ final class ThreadedExecutor implements Executor {
 
     /**
      * @param runtimes the tasks
-     * @return each task's rate-monotonic rank by task index (see {@link ThreadSetup})
+     * @return each task's rate-monotonic rank among them, by task index (see {@link ThreadSetup})
      */
     static int[] rateMonotonicRanks(List<TaskRuntime> runtimes) {
         List<TaskRuntime> order = new ArrayList<>(runtimes);
         // Stable sort: equal periods keep registration order; tasks without a period go last.
         order.sort(Comparator.comparingLong(r -> r.isPeriodic() ? r.periodNs() : Long.MAX_VALUE));
-        int[] ranks = new int[runtimes.size()];
+        int[] ranks = new int[runtimes.stream().mapToInt(TaskRuntime::index).max().orElse(-1) + 1];
         for (int rank = 0; rank < order.size(); rank++) {
             ranks[order.get(rank).index()] = rank;
         }
@@ -216,6 +226,12 @@ final class ThreadedExecutor implements Executor {
 
     @Override
     public void stopAndJoin() {
+        stopWithoutClosing();
+        waiter.close();
+    }
+
+    /** Stops and joins the threads, leaving the waiter open (a pool that holds this one closes it). */
+    void stopWithoutClosing() {
         running = false;
         threads.forEach(LockSupport::unpark);
         if (watchdog != null) {
@@ -245,6 +261,5 @@ final class ThreadedExecutor implements Executor {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
-        waiter.close();
     }
 }

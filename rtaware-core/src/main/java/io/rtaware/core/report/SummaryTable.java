@@ -20,15 +20,16 @@ public final class SummaryTable {
         StringBuilder sb = new StringBuilder();
         sb.append(String.format(Locale.ROOT, "rtaware summary: %.3f s of world time (time scale x%s), %.2f%% of all releases missed%n",
                 report.durationS(), trim(report.timeScale()), report.missesTotalPct()));
-        sb.append(String.format(Locale.ROOT, "%-12s %-10s %8s %8s %8s %8s %7s %7s %7s %6s | %9s %9s %9s | %9s %9s %9s%n",
+        sb.append(String.format(Locale.ROOT, "%-12s %-10s %8s %8s %8s %8s %7s %7s %7s %6s | %9s %9s %9s | %9s %9s %10s %9s%n",
                 "task", "schedule", "period", "releases", "runs", "misses", "miss%", "skipped", "stale", "errors",
-                "exec p50", "exec p99", "exec max", "late p50", "late p99", "late max"));
+                "exec p50", "exec p99", "exec max", "late p50", "late p99", "late p99.9", "late max"));
         for (TaskReport t : report.tasks()) {
-            sb.append(String.format(Locale.ROOT, "%-12s %-10s %8s %8d %8d %8d %7.2f %7d %7d %6d | %9s %9s %9s | %9s %9s %9s%n",
+            sb.append(String.format(Locale.ROOT, "%-12s %-10s %8s %8d %8d %8d %7.2f %7d %7d %6d | %9s %9s %9s | %9s %9s %10s %9s%n",
                     t.name(), t.schedule(), t.periodMs() == null ? "-" : Durations.formatMillis(t.periodMs()),
                     t.releases(), t.runs(), t.misses(), t.missPct(), t.skipped(), t.staleRuns(), t.errors(),
                     us(t.execUs().p50()), us(t.execUs().p99()), us(t.execUs().max()),
-                    us(t.latenessUs().p50()), us(t.latenessUs().p99()), us(t.latenessUs().max())));
+                    us(t.latenessUs().p50()), us(t.latenessUs().p99()), us(t.latenessUs().p999()),
+                    us(t.latenessUs().max())));
         }
         if (!report.data().isEmpty()) {
             sb.append(String.format(Locale.ROOT, "%n%-16s %-12s %-28s %8s %9s %10s %10s %10s%n",

@@ -36,6 +36,18 @@ public interface Task {
     void execute(long nowNs) throws Exception;
 
     /**
+     * Whether a cycle may block the calling thread waiting for something outside the process (a
+     * socket read, a device): such a task gets a thread of its own under every executor, so it
+     * never holds up a pooled worker that other tasks are due on. The default is false: a cycle
+     * computes and returns.
+     *
+     * @return true if {@link #execute(long)} can block
+     */
+    default boolean blocks() {
+        return false;
+    }
+
+    /**
      * Releases what the task holds. Called once, after every task thread has stopped, in
      * registration order. The default does nothing.
      *

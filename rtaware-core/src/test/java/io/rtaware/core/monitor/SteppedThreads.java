@@ -15,7 +15,9 @@ final class SteppedThreads {
 
     SteppedThreads(Monitor monitor, ManualClock clock) {
         this.clock = clock;
-        this.waiter = (ManualClockWaiter) ((ThreadedExecutor) monitor.executor()).waiter();
+        Executor executor = monitor.executor();
+        this.waiter = (ManualClockWaiter) (executor instanceof PooledExecutor pool
+                ? pool.waiter() : ((ThreadedExecutor) executor).waiter());
     }
 
     /** Runs every release before {@code endNs}; the clock stays at the last moment something was due. */

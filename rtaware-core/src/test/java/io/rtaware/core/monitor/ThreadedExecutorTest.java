@@ -19,14 +19,29 @@ import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
 
 /**
- * The threaded executor with its real threads, on a manual clock stepped by the test (see
- * {@link SteppedThreads}): the same exact counts as the step executor, because both follow the
- * one rulebook in {@link TaskRuntime}. One test on the wall clock proves the real waiting.
+ * The threaded and the pooled executor with their real threads, on a manual clock stepped by the
+ * test (see {@link SteppedThreads}): the same exact counts as the step executor, because all
+ * follow the one rulebook in {@link TaskRuntime}. Every rule test runs on both executors (the
+ * pool with two workers); one test on the wall clock proves the real waiting.
  */
 @Tag("threads")
 class ThreadedExecutorTest {
+
+    /** The executors under test. */
+    enum Kind {
+        THREADED(ExecutorKind.threaded()),
+        POOLED(ExecutorKind.pooled(2, ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST));
+
+        final ExecutorKind executor;
+
+        Kind(ExecutorKind executor) {
+            this.executor = executor;
+        }
+    }
 
     private final ManualClock clock = new ManualClock();
 
@@ -52,10 +67,11 @@ class ThreadedExecutorTest {
         assertTrue(rightThread.get(), "the task runs on its own thread named rtaware-<task>");
     }
 
-    @Test
-    void anOverrunSkipsToTheNextGridPointExactlyAsOnTheStepExecutor() {
+    @ParameterizedTest
+    @EnumSource(Kind.class)
+    void anOverrunSkipsToTheNextGridPointExactlyAsOnTheStepExecutor(Kind kind) {
         AtomicInteger cycle = new AtomicInteger();
-        Monitor monitor = Monitor.builder(clock).task("slow", Schedule.periodic(ms(10)), FnTask.of(now -> {
+        Monitor monitor = Monitor.builder(clock).executor(kind.executor).task("slow", Schedule.periodic(ms(10)), FnTask.of(now -> {
             if (cycle.getAndIncrement() == 2) {
                 clock.advance(ms(25)); // release 2 at 20 ms ends at 45 ms: releases 3 and 4 are skipped
             }
@@ -72,9 +88,10 @@ class ThreadedExecutorTest {
                 + " 50 ms, is on time: no catch-up of the skipped releases");
     }
 
-    @Test
-    void aContinuousTaskThatKeepsThrowingIsPausedTwentyMillisecondsOfWorldTime() {
-        Monitor monitor = Monitor.builder(clock).task("broken", Schedule.continuous(), FnTask.of(now -> {
+    @ParameterizedTest
+    @EnumSource(Kind.class)
+    void aContinuousTaskThatKeepsThrowingIsPausedTwentyMillisecondsOfWorldTime(Kind kind) {
+        Monitor monitor = Monitor.builder(clock).executor(kind.executor).task("broken", Schedule.continuous(), FnTask.of(now -> {
             throw new IllegalStateException("connection lost");
         })).build();
         monitor.start();
@@ -85,9 +102,10 @@ class ThreadedExecutorTest {
         assertEquals(15, report.task("broken").runs());
     }
 
-    @Test
-    void aContinuousTaskThatTakesNoTimeIsReleasedEveryIdleStep() {
-        Monitor monitor = Monitor.builder(clock).task("spin", Schedule.continuous(), FnTask.of(now -> { })).build();
+    @ParameterizedTest
+    @EnumSource(Kind.class)
+    void aContinuousTaskThatTakesNoTimeIsReleasedEveryIdleStep(Kind kind) {
+        Monitor monitor = Monitor.builder(clock).executor(kind.executor).task("spin", Schedule.continuous(), FnTask.of(now -> { })).build();
         monitor.start();
         new SteppedThreads(monitor, clock).runUntil(ms(50));
         Report report = monitor.stop();
@@ -95,10 +113,11 @@ class ThreadedExecutorTest {
         assertEquals(50, report.task("spin").runs(), "released every 1 ms idle step, as on the step executor");
     }
 
-    @Test
-    void stopAllFromATaskThreadTerminatesTheMonitor() throws InterruptedException {
+    @ParameterizedTest
+    @EnumSource(Kind.class)
+    void stopAllFromATaskThreadTerminatesTheMonitor(Kind kind) throws InterruptedException {
         CountDownLatch handled = new CountDownLatch(1);
-        Monitor monitor = Monitor.builder(clock)
+        Monitor monitor = Monitor.builder(clock).executor(kind.executor)
                 .task(new TaskSpec("bomb", Schedule.periodic(ms(5)), ErrorPolicy.STOP_ALL, FnTask.of(now -> {
                     throw new IllegalStateException("boom");
                 })))
@@ -112,10 +131,11 @@ class ThreadedExecutorTest {
         assertEquals(1, monitor.report().task("bystander").runs(), "the clock never moved: release 0 only");
     }
 
-    @Test
-    void stopIsIdempotentAndReturnsTheReport() {
+    @ParameterizedTest
+    @EnumSource(Kind.class)
+    void stopIsIdempotentAndReturnsTheReport(Kind kind) {
         FnTask task = FnTask.of(now -> { });
-        Monitor monitor = Monitor.builder(clock).task("t", Schedule.continuous(), task).build();
+        Monitor monitor = Monitor.builder(clock).executor(kind.executor).task("t", Schedule.continuous(), task).build();
         monitor.start();
         new SteppedThreads(monitor, clock).runUntil(ms(3));
         Report first = monitor.stop();
@@ -125,8 +145,9 @@ class ThreadedExecutorTest {
         assertEquals(3, first.task("t").runs(), "at 0, 1 and 2 ms");
     }
 
-    @Test
-    void watchdogReportsAMissAtTheDeadlineWhileTheTaskIsStillRunning() throws InterruptedException {
+    @ParameterizedTest
+    @EnumSource(Kind.class)
+    void watchdogReportsAMissAtTheDeadlineWhileTheTaskIsStillRunning(Kind kind) throws InterruptedException {
         CountDownLatch missReported = new CountDownLatch(1);
         AtomicBoolean sawItWhileRunning = new AtomicBoolean();
         AtomicBoolean stillRunningFlag = new AtomicBoolean();
@@ -141,7 +162,7 @@ class ThreadedExecutorTest {
                 missReported.countDown();
             }
         };
-        Monitor monitor = Monitor.builder(clock).listener(listener)
+        Monitor monitor = Monitor.builder(clock).executor(kind.executor).listener(listener)
                 .task("stuck", Schedule.periodic(ms(10)), FnTask.of(now -> {
                     if (cycle.getAndIncrement() == 0) {
                         clock.advance(ms(12));
@@ -160,10 +181,11 @@ class ThreadedExecutorTest {
         assertEquals(2, report.task("stuck").misses(), "the late cycle counted once, plus the skipped release");
     }
 
-    @Test
-    void onTheWallClockTheTaskThreadsReallyWait() throws InterruptedException {
+    @ParameterizedTest
+    @EnumSource(Kind.class)
+    void onTheWallClockTheTaskThreadsReallyWait(Kind kind) throws InterruptedException {
         CountDownLatch threeRuns = new CountDownLatch(3);
-        Monitor monitor = Monitor.builder(new SystemClock())
+        Monitor monitor = Monitor.builder(new SystemClock()).executor(kind.executor)
                 .task("tick", Schedule.periodic(ms(10)), FnTask.of(now -> threeRuns.countDown())).build();
         monitor.start();
         assertTrue(threeRuns.await(10, TimeUnit.SECONDS), "three cycles ran");

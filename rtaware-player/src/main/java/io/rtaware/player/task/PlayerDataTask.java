@@ -160,6 +160,12 @@ public final class PlayerDataTask implements Task {
      * @throws ImpossibleDataException in the cycle that halts the robot because a device sent
      *     only impossible samples for {@link #IMPOSSIBLE_DATA_FAULT_AFTER_NS}
      */
+    /** @return true: a cycle waits on the socket for the server's next data, so it keeps a thread of its own */
+    @Override
+    public boolean blocks() {
+        return true;
+    }
+
     @Override
     public void execute(long nowNs) throws IOException, InterruptedException, ImpossibleDataException {
         if (client == null && !reconnectIfDue(nowNs)) {

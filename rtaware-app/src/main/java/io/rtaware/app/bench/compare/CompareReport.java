@@ -57,11 +57,11 @@ public record CompareReport(String schema, int tasks, double periodMs, double wo
         sb.append(String.format(Locale.ROOT, "compare: %d task(s), period %s ms, work %s ms, %.1f s measured per executor"
                         + " in %.1f s segments; load %d thread(s), gc pressure %s MB/s; %s, %s%n",
                 tasks, num(periodMs), num(workMs), durationS, segmentS, load, num(gcPressureMbps), java, gc));
-        sb.append(String.format(Locale.ROOT, "%-10s %9s %7s %7s | %9s %9s %9s %9s | %10s %11s%n", "executor",
+        sb.append(String.format(Locale.ROOT, "%-14s %9s %7s %7s | %9s %9s %9s %9s | %10s %11s%n", "executor",
                 "releases", "misses", "bursts", "late p50", "p99", "p99.9", "max", "cpu us/rel", "alloc B/rel"));
         for (RunResult r : runs) {
             RunResult.Lateness l = r.latenessUs();
-            sb.append(String.format(Locale.ROOT, "%-10s %9d %7d %7d | %7.1fus %7.1fus %7.1fus %7.1fus | %10.1f %11.1f%n",
+            sb.append(String.format(Locale.ROOT, "%-14s %9d %7d %7d | %7.1fus %7.1fus %7.1fus %7.1fus | %10.1f %11.1f%n",
                     r.executor(), r.releases(), r.misses(), r.bursts(), l.p50(), l.p99(), l.p999(), l.max(),
                     r.cpuUsPerRelease(), r.allocBytesPerRelease()));
         }

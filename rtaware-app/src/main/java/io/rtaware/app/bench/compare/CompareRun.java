@@ -2,6 +2,7 @@ package io.rtaware.app.bench.compare;
 
 import io.rtaware.app.bench.BenchSpec;
 import io.rtaware.app.bench.BusyWork;
+import io.rtaware.core.monitor.ExecutorKind;
 import java.io.PrintStream;
 import java.lang.management.GarbageCollectorMXBean;
 import java.lang.management.ManagementFactory;
@@ -34,6 +35,18 @@ public final class CompareRun {
     private final int rounds;
     private final PrintStream progress;
     private final com.sun.management.ThreadMXBean threads;
+    private final Family family;
+    private final int workers;
+
+    /** Which executors a comparison runs, besides the park loop. */
+    public enum Family {
+        /** rtaware threaded and pooled, STPE per task and pooled. */
+        ALL,
+        /** rtaware threaded and STPE with a thread per task. */
+        THREADED,
+        /** rtaware pooled and STPE with one pool of the same size. */
+        POOLED
+    }
 
     /**
      * @param specs the tasks (the same set for every executor)
@@ -43,6 +56,22 @@ public final class CompareRun {
      * @param progress where to print one line per round
      */
     public CompareRun(List<BenchSpec> specs, BusyWork work, long measuredNs, long segmentNs, PrintStream progress) {
+        this(specs, work, measuredNs, segmentNs, progress, Family.ALL, Runtime.getRuntime().availableProcessors());
+    }
+
+    /**
+     * @param specs the tasks (the same set for every executor)
+     * @param work the calibrated busy loop
+     * @param measuredNs measured time wanted per executor; rounded up to whole segments
+     * @param segmentNs length of one executor's turn
+     * @param progress where to print one line per round
+     * @param family which executors to compare (the park loop always runs: it is the floor)
+     * @param workers threads of the pooled executors (rtaware's pool and the pooled STPE)
+     */
+    public CompareRun(List<BenchSpec> specs, BusyWork work, long measuredNs, long segmentNs, PrintStream progress,
+                      Family family, int workers) {
+        this.family = family;
+        this.workers = workers;
         this.specs = List.copyOf(specs);
         this.work = work;
         this.segmentNs = segmentNs;
@@ -73,7 +102,8 @@ public final class CompareRun {
     /**
      * Runs warm-up and measured rounds.
      *
-     * @return one row per executor: rtaware, stpe, park-loop
+     * @return one row per executor: rtaware, rtaware-pooled, stpe, stpe-pooled, park-loop (those
+     *     of the family)
      * @throws InterruptedException if interrupted
      */
     public List<RunResult> run() throws InterruptedException {
@@ -84,8 +114,19 @@ public final class CompareRun {
             threads.setThreadAllocatedMemoryEnabled(true);
         }
         Map<String, Supplier<SegmentExecutor>> executors = new LinkedHashMap<>();
-        executors.put("rtaware", () -> new RtawareSegment(work));
-        executors.put("stpe", () -> new StpeSegment(work));
+        if (family != Family.POOLED) {
+            executors.put("rtaware", () -> new RtawareSegment(work, "rtaware", ExecutorKind.threaded()));
+        }
+        if (family != Family.THREADED) {
+            executors.put("rtaware-pooled", () -> new RtawareSegment(work, "rtaware-pooled",
+                    ExecutorKind.pooled(workers, ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST)));
+        }
+        if (family != Family.POOLED) {
+            executors.put("stpe", () -> new StpeSegment(work, 0));
+        }
+        if (family != Family.THREADED) {
+            executors.put("stpe-pooled", () -> new StpeSegment(work, workers));
+        }
         executors.put("park-loop", () -> new ParkLoopSegment(work));
         Map<String, ExecutorTotals> totals = new LinkedHashMap<>();
         executors.keySet().forEach(name -> totals.put(name, new ExecutorTotals(name)));
@@ -106,6 +147,7 @@ public final class CompareRun {
 
     private void runSegment(SegmentExecutor executor, List<ReleaseStats> stats, ExecutorTotals totals)
             throws InterruptedException {
+        executor.prepare(specs, stats);
         long startNs = System.nanoTime();
         long fromNs = startNs + settleNs;
         long untilNs = startNs + segmentNs;
@@ -125,7 +167,10 @@ public final class CompareRun {
         }
     }
 
-    /** Task threads (known once each task has run) plus the executor's helper threads. */
+    /**
+     * Task threads (known once each task has run) plus the executor's helper threads, each once
+     * (a pool runs many tasks on one thread).
+     */
     private static long[] threadIds(SegmentExecutor executor, List<ReleaseStats> stats) {
         long[] helpers = executor.helperThreadIds();
         long[] ids = new long[stats.size() + helpers.length];
@@ -138,7 +183,7 @@ public final class CompareRun {
         for (long id : helpers) {
             ids[n++] = id;
         }
-        return java.util.Arrays.copyOf(ids, n);
+        return java.util.Arrays.stream(ids, 0, n).distinct().toArray();
     }
 
     private long cpuNs(long[] ids) {

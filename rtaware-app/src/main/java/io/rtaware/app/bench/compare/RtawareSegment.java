@@ -3,51 +3,72 @@ package io.rtaware.app.bench.compare;
 import io.rtaware.app.bench.BenchSpec;
 import io.rtaware.app.bench.BenchTask;
 import io.rtaware.app.bench.BusyWork;
+import io.rtaware.core.monitor.ExecutorKind;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.MonitorListener;
 import io.rtaware.core.monitor.TaskInfo;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.time.SystemClock;
 import java.util.List;
+import java.util.stream.LongStream;
 
 /**
- * rtaware's threaded executor: a {@link Monitor} with one {@link BenchTask} per task. Lateness is
- * the monitor's own measurement (the release and start it reports in
- * {@link MonitorListener#onCycle}), skipped releases are the ones it reports. The monitor's
- * watchdog thread counts as framework cost.
+ * rtaware on one of its executors (threaded: {@code rtaware}; pooled: {@code rtaware-pooled}): a
+ * {@link Monitor} with one {@link BenchTask} per task. Lateness is the monitor's own measurement
+ * (the release and start it reports in {@link MonitorListener#onCycle}), skipped releases are the
+ * ones it reports. The monitor's watchdog and pool workers count as framework cost.
  */
 final class RtawareSegment implements SegmentExecutor {
 
     private static final String WATCHDOG_THREAD = "rtaware-monitor";
+    private static final String POOL_THREADS = "rtaware-pool-";
 
     private final BusyWork work;
+    private final String name;
+    private final ExecutorKind kind;
     private Monitor monitor;
 
-    RtawareSegment(BusyWork work) {
+    /**
+     * @param work the calibrated busy loop
+     * @param name the row's name
+     * @param kind the executor
+     */
+    RtawareSegment(BusyWork work, String name, ExecutorKind kind) {
         this.work = work;
+        this.name = name;
+        this.kind = kind;
     }
 
     @Override
     public String name() {
-        return "rtaware";
+        return name;
     }
 
     @Override
-    public void start(List<BenchSpec> specs, List<ReleaseStats> stats) {
-        Monitor.Builder builder = Monitor.builder(new SystemClock());
+    public void prepare(List<BenchSpec> specs, List<ReleaseStats> stats) {
+        Monitor.Builder builder = Monitor.builder(new SystemClock()).executor(kind);
         for (BenchSpec s : specs) {
             builder.task(s.name(), Schedule.periodic(s.periodNs()), new BenchTask(s.name(), s.workNs(), null, work));
         }
         builder.listener(new StatsListener(stats.toArray(new ReleaseStats[0])));
         monitor = builder.build();
-        monitor.start();
     }
 
     @Override
+    public void start(List<BenchSpec> specs, List<ReleaseStats> stats) {
+        monitor.start();
+    }
+
+    /**
+     * Finds the watchdog by name among the live threads with {@link Thread#enumerate}, not
+     * {@code Thread.getAllStackTraces()}: that one stops every thread at a safepoint and walks
+     * all their stacks (1000 task threads: 28 MB and a stall inside the measured window, seen
+     * in issue 16's profile).
+     */
+    @Override
     public long[] helperThreadIds() {
-        return Thread.getAllStackTraces().keySet().stream()
-                .filter(t -> t.getName().equals(WATCHDOG_THREAD))
-                .mapToLong(Thread::getId).toArray();
+        return LongStream.concat(LongStream.of(LiveThreads.idsNamed(WATCHDOG_THREAD)),
+                LongStream.of(LiveThreads.idsNamed(POOL_THREADS))).toArray();
     }
 
     @Override

@@ -14,6 +14,16 @@ interface SegmentExecutor {
     String name();
 
     /**
+     * Builds what the executor needs before its segment's clock starts (objects, not threads), so
+     * building a large task set is not charged to the executor's lateness. Default: nothing.
+     *
+     * @param specs the tasks
+     * @param stats one per task, in the same order
+     */
+    default void prepare(List<BenchSpec> specs, List<ReleaseStats> stats) {
+    }
+
+    /**
      * Starts the tasks; the first release is now.
      *
      * @param specs the tasks

@@ -9,9 +9,12 @@ import java.util.concurrent.TimeUnit;
 
 /**
  * What a Java developer would otherwise write: {@link ScheduledThreadPoolExecutor#scheduleAtFixedRate}.
- * Each task gets a pool of its own with one thread, so every task has a thread to itself, as
- * under rtaware. Run i of a task is intended at {@code t0 + i * period} (fixed rate: the pool
- * runs late runs back to back, it never skips), and its lateness is measured against that.
+ * Thread per task ({@code stpe}): each task gets a pool of its own with one thread, so every task
+ * has a thread to itself, as under rtaware's threaded executor. Pooled ({@code stpe-pooled}): one
+ * pool with as many threads as rtaware's pooled executor has workers, for every task. Run i of a
+ * task is intended at {@code t0 + i * period} (fixed rate: the pool runs late runs back to back,
+ * it never skips, so a backlog shows as lateness growing past a period and as misses), and its
+ * lateness is measured against that.
  */
 final class StpeSegment implements SegmentExecutor {
 
@@ -19,26 +22,47 @@ final class StpeSegment implements SegmentExecutor {
     private static final long START_AHEAD_NS = 10_000_000;
 
     private final BusyWork work;
+    /** Threads of the one shared pool; 0: a one-thread pool per task. */
+    private final int sharedThreads;
     private final List<ScheduledThreadPoolExecutor> pools = new ArrayList<>();
 
-    StpeSegment(BusyWork work) {
+    /**
+     * @param work the calibrated busy loop
+     * @param sharedThreads threads of one pool shared by every task; 0 for a pool per task
+     */
+    StpeSegment(BusyWork work, int sharedThreads) {
         this.work = work;
+        this.sharedThreads = sharedThreads;
     }
 
     @Override
     public String name() {
-        return "stpe";
+        return sharedThreads == 0 ? "stpe" : "stpe-pooled";
+    }
+
+    @Override
+    public void prepare(List<BenchSpec> specs, List<ReleaseStats> stats) {
+        if (sharedThreads > 0) {
+            ScheduledThreadPoolExecutor shared = pool(sharedThreads, "stpe-pool");
+            specs.forEach(spec -> pools.add(shared));
+            return;
+        }
+        for (BenchSpec spec : specs) {
+            pools.add(pool(1, "stpe-" + spec.name()));
+        }
+    }
+
+    private static ScheduledThreadPoolExecutor pool(int threads, String name) {
+        int[] created = new int[1];
+        return new ScheduledThreadPoolExecutor(threads, r -> {
+            Thread thread = new Thread(r, threads == 1 ? name : name + "-" + created[0]++);
+            thread.setDaemon(true);
+            return thread;
+        });
     }
 
     @Override
     public void start(List<BenchSpec> specs, List<ReleaseStats> stats) {
-        for (BenchSpec spec : specs) {
-            pools.add(new ScheduledThreadPoolExecutor(1, r -> {
-                Thread thread = new Thread(r, "stpe-" + spec.name());
-                thread.setDaemon(true);
-                return thread;
-            }));
-        }
         // The pools exist; t0 lies just ahead, so every task's first run is intended at the same t0.
         long t0 = System.nanoTime() + START_AHEAD_NS;
         for (int i = 0; i < specs.size(); i++) {
@@ -51,13 +75,13 @@ final class StpeSegment implements SegmentExecutor {
 
     @Override
     public long[] helperThreadIds() {
-        return new long[0];
+        return sharedThreads == 0 ? new long[0] : LiveThreads.idsNamed("stpe-pool-");
     }
 
     @Override
     public void stop() throws InterruptedException {
         pools.forEach(ScheduledThreadPoolExecutor::shutdownNow);
-        for (ScheduledThreadPoolExecutor pool : pools) {
+        for (ScheduledThreadPoolExecutor pool : new java.util.LinkedHashSet<>(pools)) {
             pool.awaitTermination(STOP_TIMEOUT_S, TimeUnit.SECONDS);
         }
     }

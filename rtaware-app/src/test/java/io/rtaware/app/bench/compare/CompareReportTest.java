@@ -47,7 +47,7 @@ class CompareReportTest {
     void goalsCompareRtawareWithTheFloorAndWithStpe() {
         List<Goal> goals = Goal.check(List.of(row("rtaware", 110, 0, 0), row("stpe", 100, 0, 0),
                 row("park-loop", 100, 0, 0)));
-        assertEquals(4, goals.size());
+        assertEquals(7, goals.size(), "issue 8's four, then issue 16's misses, p99.9 and miss share");
         assertTrue(goals.get(0).pass(), "1.10 <= 1.25");
         assertEquals("1.10 (110.0 / 100.0 us)", goals.get(0).value());
         assertFalse(goals.get(1).pass(), "110 > 100");
@@ -55,10 +55,28 @@ class CompareReportTest {
         assertTrue(goals.get(3).pass());
 
         List<Goal> bad = Goal.check(List.of(row("rtaware", 126, 2, 8), row("park-loop", 100, 0, 0)));
-        assertEquals(3, bad.size(), "no stpe row, no stpe goal");
+        assertEquals(6, bad.size(), "no stpe row, no stpe goal");
         assertFalse(bad.get(0).pass());
         assertFalse(bad.get(1).pass());
         assertFalse(bad.get(2).pass());
+    }
+
+    @Test
+    void issue16GoalsCompareThreadedWithTheFloorAndPooledWithItsStpePeer() {
+        List<RunResult> runs = List.of(
+                new RunResult("rtaware", new RunResult.Lateness(50, 100, 140, 900), 1000, 9, 0, 1.5, 0),
+                new RunResult("rtaware-pooled", new RunResult.Lateness(40, 90, 300, 900), 1000, 20, 0, 1.0, 0),
+                new RunResult("stpe-pooled", new RunResult.Lateness(60, 95, 200, 900), 1000, 30, 0, 1.0, 0),
+                new RunResult("park-loop", new RunResult.Lateness(50, 100, 100, 900), 1000, 6, 0, 1.0, 0));
+        List<Goal> goals = Goal.check(runs);
+        List<String> lines = goals.stream().map(g -> (g.pass() ? "PASS " : "MISS ") + g.goal() + ": " + g.value()).toList();
+        assertTrue(lines.contains("PASS rtaware misses / park-loop misses <= 1.5: 1.50 (9 / 6)"), lines.toString());
+        assertTrue(lines.contains("PASS rtaware p99.9 / park-loop p99.9 <= 1.5: 1.40 (140 / 100)"), lines.toString());
+        assertTrue(lines.contains("PASS rtaware misses < 1.0 % of releases: 0.90 %"), lines.toString());
+        assertTrue(lines.contains("MISS rtaware-pooled misses < 1.0 % of releases: 2.00 %"), lines.toString());
+        assertTrue(lines.contains("PASS rtaware-pooled p99 <= stpe-pooled p99: 90.0 us vs 95.0 us"), lines.toString());
+        assertTrue(lines.contains("MISS rtaware-pooled p99.9 <= stpe-pooled p99.9: 300.0 us vs 200.0 us"), lines.toString());
+        assertTrue(lines.contains("PASS rtaware-pooled misses <= stpe-pooled misses: 20 vs 30"), lines.toString());
     }
 
     @Test

@@ -1,0 +1,66 @@
+package io.rtaware.core.monitor;
+
+/**
+ * Which executor {@link Monitor#start()} uses ({@link Monitor.Builder#executor}).
+ *
+ * <ul>
+ *   <li>{@link Threaded}: one platform thread per task, as in the paper. Best up to a few
+ *   hundred tasks, and for tasks that need a thread of their own (real-time priorities per
+ *   task, affinity).</li>
+ *   <li>{@link Pooled}: a few worker threads release the periodic tasks from one timer
+ *   structure in deadline order; continuous tasks and tasks that {@link
+ *   io.rtaware.core.task.Task#blocks() block} still get a thread of their own. For thousands of
+ *   tasks, where a thread each costs more than the work.</li>
+ * </ul>
+ * Both follow the same rulebook ({@link TaskRuntime}): the same grid, misses, skips and counts.
+ */
+public sealed interface ExecutorKind permits ExecutorKind.Threaded, ExecutorKind.Pooled {
+
+    /** @return one thread per task (the default) */
+    static ExecutorKind threaded() {
+        return new Threaded();
+    }
+
+    /** @return a pool of one worker per available core, earliest deadline first */
+    static ExecutorKind pooled() {
+        return new Pooled(Runtime.getRuntime().availableProcessors(), PoolOrder.EARLIEST_DEADLINE_FIRST);
+    }
+
+    /**
+     * @param workers worker threads, at least 1
+     * @param order which due release a free worker runs first
+     * @return a pool
+     */
+    static ExecutorKind pooled(int workers, PoolOrder order) {
+        return new Pooled(workers, order);
+    }
+
+    /** One platform thread per task. */
+    record Threaded() implements ExecutorKind {
+    }
+
+    /**
+     * A pool of worker threads for the periodic tasks that do not block.
+     *
+     * @param workers worker threads, at least 1
+     * @param order which due release a free worker runs first
+     */
+    record Pooled(int workers, PoolOrder order) implements ExecutorKind {
+
+        /** Checks the values. */
+        public Pooled {
+            if (workers < 1) {
+                throw new IllegalArgumentException("a pool needs at least 1 worker, got " + workers);
+            }
+            java.util.Objects.requireNonNull(order, "order");
+        }
+    }
+
+    /** Which of the due releases a free pool worker runs first. */
+    enum PoolOrder {
+        /** The release with the earliest absolute deadline (ties: registration order). */
+        EARLIEST_DEADLINE_FIRST,
+        /** The task with the shortest period (ties: registration order). */
+        RATE_MONOTONIC
+    }
+}

@@ -1,0 +1,336 @@
+package io.rtaware.core.monitor;
+
+import io.rtaware.core.time.Clock;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.atomic.AtomicReferenceArray;
+import java.util.concurrent.locks.LockSupport;
+
+/**
+ * A few worker threads release the periodic tasks that do not block from one timer structure,
+ * in deadline order: for thousands of tasks, where a thread per task costs more than the work.
+ * Continuous tasks, once tasks and tasks that {@link io.rtaware.core.task.Task#blocks() block}
+ * keep a thread of their own, on an inner {@link ThreadedExecutor}.
+ *
+ * <p>The timer structure is two {@link TaskHeap}s under one lock: <em>waiting</em>, ordered by
+ * next release, and <em>ready</em>, the releases already due, ordered by absolute deadline
+ * (earliest deadline first) or by period (rate-monotonic). A worker, holding the lock, puts back
+ * the tasks it has just run (keyed by the release each {@link TaskRuntime} decided), moves every
+ * due release to ready, takes its share of the first ready tasks (at most {@link #MAX_BATCH}),
+ * wakes a parked worker if work is left, and runs them outside the lock; with nothing ready it
+ * parks with its {@link ClockWaiter} until the earliest waiting release. The lock is the
+ * happens-before edge between the workers that run one task's consecutive cycles. Every rule of
+ * what a cycle means stays the runtime's: the same grid, misses, skips and counts as on the
+ * threaded executor (a release that waited for a free worker is late, and one still waiting past
+ * its next grid point is skipped by the same rule as after an overrun).
+ *
+ * <p>A watchdog thread reports misses at the deadline, as on the threaded executor, but it only
+ * looks at the cycles the workers run now (one slot per worker), not at every task.
+ *
+ * <p>Party numbers of the {@link ClockWaiter}: task {@code i} is party {@code i} (only tasks with
+ * a thread of their own use theirs), then the inner executor's watchdog, the workers and the
+ * pool's watchdog; {@link #parties(int, int)} counts them. The workers do not run the
+ * {@link ThreadSetup} (it is per task); the tasks with their own thread do.
+ *
+ * <p>Steady state allocates nothing: heaps and slots are arrays sized at construction, the lock
+ * is an object monitor. Thread-safe: started once, stopped once, by the monitor.
+ */
+final class PooledExecutor implements Executor {
+
+    private static final long JOIN_TIMEOUT_MS = 5_000;
+    /**
+     * Most due releases a worker takes at once (its share of the ready ones, in order): one lock
+     * hold for up to this many cycles instead of one per cycle, which is what lets two workers
+     * release 10 000 tasks at 100 Hz. A release claimed in a batch waits as it would in the
+     * ready heap; a later release with an earlier deadline waits for at most this many cycles.
+     */
+    static final int MAX_BATCH = 32;
+
+    private final Clock clock;
+    private final ClockWaiter waiter;
+    private final List<TaskRuntime> runtimes;
+    private final ExecutorKind.PoolOrder order;
+    private final Runnable stopAllRequest;
+    private final FrameworkFaults faults;
+    /** The periodic tasks that do not block, by pool slot. */
+    private final TaskRuntime[] pooled;
+    /** The tasks with a thread of their own; null if there are none. */
+    private final ThreadedExecutor dedicated;
+    private final int firstWorkerParty;
+    private final int watchdogParty;
+    private final Thread[] workers;
+    /** What each worker runs now (null: nothing); the watchdog scans these. */
+    private final AtomicReferenceArray<TaskRuntime> current;
+
+    // The timer structure, guarded by the lock.
+    private final Object lock = new Object();
+    private final TaskHeap waiting;
+    private final TaskHeap ready;
+    /** Per worker: the world time it parks until, or {@link #NOT_PARKED}. */
+    private final long[] parkedUntil;
+    private static final long NOT_PARKED = Long.MIN_VALUE;
+
+    private volatile boolean running;
+    private Thread watchdog;
+    private volatile long watchdogWakeNs = Long.MAX_VALUE;
+
+    /**
+     * @param clock world time
+     * @param waiter how every thread waits; {@link #parties(int, int)} parties
+     * @param runtimes every task of the monitor, by index
+     * @param workerCount worker threads
+     * @param order which due release runs first
+     * @param stopAllRequest how a cycle stops the monitor (STOP_ALL)
+     * @param threadSetup run on the dedicated task threads; null for none
+     * @param faults where framework faults go
+     */
+    PooledExecutor(Clock clock, ClockWaiter waiter, List<TaskRuntime> runtimes, int workerCount,
+                   ExecutorKind.PoolOrder order, Runnable stopAllRequest, ThreadSetup threadSetup,
+                   FrameworkFaults faults) {
+        this.clock = clock;
+        this.waiter = waiter;
+        this.runtimes = runtimes;
+        this.order = order;
+        this.stopAllRequest = stopAllRequest;
+        this.faults = faults;
+        List<TaskRuntime> inPool = new ArrayList<>();
+        List<TaskRuntime> own = new ArrayList<>();
+        for (TaskRuntime runtime : runtimes) {
+            (isPooled(runtime) ? inPool : own).add(runtime);
+        }
+        this.pooled = inPool.toArray(new TaskRuntime[0]);
+        int innerWatchdogParty = runtimes.size();
+        this.dedicated = own.isEmpty() ? null
+                : new ThreadedExecutor(clock, waiter, own, stopAllRequest, threadSetup, faults, innerWatchdogParty);
+        this.firstWorkerParty = innerWatchdogParty + 1;
+        this.watchdogParty = firstWorkerParty + workerCount;
+        this.workers = new Thread[workerCount];
+        this.current = new AtomicReferenceArray<>(workerCount);
+        this.waiting = new TaskHeap(pooled.length);
+        this.ready = new TaskHeap(pooled.length);
+        this.parkedUntil = new long[workerCount];
+    }
+
+    /** @return whether the pool runs this task (periodic and not blocking), else it gets a thread */
+    static boolean isPooled(TaskRuntime runtime) {
+        return runtime.isPeriodic() && !runtime.spec().task().blocks();
+    }
+
+    /**
+     * @param taskCount tasks of the monitor
+     * @param workerCount worker threads
+     * @return how many parties the {@link ClockWaiter} of a pool needs
+     */
+    static int parties(int taskCount, int workerCount) {
+        return taskCount + 1 + workerCount + 1;
+    }
+
+    /** @return the waiter its threads wait with (tests on a manual clock step through it) */
+    ClockWaiter waiter() {
+        return waiter;
+    }
+
+    @Override
+    public long start() {
+        running = true;
+        // Parties nobody waits as: the pooled tasks' own numbers, and the inner watchdog's if unused.
+        for (TaskRuntime runtime : pooled) {
+            waiter.done(runtime.index());
+        }
+        if (dedicated == null) {
+            waiter.done(firstWorkerParty - 1);
+        }
+        watchdog = new Thread(this::watch, "rtaware-monitor");
+        watchdog.setDaemon(true);
+        watchdog.setPriority(Thread.MAX_PRIORITY);
+        waiter.register(watchdogParty, watchdog);
+        CountDownLatch go = new CountDownLatch(1);
+        for (int w = 0; w < workers.length; w++) {
+            int worker = w;
+            workers[w] = new Thread(() -> work(worker, go), "rtaware-pool-" + w);
+            workers[w].setDaemon(true);
+            workers[w].setPriority(Thread.MAX_PRIORITY - 1);
+            waiter.register(firstWorkerParty + w, workers[w]);
+            parkedUntil[w] = NOT_PARKED;
+        }
+        for (Thread worker : workers) {
+            worker.start();
+        }
+        long startNs = dedicated != null ? dedicated.start() : clock.nanos();
+        synchronized (lock) {
+            for (int slot = 0; slot < pooled.length; slot++) {
+                TaskRuntime runtime = pooled[slot];
+                runtime.onCycleStart(() -> wakeWatchdogFor(runtime));
+                runtime.begin(startNs, stopAllRequest, waiter.zeroCycleSpacingNs());
+                waiting.push(slot, runtime.nextReleaseNs());
+            }
+        }
+        watchdog.start();
+        go.countDown();
+        return startNs;
+    }
+
+    private void work(int worker, CountDownLatch go) {
+        int party = firstWorkerParty + worker;
+        try {
+            go.await();
+        } catch (InterruptedException e) {
+            waiter.done(party);
+            return;
+        }
+        int[] batch = new int[MAX_BATCH];
+        int claimed = 0;
+        try {
+            while (running) {
+                long parkUntilNs = 0;
+                synchronized (lock) {
+                    for (int i = 0; i < claimed; i++) {
+                        long next = pooled[batch[i]].nextReleaseNs();
+                        if (next != TaskRuntime.NEVER) {
+                            waiting.push(batch[i], next);
+                        }
+                    }
+                    claimed = 0;
+                    long now = clock.nanos();
+                    while (waiting.size() > 0 && waiting.peekKey() <= now) {
+                        int due = waiting.pop();
+                        ready.push(due, readyKey(pooled[due]));
+                    }
+                    int share = Math.min(MAX_BATCH, Math.max(1, ready.size() / workers.length));
+                    while (claimed < share && ready.size() > 0) {
+                        batch[claimed++] = ready.pop();
+                    }
+                    if (claimed > 0) {
+                        parkedUntil[worker] = NOT_PARKED;
+                        wakeParkedWorker(ready.size() > 0 ? Long.MAX_VALUE : waiting.peekKey());
+                    } else {
+                        parkUntilNs = waiting.peekKey();
+                        parkedUntil[worker] = parkUntilNs;
+                    }
+                }
+                if (claimed == 0) {
+                    waiter.park(party, parkUntilNs);
+                    continue;
+                }
+                for (int i = 0; i < claimed && running; i++) {
+                    runCycle(worker, pooled[batch[i]]);
+                }
+            }
+        } catch (VirtualMachineError fatal) {
+            faults.report("pool worker " + worker + " (fatal VM error: stopping every task)", fatal);
+            stopAllRequest.run();
+        } finally {
+            waiter.done(party);
+        }
+    }
+
+    /**
+     * Wakes one parked worker that would otherwise sleep past {@code dueNs} (work that another
+     * worker could take now, or an earlier release than it waits for). Holding the lock.
+     */
+    private void wakeParkedWorker(long dueNs) {
+        for (int w = 0; w < parkedUntil.length; w++) {
+            long until = parkedUntil[w];
+            if (until != NOT_PARKED && (dueNs == Long.MAX_VALUE || dueNs < until)) {
+                parkedUntil[w] = NOT_PARKED;
+                waiter.busy(firstWorkerParty + w);
+                LockSupport.unpark(workers[w]);
+                return;
+            }
+        }
+    }
+
+    private long readyKey(TaskRuntime runtime) {
+        return order == ExecutorKind.PoolOrder.RATE_MONOTONIC ? runtime.periodNs() : runtime.nextDeadlineNs();
+    }
+
+    private void runCycle(int worker, TaskRuntime runtime) {
+        current.set(worker, runtime);
+        try {
+            runtime.runCycle();
+        } catch (VirtualMachineError fatal) {
+            throw fatal;
+        } catch (Throwable fault) {
+            faults.report("executor, cycle of task '" + runtime.name() + "'", fault);
+            runtime.recoverAfterFault(clock.nanos());
+        } finally {
+            current.set(worker, null);
+        }
+    }
+
+    /** As on the threaded executor: wakes the watchdog if this cycle's deadline is earlier. */
+    private void wakeWatchdogFor(TaskRuntime runtime) {
+        if (runtime.runningDeadlineNs() < watchdogWakeNs) {
+            waiter.busy(watchdogParty);
+            LockSupport.unpark(watchdog);
+        }
+    }
+
+    /** Sleeps until the earliest deadline of a cycle running on a worker, then claims the misses. */
+    private void watch() {
+        try {
+            while (running) {
+                long earliest = Long.MAX_VALUE;
+                try {
+                    long now = clock.nanos();
+                    for (int w = 0; w < workers.length; w++) {
+                        TaskRuntime runtime = current.get(w);
+                        if (runtime == null) {
+                            continue;
+                        }
+                        runtime.checkDeadline(now);
+                        long deadline = runtime.runningDeadlineNs();
+                        if (deadline > now && deadline < earliest) {
+                            earliest = deadline;
+                        }
+                    }
+                } catch (Throwable fault) {
+                    faults.report("pool watchdog", fault);
+                }
+                watchdogWakeNs = earliest;
+                waiter.park(watchdogParty, earliest == Long.MAX_VALUE ? Long.MAX_VALUE : earliest + 1);
+            }
+        } finally {
+            waiter.done(watchdogParty);
+        }
+    }
+
+    @Override
+    public void stopAndJoin() {
+        running = false;
+        for (Thread worker : workers) {
+            if (worker != null) {
+                LockSupport.unpark(worker);
+            }
+        }
+        if (watchdog != null) {
+            LockSupport.unpark(watchdog);
+        }
+        if (dedicated != null) {
+            dedicated.stopWithoutClosing();
+        }
+        for (Thread worker : workers) {
+            join(worker);
+        }
+        join(watchdog);
+        waiter.close();
+    }
+
+    private static void join(Thread thread) {
+        if (thread == null || thread == Thread.currentThread()) {
+            return;
+        }
+        try {
+            thread.join(JOIN_TIMEOUT_MS);
+            if (thread.isAlive()) {
+                System.err.println("rtaware: " + thread.getName() + " did not return within "
+                        + JOIN_TIMEOUT_MS + " ms of stop; interrupting it");
+                thread.interrupt();
+                thread.join(JOIN_TIMEOUT_MS);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}

@@ -1,0 +1,124 @@
+package io.rtaware.core.monitor;
+
+import static io.rtaware.core.Ms.ms;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import io.rtaware.core.FnTask;
+import io.rtaware.core.report.Report;
+import io.rtaware.core.task.Schedule;
+import io.rtaware.core.task.Task;
+import io.rtaware.core.task.TaskSetup;
+import io.rtaware.core.time.ManualClock;
+import java.time.Duration;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+
+/**
+ * What only the pooled executor does: the order in which a free worker takes due releases, the
+ * lateness of a release that waits for a worker, and the tasks that keep a thread of their own.
+ * Real threads on a manual clock stepped by the test ({@link SteppedThreads}), exact counts.
+ */
+@Tag("threads")
+class PooledExecutorTest {
+
+    private final ManualClock clock = new ManualClock();
+    private final List<String> starts = new CopyOnWriteArrayList<>();
+
+    private FnTask recording(String name) {
+        return FnTask.of(now -> starts.add(name + "@" + now / 1_000_000));
+    }
+
+    private static Schedule periodic(long periodMs, long deadlineMs) {
+        return Schedule.periodic(Duration.ofMillis(periodMs), Duration.ZERO, Duration.ofMillis(deadlineMs));
+    }
+
+    private Report run(ExecutorKind.PoolOrder order, int workers, long untilMs, Monitor.Builder builder) {
+        Monitor monitor = builder.executor(ExecutorKind.pooled(workers, order)).build();
+        monitor.start();
+        new SteppedThreads(monitor, clock).runUntil(ms(untilMs));
+        return monitor.stop();
+    }
+
+    @Test
+    void oneWorkerRunsTheDueReleaseWithTheEarliestDeadlineFirst() {
+        Monitor.Builder builder = Monitor.builder(clock)
+                .task("slow", periodic(20, 20), recording("slow"))
+                .task("urgent", periodic(20, 5), recording("urgent"));
+        run(ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST, 1, 30, builder);
+
+        assertEquals(List.of("urgent@0", "slow@0", "urgent@20", "slow@20"), starts,
+                "both due at 0 and 20 ms: the 5 ms deadline first, although registered second");
+    }
+
+    @Test
+    void rateMonotonicRunsTheShorterPeriodFirstWhateverTheDeadline() {
+        Monitor.Builder builder = Monitor.builder(clock)
+                .task("tightButRare", periodic(20, 4), recording("rare"))
+                .task("frequent", periodic(10, 10), recording("frequent"));
+        run(ExecutorKind.PoolOrder.RATE_MONOTONIC, 1, 15, builder);
+
+        assertEquals(List.of("frequent@0", "rare@0", "frequent@10"), starts,
+                "rate-monotonic: the 10 ms task first at 0 ms, although the 20 ms task's deadline is earlier");
+    }
+
+    @Test
+    void aReleaseWaitingForTheOnlyWorkerIsLateByTheCycleBeforeIt() {
+        Monitor.Builder builder = Monitor.builder(clock)
+                .task("busy", periodic(10, 10), FnTask.of(now -> clock.advance(ms(3))))
+                .task("waits", periodic(10, 10), recording("waits"));
+        Report report = run(ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST, 1, 20, builder);
+
+        assertEquals(List.of("waits@3", "waits@13"), starts, "each release of 'waits' starts when 'busy' returns");
+        assertEquals(3000.0, report.task("waits").latenessUs().max(), "lateness = start - release = 3 ms");
+        assertEquals(0, report.task("waits").misses(), "3 ms late, done long before its 10 ms deadline");
+    }
+
+    @Test
+    void twoWorkersRunTwoHundredTasksOnTheirGridWithoutAMiss() {
+        Monitor.Builder builder = Monitor.builder(clock);
+        for (int i = 0; i < 200; i++) {
+            builder.task("t" + i, Schedule.periodic(ms(10)), FnTask.of(now -> { }));
+        }
+        Report report = run(ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST, 2, 100, builder);
+
+        for (int i = 0; i < 200; i++) {
+            assertEquals(10, report.task("t" + i).runs(), "t" + i + ": releases at 0, 10, ..., 90 ms");
+            assertEquals(0, report.task("t" + i).misses(), "t" + i);
+            assertEquals(0.0, report.task("t" + i).latenessUs().max(), "t" + i + ": zero-time cycles are never late");
+        }
+    }
+
+    @Test
+    void aTaskThatBlocksKeepsAThreadOfItsOwnAndPeriodicTasksRunOnTheWorkers() {
+        List<String> threads = new CopyOnWriteArrayList<>();
+        Task blocking = new Task() {
+            @Override
+            public void initialize(TaskSetup setup) {
+            }
+
+            @Override
+            public void execute(long nowNs) {
+                threads.add("io:" + Thread.currentThread().getName());
+            }
+
+            @Override
+            public boolean blocks() {
+                return true;
+            }
+        };
+        Monitor.Builder builder = Monitor.builder(clock)
+                .task("io", Schedule.periodic(ms(10)), blocking)
+                .task("loop", Schedule.continuous(), FnTask.of(now -> threads.add("loop:" + Thread.currentThread().getName())))
+                .task("calc", Schedule.periodic(ms(10)), FnTask.of(now -> threads.add("calc:" + Thread.currentThread().getName())));
+        Report report = run(ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST, 1, 5, builder);
+
+        assertTrue(threads.contains("io:rtaware-io"), "a blocking periodic task runs on its own thread: " + threads);
+        assertTrue(threads.contains("loop:rtaware-loop"), "a continuous task runs on its own thread: " + threads);
+        assertTrue(threads.contains("calc:rtaware-pool-0"), "a periodic task runs on a pool worker: " + threads);
+        assertEquals(5, report.task("loop").runs(), "the continuous task at 0..4 ms, one idle step apart");
+        assertEquals(1, report.task("io").runs());
+    }
+}
