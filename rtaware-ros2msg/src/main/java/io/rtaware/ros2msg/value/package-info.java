@@ -1,0 +1,6 @@
+/**
+ * Mutable, fixed-capacity values for the ROS 2 types that rtaware-robot has no type for (a
+ * stamped planar pose, diagnostics), shaped like the robot data so that decoding into them
+ * allocates nothing.
+ */
+package io.rtaware.ros2msg.value;
