@@ -4,6 +4,8 @@ import io.rtaware.app.UserError;
 import io.rtaware.app.cli.CommandMonitor;
 import io.rtaware.app.live.LiveView;
 import io.rtaware.app.live.RunScene;
+import io.rtaware.app.ros2.Ros2Link;
+import io.rtaware.app.ros2.Ros2Options;
 import io.rtaware.core.monitor.ConsoleReporter;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.TaskCounters;
@@ -44,6 +46,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.LockSupport;
@@ -66,6 +69,8 @@ public final class RobotRun {
     private static final double LOST_SERVER_AFTER_WALL_S = 3.0;
 
     private final RunOptions options;
+    /** {@code --ros2}: a ROS 2 robot over Zenoh instead of a Player server. */
+    private final Optional<Ros2Options> ros2;
     /** Rising edges of the stall flag: the contact count when the server is not the built-in simulator. */
     private final AtomicLong stallEdges = new AtomicLong();
     private final PrintStream out;
@@ -77,7 +82,18 @@ public final class RobotRun {
      * @param err where live status and miss lines go
      */
     public RobotRun(RunOptions options, PrintStream out, PrintStream err) {
+        this(options, Optional.empty(), out, err);
+    }
+
+    /**
+     * @param options what to run
+     * @param ros2 the ROS 2 robot to drive instead of a Player server, if any
+     * @param out where the summary goes
+     * @param err where live status and miss lines go
+     */
+    public RobotRun(RunOptions options, Optional<Ros2Options> ros2, PrintStream out, PrintStream err) {
         this.options = options;
+        this.ros2 = ros2;
         this.out = out;
         this.err = err;
     }
@@ -97,19 +113,30 @@ public final class RobotRun {
         PlayerSimServer server = null;
         String host = options.playerHost();
         int port = options.playerPort();
-        if (options.builtInSimulator()) {
+        if (ros2.isPresent() && !options.builtInSimulator()) {
+            throw new UserError("--ros2 and --player exclude each other (a ROS 2 robot is reached with --zenoh)");
+        }
+        boolean externalRos2 = ros2.isPresent() && ros2.get().router() != null;
+        if (options.builtInSimulator() && !externalRos2) {
             if (scenario.map().isEmpty()) {
                 throw new UserError("scenario '" + scenario.name() + "' has no map; the built-in simulator needs one (or use --player HOST:PORT)");
             }
             server = SimCommandSupport.start(scenario, clock, ServerConfig.defaults(0), options.seed());
             host = ServerConfig.LOOPBACK;
             port = server.port();
-        } else {
+        } else if (!externalRos2) {
             checkReachable(host, port);
         }
+        Ros2Link link = null;
         try {
-            return runAgainst(scenario, clock, host, port, server);
+            if (ros2.isPresent()) {
+                link = Ros2Link.open(ros2.get(), server);
+            }
+            return runAgainst(scenario, clock, host, port, server, link);
         } finally {
+            if (link != null) {
+                link.close();
+            }
             if (server != null) {
                 server.close();
             }
@@ -136,14 +163,14 @@ public final class RobotRun {
         }
     }
 
-    private int runAgainst(Scenario scenario, Clock clock, String host, int port, PlayerSimServer server)
-            throws IOException {
+    private int runAgainst(Scenario scenario, Clock clock, String host, int port, PlayerSimServer server,
+                           Ros2Link link) throws IOException {
         NavConfig navConfig = navConfig(scenario);
         NavController nav = new NavController(navConfig);
-        PlayerDataTask player = new PlayerDataTask(PlayerConfig.of(host, port).withReconnect(true, 500, 8000));
+        TaskSpec dataTask = link != null ? link.taskSpec() : new TaskSpec(PLAYER_TASK, Schedule.continuous(),
+                ErrorPolicy.CONTINUE, new PlayerDataTask(PlayerConfig.of(host, port).withReconnect(true, 500, 8000)));
 
-        Monitor.Builder builder = Monitor.builder(clock)
-                .task(new TaskSpec(PLAYER_TASK, Schedule.continuous(), ErrorPolicy.CONTINUE, player));
+        Monitor.Builder builder = Monitor.builder(clock).task(dataTask);
         nav.taskSpecs().forEach(builder::task);
         if (options.realtime()) {
             builder.threadSetup(RealtimeThreads.configure(RealtimeThreads.DEFAULT_TOP_PRIORITY, Map.of(), err));
@@ -189,14 +216,18 @@ public final class RobotRun {
         refereeHolder.add(referee);
         live.truePose(referee::latest, referee.kind());
         if (!options.quiet()) {
-            err.printf(Locale.ROOT, "rtaware run: scenario %s, periods %s, time scale x%s, robot %s:%d (%s), ground truth from %s%n",
-                    scenario.name(), options.periods(), trim(options.timeScale()), host, port,
-                    server != null ? "built-in simulator" : "external Player server", referee.kind());
+            String robot = link != null ? link.describe() : host + ":" + port + " ("
+                    + (server != null ? "built-in simulator" : "external Player server") + ")";
+            err.printf(Locale.ROOT, "rtaware run: scenario %s, periods %s, time scale x%s, robot %s, ground truth from %s%n",
+                    scenario.name(), options.periods(), trim(options.timeScale()), robot, referee.kind());
         }
 
         supervise(scenario, clock, startNs[0], monitor, nav, referee, course, outcome, reason);
         CommandMonitor.stop(monitor, hook);
         live.close();
+        if (link != null && !options.quiet()) {
+            err.println(link.summary());
+        }
         return switch (outcome.get()) {
             case "error" -> 1;
             case "interrupted" -> 130;
@@ -282,7 +313,7 @@ public final class RobotRun {
                              Referee referee, boolean tty) {
         StringBuilder misses = new StringBuilder();
         for (TaskInfo task : monitor.tasks()) {
-            if (task.name().equals(PLAYER_TASK)) {
+            if (task.name().equals(PLAYER_TASK) || task.name().equals(Ros2Link.TASK)) {
                 continue;
             }
             TaskCounters c = monitor.counters(task.index());
@@ -322,6 +353,9 @@ public final class RobotRun {
 
     /** Ground truth through Player's simulation:0 when the server has it, odometry otherwise. */
     private Referee.PoseSource poseSource(String host, int port, Monitor monitor) {
+        if (host == null) {
+            return odometrySource(monitor);
+        }
         try {
             PlayerClient client = PlayerClient.connect(host, port, PlayerClientOptions.defaults(), new PlayerCounters());
             try {
@@ -350,6 +384,10 @@ public final class RobotRun {
         } catch (IOException e) {
             // No second connection: fall back to odometry below.
         }
+        return odometrySource(monitor);
+    }
+
+    private static Referee.PoseSource odometrySource(Monitor monitor) {
         Odometry odometry = new Odometry();
         return new Referee.PoseSource() {
             @Override

@@ -4,6 +4,7 @@ import io.rtaware.app.UserError;
 import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.live.LiveMixin;
+import io.rtaware.app.ros2.Ros2RunMixin;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
@@ -73,9 +74,12 @@ public final class RunCommand implements Callable<Integer> {
     @Mixin
     LiveMixin live;
 
+    @Mixin
+    Ros2RunMixin ros2;
+
     @Override
     public Integer call() throws IOException {
-        return new RobotRun(options(), System.out, System.err).execute();
+        return new RobotRun(options(), ros2.options(), System.out, System.err).execute();
     }
 
     RunOptions options() {

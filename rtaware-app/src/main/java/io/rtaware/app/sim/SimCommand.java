@@ -2,12 +2,17 @@ package io.rtaware.app.sim;
 
 import io.rtaware.app.UserError;
 import io.rtaware.app.cli.TimeScaleConverter;
+import io.rtaware.app.ros2.Ros2Options;
+import io.rtaware.app.ros2.Ros2SimMixin;
+import io.rtaware.app.ros2.Ros2SimServe;
 import io.rtaware.sim.scenario.ScenarioException;
 import io.rtaware.sim.server.ServerConfig;
 import io.rtaware.sim.server.SimCommandSupport;
 import java.io.IOException;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -35,13 +40,21 @@ public final class SimCommand implements Callable<Integer> {
             description = "Listen address (default: ${DEFAULT-VALUE}); 0.0.0.0 exposes the simulator to other machines.")
     String bind;
 
+    @Mixin
+    Ros2SimMixin ros2;
+
     @Override
     public Integer call() {
         if (port < 0 || port > 65535) {
             throw new UserError("--port must be 0..65535, got " + port);
         }
         try {
-            SimCommandSupport.serveUntilInterrupted(scenario, port, timeScale, seed, bind, System.out);
+            Optional<Ros2Options> ros2Options = ros2.options();
+            if (ros2Options.isPresent()) {
+                Ros2SimServe.serveUntilInterrupted(scenario, port, timeScale, seed, bind, ros2Options.get(), System.out);
+            } else {
+                SimCommandSupport.serveUntilInterrupted(scenario, port, timeScale, seed, bind, System.out);
+            }
         } catch (ScenarioException e) {
             throw new UserError(e.getMessage());
         } catch (IOException e) {
