@@ -11,9 +11,12 @@ import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.live.LiveMixin;
 import io.rtaware.app.live.LiveView;
+import io.rtaware.app.ros2.ExportMixin;
+import io.rtaware.app.ros2.ExportOptions;
 import io.rtaware.app.report.ReportSections;
 import io.rtaware.core.monitor.ConsoleReporter;
 import io.rtaware.core.monitor.Monitor;
+import io.rtaware.ros2.export.MonitorExporter;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
 import io.rtaware.core.report.SummaryTable;
@@ -135,6 +138,9 @@ public final class BenchCommand implements Callable<Integer> {
     @Mixin
     LiveMixin live;
 
+    @Mixin
+    ExportMixin export;
+
     @Override
     public Integer call() throws IOException, InterruptedException {
         List<BenchSpec> specs = taskSet();
@@ -206,6 +212,7 @@ public final class BenchCommand implements Callable<Integer> {
         out.printf("rtaware bench: %d task(s)%s for %s of world time (time scale x%s)%n", specs.size(),
                 chain ? " in a chain" : "", Durations.format(durationNs), timeScale);
         LiveView liveView = LiveView.start(live.options(), monitor, out);
+        MonitorExporter exporter = export.options().map(e -> e.start(monitor, List.of(), System.err)).orElse(null);
         Thread hook = monitor.installShutdownHook();
         monitor.onTermination(report -> finish(monitor, report, console, recorder, out));
         monitor.onTermination(report -> liveView.finish(report, null));
@@ -221,6 +228,7 @@ public final class BenchCommand implements Callable<Integer> {
         long releases = totalReleases(monitor) - releasesBefore;
         CommandMonitor.stop(monitor, hook);
         liveView.close();
+        ExportOptions.stop(exporter, System.err);
         if (endedEarly) {
             System.err.println("rtaware: the run ended before its duration (a task hit a fatal error, see above)");
             return EXIT_ENDED_EARLY;

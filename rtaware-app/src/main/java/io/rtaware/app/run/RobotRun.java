@@ -4,6 +4,7 @@ import io.rtaware.app.UserError;
 import io.rtaware.app.cli.CommandMonitor;
 import io.rtaware.app.live.LiveView;
 import io.rtaware.app.live.RunScene;
+import io.rtaware.app.ros2.ExportOptions;
 import io.rtaware.app.ros2.Ros2Link;
 import io.rtaware.app.ros2.Ros2Options;
 import io.rtaware.core.monitor.ConsoleReporter;
@@ -19,6 +20,7 @@ import io.rtaware.app.rt.RealtimeThreads;
 import io.rtaware.nav.NavConfig;
 import io.rtaware.nav.NavController;
 import io.rtaware.player.client.PlayerClient;
+import io.rtaware.ros2.export.MonitorExporter;
 import io.rtaware.player.client.PlayerClientOptions;
 import io.rtaware.player.client.PlayerCounters;
 import io.rtaware.player.protocol.DeviceAddress;
@@ -71,6 +73,8 @@ public final class RobotRun {
     private final RunOptions options;
     /** {@code --ros2}: a ROS 2 robot over Zenoh instead of a Player server. */
     private final Optional<Ros2Options> ros2;
+    /** {@code --export}: keys and health published over ROS 2. */
+    private final Optional<ExportOptions> export;
     /** Rising edges of the stall flag: the contact count when the server is not the built-in simulator. */
     private final AtomicLong stallEdges = new AtomicLong();
     private final PrintStream out;
@@ -82,18 +86,21 @@ public final class RobotRun {
      * @param err where live status and miss lines go
      */
     public RobotRun(RunOptions options, PrintStream out, PrintStream err) {
-        this(options, Optional.empty(), out, err);
+        this(options, Optional.empty(), Optional.empty(), out, err);
     }
 
     /**
      * @param options what to run
      * @param ros2 the ROS 2 robot to drive instead of a Player server, if any
+     * @param export where to export keys and health over ROS 2, if anywhere
      * @param out where the summary goes
      * @param err where live status and miss lines go
      */
-    public RobotRun(RunOptions options, Optional<Ros2Options> ros2, PrintStream out, PrintStream err) {
+    public RobotRun(RunOptions options, Optional<Ros2Options> ros2, Optional<ExportOptions> export, PrintStream out,
+                    PrintStream err) {
         this.options = options;
         this.ros2 = ros2;
+        this.export = export;
         this.out = out;
         this.err = err;
     }
@@ -176,6 +183,7 @@ public final class RobotRun {
             builder.threadSetup(RealtimeThreads.configure(RealtimeThreads.DEFAULT_TOP_PRIORITY, Map.of(), err));
         }
         Monitor monitor = CommandMonitor.build(builder);
+        MonitorExporter exporter = export.map(e -> e.start(monitor, RunExports.keys(nav), err)).orElse(null);
         ConsoleReporter console = CommandMonitor.console(monitor, options.quiet(), err);
         TraceRecorder trace = options.trace().attach(monitor);
 
@@ -225,6 +233,7 @@ public final class RobotRun {
         supervise(scenario, clock, startNs[0], monitor, nav, referee, course, outcome, reason);
         CommandMonitor.stop(monitor, hook);
         live.close();
+        ExportOptions.stop(exporter, err);
         if (link != null && !options.quiet()) {
             err.println(link.summary());
         }

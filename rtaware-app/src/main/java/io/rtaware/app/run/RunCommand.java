@@ -4,6 +4,7 @@ import io.rtaware.app.UserError;
 import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.live.LiveMixin;
+import io.rtaware.app.ros2.ExportMixin;
 import io.rtaware.app.ros2.Ros2RunMixin;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -77,9 +78,12 @@ public final class RunCommand implements Callable<Integer> {
     @Mixin
     Ros2RunMixin ros2;
 
+    @Mixin
+    ExportMixin export;
+
     @Override
     public Integer call() throws IOException {
-        return new RobotRun(options(), ros2.options(), System.out, System.err).execute();
+        return new RobotRun(options(), ros2.options(), export.options(), System.out, System.err).execute();
     }
 
     RunOptions options() {
