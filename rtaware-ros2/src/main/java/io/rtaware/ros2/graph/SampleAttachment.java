@@ -19,7 +19,8 @@ public final class SampleAttachment {
     }
 
     /**
-     * Writes an attachment at index 0 of {@code into}.
+     * Writes an attachment at index 0 of {@code into} (in little endian whatever the buffer's
+     * byte order; allocates nothing).
      *
      * @param into at least {@link #BYTES} bytes
      * @param sequence the sequence number
@@ -27,11 +28,11 @@ public final class SampleAttachment {
      * @param gid the publisher's gid, {@link #GID_BYTES} bytes
      */
     public static void write(ByteBuffer into, long sequence, long sourceTimestampNs, byte[] gid) {
-        ByteBuffer b = into.duplicate().order(ByteOrder.LITTLE_ENDIAN);
-        b.putLong(0, sequence);
-        b.putLong(8, sourceTimestampNs);
-        b.put(16, (byte) GID_BYTES);
-        b.put(17, gid, 0, GID_BYTES);
+        boolean little = into.order() == ByteOrder.LITTLE_ENDIAN;
+        into.putLong(0, little ? sequence : Long.reverseBytes(sequence));
+        into.putLong(8, little ? sourceTimestampNs : Long.reverseBytes(sourceTimestampNs));
+        into.put(16, (byte) GID_BYTES);
+        into.put(17, gid, 0, GID_BYTES);
     }
 
     /**

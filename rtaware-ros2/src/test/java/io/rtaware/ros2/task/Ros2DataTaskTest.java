@@ -80,7 +80,7 @@ class Ros2DataTaskTest {
         scan.maxAngleRad = 1;
         scan.maxRangeM = 4;
         for (int i = 0; i < 5; i++) {
-            scan.rangesM[i] = 1 + i;
+            scan.rangesM[i] = 1 + 0.5f * i;
         }
         odom.xM = 1.5;
         odom.yM = -2;
@@ -140,7 +140,7 @@ class Ros2DataTaskTest {
         firstScan();
         LaserScan got = (LaserScan) setup.outputs.get("laser").value;
         assertEquals(5, got.count());
-        assertEquals(3.0f, got.rangesM[2]);
+        assertEquals(2.0f, got.rangesM[2]);
         assertEquals(4.0, got.maxRangeM, 1e-6);
         publishOdom(2_000_000_000L);
         executeUntil(() -> published("odometry") == 1, "odometry");
@@ -229,10 +229,11 @@ class Ros2DataTaskTest {
         LaserScanCodec scanCodec = new LaserScanCodec();
         long id = Thread.currentThread().getId();
         long allocated = Long.MAX_VALUE;
+        long stampNs = 10_000_000_000L;
         for (int round = 0; round < 5 && allocated != 0; round++) {
             long before = threads.getThreadAllocatedBytes(id);
             for (int i = 0; i < 200; i++) {
-                scanCodec.encode(header.set(10_000_000_000L + i, "laser"), scan, writer);
+                scanCodec.encode(header.set(stampNs += 1_000_000, "laser"), scan, writer);
                 scanPub.publish(writer.buffer(), writer.size(), 1);
                 nowNs += 20_000_000L;
                 task.execute(nowNs);
