@@ -96,17 +96,31 @@ def check(endpoint, namespace, timeout_s):
         result["first_odometry"] = odoms[0] if odoms else None
         start = dict(odoms[-1]) if odoms else None
 
-    topics = dict(get_topic_names_and_types(domain_id=0, router_ip=host, router_port=port, timeout=1.0))
+    expected = (("scan", "sensor_msgs/msg/LaserScan"), ("odom", "nav_msgs/msg/Odometry"),
+                ("ground_truth", "nav_msgs/msg/Odometry"), ("cmd_vel", "geometry_msgs/msg/Twist"))
+
+    def graph():
+        topics = dict(get_topic_names_and_types(domain_id=0, router_ip=host, router_port=port, timeout=1.0))
+        info = get_topic_info(topic(namespace, "scan"), domain_id=0, router_ip=host, router_port=port, timeout=1.0,
+                              verbose=True)
+        publishers = [] if info is None else [
+            {"node": p.node_name, "namespace": p.node_namespace, "qos": p.qos} for p in info.publishers]
+        return topics, publishers
+
+    # Liveliness replies lag a freshly connected session's discovery by a moment: ask until
+    # the graph is complete or the deadline passes.
+    topics, publishers = graph()
+    while time.monotonic() < deadline and not (
+            all(t in topics.get(topic(namespace, n), []) for n, t in expected)
+            and any(p["node"] == "rtaware_sim" for p in publishers)):
+        time.sleep(0.2)
+        topics, publishers = graph()
     result["topics"] = topics
-    for name, ros_type in (("scan", "sensor_msgs/msg/LaserScan"), ("odom", "nav_msgs/msg/Odometry"),
-                           ("ground_truth", "nav_msgs/msg/Odometry"), ("cmd_vel", "geometry_msgs/msg/Twist")):
+    result["scan_publishers"] = publishers
+    for name, ros_type in expected:
         if ros_type not in topics.get(topic(namespace, name), []):
             failures.append("the graph lacks " + topic(namespace, name) + " of type " + ros_type)
-    info = get_topic_info(topic(namespace, "scan"), domain_id=0, router_ip=host, router_port=port, timeout=1.0,
-                          verbose=True)
-    result["scan_publishers"] = [] if info is None else [
-        {"node": p.node_name, "namespace": p.node_namespace, "qos": p.qos} for p in info.publishers]
-    if not any(p["node"] == "rtaware_sim" for p in result["scan_publishers"]):
+    if not any(p["node"] == "rtaware_sim" for p in publishers):
         failures.append("no /scan publisher of node rtaware_sim in the liveliness tokens")
 
     if start is not None:
