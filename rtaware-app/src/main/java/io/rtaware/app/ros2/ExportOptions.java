@@ -52,6 +52,9 @@ public record ExportOptions(String router, String listen) {
         if (exporter == null) {
             return;
         }
+        if (exporter.failure() != null) {
+            err.println("rtaware export: stopped early: " + exporter.failure());
+        }
         try {
             exporter.close();
         } catch (ZenohException e) {
