@@ -16,10 +16,13 @@ import io.rtaware.app.live.LiveMixin;
 import io.rtaware.app.live.LiveView;
 import io.rtaware.app.output.OutputFile;
 import io.rtaware.app.output.OutputWrites;
+import io.rtaware.app.ros2.ExportMixin;
+import io.rtaware.app.ros2.ExportOptions;
 import io.rtaware.app.report.ReportSections;
 import io.rtaware.core.monitor.ConsoleReporter;
 import io.rtaware.core.monitor.ExecutorKind;
 import io.rtaware.core.monitor.Monitor;
+import io.rtaware.ros2.export.MonitorExporter;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
 import io.rtaware.core.report.SummaryTable;
@@ -177,6 +180,9 @@ public final class BenchCommand implements Callable<Integer> {
     @Mixin
     LiveMixin live;
 
+    @Mixin
+    ExportMixin export;
+
     private final Supplier<MemoryBudget> memory;
 
     /** The command with this JVM's heap as its memory budget. */
@@ -317,6 +323,7 @@ public final class BenchCommand implements Callable<Integer> {
         out.printf("rtaware bench: %d task(s)%s for %s of world time (time scale x%s)%n", specs.size(),
                 chain ? " in a chain" : "", Durations.format(durationNs), timeScale);
         LiveView liveView = LiveView.start(live.options(), monitor, out);
+        MonitorExporter exporter = export.options().map(e -> e.start(monitor, List.of(), System.err)).orElse(null);
         Thread hook = monitor.installShutdownHook();
         OutputWrites writes = new OutputWrites(System.err);
         monitor.onTermination(report -> finish(monitor, report, console, recorder, recording, out, writes));
@@ -336,6 +343,7 @@ public final class BenchCommand implements Callable<Integer> {
         if (histogram != null) {
             histogram.write(latenessHistogram);
         }
+        ExportOptions.stop(exporter, System.err);
         if (endedEarly) {
             System.err.println("rtaware: the run ended before its duration (a task hit a fatal error, see above)");
             return EXIT_ENDED_EARLY;

@@ -5,6 +5,9 @@ import io.rtaware.app.cli.CommandMonitor;
 import io.rtaware.app.cli.RecordOptions;
 import io.rtaware.app.live.LiveView;
 import io.rtaware.app.live.RunScene;
+import io.rtaware.app.ros2.ExportOptions;
+import io.rtaware.app.ros2.Ros2Link;
+import io.rtaware.app.ros2.Ros2Options;
 import io.rtaware.core.monitor.ConsoleReporter;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.TaskCounters;
@@ -20,6 +23,7 @@ import io.rtaware.app.rt.RealtimeThreads;
 import io.rtaware.nav.NavConfig;
 import io.rtaware.nav.NavController;
 import io.rtaware.player.client.PlayerClient;
+import io.rtaware.ros2.export.MonitorExporter;
 import io.rtaware.player.client.PlayerClientOptions;
 import io.rtaware.player.client.PlayerCounters;
 import io.rtaware.player.client.PlayerStats;
@@ -48,6 +52,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.Supplier;
@@ -67,6 +72,10 @@ public final class RobotRun {
     private static final long SAMPLE_PERIOD_NS = 100_000_000L;
 
     private final RunOptions options;
+    /** {@code --ros2}: a ROS 2 robot over Zenoh instead of a Player server. */
+    private final Optional<Ros2Options> ros2;
+    /** {@code --export}: keys and health published over ROS 2. */
+    private final Optional<ExportOptions> export;
     private final PrintStream out;
     private final PrintStream err;
     private RecordOptions record = new RecordOptions();
@@ -77,7 +86,21 @@ public final class RobotRun {
      * @param err where live status and miss lines go
      */
     public RobotRun(RunOptions options, PrintStream out, PrintStream err) {
+        this(options, Optional.empty(), Optional.empty(), out, err);
+    }
+
+    /**
+     * @param options what to run
+     * @param ros2 the ROS 2 robot to drive instead of a Player server, if any
+     * @param export where to export keys and health over ROS 2, if anywhere
+     * @param out where the summary goes
+     * @param err where live status and miss lines go
+     */
+    public RobotRun(RunOptions options, Optional<Ros2Options> ros2, Optional<ExportOptions> export, PrintStream out,
+                    PrintStream err) {
         this.options = options;
+        this.ros2 = ros2;
+        this.export = export;
         this.out = out;
         this.err = err;
     }
@@ -109,7 +132,11 @@ public final class RobotRun {
         BuiltInSimulatorLog simulatorLog = null;
         String host = options.playerHost();
         int port = options.playerPort();
-        if (options.builtInSimulator()) {
+        if (ros2.isPresent() && !options.builtInSimulator()) {
+            throw new UserError("--ros2 and --player exclude each other (a ROS 2 robot is reached with --zenoh)");
+        }
+        boolean externalRos2 = ros2.isPresent() && ros2.get().router() != null;
+        if (options.builtInSimulator() && !externalRos2) {
             if (scenario.map().isEmpty()) {
                 throw new UserError("scenario '" + scenario.name() + "' has no map; the built-in simulator needs one (or use --player HOST:PORT)");
             }
@@ -117,12 +144,19 @@ public final class RobotRun {
             server = SimCommandSupport.start(scenario, model, clock, ServerConfig.defaults(0), options.seed());
             host = ServerConfig.LOOPBACK;
             port = server.port();
-        } else {
+        } else if (!externalRos2) {
             checkReachable(host, port);
         }
+        Ros2Link link = null;
         try {
-            return runAgainst(scenario, model, clock, host, port, server);
+            if (ros2.isPresent()) {
+                link = Ros2Link.open(ros2.get(), server);
+            }
+            return runAgainst(scenario, model, clock, host, port, server, link);
         } finally {
+            if (link != null) {
+                link.close();
+            }
             if (server != null) {
                 server.close();
             }
@@ -170,18 +204,22 @@ public final class RobotRun {
     }
 
     private int runAgainst(Scenario scenario, RobotModel model, Clock clock, String host, int port,
-                           PlayerSimServer server) throws IOException {
+                           PlayerSimServer server, Ros2Link link) throws IOException {
         NavConfig navConfig = navConfig(scenario, model);
         NavController nav = new NavController(navConfig);
-        PlayerDataTask player = new PlayerDataTask(PlayerConfig.of(host, port).withReconnect(true, 500, 8000));
+        PlayerDataTask player = link != null ? null
+                : new PlayerDataTask(PlayerConfig.of(host, port).withReconnect(true, 500, 8000));
+        TaskSpec dataTask = link != null ? link.taskSpec()
+                : new TaskSpec(PLAYER_TASK, Schedule.continuous(), ErrorPolicy.CONTINUE, player);
+        Supplier<String> safetyFault = player != null ? player::fault : link.task()::fault;
 
-        Monitor.Builder builder = Monitor.builder(clock)
-                .task(new TaskSpec(PLAYER_TASK, Schedule.continuous(), ErrorPolicy.CONTINUE, player));
+        Monitor.Builder builder = Monitor.builder(clock).task(dataTask);
         nav.taskSpecs().forEach(builder::task);
         if (options.realtime()) {
             builder.threadSetup(RealtimeThreads.configure(RealtimeThreads.DEFAULT_TOP_PRIORITY, Map.of(), err));
         }
         Monitor monitor = CommandMonitor.build(builder);
+        MonitorExporter exporter = export.map(e -> e.start(monitor, RunExports.keys(nav), err)).orElse(null);
         ConsoleReporter console = CommandMonitor.console(monitor, options.quiet(), err);
         TraceRecorder trace = options.trace().attach(monitor);
         RunRecorder recorder = record.attach(monitor, RunRecording.plan(scenario, options));
@@ -217,7 +255,10 @@ public final class RobotRun {
             RunSection run = runSection(scenario, nav, course, referee, state.ending(),
                     clock.nanos() - state.startNs(), collisions, server != null, List.copyOf(passes), model);
             live.finish(report, run);
-            artifacts.write(report, run, playerSection(player, host, port, truthSource), referee,
+            if (link != null) {
+                artifacts.section("ros2", link.section());
+            }
+            artifacts.write(report, run, player == null ? null : playerSection(player, host, port, truthSource), referee,
                     nav.finalMap().orElse(null), scenario.map().orElse(null));
             options.trace().write(trace, out, artifacts.writes());
         });
@@ -226,21 +267,25 @@ public final class RobotRun {
         monitor.start();
         long startNs = clock.nanos();
         Referee referee = new Referee(clock, startNs, SAMPLE_PERIOD_NS, truth, () -> totalMisses(monitor)).start();
-        MonitorView view = new MonitorView(monitor, nav, referee, player);
+        MonitorView view = new MonitorView(monitor, nav, referee, safetyFault);
         Supervisor supervisor = new Supervisor(view, clock, System::nanoTime,
                 startNs, scenario.timeLimitS(), options.stuckAfterS());
         state.started(startNs, referee, supervisor);
         live.truePose(referee::latest, referee.kind());
         if (!options.quiet()) {
-            err.printf(Locale.ROOT, "rtaware run: scenario %s, periods %s, time scale x%s, robot %s:%d (%s), ground truth from %s%n",
-                    scenario.name(), options.periods(), trim(options.timeScale()), host, port,
-                    server != null ? "built-in simulator, " + model.describe() : "external Player server",
-                    referee.kind());
+            String robot = link != null ? link.describe() : host + ":" + port + " ("
+                    + (server != null ? "built-in simulator, " + model.describe() : "external Player server") + ")";
+            err.printf(Locale.ROOT, "rtaware run: scenario %s, periods %s, time scale x%s, robot %s, ground truth from %s%n",
+                    scenario.name(), options.periods(), trim(options.timeScale()), robot, referee.kind());
         }
 
         supervise(scenario, clock, startNs, monitor, nav, referee, supervisor, view, course, state, truthNow, passes);
         CommandMonitor.stop(monitor, hook);
         live.close();
+        ExportOptions.stop(exporter, err);
+        if (link != null && !options.quiet()) {
+            err.println(link.summary());
+        }
         return artifacts.exitStatus(state.ending().outcome().exitStatus());
     }
 
@@ -265,22 +310,22 @@ public final class RobotRun {
         return sum;
     }
 
-    /** The supervisor's view of a running monitor: the keys' newest values, the referee, the data task. */
+    /** The supervisor's view of a running monitor: the keys' newest values, the referee, the data task's fault. */
     private static final class MonitorView implements Supervisor.View {
         private final Monitor monitor;
         private final NavController nav;
         private final Referee referee;
-        private final PlayerDataTask player;
+        private final Supplier<String> safetyFault;
         private final CourseStatus course = new CourseStatus();
         private final Odometry odometry = new Odometry();
         private final VelocityCommand motor = new VelocityCommand();
         private long odometryGeneration;
 
-        MonitorView(Monitor monitor, NavController nav, Referee referee, PlayerDataTask player) {
+        MonitorView(Monitor monitor, NavController nav, Referee referee, Supplier<String> safetyFault) {
             this.monitor = monitor;
             this.nav = nav;
             this.referee = referee;
-            this.player = player;
+            this.safetyFault = safetyFault;
         }
 
         @Override
@@ -317,7 +362,7 @@ public final class RobotRun {
 
         @Override
         public String safetyFault() {
-            return player.fault();
+            return safetyFault.get();
         }
 
         /** @return the course status read at the last refresh */
@@ -390,7 +435,7 @@ public final class RobotRun {
                              Referee referee, boolean tty) {
         StringBuilder misses = new StringBuilder();
         for (TaskInfo task : monitor.tasks()) {
-            if (task.name().equals(PLAYER_TASK)) {
+            if (task.name().equals(PLAYER_TASK) || task.name().equals(Ros2Link.TASK)) {
                 continue;
             }
             TaskCounters c = monitor.counters(task.index());
@@ -433,11 +478,18 @@ public final class RobotRun {
 
     /** Ground truth through Player's simulation:0 when the server has it, odometry otherwise. */
     private Referee.PoseSource poseSource(String host, int port, Clock clock, Monitor monitor) {
+        if (host == null) {
+            return odometrySource(monitor);
+        }
         try {
             return GroundTruthSource.open(host, port, options.modelName(), clock);
         } catch (IOException e) {
             // No second connection or no simulation:0: fall back to odometry below.
         }
+        return odometrySource(monitor);
+    }
+
+    private static Referee.PoseSource odometrySource(Monitor monitor) {
         Odometry odometry = new Odometry();
         return new Referee.PoseSource() {
             @Override

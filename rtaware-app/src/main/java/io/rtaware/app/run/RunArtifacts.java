@@ -74,11 +74,17 @@ final class RunArtifacts {
         }
     }
 
+    /**
+     * @param player the {@code player} section, or null when the robot was not a Player server
+     */
     void write(Report report, RunSection run, PlayerSection player, Referee referee, OccupancyGrid builtMap,
                OccupancyMap worldMap) {
         String table = SummaryTable.format(report);
         String runText = runText(run, player);
-        ReportDocument doc = new ReportDocument(report).section("run", run).section("player", player);
+        ReportDocument doc = new ReportDocument(report).section("run", run);
+        if (player != null) {
+            doc.section("player", player);
+        }
         sections.forEach(doc::section);
         String analysis = ReportSections.enrich(doc, Runtime.getRuntime().availableProcessors()).text();
         out.println();
@@ -137,12 +143,14 @@ final class RunArtifacts {
                     + " %.1f s%n", spans, r.groundTruthCoveredS(), r.runTimeS()));
         }
         StringBuilder rejected = new StringBuilder();
-        player.devices().forEach((device, samples) -> {
-            if (samples.rejectedSamples() > 0) {
-                rejected.append(rejected.length() == 0 ? "" : ", ").append(device).append(' ')
-                        .append(samples.rejectedSamples()).append(" of ").append(samples.samples());
-            }
-        });
+        if (player != null) {
+            player.devices().forEach((device, samples) -> {
+                if (samples.rejectedSamples() > 0) {
+                    rejected.append(rejected.length() == 0 ? "" : ", ").append(device).append(' ')
+                            .append(samples.rejectedSamples()).append(" of ").append(samples.samples());
+                }
+            });
+        }
         if (rejected.length() > 0) {
             sb.append("     impossible samples rejected: ").append(rejected).append(System.lineSeparator());
         }

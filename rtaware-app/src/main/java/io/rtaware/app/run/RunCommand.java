@@ -7,6 +7,8 @@ import io.rtaware.app.cli.RecordOptions;
 import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.live.LiveMixin;
 import io.rtaware.app.output.OutputFolder;
+import io.rtaware.app.ros2.ExportMixin;
+import io.rtaware.app.ros2.Ros2RunMixin;
 import io.rtaware.sim.world.RobotModel;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -95,6 +97,12 @@ public final class RunCommand implements Callable<Integer> {
     @Mixin
     LiveMixin live;
 
+    @Mixin
+    Ros2RunMixin ros2;
+
+    @Mixin
+    ExportMixin export;
+
     private final Supplier<MemoryBudget> memory;
 
     /** The command with this JVM's heap as its memory budget. */
@@ -111,7 +119,7 @@ public final class RunCommand implements Callable<Integer> {
     public Integer call() throws IOException {
         RunOptions options = options();
         memory.get().require(trace.heapBytes(), trace.describe());
-        return new RobotRun(options, System.out, System.err).recording(record).execute();
+        return new RobotRun(options, ros2.options(), export.options(), System.out, System.err).recording(record).execute();
     }
 
     RunOptions options() {

@@ -3,13 +3,18 @@ package io.rtaware.app.sim;
 import io.rtaware.app.UserError;
 import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.app.cli.TimeScaleConverter;
+import io.rtaware.app.ros2.Ros2Options;
+import io.rtaware.app.ros2.Ros2SimMixin;
+import io.rtaware.app.ros2.Ros2SimServe;
 import io.rtaware.core.time.Durations;
 import io.rtaware.sim.scenario.ScenarioException;
 import io.rtaware.sim.server.ServerConfig;
 import io.rtaware.sim.server.SimCommandSupport;
 import java.io.IOException;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /**
@@ -49,6 +54,9 @@ public final class SimCommand implements Callable<Integer> {
             description = "A client that sends part of a message and not the rest within D is disconnected (default: ${DEFAULT-VALUE}).")
     long messageTimeoutNs;
 
+    @Mixin
+    Ros2SimMixin ros2;
+
     @Override
     public Integer call() {
         if (port < 0 || port > 65535) {
@@ -66,7 +74,12 @@ public final class SimCommand implements Callable<Integer> {
         ServerConfig config = ServerConfig.defaults(port).withBindAddress(bind)
                 .withLimits(maxClients, maxRules, messageTimeoutNs);
         try {
-            SimCommandSupport.serveUntilInterrupted(scenario, config, timeScale, seed, System.out);
+            Optional<Ros2Options> ros2Options = ros2.options();
+            if (ros2Options.isPresent()) {
+                Ros2SimServe.serveUntilInterrupted(scenario, config, timeScale, seed, ros2Options.get(), System.out);
+            } else {
+                SimCommandSupport.serveUntilInterrupted(scenario, config, timeScale, seed, System.out);
+            }
         } catch (ScenarioException e) {
             throw new UserError(e.getMessage());
         } catch (IOException e) {

@@ -18,6 +18,7 @@ import io.rtaware.robot.msg.LaserScan;
 import io.rtaware.robot.msg.Odometry;
 import io.rtaware.robot.msg.RobotKeys;
 import io.rtaware.robot.msg.VelocityCommand;
+import io.rtaware.robot.validate.ImpossibleDataException;
 import io.rtaware.robot.validate.RejectionWatch;
 import io.rtaware.robot.validate.SampleValidator;
 import java.io.IOException;

@@ -1,8 +1,9 @@
-package io.rtaware.player.task;
+package io.rtaware.robot.validate;
 
 /**
- * Thrown by {@link PlayerDataTask#execute} in the cycle in which it halted the robot because a
- * device sent only samples that cannot be true for a second of world time. The message is one
+ * Thrown by a robot data task (Player's or ROS 2's) in the cycle in which it halted the robot
+ * because a device or topic sent only samples that cannot be true for a second of world time
+ * ({@link RejectionWatch}). The message is one
  * line naming the device and the offending value.
  */
 public final class ImpossibleDataException extends Exception {

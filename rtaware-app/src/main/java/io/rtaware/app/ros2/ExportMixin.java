@@ -1,0 +1,40 @@
+package io.rtaware.app.ros2;
+
+import io.rtaware.app.UserError;
+import java.util.Optional;
+import picocli.CommandLine.Option;
+
+/** The {@code --export} options of {@code run} and {@code bench}. */
+public final class ExportMixin {
+
+    @Option(names = "--export",
+            description = "Publish every key with a ROS 2 type under /rtaware/... and each task's health once a second "
+                    + "as diagnostic_msgs/msg/DiagnosticArray on /diagnostics, over Zenoh (rmw_zenoh conventions).")
+    boolean enabled;
+
+    @Option(names = "--export-zenoh", paramLabel = "tcp/HOST:PORT",
+            description = "Zenoh router to export through (with --export; default: none, peers connect to --export-listen).")
+    String router;
+
+    @Option(names = "--export-listen", paramLabel = "tcp/ADDR:PORT",
+            description = "Where the export session listens (with --export; default: a free loopback port).")
+    String listen;
+
+    /**
+     * @return the export options when {@code --export} was given
+     * @throws UserError for a malformed endpoint, export options without {@code --export}, or a
+     *     missing native Zenoh layer
+     */
+    public Optional<ExportOptions> options() {
+        if (!enabled) {
+            if (router != null || listen != null) {
+                throw new UserError((router != null ? "--export-zenoh" : "--export-listen") + " needs --export");
+            }
+            return Optional.empty();
+        }
+        String at = router == null ? null : Ros2Wiring.endpoint(router, "--export-zenoh", false);
+        String on = listen == null ? null : Ros2Wiring.endpoint(listen, "--export-listen", true);
+        Ros2Wiring.requireNativeZenoh();
+        return Optional.of(new ExportOptions(at, on));
+    }
+}

@@ -1,0 +1,64 @@
+package io.rtaware.app.ros2;
+
+import io.rtaware.core.monitor.Monitor;
+import io.rtaware.ros2.export.ExportedKey;
+import io.rtaware.ros2.export.MonitorExporter;
+import io.rtaware.ros2.graph.Ros2Context;
+import io.rtaware.zenoh.ZenohException;
+import java.io.PrintStream;
+import java.util.List;
+
+/**
+ * What {@code --export} asked for. Immutable.
+ *
+ * @param router the router to connect to, or null
+ * @param listen where to listen, or null for a free loopback port
+ */
+public record ExportOptions(String router, String listen) {
+
+    /** Key period of the exporter: keys are looked at ten times a second. */
+    private static final long KEY_PERIOD_MS = 100;
+
+    /**
+     * Opens the export session and starts the exporter; prints where it listens.
+     *
+     * @param monitor the monitor to export
+     * @param keys the keys with a ROS 2 type
+     * @param err where the one line goes
+     * @return the running exporter
+     * @throws io.rtaware.app.UserError if the router cannot be reached or the endpoint bound
+     */
+    public MonitorExporter start(Monitor monitor, List<ExportedKey<?>> keys, PrintStream err) {
+        String at = listen != null ? listen : Ros2Wiring.freeLoopbackEndpoint();
+        List<String> connect = router == null ? List.of() : List.of(router);
+        Ros2Context context = Ros2Wiring.open(connect, List.of(at), 0);
+        try {
+            MonitorExporter exporter = MonitorExporter.start(monitor, context, keys, KEY_PERIOD_MS);
+            err.println("rtaware export: ROS 2 over Zenoh on " + at + (router == null ? "" : " via " + router)
+                    + ": /diagnostics and " + String.join(", ", exporter.topics().values().stream().sorted().toList()));
+            return exporter;
+        } catch (ZenohException e) {
+            throw new io.rtaware.app.UserError("cannot start the export: " + e.getMessage());
+        }
+    }
+
+    /**
+     * Stops an exporter, if any, without failing the command that ends.
+     *
+     * @param exporter the exporter or null
+     * @param err where a failure is reported in one line
+     */
+    public static void stop(MonitorExporter exporter, PrintStream err) {
+        if (exporter == null) {
+            return;
+        }
+        if (exporter.failure() != null) {
+            err.println("rtaware export: stopped early: " + exporter.failure());
+        }
+        try {
+            exporter.close();
+        } catch (ZenohException e) {
+            err.println("rtaware export: closing: " + e.getMessage());
+        }
+    }
+}

@@ -1,0 +1,134 @@
+package io.rtaware.app.ros2;
+
+import io.rtaware.core.report.Rounding;
+import io.rtaware.core.task.ErrorPolicy;
+import io.rtaware.core.task.Schedule;
+import io.rtaware.core.task.TaskSpec;
+import io.rtaware.ros2.graph.Ros2Context;
+import io.rtaware.ros2.task.Ros2DataTask;
+import io.rtaware.ros2.task.Ros2Stats;
+import io.rtaware.sim.ros2.Ros2SimRobot;
+import io.rtaware.sim.server.PlayerSimServer;
+import io.rtaware.zenoh.ZenohException;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import org.HdrHistogram.Histogram;
+
+/**
+ * The ROS 2 side of one {@code run --ros2}: the controller's Zenoh context and data task and,
+ * without {@code --zenoh}, the built-in simulator served as a ROS 2 robot in the same process
+ * (its own session listening on a free loopback port, the controller's session connecting to
+ * it). Not thread-safe: built and closed by the command's thread.
+ */
+public final class Ros2Link implements AutoCloseable {
+
+    /** Task name of the ROS 2 data task in reports. */
+    public static final String TASK = "ros2";
+
+    private final Ros2Options options;
+    private final Ros2SimRobot simRobot;
+    private final Ros2DataTask task;
+
+    private Ros2Link(Ros2Options options, Ros2SimRobot simRobot, Ros2DataTask task) {
+        this.options = options;
+        this.simRobot = simRobot;
+        this.task = task;
+    }
+
+    /**
+     * Opens the sessions (and starts the simulator's ROS 2 side when there is no router).
+     *
+     * @param options what {@code --ros2} asked for
+     * @param server the built-in simulator, or null when {@code --zenoh} names the robot's router
+     * @return the link
+     * @throws io.rtaware.app.UserError if a router cannot be reached
+     */
+    public static Ros2Link open(Ros2Options options, PlayerSimServer server) {
+        Ros2SimRobot robot = null;
+        List<String> connect;
+        if (options.router() == null) {
+            String endpoint = Ros2Wiring.freeLoopbackEndpoint();
+            Ros2Context simContext = Ros2Wiring.open(List.of(), List.of(endpoint), options.topics().domain());
+            try {
+                robot = Ros2SimRobot.start(server, simContext, options.topics().namespace());
+            } catch (ZenohException e) {
+                throw new IllegalStateException("the simulator's ROS 2 side did not start: " + e.getMessage(), e);
+            }
+            connect = List.of(endpoint);
+        } else {
+            connect = List.of(options.router());
+        }
+        try {
+            Ros2Context context = Ros2Wiring.open(connect, List.of(io.rtaware.zenoh.ZenohConfig.LOOPBACK_ANY_PORT),
+                    options.topics().domain());
+            return new Ros2Link(options, robot, Ros2DataTask.withDefaults(context, options.topics()));
+        } catch (RuntimeException e) {
+            closeQuietly(robot);
+            throw e;
+        }
+    }
+
+    /** @return the data task as the monitor runs it */
+    public TaskSpec taskSpec() {
+        return new TaskSpec(TASK, Schedule.continuous(), ErrorPolicy.CONTINUE, task);
+    }
+
+    /** @return where the robot is, for the start line */
+    public String describe() {
+        return options.router() == null ? "built-in simulator as a ROS 2 robot over Zenoh on loopback"
+                : "ROS 2 robot through Zenoh at " + options.router();
+    }
+
+    /** @return one line with the data task's counters, scan latency and CPU cost per sample */
+    public String summary() {
+        Ros2Stats s = task.stats();
+        Histogram latency = task.latencySnapshot();
+        long samples = s.scans() + s.odometry();
+        return String.format(Locale.ROOT,
+                "ros2: %d scans, %d odometry, %d commands; dropped %d (malformed %d, oversized %d, implausible %d, "
+                        + "behind %d); scan source-to-commit latency p50 %.2f ms p99 %.2f ms; data task CPU %.1f us/sample",
+                s.scans(), s.odometry(), s.commands(), s.dropped(), s.malformed(), s.oversized(), s.rejected(),
+                s.overflowed(), latency.getValueAtPercentile(50) / 1e6, latency.getValueAtPercentile(99) / 1e6,
+                samples == 0 ? 0.0 : task.cpuNs() / (double) samples / TimeUnit.MICROSECONDS.toNanos(1));
+    }
+
+    /** @return the {@code ros2} section of the run's report */
+    public Ros2Section section() {
+        Ros2Stats s = task.stats();
+        Histogram latency = task.latencySnapshot();
+        long samples = s.scans() + s.odometry();
+        Map<String, Long> rejected = new LinkedHashMap<>();
+        rejected.put(task.topics().scan(), s.scanRejected());
+        rejected.put(task.topics().odom(), s.odomRejected());
+        Map<String, Double> latencyMs = new LinkedHashMap<>();
+        latencyMs.put("p50", Rounding.toDecimals(latency.getValueAtPercentile(50) / 1e6, 3));
+        latencyMs.put("p99", Rounding.toDecimals(latency.getValueAtPercentile(99) / 1e6, 3));
+        double cpuUs = samples == 0 ? 0.0 : task.cpuNs() / (double) samples / TimeUnit.MICROSECONDS.toNanos(1);
+        return new Ros2Section(describe(), s.scans(), s.odometry(), s.commands(), rejected, s.malformed(),
+                s.oversized(), s.overflowed(), s.lastProblem(), task.fault(), latencyMs, Rounding.toDecimals(cpuUs, 2));
+    }
+
+    /** @return the data task */
+    public Ros2DataTask task() {
+        return task;
+    }
+
+    /** Stops the simulator's ROS 2 side, if any (the data task closes its own session). */
+    @Override
+    public void close() {
+        closeQuietly(simRobot);
+    }
+
+    private static void closeQuietly(Ros2SimRobot robot) {
+        if (robot != null) {
+            try {
+                robot.close();
+            } catch (ZenohException e) {
+                // the process is leaving this robot; nothing else holds its session
+            }
+        }
+    }
+}

@@ -1,0 +1,20 @@
+package io.rtaware.app.ros2;
+
+import io.rtaware.ros2.task.Ros2Topics;
+import java.util.Optional;
+
+/**
+ * What {@code --ros2} asked for, validated by the mixins. Immutable.
+ *
+ * @param router the Zenoh endpoint to connect to ({@code tcp/HOST:PORT}), or null for the
+ *     built-in simulator in the same process
+ * @param listen where the simulator's session listens, or null for a free loopback port
+ * @param topics domain, namespace and topic names
+ */
+public record Ros2Options(String router, String listen, Ros2Topics topics) {
+
+    /** @return the router endpoint, if one was given */
+    public Optional<String> routerEndpoint() {
+        return Optional.ofNullable(router);
+    }
+}

@@ -1,0 +1,25 @@
+package io.rtaware.app.ros2;
+
+import java.util.Map;
+
+/**
+ * The {@code ros2} section of a run's {@code report.json} when the robot was a ROS 2 robot
+ * ({@code run --ros2}): what the ROS 2 data task received, dropped and sent.
+ *
+ * @param robot where the robot was, in words
+ * @param scans scans committed
+ * @param odometry odometry samples committed
+ * @param commands Twist messages published
+ * @param rejectedSamples decoded samples dropped because their values cannot be true, by topic
+ * @param malformed samples that could not be decoded
+ * @param oversized samples larger than the largest accepted message
+ * @param overflowed samples dropped because the data task fell behind
+ * @param lastProblem the last reason a sample was dropped, or null
+ * @param fault why the robot was halted (a topic sent only impossible samples), or null
+ * @param scanLatencyMs a scan's source timestamp to its commit in the store, {@code p50} and {@code p99}
+ * @param cpuUsPerSample the data task's CPU time per received sample, microseconds
+ */
+public record Ros2Section(String robot, long scans, long odometry, long commands, Map<String, Long> rejectedSamples,
+                          long malformed, long oversized, long overflowed, String lastProblem, String fault,
+                          Map<String, Double> scanLatencyMs, double cpuUsPerSample) {
+}

@@ -1,0 +1,54 @@
+package io.rtaware.app.ros2;
+
+import io.rtaware.app.UserError;
+import io.rtaware.ros2.task.Ros2Topics;
+import java.util.Optional;
+import picocli.CommandLine.Option;
+
+/** The ROS 2 options of {@code sim} (and their validation). */
+public final class Ros2SimMixin {
+
+    @Option(names = "--ros2",
+            description = "Also serve the world as a ROS 2 robot over Zenoh: scan, odom, ground_truth, cmd_vel.")
+    boolean enabled;
+
+    @Option(names = "--zenoh", paramLabel = "tcp/HOST:PORT",
+            description = "Zenoh router (rmw_zenohd) to connect to (with --ros2).")
+    String zenoh;
+
+    @Option(names = "--listen", paramLabel = "tcp/ADDR:PORT",
+            description = "Where the ROS 2 robot's Zenoh session listens (with --ros2; default: a free loopback port).")
+    String listen;
+
+    @Option(names = "--domain", defaultValue = "0", paramLabel = "N",
+            description = "ROS domain id (with --ros2; default: ${DEFAULT-VALUE}).")
+    int domain;
+
+    @Option(names = "--namespace", defaultValue = "/", paramLabel = "NS",
+            description = "The robot's namespace (with --ros2; default: ${DEFAULT-VALUE}).")
+    String namespace;
+
+    /**
+     * @return the ROS 2 options when {@code --ros2} was given
+     * @throws UserError for a malformed endpoint, namespace or domain, for ROS 2 options without
+     *     {@code --ros2}, or when the native Zenoh layer is missing
+     */
+    public Optional<Ros2Options> options() {
+        if (!enabled) {
+            if (zenoh != null || listen != null) {
+                throw new UserError((zenoh != null ? "--zenoh" : "--listen") + " needs --ros2");
+            }
+            return Optional.empty();
+        }
+        String router = zenoh == null ? null : Ros2Wiring.endpoint(zenoh, "--zenoh", false);
+        String at = listen == null ? null : Ros2Wiring.endpoint(listen, "--listen", true);
+        Ros2Topics topics;
+        try {
+            topics = new Ros2Topics(domain, namespace, "scan", "odom", "cmd_vel");
+        } catch (IllegalArgumentException e) {
+            throw new UserError(e.getMessage());
+        }
+        Ros2Wiring.requireNativeZenoh();
+        return Optional.of(new Ros2Options(router, at, topics));
+    }
+}

@@ -1,0 +1,114 @@
+package io.rtaware.app.ros2;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import io.rtaware.core.time.SystemClock;
+import io.rtaware.robot.geometry.Pose2d;
+import io.rtaware.ros2.graph.Ros2Context;
+import io.rtaware.sim.ros2.Ros2SimRobot;
+import io.rtaware.sim.scenario.ScenarioLoader;
+import io.rtaware.sim.server.PlayerSimServer;
+import io.rtaware.sim.server.ServerConfig;
+import io.rtaware.sim.server.SimCommandSupport;
+import io.rtaware.zenoh.ZenohConfig;
+import io.rtaware.zenoh.ZenohException;
+import io.rtaware.zenoh.ZenohLibrary;
+import java.io.BufferedReader;
+import java.io.InputStream;
+import java.io.InputStreamReader;
+import java.net.ServerSocket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Objects;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The simulator as a ROS 2 robot against an independent implementation of the same conventions:
+ * a Python Zenoh router standing in for rmw_zenohd, and a Python peer built on zenoh-ros2-sdk and
+ * rosbags ({@code src/test/resources/ros2/ros2_peer.py}) that decodes /scan and /odom, lists the
+ * graph through liveliness tokens and drives the robot on /cmd_vel. The Python interpreter of a
+ * virtual environment with those packages is named by {@code RTAWARE_PEER_PYTHON} (.ci/run makes
+ * one); without it, or without the native Zenoh layer, the test is skipped, except under CI=true
+ * where it fails.
+ */
+@Timeout(180)
+class Ros2PythonPeerTest {
+
+    @TempDir
+    Path dir;
+
+    private static boolean ci() {
+        return "true".equals(System.getenv("CI"));
+    }
+
+    private static void require(boolean present, String why) {
+        if (!present && ci()) {
+            fail("CI=true but " + why);
+        }
+        assumeTrue(present, () -> "skipped: " + why);
+    }
+
+    @Test
+    void aPythonRos2PeerSeesTheSimulatorAndDrivesIt() throws Exception {
+        String reason = ZenohLibrary.unavailableReason();
+        if (reason != null && "1".equals(System.getenv("RTAWARE_NO_RUST"))) {
+            assumeTrue(false, () -> "skipped: " + reason + " (no Rust toolchain on this machine)");
+        }
+        require(reason == null, String.valueOf(reason));
+        String python = System.getenv("RTAWARE_PEER_PYTHON");
+        require(python != null && Files.isExecutable(Path.of(python)),
+                "RTAWARE_PEER_PYTHON does not name a Python with eclipse-zenoh, zenoh-ros2-sdk and rosbags "
+                        + "(.ci/run creates one)");
+        Path script = dir.resolve("ros2_peer.py");
+        try (InputStream in = Objects.requireNonNull(getClass().getResourceAsStream("/ros2/ros2_peer.py"))) {
+            Files.copy(in, script);
+        }
+        String endpoint;
+        try (ServerSocket s = new ServerSocket(0)) {
+            endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
+        }
+        Process router = new ProcessBuilder(python, script.toString(), "router", "--listen", endpoint)
+                .redirectError(ProcessBuilder.Redirect.INHERIT).start();
+        try (BufferedReader routerOut = new BufferedReader(
+                new InputStreamReader(router.getInputStream(), StandardCharsets.UTF_8))) {
+            assertEquals("ready", routerOut.readLine(), "the Python router started");
+            try (PlayerSimServer server = SimCommandSupport.start(ScenarioLoader.load("paper-room"), new SystemClock(),
+                         ServerConfig.defaults(0), 1);
+                 Ros2SimRobot robot = Ros2SimRobot.start(server, openThrough(endpoint), "/")) {
+                Pose2d start = server.groundTruth();
+                Process peer = new ProcessBuilder(python, script.toString(), "check", "--router", endpoint,
+                        "--timeout", "60").redirectError(ProcessBuilder.Redirect.INHERIT).start();
+                String output = new String(peer.getInputStream().readAllBytes(), StandardCharsets.UTF_8).trim();
+                assertTrue(peer.waitFor(90, TimeUnit.SECONDS), "the Python peer finished");
+                JsonNode seen = new ObjectMapper().readTree(output.lines().reduce((a, b) -> b).orElse("{}"));
+                assertEquals(0, peer.exitValue(), "the Python peer's checks: " + seen.path("failures"));
+                assertTrue(seen.path("first_scan").path("beams").asInt() > 100, "LaserScan decoded: " + seen);
+                assertEquals("odom", seen.path("first_odometry").path("frame").asText(), "Odometry decoded: " + seen);
+                assertEquals("rtaware_sim", seen.path("scan_publishers").path(0).path("node").asText());
+                assertTrue(robot.commands() > 0, "the simulator obeyed the Python /cmd_vel");
+                Pose2d end = server.groundTruth();
+                assertTrue(Math.hypot(end.xM() - start.xM(), end.yM() - start.yM()) > 0.1,
+                        "ground truth moved from " + start + " to " + end);
+            }
+        } finally {
+            router.getOutputStream().close();
+            if (!router.waitFor(10, TimeUnit.SECONDS)) {
+                router.destroyForcibly();
+            }
+        }
+    }
+
+    private static Ros2Context openThrough(String router) throws ZenohException {
+        return Ros2Context.open(ZenohConfig.loopbackPeer().withConnect(List.of(router)), 0);
+    }
+}

@@ -1,0 +1,163 @@
+"""An independent ROS 2 peer for rtaware's tests: eclipse-zenoh, zenoh-ros2-sdk and rosbags.
+
+  ros2_peer.py router --listen tcp/127.0.0.1:PORT
+      A Zenoh router standing in for rmw_zenohd; prints "ready", runs until stdin closes.
+
+  ros2_peer.py check --router tcp/127.0.0.1:PORT [--namespace /] [--timeout 60]
+      Against rtaware's simulator served as a ROS 2 robot: lists the ROS graph through the
+      liveliness tokens, decodes /scan and /odom with zenoh-ros2-sdk subscribers (types and
+      RIHS01 hashes from rosbags' Jazzy store, nothing fetched from the internet), drives the
+      robot with a zenoh-ros2-sdk /cmd_vel publisher and watches odometry move. Prints one JSON
+      object with what it saw; exits 0 when every check passed, 1 otherwise (reasons in
+      "failures").
+"""
+
+import argparse
+import json
+import math
+import sys
+import threading
+import time
+
+
+def router(listen):
+    import zenoh
+
+    conf = zenoh.Config()
+    conf.insert_json5("mode", '"router"')
+    conf.insert_json5("listen/endpoints", json.dumps([listen]))
+    conf.insert_json5("scouting/multicast/enabled", "false")
+    session = zenoh.open(conf)
+    print("ready", flush=True)
+    sys.stdin.read()
+    session.close()
+    return 0
+
+
+def topic(namespace, name):
+    return ("" if namespace == "/" else namespace) + "/" + name
+
+
+def check(endpoint, namespace, timeout_s):
+    from rosbags.typesys import Stores, get_typestore
+    from zenoh_ros2_sdk import ROS2Publisher, ROS2Subscriber, ZenohSession, get_topic_info, get_topic_names_and_types
+
+    host, port = endpoint[len("tcp/"):].rsplit(":", 1)
+    port = int(port)
+    jazzy = get_typestore(Stores.ROS2_JAZZY)
+    session = ZenohSession.get_instance(host, port)
+    # The SDK's own store starts empty: give it the Jazzy definitions of nested types too.
+    session.store.register(dict(jazzy.fielddefs))
+
+    def typed(name):
+        return {"msg_type": name, "msg_definition": jazzy.generate_msgdef(name, ros_version=2)[0],
+                "type_hash": jazzy.hash_rihs01(name), "router_ip": host, "router_port": port}
+
+    lock = threading.Lock()
+    scans, odoms = [], []
+
+    def on_scan(msg):
+        with lock:
+            scans.append({"beams": len(msg.ranges), "angle_min": float(msg.angle_min),
+                          "angle_max": float(msg.angle_max), "range_max": float(msg.range_max),
+                          "stamp_s": msg.header.stamp.sec + msg.header.stamp.nanosec * 1e-9})
+
+    def on_odom(msg):
+        p = msg.pose.pose
+        with lock:
+            odoms.append({"x": float(p.position.x), "y": float(p.position.y),
+                          "qz": float(p.orientation.z), "qw": float(p.orientation.w),
+                          "frame": msg.header.frame_id, "child": msg.child_frame_id})
+
+    failures = []
+    result = {"failures": failures}
+    scan_sub = ROS2Subscriber(topic=topic(namespace, "scan"), callback=on_scan, node_name="peer_scan",
+                              **typed("sensor_msgs/msg/LaserScan"))
+    odom_sub = ROS2Subscriber(topic=topic(namespace, "odom"), callback=on_odom, node_name="peer_odom",
+                              **typed("nav_msgs/msg/Odometry"))
+    cmd_pub = ROS2Publisher(topic=topic(namespace, "cmd_vel"), node_name="peer_driver",
+                            **typed("geometry_msgs/msg/Twist"))
+    deadline = time.monotonic() + timeout_s
+
+    def wait_for(cond):
+        while time.monotonic() < deadline:
+            with lock:
+                if cond():
+                    return True
+            time.sleep(0.05)
+        return False
+
+    if not wait_for(lambda: len(scans) >= 3 and len(odoms) >= 3):
+        failures.append("fewer than 3 scans and 3 odometry samples arrived")
+    with lock:
+        result["scans"] = len(scans)
+        result["odometry"] = len(odoms)
+        result["first_scan"] = scans[0] if scans else None
+        result["first_odometry"] = odoms[0] if odoms else None
+        start = dict(odoms[-1]) if odoms else None
+
+    expected = (("scan", "sensor_msgs/msg/LaserScan"), ("odom", "nav_msgs/msg/Odometry"),
+                ("ground_truth", "nav_msgs/msg/Odometry"), ("cmd_vel", "geometry_msgs/msg/Twist"))
+
+    def graph():
+        topics = dict(get_topic_names_and_types(domain_id=0, router_ip=host, router_port=port, timeout=1.0))
+        info = get_topic_info(topic(namespace, "scan"), domain_id=0, router_ip=host, router_port=port, timeout=1.0,
+                              verbose=True)
+        publishers = [] if info is None else [
+            {"node": p.node_name, "namespace": p.node_namespace, "qos": p.qos} for p in info.publishers]
+        return topics, publishers
+
+    # Liveliness replies lag a freshly connected session's discovery by a moment: ask until
+    # the graph is complete or the deadline passes.
+    topics, publishers = graph()
+    while time.monotonic() < deadline and not (
+            all(t in topics.get(topic(namespace, n), []) for n, t in expected)
+            and any(p["node"] == "rtaware_sim" for p in publishers)):
+        time.sleep(0.2)
+        topics, publishers = graph()
+    result["topics"] = topics
+    result["scan_publishers"] = publishers
+    for name, ros_type in expected:
+        if ros_type not in topics.get(topic(namespace, name), []):
+            failures.append("the graph lacks " + topic(namespace, name) + " of type " + ros_type)
+    if not any(p["node"] == "rtaware_sim" for p in publishers):
+        failures.append("no /scan publisher of node rtaware_sim in the liveliness tokens")
+
+    if start is not None:
+        drive_until = time.monotonic() + 3.0
+        Vector3 = session.store.types["geometry_msgs/msg/Vector3"]
+        while time.monotonic() < drive_until:
+            cmd_pub.publish(linear=Vector3(x=0.3, y=0.0, z=0.0), angular=Vector3(x=0.0, y=0.0, z=0.0))
+            time.sleep(0.1)
+        cmd_pub.publish(linear=Vector3(x=0.0, y=0.0, z=0.0), angular=Vector3(x=0.0, y=0.0, z=0.0))
+        time.sleep(0.5)
+        with lock:
+            end = odoms[-1]
+        moved = math.hypot(end["x"] - start["x"], end["y"] - start["y"])
+        result["moved_m"] = moved
+        if moved < 0.1:
+            failures.append("the robot moved only %.3f m while /cmd_vel asked for 0.3 m/s" % moved)
+
+    for entity in (scan_sub, odom_sub, cmd_pub):
+        entity.close()
+    print(json.dumps(result), flush=True)
+    return 1 if failures else 0
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    sub = parser.add_subparsers(dest="command", required=True)
+    r = sub.add_parser("router")
+    r.add_argument("--listen", required=True)
+    c = sub.add_parser("check")
+    c.add_argument("--router", required=True)
+    c.add_argument("--namespace", default="/")
+    c.add_argument("--timeout", type=float, default=60.0)
+    args = parser.parse_args()
+    if args.command == "router":
+        return router(args.listen)
+    return check(args.router, args.namespace, args.timeout)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,259 @@
+package io.rtaware.ros2.export;
+
+import io.rtaware.core.data.FeedStats;
+import io.rtaware.core.data.StateValue;
+import io.rtaware.core.monitor.Monitor;
+import io.rtaware.core.monitor.TaskCounters;
+import io.rtaware.core.monitor.TaskInfo;
+import io.rtaware.core.task.Schedule;
+import io.rtaware.core.time.EpochClock;
+import io.rtaware.ros2.graph.QosProfile;
+import io.rtaware.ros2.graph.Ros2Context;
+import io.rtaware.ros2.graph.Ros2Node;
+import io.rtaware.ros2.graph.Ros2Publisher;
+import io.rtaware.ros2msg.DiagnosticArrayCodec;
+import io.rtaware.ros2msg.Ros2Header;
+import io.rtaware.ros2msg.cdr.CdrWriter;
+import io.rtaware.ros2msg.value.DiagnosticArray;
+import io.rtaware.ros2msg.value.DiagnosticStatus;
+import io.rtaware.zenoh.ZenohException;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Objects;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.LockSupport;
+
+/**
+ * Publishes a monitor's keys and health over ROS 2 from a thread of its own (never a task's):
+ * every {@code keyPeriodMs} of wall time each {@link ExportedKey} whose generation changed is
+ * read from the store (a copy, under the key's read lock, like any observer) and published as
+ * its ROS 2 type on {@link ExportedKey#topic()}; once a second a
+ * {@code diagnostic_msgs/msg/DiagnosticArray} on {@code /diagnostics} carries one status per task
+ * (period, releases, misses, miss %, stale runs, errors, execution-time p99 of the latest cycles
+ * against the period; WARN when misses grew since the last array, ERROR when errors did) and
+ * one per key (commits, rate, producer, and the topic it is published on or that it has no
+ * ROS 2 type). Its thread is named {@code ros2-export}, outside the {@code rtaware-*} threads
+ * whose allocation {@code bench} measures. Thread-safe: {@link #close()} from any thread.
+ */
+public final class MonitorExporter implements AutoCloseable {
+
+    /** Node name of the exporter in the ROS graph. */
+    public static final String NODE_NAME = "rtaware_monitor";
+    /** Topic of the health array. */
+    public static final String DIAGNOSTICS = "/diagnostics";
+    private static final long DIAGNOSTICS_PERIOD_NS = TimeUnit.SECONDS.toNanos(1);
+    private static final int VALUES_PER_STATUS = 10;
+    private static final int MAX_MESSAGE_BYTES = 1 << 20;
+
+    private final Monitor monitor;
+    private final Ros2Context context;
+    private final long keyPeriodNs;
+    private final List<Slot<?>> slots = new ArrayList<>();
+    private final Map<String, String> topicByKey = new HashMap<>();
+    private final Ros2Publisher diagnostics;
+    private final DiagnosticArrayCodec diagnosticCodec = new DiagnosticArrayCodec();
+    private final DiagnosticArray array;
+    private final CdrWriter writer = new CdrWriter(MAX_MESSAGE_BYTES);
+    private final Ros2Header header = new Ros2Header();
+    private final EpochClock epoch = new EpochClock();
+    private final long[] lastMisses;
+    private final long[] lastErrors;
+    private final Thread thread;
+    private volatile boolean running = true;
+    private volatile String failure;
+    private volatile long arraysPublished;
+
+    /** One exported key: its buffer, last generation seen and publisher. */
+    private static final class Slot<T extends StateValue<T>> {
+        final ExportedKey<T> exported;
+        final T buffer;
+        final Ros2Publisher publisher;
+        long generation;
+
+        Slot(ExportedKey<T> exported, Ros2Publisher publisher) {
+            this.exported = exported;
+            this.buffer = exported.key().newBuffer();
+            this.publisher = publisher;
+        }
+    }
+
+    private MonitorExporter(Monitor monitor, Ros2Context context, List<ExportedKey<?>> keys, long keyPeriodMs)
+            throws ZenohException {
+        this.monitor = monitor;
+        this.context = context;
+        this.keyPeriodNs = TimeUnit.MILLISECONDS.toNanos(keyPeriodMs);
+        Ros2Node node = context.createNode("/", NODE_NAME);
+        for (ExportedKey<?> k : keys) {
+            if (monitor.hasKey(k.key().name())) {
+                slots.add(slot(node, k));
+                topicByKey.put(k.key().name(), k.topic());
+            }
+        }
+        diagnostics = node.createPublisher(DIAGNOSTICS, diagnosticCodec.type(), QosProfile.defaults(), MAX_MESSAGE_BYTES);
+        int statuses = monitor.tasks().size() + monitor.keyNames().size();
+        array = new DiagnosticArray(statuses, VALUES_PER_STATUS);
+        lastMisses = new long[monitor.tasks().size()];
+        lastErrors = new long[monitor.tasks().size()];
+        thread = new Thread(this::loop, "ros2-export");
+        thread.setDaemon(true);
+    }
+
+    private static <T extends StateValue<T>> Slot<T> slot(Ros2Node node, ExportedKey<T> k) throws ZenohException {
+        return new Slot<>(k, node.createPublisher(k.topic(), k.codec().type(), QosProfile.defaults(), MAX_MESSAGE_BYTES));
+    }
+
+    /**
+     * Declares the node and publishers and starts the thread.
+     *
+     * @param monitor the monitor to export (built; started or not)
+     * @param context an open context, owned by the exporter from now on
+     * @param keys the keys with a ROS 2 type (keys the monitor does not have are left out)
+     * @param keyPeriodMs how often the keys are looked at, in wall milliseconds
+     * @return the running exporter
+     * @throws ZenohException if a declaration fails (the context is closed then)
+     */
+    public static MonitorExporter start(Monitor monitor, Ros2Context context, List<ExportedKey<?>> keys,
+                                        long keyPeriodMs) throws ZenohException {
+        Objects.requireNonNull(monitor, "monitor");
+        if (keyPeriodMs <= 0) {
+            throw new IllegalArgumentException("key period must be positive, got " + keyPeriodMs + " ms");
+        }
+        try {
+            MonitorExporter e = new MonitorExporter(monitor, context, keys, keyPeriodMs);
+            e.thread.start();
+            return e;
+        } catch (ZenohException | RuntimeException e) {
+            context.close();
+            throw e;
+        }
+    }
+
+    private void loop() {
+        long nextDiagnosticsNs = System.nanoTime();
+        try {
+            while (running) {
+                for (Slot<?> s : slots) {
+                    publishIfNew(s);
+                }
+                if (System.nanoTime() - nextDiagnosticsNs >= 0) {
+                    publishDiagnostics();
+                    nextDiagnosticsNs += DIAGNOSTICS_PERIOD_NS;
+                }
+                LockSupport.parkNanos(keyPeriodNs);
+            }
+        } catch (ZenohException | RuntimeException e) {
+            failure = e.getMessage();
+        }
+    }
+
+    private <T extends StateValue<T>> void publishIfNew(Slot<T> s) throws ZenohException {
+        long generation = monitor.read(s.exported.key(), s.buffer);
+        if (generation == 0 || generation == s.generation) {
+            return;
+        }
+        s.generation = generation;
+        long nowNs = epoch.epochNanos();
+        s.exported.codec().encode(header.set(nowNs, s.exported.frameId()), s.buffer, writer);
+        s.publisher.publish(writer.buffer(), writer.size(), nowNs);
+    }
+
+    private void publishDiagnostics() throws ZenohException {
+        array.clear();
+        List<TaskInfo> tasks = monitor.tasks();
+        for (TaskInfo task : tasks) {
+            taskStatus(task, monitor.counters(task.index()), array.add());
+        }
+        for (String key : monitor.keyNames()) {
+            keyStatus(key, array.add());
+        }
+        long nowNs = epoch.epochNanos();
+        diagnosticCodec.encode(header.set(nowNs, ""), array, writer);
+        diagnostics.publish(writer.buffer(), writer.size(), nowNs);
+        arraysPublished++;
+    }
+
+    private void taskStatus(TaskInfo task, TaskCounters c, DiagnosticStatus s) {
+        int i = task.index();
+        long periodNs = task.schedule() instanceof Schedule.Periodic p ? p.periodNs() : 0;
+        double missPct = c.releases() == 0 ? 0.0 : 100.0 * c.misses() / c.releases();
+        s.level = c.errors() > lastErrors[i] ? DiagnosticStatus.ERROR
+                : c.misses() > lastMisses[i] ? DiagnosticStatus.WARN : DiagnosticStatus.OK;
+        lastErrors[i] = c.errors();
+        lastMisses[i] = c.misses();
+        s.name.append("rtaware: task ").append(task.name());
+        s.hardwareId.append("rtaware");
+        s.message.append(String.format(Locale.ROOT, "%d misses (%.2f%%), %d stale runs, exec p99 %.3f ms%s",
+                c.misses(), missPct, c.staleRuns(), c.recentExecP99Ns() / 1e6,
+                periodNs > 0 ? String.format(Locale.ROOT, " of a %.1f ms period", periodNs / 1e6) : ""));
+        value(s, "schedule", task.schedule().kind());
+        value(s, "period_ms", periodNs > 0 ? format(periodNs / 1e6) : "");
+        value(s, "releases", Long.toString(c.releases()));
+        value(s, "runs", Long.toString(c.runs()));
+        value(s, "misses", Long.toString(c.misses()));
+        value(s, "miss_pct", format(missPct));
+        value(s, "stale_runs", Long.toString(c.staleRuns()));
+        value(s, "errors", Long.toString(c.errors()));
+        value(s, "exec_p99_ms", format(c.recentExecP99Ns() / 1e6));
+        value(s, "exec_p99_of_period", periodNs > 0 ? format(c.recentExecP99Ns() / (double) periodNs) : "");
+    }
+
+    private void keyStatus(String key, DiagnosticStatus s) {
+        FeedStats feed = monitor.feed(key);
+        s.level = DiagnosticStatus.OK;
+        s.name.append("rtaware: key ").append(key);
+        s.hardwareId.append("rtaware");
+        String topic = topicByKey.get(key);
+        s.message.append(topic != null ? "published on " + topic : "no ROS 2 type: health only");
+        value(s, "commits", Long.toString(feed.commits()));
+        value(s, "rate_hz", format(feed.rateHz()));
+        value(s, "producer", String.valueOf(monitor.producer(key)));
+        value(s, "topic", topic != null ? topic : "");
+    }
+
+    private static void value(DiagnosticStatus s, String key, String value) {
+        int i = s.addValue();
+        s.key(i).append(key);
+        s.value(i).append(value);
+    }
+
+    private static String format(double v) {
+        return Double.isFinite(v) ? String.format(Locale.ROOT, "%.3f", v) : "";
+    }
+
+    /** @return the topics the keys are published on, by key name */
+    public Map<String, String> topics() {
+        return Map.copyOf(topicByKey);
+    }
+
+    /** @return diagnostic arrays published so far */
+    public long diagnosticsPublished() {
+        return arraysPublished;
+    }
+
+    /** @return why the thread stopped early, or null */
+    public String failure() {
+        return failure;
+    }
+
+    /** Publishes one last health array, stops the thread, closes the session. */
+    @Override
+    public void close() throws ZenohException {
+        running = false;
+        LockSupport.unpark(thread);
+        try {
+            thread.join(TimeUnit.SECONDS.toMillis(2));
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        try {
+            if (!thread.isAlive() && failure == null) {
+                publishDiagnostics();
+            }
+        } finally {
+            context.close();
+        }
+    }
+}

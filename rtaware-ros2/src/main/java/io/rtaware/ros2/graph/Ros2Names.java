@@ -1,0 +1,84 @@
+package io.rtaware.ros2.graph;
+
+import java.util.regex.Pattern;
+
+/**
+ * ROS 2 names as rmw_zenoh puts them into key expressions and liveliness tokens. Stateless.
+ */
+public final class Ros2Names {
+
+    private static final Pattern NAME = Pattern.compile("(/[A-Za-z_][A-Za-z0-9_]*)*");
+    private static final Pattern NODE = Pattern.compile("[A-Za-z_][A-Za-z0-9_]*");
+
+    private Ros2Names() {
+    }
+
+    /**
+     * @param namespace {@code /} or {@code /robot1} (a missing leading slash is added, a
+     *     trailing one removed)
+     * @return the namespace in canonical form
+     * @throws IllegalArgumentException if it is not a valid ROS 2 namespace
+     */
+    public static String namespace(String namespace) {
+        String ns = namespace == null || namespace.isEmpty() ? "/" : namespace;
+        ns = ns.startsWith("/") ? ns : "/" + ns;
+        ns = ns.length() > 1 && ns.endsWith("/") ? ns.substring(0, ns.length() - 1) : ns;
+        if (!ns.equals("/") && !NAME.matcher(ns).matches()) {
+            throw new IllegalArgumentException("invalid ROS 2 namespace '" + namespace + "'");
+        }
+        return ns;
+    }
+
+    /**
+     * @param namespace a canonical namespace
+     * @param topic an absolute ({@code /scan}) or relative ({@code scan}) topic name
+     * @return the fully qualified topic name (a relative name is put under the namespace)
+     * @throws IllegalArgumentException if the topic is not a valid ROS 2 name
+     */
+    public static String resolveTopic(String namespace, String topic) {
+        if (topic == null || topic.isEmpty() || topic.endsWith("/")) {
+            throw new IllegalArgumentException("invalid ROS 2 topic name '" + topic + "'");
+        }
+        String full = topic.startsWith("/") ? topic : (namespace.equals("/") ? "" : namespace) + "/" + topic;
+        if (!NAME.matcher(full).matches()) {
+            throw new IllegalArgumentException("invalid ROS 2 topic name '" + topic + "'");
+        }
+        return full;
+    }
+
+    /**
+     * @param name a node name
+     * @return the name
+     * @throws IllegalArgumentException if it is not a valid ROS 2 node name
+     */
+    public static String nodeName(String name) {
+        if (name == null || !NODE.matcher(name).matches()) {
+            throw new IllegalArgumentException("invalid ROS 2 node name '" + name + "'");
+        }
+        return name;
+    }
+
+    /**
+     * The topic key expression: {@code <domain>/<topic without its leading slash>/<dds type>/<hash>}.
+     *
+     * @param domain the ROS domain id
+     * @param fullTopic a fully qualified topic name
+     * @param ddsTypeName e.g. {@code geometry_msgs::msg::dds_::Twist_}
+     * @param typeHash e.g. {@code RIHS01_9c45...}
+     * @return the key expression
+     */
+    public static String topicKey(int domain, String fullTopic, String ddsTypeName, String typeHash) {
+        return domain + "/" + fullTopic.substring(1) + "/" + ddsTypeName + "/" + typeHash;
+    }
+
+    /**
+     * A name as a single segment of a liveliness token: every {@code /} becomes {@code %}, and an
+     * empty name is a single {@code %}.
+     *
+     * @param name the name
+     * @return the mangled name
+     */
+    public static String mangle(String name) {
+        return name.isEmpty() ? "%" : name.replace('/', '%');
+    }
+}

@@ -1,0 +1,359 @@
+package io.rtaware.ros2.task;
+
+import io.rtaware.core.data.Input;
+import io.rtaware.core.data.Output;
+import io.rtaware.core.task.Task;
+import io.rtaware.core.task.TaskSetup;
+import io.rtaware.core.time.EpochClock;
+import io.rtaware.robot.msg.LaserScan;
+import io.rtaware.robot.msg.Odometry;
+import io.rtaware.robot.msg.RobotKeys;
+import io.rtaware.robot.msg.VelocityCommand;
+import io.rtaware.robot.validate.ImpossibleDataException;
+import io.rtaware.robot.validate.RejectionWatch;
+import io.rtaware.robot.validate.SampleLimits;
+import io.rtaware.robot.validate.SampleValidator;
+import io.rtaware.ros2.graph.QosProfile;
+import io.rtaware.ros2.graph.Ros2Context;
+import io.rtaware.ros2.graph.Ros2Node;
+import io.rtaware.ros2.graph.Ros2Publisher;
+import io.rtaware.ros2.graph.SampleAttachment;
+import io.rtaware.ros2msg.LaserScanCodec;
+import io.rtaware.ros2msg.OdometryCodec;
+import io.rtaware.ros2msg.Ros2Header;
+import io.rtaware.ros2msg.TwistCodec;
+import io.rtaware.ros2msg.cdr.CdrReader;
+import io.rtaware.ros2msg.cdr.CdrWriter;
+import io.rtaware.zenoh.SampleBuffer;
+import io.rtaware.zenoh.ZenohException;
+import io.rtaware.zenoh.ZenohMailbox;
+import java.io.IOException;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
+import java.nio.ByteOrder;
+import java.util.Locale;
+import java.util.Objects;
+import java.util.concurrent.TimeUnit;
+import org.HdrHistogram.Histogram;
+
+/**
+ * The task that connects a ROS 2 robot (rmw_zenoh conventions) to the data store; run it with
+ * {@code Schedule.continuous()}. It owns the {@link Ros2Context} it is given: {@link #initialize}
+ * creates the node {@value #NODE_NAME}, subscribes the scan and odometry topics and advertises
+ * the Twist topic, and declares that it produces {@link RobotKeys#LASER} and
+ * {@link RobotKeys#ODOMETRY} and consumes {@link RobotKeys#MOTOR}, like the Player data task.
+ *
+ * <p>Each {@link #execute} sends the motor command when it has a new generation with a changed
+ * value (or again after the keep-alive), then waits at most {@code pollWaitMs} of wall time for
+ * a sample and takes every sample queued. Each sample is copied into a buffer allocated once,
+ * decoded into a scratch value, validated ({@link SampleValidator}) and only then copied into
+ * the output: a sample with a wrong encapsulation, truncated, bigger than the largest accepted
+ * message, or with values that cannot be true is counted and dropped, never committed and
+ * never fatal. Nothing is allocated per sample on the Java side.
+ *
+ * <p>{@link #terminate} publishes a zero Twist first, then closes the session. Called by one
+ * thread at a time, as every task; {@link #stats()} and {@link #latencySnapshot()} may be called
+ * from any thread.
+ */
+public final class Ros2DataTask implements Task {
+
+    /** World time of rejection-only samples on one topic after which the robot is halted: 1 s. */
+    public static final long IMPOSSIBLE_DATA_FAULT_AFTER_NS = 1_000_000_000L;
+
+    /** The name of the controller's node in the ROS graph. */
+    public static final String NODE_NAME = "rtaware_controller";
+    /** Samples kept while a cycle is busy; beyond it the oldest are dropped. */
+    private static final int MAILBOX_CAPACITY = 64;
+    private static final int SCAN = 0;
+    private static final int ODOM = 1;
+    private static final long MAX_LATENCY_NS = TimeUnit.SECONDS.toNanos(60);
+
+    private final Ros2Context context;
+    private final Ros2Topics topics;
+    private final long pollWaitNs;
+    private final long keepAliveNs;
+    private final EpochClock epoch;
+
+    private final SampleBuffer sample;
+    private final byte[] bytes;
+    private final CdrReader reader = new CdrReader();
+    private final CdrWriter writer = new CdrWriter(256);
+    private final Ros2Header header = new Ros2Header();
+    private final LaserScanCodec scanCodec = new LaserScanCodec();
+    private final OdometryCodec odomCodec = new OdometryCodec("base_link");
+    private final TwistCodec twistCodec = new TwistCodec();
+    private final LaserScan scanScratch = new LaserScan();
+    private final Odometry odomScratch = new Odometry();
+    private final VelocityCommand zero = new VelocityCommand();
+    private final SampleValidator scanValidator = new SampleValidator("scan", SampleLimits.defaults());
+    private final SampleValidator odomValidator = new SampleValidator("odom", SampleLimits.defaults());
+    private final RejectionWatch scanWatch = new RejectionWatch(IMPOSSIBLE_DATA_FAULT_AFTER_NS);
+    private final RejectionWatch odomWatch = new RejectionWatch(IMPOSSIBLE_DATA_FAULT_AFTER_NS);
+    private final Histogram scanLatencyNs = new Histogram(MAX_LATENCY_NS, 3);
+    private final ThreadMXBean threads = ManagementFactory.getThreadMXBean();
+
+    private Output<Odometry> odometryOut;
+    private Output<LaserScan> laserOut;
+    private Input<VelocityCommand> motorIn;
+    private ZenohMailbox mailbox;
+    private Ros2Publisher cmdVel;
+
+    private long motorGeneration = -1;
+    private boolean commandSent;
+    private double sentVxMps;
+    private double sentOmegaRadPerSec;
+    private long sentAtNs;
+    private long pendingScanSourceNs = Long.MIN_VALUE;
+
+    private volatile long scans;
+    private volatile long odometry;
+    private volatile long malformed;
+    private volatile long oversized;
+    private volatile long overflowedSeen;
+    private volatile String lastProblem;
+    private volatile long cpuNs;
+    private volatile String fault;
+
+    /**
+     * @param context an open context, owned by the task from now on (closed by {@link #terminate})
+     * @param topics where the robot's data is
+     * @param pollWaitMs the longest wall time one cycle waits for a sample
+     * @param keepAliveMs world time after which an unchanged motor command is sent again
+     * @param maxMessageBytes the largest message accepted
+     */
+    public Ros2DataTask(Ros2Context context, Ros2Topics topics, int pollWaitMs, long keepAliveMs, int maxMessageBytes) {
+        this.context = Objects.requireNonNull(context, "context");
+        this.topics = Objects.requireNonNull(topics, "topics");
+        if (pollWaitMs <= 0 || keepAliveMs <= 0 || maxMessageBytes <= 0) {
+            throw new IllegalArgumentException("pollWaitMs " + pollWaitMs + ", keepAliveMs " + keepAliveMs
+                    + " and maxMessageBytes " + maxMessageBytes + " must be positive");
+        }
+        this.pollWaitNs = TimeUnit.MILLISECONDS.toNanos(pollWaitMs);
+        this.keepAliveNs = TimeUnit.MILLISECONDS.toNanos(keepAliveMs);
+        this.sample = new SampleBuffer(maxMessageBytes, SampleAttachment.BYTES);
+        this.sample.attachment().order(ByteOrder.LITTLE_ENDIAN);
+        this.bytes = new byte[maxMessageBytes];
+        this.epoch = new EpochClock();
+    }
+
+    /**
+     * Defaults: 20 ms poll wait, 500 ms keep-alive, messages up to 256 KiB.
+     *
+     * @param context an open context, owned by the task from now on
+     * @param topics where the robot's data is
+     * @return the task
+     */
+    public static Ros2DataTask withDefaults(Ros2Context context, Ros2Topics topics) {
+        return new Ros2DataTask(context, topics, 20, 500, 256 * 1024);
+    }
+
+    /**
+     * Declares the keys, creates the node, subscribes and advertises.
+     *
+     * @param setup the declarations interface
+     * @throws ZenohException if a declaration fails
+     */
+    @Override
+    public void initialize(TaskSetup setup) throws ZenohException {
+        odometryOut = setup.produce(RobotKeys.ODOMETRY);
+        laserOut = setup.produce(RobotKeys.LASER);
+        motorIn = setup.consume(RobotKeys.MOTOR);
+        Ros2Node node = context.createNode(topics.namespace(), NODE_NAME);
+        mailbox = context.session().newMailbox(MAILBOX_CAPACITY);
+        node.subscribe(topics.scan(), scanCodec.type(), QosProfile.sensorData(), mailbox, SCAN);
+        node.subscribe(topics.odom(), odomCodec.type(), QosProfile.defaults(), mailbox, ODOM);
+        cmdVel = node.createPublisher(topics.cmdVel(), twistCodec.type(), QosProfile.defaults(), writer.capacity());
+        sentAtNs = Long.MIN_VALUE;
+    }
+
+    /**
+     * One cycle: send the motor command if needed, wait for samples, take all queued, publish
+     * the newest valid ones.
+     *
+     * @param nowNs world time at the start of the cycle
+     * @throws ZenohException if publishing fails or the session was closed
+     */
+    @Override
+    public void execute(long nowNs) throws ZenohException, ImpossibleDataException {
+        long cpuStartNs = threads.getCurrentThreadCpuTime();
+        try {
+            sendMotor(nowNs);
+            ZenohMailbox.Take took = mailbox.take(pollWaitNs, sample);
+            for (int i = 0; i < MAILBOX_CAPACITY && took != ZenohMailbox.Take.TIMEOUT; i++) {
+                if (took == ZenohMailbox.Take.CLOSED) {
+                    throw new ZenohException("the ROS 2 subscriptions were closed");
+                }
+                handle(took);
+                took = mailbox.take(0, sample);
+            }
+            long overflowed = mailbox.overflowed();
+            if (overflowed != overflowedSeen) {
+                overflowedSeen = overflowed;
+                lastProblem = "fell behind: " + overflowed + " samples dropped so far";
+            }
+            if (pendingScanSourceNs != Long.MIN_VALUE) {
+                long latencyNs = epoch.epochNanos() - pendingScanSourceNs;
+                if (latencyNs >= 0) {
+                    scanLatencyNs.recordValue(Math.min(latencyNs, MAX_LATENCY_NS));
+                }
+                pendingScanSourceNs = Long.MIN_VALUE;
+            }
+            watchRejections(nowNs);
+        } finally {
+            cpuNs += threads.getCurrentThreadCpuTime() - cpuStartNs;
+        }
+    }
+
+    private void handle(ZenohMailbox.Take took) {
+        if (took == ZenohMailbox.Take.TOO_LARGE) {
+            oversized++;
+            lastProblem = "sample of " + sample.payloadLength() + " bytes exceeds the largest accepted ("
+                    + bytes.length + ")";
+            return;
+        }
+        int length = sample.payloadLength();
+        sample.payload().get(0, bytes, 0, length);
+        boolean scan = sample.channel() == SCAN;
+        try {
+            reader.wrap(bytes, 0, length);
+            if (scan) {
+                scanCodec.decode(reader, header, scanScratch);
+            } else {
+                odomCodec.decode(reader, header, odomScratch);
+            }
+        } catch (RuntimeException e) {
+            // Untrusted bytes: whatever the decoder found wrong, the sample is dropped, not the task.
+            malformed++;
+            lastProblem = (scan ? "scan: " : "odom: ") + e.getMessage();
+            return;
+        }
+        if (scan) {
+            if (scanValidator.acceptScan(scanScratch)) {
+                laserOut.value().copyFrom(scanScratch);
+                laserOut.publish();
+                scans++;
+                if (SampleAttachment.valid(sample.attachment(), sample.attachmentLength())) {
+                    pendingScanSourceNs = SampleAttachment.sourceTimestampNs(sample.attachment());
+                }
+            } else {
+                lastProblem = "scan: " + scanValidator.lastRejection();
+            }
+        } else if (odomValidator.acceptOdometry(odomScratch)) {
+            odometryOut.value().copyFrom(odomScratch);
+            odometryOut.publish();
+            odometry++;
+        } else {
+            lastProblem = "odom: " + odomValidator.lastRejection();
+        }
+    }
+
+    private void watchRejections(long nowNs) throws ZenohException, ImpossibleDataException {
+        boolean scanFault = scanWatch.observe(nowNs, scanValidator.lastRejected());
+        boolean odomFault = odomWatch.observe(nowNs, odomValidator.lastRejected());
+        if (fault != null || !(scanFault || odomFault)) {
+            return;
+        }
+        SampleValidator checks = odomFault ? odomValidator : scanValidator;
+        long sinceNs = (odomFault ? odomWatch : scanWatch).rejectingSinceNs();
+        fault = String.format(Locale.ROOT, "ROS 2 topic %s sent only impossible samples for %.1f s of world time (%d"
+                        + " rejected in all), latest: %s; robot halted",
+                odomFault ? topics.odom() : topics.scan(), (nowNs - sinceNs) / 1e9, checks.rejected(),
+                checks.lastRejection());
+        sendVelocity(zero, nowNs);
+        throw new ImpossibleDataException(fault);
+    }
+
+    /**
+     * @return why the robot was halted (one line naming the topic and the value), or null while
+     *     the data can be trusted; once set, only zero velocities are sent until {@link #terminate}
+     */
+    public String fault() {
+        return fault;
+    }
+
+    private void sendMotor(long nowNs) throws ZenohException {
+        if (fault != null) {
+            // halted: only zero velocities, again after the keep-alive period
+            if (sentVxMps != 0.0 || sentOmegaRadPerSec != 0.0 || nowNs - sentAtNs >= keepAliveNs) {
+                sendVelocity(zero, nowNs);
+            }
+            return;
+        }
+        if (motorIn.hasValue() && motorIn.generation() != motorGeneration) {
+            motorGeneration = motorIn.generation();
+            VelocityCommand cmd = motorIn.value();
+            if (!commandSent || cmd.vxMps != sentVxMps || cmd.omegaRadPerSec != sentOmegaRadPerSec) {
+                sendVelocity(cmd, nowNs);
+                return;
+            }
+        }
+        if (commandSent && (sentAtNs == Long.MIN_VALUE || nowNs - sentAtNs >= keepAliveNs)) {
+            sendVelocity(motorIn.value(), nowNs);
+        }
+    }
+
+    private void sendVelocity(VelocityCommand cmd, long nowNs) throws ZenohException {
+        publishTwist(cmd);
+        commandSent = true;
+        sentVxMps = cmd.vxMps;
+        sentOmegaRadPerSec = cmd.omegaRadPerSec;
+        sentAtNs = nowNs;
+    }
+
+    private void publishTwist(VelocityCommand cmd) throws ZenohException {
+        long nowEpochNs = epoch.epochNanos();
+        twistCodec.encode(header.set(nowEpochNs, ""), cmd, writer);
+        cmdVel.publish(writer.buffer(), writer.size(), nowEpochNs);
+    }
+
+    /**
+     * Stops the robot and leaves: publishes a zero Twist, then closes the session (which
+     * undeclares the node, its subscriptions and its publisher).
+     *
+     * @throws IOException the first failure, after every step was attempted
+     */
+    @Override
+    public void terminate() throws IOException {
+        IOException first = null;
+        if (cmdVel != null) {
+            try {
+                publishTwist(zero);
+            } catch (ZenohException e) {
+                first = e;
+            }
+        }
+        try {
+            context.close();
+        } catch (ZenohException e) {
+            first = first == null ? e : first;
+        }
+        if (first != null) {
+            throw first;
+        }
+    }
+
+    /** @return a snapshot of the counters */
+    public Ros2Stats stats() {
+        return new Ros2Stats(scans, odometry, cmdVel == null ? 0 : cmdVel.published(), malformed, oversized,
+                scanValidator.rejected(), odomValidator.rejected(), overflowedSeen, lastProblem);
+    }
+
+    /**
+     * @return a copy of the histogram of scan latencies: from a scan's source timestamp (the
+     *     publisher's clock, epoch ns) to the end of the cycle that committed it, in ns; exact
+     *     once the task stopped, approximate while it runs
+     */
+    public Histogram latencySnapshot() {
+        return scanLatencyNs.copy();
+    }
+
+    /** @return CPU time spent in this task's cycles so far, in ns */
+    public long cpuNs() {
+        return cpuNs;
+    }
+
+    /** @return where the robot's data is */
+    public Ros2Topics topics() {
+        return topics;
+    }
+}

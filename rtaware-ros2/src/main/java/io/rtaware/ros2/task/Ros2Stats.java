@@ -1,0 +1,29 @@
+package io.rtaware.ros2.task;
+
+/**
+ * Counters of a {@link Ros2DataTask}, a snapshot. Immutable.
+ *
+ * @param scans scans committed
+ * @param odometry odometry samples committed
+ * @param commands Twist messages published (zero stops included)
+ * @param malformed samples dropped because they could not be decoded (wrong encapsulation,
+ *     truncated, inconsistent lengths)
+ * @param oversized samples dropped because they exceeded the largest accepted message
+ * @param scanRejected decoded scans dropped because their values cannot be true
+ * @param odomRejected decoded odometry samples dropped because their values cannot be true
+ * @param overflowed samples dropped because the task fell behind
+ * @param lastProblem the last reason a sample was dropped, or null
+ */
+public record Ros2Stats(long scans, long odometry, long commands, long malformed, long oversized, long scanRejected,
+                        long odomRejected, long overflowed, String lastProblem) {
+
+    /** @return decoded samples of either topic dropped because their values cannot be true */
+    public long rejected() {
+        return scanRejected + odomRejected;
+    }
+
+    /** @return samples dropped for any reason */
+    public long dropped() {
+        return malformed + oversized + rejected() + overflowed;
+    }
+}

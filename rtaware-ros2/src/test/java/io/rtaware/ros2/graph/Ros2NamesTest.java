@@ -1,0 +1,50 @@
+package io.rtaware.ros2.graph;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+
+import io.rtaware.ros2msg.Ros2Types;
+import org.junit.jupiter.api.Test;
+
+class Ros2NamesTest {
+
+    @Test
+    void topicKeyFollowsTheRmwZenohDesignExample() {
+        assertEquals("0/cmd_vel/geometry_msgs::msg::dds_::Twist_/"
+                        + "RIHS01_9c45bf16fe0983d80e3cfe750d6835843d265a9a6c46bd2e609fcddde6fb8d2a",
+                Ros2Names.topicKey(0, "/cmd_vel", Ros2Types.TWIST.ddsTypeName(), Ros2Types.TWIST.typeHash()));
+    }
+
+    @Test
+    void namespacesStayPathSegments() {
+        String full = Ros2Names.resolveTopic(Ros2Names.namespace("robot1/"), "cmd_vel");
+        assertEquals("/robot1/cmd_vel", full);
+        assertEquals("3/robot1/cmd_vel/T/H", Ros2Names.topicKey(3, full, "T", "H"));
+        assertEquals("/scan", Ros2Names.resolveTopic("/robot1", "/scan"), "absolute names ignore the namespace");
+        assertEquals("/scan", Ros2Names.resolveTopic("/", "scan"));
+    }
+
+    @Test
+    void namesInTokensReplaceSlashesAndMarkEmptyNames() {
+        assertEquals("%robot1%cmd_vel", Ros2Names.mangle("/robot1/cmd_vel"));
+        assertEquals("%", Ros2Names.mangle(""));
+        assertEquals("%", Ros2Names.mangle("/"));
+    }
+
+    @Test
+    void invalidNamesAreRejectedWithTheirText() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> Ros2Names.resolveTopic("/", "bad topic"));
+        assertEquals("invalid ROS 2 topic name 'bad topic'", e.getMessage());
+        assertThrows(IllegalArgumentException.class, () -> Ros2Names.namespace("/9robot"));
+        assertThrows(IllegalArgumentException.class, () -> Ros2Names.nodeName("a/b"));
+        assertThrows(IllegalArgumentException.class, () -> Ros2Names.resolveTopic("/", "scan/"));
+    }
+
+    @Test
+    void hashesMatchThePrefixesFromTheJazzyDefinitions() {
+        assertEquals("RIHS01_64c19139", Ros2Types.LASER_SCAN.typeHash().substring(0, 15));
+        assertEquals("RIHS01_3cc97dc7", Ros2Types.ODOMETRY.typeHash().substring(0, 15));
+        assertEquals("sensor_msgs::msg::dds_::LaserScan_", Ros2Types.LASER_SCAN.ddsTypeName());
+    }
+}

@@ -1,0 +1,246 @@
+package io.rtaware.ros2.task;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import io.rtaware.robot.msg.LaserScan;
+import io.rtaware.robot.msg.Odometry;
+import io.rtaware.robot.msg.RobotKeys;
+import io.rtaware.robot.msg.VelocityCommand;
+import io.rtaware.ros2.NativeZenohAssumption;
+import io.rtaware.ros2.graph.QosProfile;
+import io.rtaware.ros2.graph.Ros2Context;
+import io.rtaware.ros2.graph.Ros2Names;
+import io.rtaware.ros2.graph.Ros2Node;
+import io.rtaware.ros2.graph.Ros2Publisher;
+import io.rtaware.ros2.graph.SampleAttachment;
+import io.rtaware.ros2msg.LaserScanCodec;
+import io.rtaware.ros2msg.OdometryCodec;
+import io.rtaware.ros2msg.Ros2Header;
+import io.rtaware.ros2msg.Ros2Types;
+import io.rtaware.ros2msg.TwistCodec;
+import io.rtaware.ros2msg.cdr.CdrReader;
+import io.rtaware.ros2msg.cdr.CdrWriter;
+import io.rtaware.zenoh.SampleBuffer;
+import io.rtaware.zenoh.ZenohConfig;
+import io.rtaware.zenoh.ZenohMailbox;
+import io.rtaware.zenoh.ZenohPublisher;
+import java.lang.management.ManagementFactory;
+import java.net.ServerSocket;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.function.BooleanSupplier;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/** The ROS 2 data task against a robot made of another Zenoh session on loopback. */
+@Timeout(60)
+class Ros2DataTaskTest {
+
+    private static final int MAX_MESSAGE_BYTES = 20_000;
+
+    private Ros2Context robot;
+    private Ros2Node robotNode;
+    private Ros2Publisher scanPub;
+    private Ros2Publisher odomPub;
+    private ZenohMailbox cmdVel;
+    private Ros2DataTask task;
+    private FakeSetup setup;
+    private final CdrWriter writer = new CdrWriter(64 * 1024);
+    private final Ros2Header header = new Ros2Header();
+    private final LaserScan scan = new LaserScan();
+    private final Odometry odom = new Odometry();
+    private long nowNs;
+
+    @BeforeEach
+    void connect() throws Exception {
+        NativeZenohAssumption.require();
+        String endpoint;
+        try (ServerSocket s = new ServerSocket(0)) {
+            endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
+        }
+        robot = Ros2Context.open(ZenohConfig.loopbackPeer().withListen(List.of(endpoint)), 0);
+        robotNode = robot.createNode("/robot1", "fake_robot");
+        scanPub = robotNode.createPublisher("scan", Ros2Types.LASER_SCAN, QosProfile.sensorData(), 64 * 1024);
+        odomPub = robotNode.createPublisher("odom", Ros2Types.ODOMETRY, QosProfile.defaults(), 64 * 1024);
+        cmdVel = robot.session().newMailbox(16);
+        robotNode.subscribe("cmd_vel", Ros2Types.TWIST, QosProfile.defaults(), cmdVel, 0);
+        Ros2Context controller = Ros2Context.open(ZenohConfig.loopbackPeer().withConnect(List.of(endpoint)), 0);
+        task = new Ros2DataTask(controller, new Ros2Topics(0, "/robot1", "scan", "odom", "cmd_vel"), 20, 500,
+                MAX_MESSAGE_BYTES);
+        setup = new FakeSetup();
+        task.initialize(setup);
+        scan.setCount(5);
+        scan.minAngleRad = -1;
+        scan.maxAngleRad = 1;
+        scan.maxRangeM = 4;
+        for (int i = 0; i < 5; i++) {
+            scan.rangesM[i] = 1 + 0.5f * i;
+        }
+        odom.xM = 1.5;
+        odom.yM = -2;
+        odom.yawRad = 0.25;
+        odom.vxMps = 0.1;
+    }
+
+    @AfterEach
+    void close() throws Exception {
+        if (task != null) {
+            task.terminate();
+        }
+        if (robot != null) {
+            robot.close();
+        }
+    }
+
+    private int published(String key) {
+        return setup.outputs.get(key).published;
+    }
+
+    private void publishScan(long stampNs) throws Exception {
+        new LaserScanCodec().encode(header.set(stampNs, "laser"), scan, writer);
+        scanPub.publish(writer.buffer(), writer.size(), System.currentTimeMillis() * 1_000_000L);
+    }
+
+    private void publishOdom(long stampNs) throws Exception {
+        new OdometryCodec("base_link").encode(header.set(stampNs, "odom"), odom, writer);
+        odomPub.publish(writer.buffer(), writer.size(), System.currentTimeMillis() * 1_000_000L);
+    }
+
+    /** Runs cycles (each waits up to 20 ms for data) until the condition holds, at most 10 s. */
+    private void executeUntil(BooleanSupplier done, String what) throws Exception {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (!done.getAsBoolean()) {
+            assertTrue(System.nanoTime() < deadline, "timed out waiting for " + what + "; " + task.stats());
+            nowNs += 20_000_000L;
+            task.execute(nowNs);
+        }
+    }
+
+    /** Publishes scans until the task, whose subscription propagates asynchronously, sees one. */
+    private void firstScan() throws Exception {
+        long stamp = 1_000_000_000L;
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (published("laser") == 0) {
+            assertTrue(System.nanoTime() < deadline, "no scan arrived; " + task.stats());
+            publishScan(stamp);
+            stamp += 1_000_000;
+            nowNs += 20_000_000L;
+            task.execute(nowNs);
+        }
+    }
+
+    @Test
+    void scansAndOdometryAreCommittedToTheSameKeysAsPlayers() throws Exception {
+        firstScan();
+        LaserScan got = (LaserScan) setup.outputs.get("laser").value;
+        assertEquals(5, got.count());
+        assertEquals(2.0f, got.rangesM[2]);
+        assertEquals(4.0, got.maxRangeM, 1e-6);
+        publishOdom(2_000_000_000L);
+        executeUntil(() -> published("odometry") == 1, "odometry");
+        Odometry o = (Odometry) setup.outputs.get(RobotKeys.ODOMETRY.name()).value;
+        assertEquals(1.5, o.xM, 1e-9);
+        assertEquals(0.25, o.yawRad, 1e-9);
+        assertEquals(2.0, o.serverTimeS, 1e-9);
+        assertTrue(task.latencySnapshot().getTotalCount() >= 1, "scan latency recorded");
+    }
+
+    @Test
+    void garbageIsCountedAndDroppedAndTheTaskGoesOn() throws Exception {
+        firstScan();
+        int scansBefore = published("laser");
+        String scanKey = Ros2Names.topicKey(0, "/robot1/scan", Ros2Types.LASER_SCAN.ddsTypeName(),
+                Ros2Types.LASER_SCAN.typeHash());
+        ZenohPublisher raw = robot.session().declarePublisher(scanKey);
+        ByteBuffer bytes = ByteBuffer.allocateDirect(2 * MAX_MESSAGE_BYTES);
+        new LaserScanCodec().encode(header.set(5_000_000_000L, "laser"), scan, writer);
+        bytes.put(0, writer.buffer(), 0, writer.size());
+        bytes.put(1, (byte) 0x00); // encapsulation 00 00: CDR big endian, not what ROS 2 sends
+        raw.put(bytes, writer.size(), null, 0);
+        bytes.put(1, (byte) 0x01);
+        raw.put(bytes, writer.size() - 7, null, 0); // truncated
+        raw.put(bytes, 2, null, 0); // shorter than the header
+        raw.put(bytes, 2 * MAX_MESSAGE_BYTES, null, 0); // oversized
+        odom.xM = Double.NaN;
+        publishOdom(6_000_000_000L);
+        executeUntil(() -> task.stats().malformed() == 3 && task.stats().oversized() == 1
+                && task.stats().rejected() == 1, "the garbage to be counted");
+        assertEquals(scansBefore, published("laser"), "no garbage committed");
+        assertEquals(0, published("odometry"), "an implausible odometry is not committed");
+        odom.xM = 1;
+        publishOdom(7_000_000_000L);
+        executeUntil(() -> published("odometry") == 1, "a good odometry after the garbage");
+        raw.close();
+    }
+
+    @Test
+    void motorCommandsArePublishedAsTwistAndTerminateStopsTheRobot() throws Exception {
+        firstScan();
+        @SuppressWarnings("unchecked")
+        FakeSetup.FakeInput<VelocityCommand> motor =
+                (FakeSetup.FakeInput<VelocityCommand>) setup.inputs.get(RobotKeys.MOTOR.name());
+        motor.value.set(0.2, -0.1);
+        motor.generation = 1;
+        task.execute(nowNs += 20_000_000L);
+        SampleBuffer sample = new SampleBuffer(1024, 64);
+        sample.attachment().order(ByteOrder.LITTLE_ENDIAN);
+        VelocityCommand twist = takeTwist(sample);
+        assertEquals(0.2, twist.vxMps, 1e-12);
+        assertEquals(-0.1, twist.omegaRadPerSec, 1e-12);
+        assertTrue(SampleAttachment.valid(sample.attachment(), sample.attachmentLength()), "rmw_zenoh attachment");
+        assertEquals(1, SampleAttachment.sequence(sample.attachment()));
+
+        List<String> tokens = robot.session().livelinessKeys("@ros2_lv/0/**", 2000);
+        assertTrue(tokens.stream().anyMatch(t -> t.matches("@ros2_lv/0/[0-9a-f]+/0/0/NN/%/%robot1/rtaware_controller")),
+                "controller node token in " + tokens);
+        assertTrue(tokens.stream().anyMatch(t -> t.contains("/MS/%/%robot1/rtaware_controller/%robot1%scan/"
+                + "sensor_msgs::msg::dds_::LaserScan_/RIHS01_64c19139")), "scan subscription token in " + tokens);
+        assertTrue(tokens.stream().anyMatch(t -> t.contains("/MP/%/%robot1/rtaware_controller/%robot1%cmd_vel/"
+                + "geometry_msgs::msg::dds_::Twist_/RIHS01_9c45bf16") && t.endsWith("/::,10:,:,:,,")),
+                "cmd_vel publisher token in " + tokens);
+
+        task.terminate();
+        task = null;
+        VelocityCommand stop = takeTwist(sample);
+        assertTrue(stop.isStop(), "a zero Twist before the session closed");
+    }
+
+    private VelocityCommand takeTwist(SampleBuffer sample) throws Exception {
+        assertEquals(ZenohMailbox.Take.SAMPLE, cmdVel.take(TimeUnit.SECONDS.toNanos(10), sample));
+        byte[] b = new byte[sample.payloadLength()];
+        sample.payload().get(0, b);
+        VelocityCommand v = new VelocityCommand();
+        new TwistCodec().decode(new CdrReader().wrap(b, 0, b.length), new Ros2Header(), v);
+        return v;
+    }
+
+    @Test
+    void steadyStateCyclesAllocateNothingOnTheJavaSide() throws Exception {
+        com.sun.management.ThreadMXBean threads =
+                (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        assumeTrue(threads.isThreadAllocatedMemorySupported(), "thread allocation counting unsupported");
+        firstScan();
+        LaserScanCodec scanCodec = new LaserScanCodec();
+        long id = Thread.currentThread().getId();
+        long allocated = Long.MAX_VALUE;
+        long stampNs = 10_000_000_000L;
+        for (int round = 0; round < 5 && allocated != 0; round++) {
+            long before = threads.getThreadAllocatedBytes(id);
+            for (int i = 0; i < 200; i++) {
+                scanCodec.encode(header.set(stampNs += 1_000_000, "laser"), scan, writer);
+                scanPub.publish(writer.buffer(), writer.size(), 1);
+                nowNs += 20_000_000L;
+                task.execute(nowNs);
+            }
+            allocated = Math.min(allocated, threads.getThreadAllocatedBytes(id) - before);
+        }
+        assertEquals(0, allocated, "bytes allocated by 200 publishes and cycles; " + task.stats());
+        assertTrue(published("laser") > 100, "scans committed: " + published("laser"));
+    }
+}

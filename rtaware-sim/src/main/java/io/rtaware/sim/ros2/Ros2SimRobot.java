@@ -1,0 +1,236 @@
+package io.rtaware.sim.ros2;
+
+import io.rtaware.core.time.EpochClock;
+import io.rtaware.robot.msg.LaserScan;
+import io.rtaware.robot.msg.Odometry;
+import io.rtaware.robot.msg.VelocityCommand;
+import io.rtaware.ros2.graph.QosProfile;
+import io.rtaware.ros2.graph.Ros2Context;
+import io.rtaware.ros2.graph.Ros2Node;
+import io.rtaware.ros2.graph.Ros2Publisher;
+import io.rtaware.ros2msg.LaserScanCodec;
+import io.rtaware.ros2msg.OdometryCodec;
+import io.rtaware.ros2msg.Ros2Header;
+import io.rtaware.ros2msg.TwistCodec;
+import io.rtaware.ros2msg.cdr.CdrReader;
+import io.rtaware.ros2msg.cdr.CdrWriter;
+import io.rtaware.sim.server.PlayerSimServer;
+import io.rtaware.sim.world.World;
+import io.rtaware.zenoh.SampleBuffer;
+import io.rtaware.zenoh.ZenohException;
+import io.rtaware.zenoh.ZenohMailbox;
+import java.util.List;
+import java.util.Objects;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * The world of a running {@link PlayerSimServer} as a ROS 2 robot: the node {@value #NODE_NAME}
+ * publishes {@code scan} ({@code sensor_msgs/msg/LaserScan}, sensor-data QoS), {@code odom} and
+ * {@code ground_truth} (both {@code nav_msgs/msg/Odometry}) whenever the world has new ones, and
+ * drives the robot with the {@code geometry_msgs/msg/Twist} messages it receives on
+ * {@code cmd_vel}; topic names are relative to the robot's namespace. Header stamps are world
+ * time (the simulator's clock, as ROS's {@code use_sim_time}); attachments carry the wall-clock
+ * source timestamp. One thread of its own does all of it; the Player server keeps serving.
+ *
+ * <p>Thread-safe: {@link #close()} from any thread.
+ */
+public final class Ros2SimRobot implements AutoCloseable {
+
+    /** The simulator's node name in the ROS graph. */
+    public static final String NODE_NAME = "rtaware_sim";
+    /** Topics, relative to the namespace. */
+    public static final String SCAN = "scan";
+    /** Odometry topic. */
+    public static final String ODOM = "odom";
+    /** Ground-truth topic. */
+    public static final String GROUND_TRUTH = "ground_truth";
+    /** Velocity command topic. */
+    public static final String CMD_VEL = "cmd_vel";
+
+    private static final long POLL_NS = TimeUnit.MILLISECONDS.toNanos(2);
+    private static final int MAX_MESSAGE_BYTES = 64 * 1024;
+
+    private final PlayerSimServer server;
+    private final Ros2Context context;
+    private final Ros2Node node;
+    private final Ros2Publisher scanPub;
+    private final Ros2Publisher odomPub;
+    private final Ros2Publisher truthPub;
+    private final ZenohMailbox mailbox;
+    private final Thread thread;
+    private final EpochClock epoch = new EpochClock();
+
+    private final LaserScanCodec scanCodec = new LaserScanCodec();
+    private final OdometryCodec odomCodec = new OdometryCodec("base_link");
+    private final TwistCodec twistCodec = new TwistCodec();
+    private final CdrWriter writer = new CdrWriter(MAX_MESSAGE_BYTES);
+    private final CdrReader reader = new CdrReader();
+    private final Ros2Header header = new Ros2Header();
+    private final SampleBuffer sample = new SampleBuffer(1024, 64);
+    private final byte[] bytes = new byte[1024];
+    private final VelocityCommand command = new VelocityCommand();
+    private final LaserScan scan = new LaserScan();
+    private final Odometry odom = new Odometry();
+    private final Odometry truth = new Odometry();
+    private final boolean[] news = new boolean[2];
+
+    private volatile boolean running = true;
+    private volatile long commands;
+    private volatile long badCommands;
+    private volatile String failure;
+    private double lastScanTimeS = Double.NaN;
+    private double lastOdomTimeS = Double.NaN;
+
+    private Ros2SimRobot(PlayerSimServer server, Ros2Context context, String namespace) throws ZenohException {
+        this.server = server;
+        this.context = context;
+        this.node = context.createNode(namespace, NODE_NAME);
+        this.scanPub = node.createPublisher(SCAN, scanCodec.type(), QosProfile.sensorData(), MAX_MESSAGE_BYTES);
+        this.odomPub = node.createPublisher(ODOM, odomCodec.type(), QosProfile.defaults(), MAX_MESSAGE_BYTES);
+        this.truthPub = node.createPublisher(GROUND_TRUTH, odomCodec.type(), QosProfile.defaults(), MAX_MESSAGE_BYTES);
+        this.mailbox = context.session().newMailbox(16);
+        node.subscribe(CMD_VEL, twistCodec.type(), QosProfile.defaults(), mailbox, 0);
+        this.thread = new Thread(this::loop, "rtaware-sim-ros2");
+        thread.setDaemon(true);
+    }
+
+    /**
+     * Starts publishing the server's world.
+     *
+     * @param server the running simulator
+     * @param context an open context, owned by the robot from now on
+     * @param namespace the robot's namespace ({@code /} for none)
+     * @return the running robot
+     * @throws ZenohException if a declaration fails (the context is closed then)
+     */
+    public static Ros2SimRobot start(PlayerSimServer server, Ros2Context context, String namespace)
+            throws ZenohException {
+        Objects.requireNonNull(server, "server");
+        try {
+            Ros2SimRobot robot = new Ros2SimRobot(server, context, namespace);
+            robot.thread.start();
+            return robot;
+        } catch (ZenohException | RuntimeException e) {
+            context.close();
+            throw e;
+        }
+    }
+
+    private void loop() {
+        try {
+            while (running) {
+                ZenohMailbox.Take took = mailbox.take(POLL_NS, sample);
+                while (took == ZenohMailbox.Take.SAMPLE || took == ZenohMailbox.Take.TOO_LARGE) {
+                    obey(took);
+                    took = mailbox.take(0, sample);
+                }
+                if (took == ZenohMailbox.Take.CLOSED) {
+                    return;
+                }
+                publishNews();
+            }
+        } catch (ZenohException | RuntimeException e) {
+            if (running) {
+                failure = e.getMessage();
+            }
+        }
+    }
+
+    private void obey(ZenohMailbox.Take took) {
+        if (took == ZenohMailbox.Take.TOO_LARGE) {
+            badCommands++;
+            return;
+        }
+        int length = sample.payloadLength();
+        sample.payload().get(0, bytes, 0, length);
+        try {
+            twistCodec.decode(reader.wrap(bytes, 0, length), header, command);
+        } catch (RuntimeException e) {
+            badCommands++;
+            return;
+        }
+        if (!Double.isFinite(command.vxMps) || !Double.isFinite(command.omegaRadPerSec)) {
+            badCommands++;
+            return;
+        }
+        commands++;
+        server.withWorld(w -> {
+            w.command(command.vxMps, command.omegaRadPerSec);
+            return null;
+        });
+    }
+
+    private void publishNews() throws ZenohException {
+        boolean[] fresh = server.withWorld(this::copyNews);
+        long nowEpochNs = epoch.epochNanos();
+        if (fresh[0]) {
+            scanCodec.encode(header.set(Math.round(scan.serverTimeS * 1e9), "laser"), scan, writer);
+            scanPub.publish(writer.buffer(), writer.size(), nowEpochNs);
+        }
+        if (fresh[1]) {
+            long stampNs = Math.round(odom.serverTimeS * 1e9);
+            odomCodec.encode(header.set(stampNs, "odom"), odom, writer);
+            odomPub.publish(writer.buffer(), writer.size(), nowEpochNs);
+            odomCodec.encode(header.set(stampNs, "map"), truth, writer);
+            truthPub.publish(writer.buffer(), writer.size(), nowEpochNs);
+        }
+    }
+
+    private boolean[] copyNews(World w) {
+        news[0] = w.scan().serverTimeS != lastScanTimeS;
+        news[1] = w.odometry().serverTimeS != lastOdomTimeS;
+        if (news[0]) {
+            scan.copyFrom(w.scan());
+            lastScanTimeS = scan.serverTimeS;
+        }
+        if (news[1]) {
+            odom.copyFrom(w.odometry());
+            lastOdomTimeS = odom.serverTimeS;
+            truth.xM = w.xM();
+            truth.yM = w.yM();
+            truth.yawRad = w.yawRad();
+            truth.vxMps = w.speedMps();
+            truth.vyMps = 0.0;
+            truth.omegaRadPerSec = w.turnRateRadPerS();
+            truth.serverTimeS = odom.serverTimeS;
+        }
+        return news;
+    }
+
+    /** @return the node's liveliness key and those of its publishers */
+    public List<String> tokenKeys() {
+        return List.of(node.nodeToken(), scanPub.tokenKey(), odomPub.tokenKey(), truthPub.tokenKey());
+    }
+
+    /** @return Twist messages obeyed so far */
+    public long commands() {
+        return commands;
+    }
+
+    /** @return Twist messages dropped because they could not be decoded or were not finite */
+    public long badCommands() {
+        return badCommands;
+    }
+
+    /** @return scans published so far */
+    public long scansPublished() {
+        return scanPub.published();
+    }
+
+    /** @return why the publishing thread stopped early, or null */
+    public String failure() {
+        return failure;
+    }
+
+    /** Stops the thread, then closes the session (and with it the node's tokens). */
+    @Override
+    public void close() throws ZenohException {
+        running = false;
+        try {
+            thread.join(TimeUnit.SECONDS.toMillis(2));
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        context.close();
+    }
+}

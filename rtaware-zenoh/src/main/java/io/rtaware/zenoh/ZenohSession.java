@@ -1,0 +1,170 @@
+package io.rtaware.zenoh;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+
+/**
+ * An open Zenoh session. Declarations made through it belong to it and are undeclared by
+ * {@link #close()} if their owners did not close them first. Thread-safe (Zenoh sessions are);
+ * {@link #close()} must not race with the use of its publishers, subscribers and mailboxes.
+ */
+public final class ZenohSession implements AutoCloseable {
+
+    private final Object lock = new Object();
+    private final List<AutoCloseable> owned = new ArrayList<>();
+    private final ZenohConfig config;
+    private final String zid;
+    private long handle;
+
+    private ZenohSession(ZenohConfig config, long handle, String zid) {
+        this.config = config;
+        this.handle = handle;
+        this.zid = zid;
+    }
+
+    /**
+     * Opens a session.
+     *
+     * @param config how
+     * @return the session
+     * @throws ZenohException if the native layer is missing, or no connect endpoint is reachable
+     *     in time, or a listen endpoint cannot be bound
+     */
+    public static ZenohSession open(ZenohConfig config) throws ZenohException {
+        Objects.requireNonNull(config, "config");
+        ZenohLibrary.require();
+        long h = NativeZenoh.open(config.mode().name().toLowerCase(java.util.Locale.ROOT),
+                config.connect().toArray(String[]::new), config.listen().toArray(String[]::new),
+                config.multicastScouting(), config.connectTimeoutMs());
+        try {
+            return new ZenohSession(config, h, NativeZenoh.zid(h));
+        } catch (ZenohException | RuntimeException e) {
+            NativeZenoh.close(h);
+            throw e;
+        }
+    }
+
+    /** @return the session's Zenoh id as Zenoh prints it (lowercase hexadecimal) */
+    public String zid() {
+        return zid;
+    }
+
+    /** @return the configuration it was opened with */
+    public ZenohConfig config() {
+        return config;
+    }
+
+    /**
+     * @param key the key expression to publish on
+     * @return a publisher
+     * @throws ZenohException if the key expression is invalid or the session is closed
+     */
+    public ZenohPublisher declarePublisher(String key) throws ZenohException {
+        synchronized (lock) {
+            ZenohPublisher p = new ZenohPublisher(this, key, NativeZenoh.declarePublisher(open(), key));
+            owned.add(p);
+            return p;
+        }
+    }
+
+    /**
+     * @param capacity samples kept when the reader falls behind (the oldest are dropped first)
+     * @return a mailbox to which subscribers of this session can deliver
+     * @throws ZenohException if the session is closed
+     */
+    public ZenohMailbox newMailbox(int capacity) throws ZenohException {
+        synchronized (lock) {
+            open();
+            ZenohMailbox m = new ZenohMailbox(this, NativeZenoh.newMailbox(capacity));
+            owned.add(m);
+            return m;
+        }
+    }
+
+    long declareSubscriber(String key, long mailbox, int channel) throws ZenohException {
+        synchronized (lock) {
+            return NativeZenoh.declareSubscriber(open(), key, mailbox, channel);
+        }
+    }
+
+    /**
+     * Declares a liveliness token: others see it with a liveliness query or subscription until
+     * it is closed or the session ends.
+     *
+     * @param key the token's key expression
+     * @return the token
+     * @throws ZenohException if the key expression is invalid or the session is closed
+     */
+    public LivelinessToken declareToken(String key) throws ZenohException {
+        synchronized (lock) {
+            LivelinessToken t = new LivelinessToken(this, key, NativeZenoh.declareToken(open(), key));
+            owned.add(t);
+            return t;
+        }
+    }
+
+    /**
+     * @param keyPattern a key expression, wildcards allowed ({@code @ros2_lv/0/**})
+     * @param timeoutMs how long to collect replies
+     * @return the keys of the liveliness tokens alive now that match, in no particular order
+     * @throws ZenohException if the pattern is invalid or the session is closed
+     */
+    public List<String> livelinessKeys(String keyPattern, long timeoutMs) throws ZenohException {
+        long h;
+        synchronized (lock) {
+            h = open();
+        }
+        return List.of(NativeZenoh.livelinessGet(h, keyPattern, timeoutMs));
+    }
+
+    void forget(AutoCloseable declaration) {
+        synchronized (lock) {
+            owned.remove(declaration);
+        }
+    }
+
+    private long open() throws ZenohException {
+        if (handle == 0) {
+            throw new ZenohException("the Zenoh session is closed");
+        }
+        return handle;
+    }
+
+    /**
+     * Closes what is still declared, then the session. Idempotent.
+     *
+     * @throws ZenohException the first failure, after every step was attempted
+     */
+    @Override
+    public void close() throws ZenohException {
+        List<AutoCloseable> left;
+        synchronized (lock) {
+            if (handle == 0) {
+                return;
+            }
+            left = new ArrayList<>(owned);
+        }
+        ZenohException first = null;
+        for (int i = left.size() - 1; i >= 0; i--) {
+            try {
+                left.get(i).close();
+            } catch (Exception e) {
+                first = first == null ? new ZenohException(e.getMessage()) : first;
+            }
+        }
+        synchronized (lock) {
+            long h = handle;
+            handle = 0;
+            owned.clear();
+            try {
+                NativeZenoh.close(h);
+            } catch (ZenohException e) {
+                first = first == null ? e : first;
+            }
+        }
+        if (first != null) {
+            throw first;
+        }
+    }
+}
