@@ -43,22 +43,14 @@ public final class Ros2SimServe {
         try (PlayerSimServer server = SimCommandSupport.start(s, clock, config, seed)) {
             Ros2Context context = Ros2Wiring.open(connect, List.of(listen), ros2.topics().domain());
             try (Ros2SimRobot robot = Ros2SimRobot.start(server, context, ros2.topics().namespace())) {
-                out.println("rtaware-sim: scenario " + s.name() + " served on " + config.bindAddress() + ":" + server.port()
-                        + " (time scale " + timeScale + ", seed " + seed + "); Ctrl-C to stop");
+                out.println(SimCommandSupport.startLine(s, config, server.port(), timeScale, seed));
                 out.println("rtaware-sim: ROS 2 robot node " + Ros2SimRobot.NODE_NAME + " in namespace "
                         + ros2.topics().namespace() + ", domain " + ros2.topics().domain() + ", Zenoh listening on "
                         + listen + (connect.isEmpty() ? "" : ", connected to " + connect.get(0))
                         + " (topics scan, odom, ground_truth, cmd_vel)");
                 out.flush();
-                Object forever = new Object();
-                synchronized (forever) {
-                    while (true) {
-                        forever.wait();
-                    }
-                }
+                SimCommandSupport.waitUntilInterrupted();
             }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
         } catch (ZenohException e) {
             throw new IOException("the simulator's ROS 2 side: " + e.getMessage(), e);
         }

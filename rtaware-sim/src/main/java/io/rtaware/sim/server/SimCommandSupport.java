@@ -78,18 +78,37 @@ public final class SimCommandSupport {
         Scenario s = ScenarioLoader.load(scenario);
         ScaledClock clock = new ScaledClock(timeScale);
         try (PlayerSimServer server = start(s, clock, config, seed)) {
-            out.println("rtaware-sim: scenario " + s.name() + " served on " + config.bindAddress() + ":" + server.port()
-                    + " (time scale " + timeScale + ", seed " + seed + ", at most " + config.maxClients()
-                    + " clients); Ctrl-C to stop");
+            out.println(startLine(s, config, server.port(), timeScale, seed));
             out.flush();
-            Object forever = new Object();
-            synchronized (forever) {
+            waitUntilInterrupted();
+        }
+    }
+
+    /**
+     * @param scenario the served scenario
+     * @param config the server's configuration
+     * @param port the port it listens on
+     * @param timeScale world seconds per wall second
+     * @param seed seed of the sensor noise
+     * @return the line {@code rtaware sim} prints once the server listens
+     */
+    public static String startLine(Scenario scenario, ServerConfig config, int port, double timeScale, long seed) {
+        return "rtaware-sim: scenario " + scenario.name() + " served on " + config.bindAddress() + ":" + port
+                + " (time scale " + timeScale + ", seed " + seed + ", at most " + config.maxClients()
+                + " clients); Ctrl-C to stop";
+    }
+
+    /** Blocks the calling thread until it is interrupted; returns with its interrupt flag set. */
+    public static void waitUntilInterrupted() {
+        Object forever = new Object();
+        synchronized (forever) {
+            try {
                 while (true) {
                     forever.wait();
                 }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
             }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
         }
     }
 }
