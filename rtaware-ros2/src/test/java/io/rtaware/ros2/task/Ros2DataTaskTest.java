@@ -372,8 +372,8 @@ class Ros2DataTaskTest {
         firstScan();
         SampleBuffer sample = new SampleBuffer(1024, 64);
         drive(sample);
-        publishOdom(2_000_000_000L);
-        executeUntil(() -> published("odometry") == 1, "a true pose");
+        publishOdomUntil(2_000_000_000L, () -> published("odometry") >= 1, "a true pose");
+        int truePoses = published("odometry");
         odom.xM = Double.NaN;
         long[] stampNs = {3_000_000_000L};
         Publish nanPose = () -> publishOdom(stampNs[0] += CYCLE_NS);
@@ -385,15 +385,14 @@ class Ros2DataTaskTest {
         assertTrue(e.getMessage().contains("x = NaN"), e.getMessage());
         assertTrue(lastTwistAfterDriving(sample).isStop(), "a zero Twist in the cycle that halted");
         onlyZeroVelocitiesFromNowOn(sample);
-        assertEquals(1, published("odometry"), "only the true pose was committed");
+        assertEquals(truePoses, published("odometry"), "only the true poses were committed");
         assertEquals(0, task.stats().scanRejected());
     }
 
     @Test
     void aTrueSampleBetweenImpossibleOnesStartsTheSecondAgain() throws Exception {
         firstScan();
-        publishOdom(2_000_000_000L);
-        executeUntil(() -> published("odometry") == 1, "a true pose");
+        publishOdomUntil(2_000_000_000L, () -> published("odometry") >= 1, "a true pose");
         long[] stampNs = {3_000_000_000L};
         odom.xM = Double.NaN;
         Publish nanPose = () -> publishOdom(stampNs[0] += CYCLE_NS);
@@ -403,8 +402,9 @@ class Ros2DataTaskTest {
             task.execute(nowNs += CYCLE_NS);
         }
         odom.xM = 1.5;
-        publishOdom(stampNs[0] += CYCLE_NS);
-        executeUntil(() -> published("odometry") == 2, "the true pose between the impossible ones");
+        int before = published("odometry");
+        publishOdom(stampNs[0] += CYCLE_NS); // the route exists: the impossible poses arrived on it
+        executeUntil(() -> published("odometry") > before, "the true pose between the impossible ones");
         odom.xM = Double.NaN;
         long secondStreakNs = cyclesUntilRejected(false, nanPose);
         assertTrue(secondStreakNs > firstStreakNs + 800_000_000L, "a new streak");
