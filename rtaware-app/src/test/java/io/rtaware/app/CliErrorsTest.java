@@ -51,6 +51,13 @@ class CliErrorsTest {
     }
 
     @Test
+    void exportWithACompareOrASweepIsOneLineWithStatus2() {
+        // a comparison runs several executors in turn: there is no one monitor to export
+        assertOneLineUserError(runCapturingErr("bench", "--compare", "--export"), "--compare takes --tasks");
+        assertOneLineUserError(runCapturingErr("bench", "--sweep-tasks", "10,100", "--export"), "or --export)");
+    }
+
+    @Test
     void simLimitsOutOfRangeAreOneLineWithStatus2() {
         assertOneLineUserError(runCapturingErr("sim", "--max-clients", "0"), "--max-clients must be 1..4096, got 0");
         assertOneLineUserError(runCapturingErr("sim", "--max-rules", "-3"), "--max-rules must be 1..65536, got -3");

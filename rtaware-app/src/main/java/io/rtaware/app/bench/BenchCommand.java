@@ -223,8 +223,11 @@ public final class BenchCommand implements Callable<Integer> {
             }
             compare = true;
         }
-        if (compare && (spec != null || chain || timeScale != 1.0 || live.options().enabled() || record.enabled())) {
-            throw new UserError("--compare takes --tasks, --period and --work (not --spec, --chain, --time-scale, --live or --record)");
+        if (compare && (spec != null || chain || timeScale != 1.0 || live.options().enabled() || record.enabled()
+                || export.requested())) {
+            // --export needs one monitor to watch; a comparison runs several executors in turn
+            throw new UserError((sweepTasks != null ? "--sweep-tasks" : "--compare") + " takes --tasks, --period and"
+                    + " --work (not --spec, --chain, --time-scale, --live, --record or --export)");
         }
         if (compare && segmentNs < 2 * specs.stream().mapToLong(BenchSpec::periodNs).max().orElse(0)) {
             throw new UserError("--segment must be at least two periods, got " + Durations.format(segmentNs));

@@ -20,6 +20,11 @@ public final class ExportMixin {
             description = "Where the export session listens (with --export; default: a free loopback port).")
     String listen;
 
+    /** @return true if {@code --export} was given (nothing is checked) */
+    public boolean requested() {
+        return enabled;
+    }
+
     /**
      * @return the export options when {@code --export} was given
      * @throws UserError for a malformed endpoint, export options without {@code --export}, or a

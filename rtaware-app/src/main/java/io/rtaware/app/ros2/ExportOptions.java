@@ -34,8 +34,11 @@ public record ExportOptions(String router, String listen) {
         Ros2Context context = Ros2Wiring.open(connect, List.of(at), 0);
         try {
             MonitorExporter exporter = MonitorExporter.start(monitor, context, keys, KEY_PERIOD_MS);
-            err.println("rtaware export: ROS 2 over Zenoh on " + at + (router == null ? "" : " via " + router)
-                    + ": /diagnostics and " + String.join(", ", exporter.topics().values().stream().sorted().toList()));
+            List<String> topics = exporter.topics().values().stream().sorted().toList();
+            err.println("rtaware export: ROS 2 over Zenoh on " + at + (router == null ? "" : " via " + router) + ": "
+                    + MonitorExporter.DIAGNOSTICS + (topics.isEmpty()
+                            ? " (no key of this run has a ROS 2 type: each key's health is a status there)"
+                            : " and " + String.join(", ", topics)));
             return exporter;
         } catch (ZenohException e) {
             throw new io.rtaware.app.UserError("cannot start the export: " + e.getMessage());

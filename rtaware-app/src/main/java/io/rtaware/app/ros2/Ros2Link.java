@@ -101,8 +101,8 @@ public final class Ros2Link implements AutoCloseable {
         Histogram latency = task.latencySnapshot();
         long samples = s.scans() + s.odometry();
         Map<String, Long> rejected = new LinkedHashMap<>();
-        rejected.put(task.topics().scan(), s.scanRejected());
-        rejected.put(task.topics().odom(), s.odomRejected());
+        rejected.put(task.topics().qualifiedScan(), s.scanRejected());
+        rejected.put(task.topics().qualifiedOdom(), s.odomRejected());
         Map<String, Double> latencyMs = new LinkedHashMap<>();
         latencyMs.put("p50", Rounding.toDecimals(latency.getValueAtPercentile(50) / 1e6, 3));
         latencyMs.put("p99", Rounding.toDecimals(latency.getValueAtPercentile(99) / 1e6, 3));

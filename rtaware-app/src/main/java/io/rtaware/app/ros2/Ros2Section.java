@@ -10,7 +10,8 @@ import java.util.Map;
  * @param scans scans committed
  * @param odometry odometry samples committed
  * @param commands Twist messages published
- * @param rejectedSamples decoded samples dropped because their values cannot be true, by topic
+ * @param rejectedSamples decoded samples dropped because their values cannot be true, by fully
+ *     qualified topic name (e.g. {@code /robot1/scan})
  * @param malformed samples that could not be decoded
  * @param oversized samples larger than the largest accepted message
  * @param overflowed samples dropped because the data task fell behind

@@ -15,6 +15,7 @@ import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.Objects;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -53,6 +54,15 @@ class Ros2RunEndToEndTest {
             ros2Task |= t.path("name").asText().equals("ros2") && t.path("runs").asLong() > 0;
         }
         assertTrue(ros2Task, "the ROS 2 data task ran and is reported");
+        JsonNode ros2 = report.path("ros2");
+        assertTrue(ros2.isObject(), "a ros2 section: " + report.fieldNames());
+        assertTrue(report.path("player").isMissingNode(), "no player section for a ROS 2 robot");
+        assertTrue(ros2.path("scans").asLong() > 0 && ros2.path("odometry").asLong() > 0, "ros2: " + ros2);
+        assertTrue(ros2.path("fault").isNull(), "no fault: " + ros2);
+        assertTrue(ros2.path("rejected_samples").has(measuredOn.equals("odometry") ? "/robot1/scan" : "/scan"),
+                "rejected samples by fully qualified topic: " + ros2);
+        assertTrue(ros2.path("scan_latency_ms").has("p50") && ros2.path("scan_latency_ms").has("p99"), "ros2: " + ros2);
+        assertTrue(ros2.path("cpu_us_per_sample").asDouble() > 0, "ros2: " + ros2);
         return report;
     }
 
@@ -105,6 +115,54 @@ class Ros2RunEndToEndTest {
             sim.interrupt();
             sim.join(10_000);
         }
+    }
+
+    @Test
+    void aRos2RobotThatSendsNanPosesIsHaltedAndTheRunEndsAsAnError() throws Exception {
+        requireNativeZenoh();
+        String endpoint;
+        try (ServerSocket s = new ServerSocket(0)) {
+            endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
+        }
+        Path out = dir.resolve("nan");
+        ByteArrayOutputStream stderr = new ByteArrayOutputStream();
+        PrintStream savedErr = System.err;
+        int status;
+        NanPoseRos2Robot robot = new NanPoseRos2Robot(endpoint, 500);
+        try {
+            System.setErr(new PrintStream(stderr, true, StandardCharsets.UTF_8));
+            status = quietly("run", "--ros2", "--zenoh", endpoint, "--scenario", shortLeg().toString(),
+                    "--time-scale", "1", "--out", out.toString(), "--quiet");
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+            while (robot.lastTwist() == null || !robot.lastTwist().isStop()) {
+                assertTrue(System.nanoTime() < deadline, "the robot received a zero Twist last");
+                Thread.onSpinWait();
+            }
+        } finally {
+            System.setErr(savedErr);
+            robot.close();
+        }
+        String err = stderr.toString(StandardCharsets.UTF_8);
+        assertEquals(null, robot.failure(), "the test robot ran");
+        assertTrue(robot.drove() && robot.poisoned(), "driven, then sent NaN poses");
+        assertEquals(1, status, "stderr: " + err);
+        assertEquals(1, err.lines().filter(l -> l.contains("ROS 2 topic /odom sent only impossible samples")).count(),
+                "one line names the topic: " + err);
+        assertTrue(err.contains("x = NaN"), "and the value: " + err);
+        JsonNode report = new ObjectMapper().readTree(out.resolve("report.json").toFile());
+        JsonNode run = report.path("run");
+        assertEquals("error", run.path("outcome").asText(), "run section: " + run);
+        assertTrue(run.path("reason").asText().startsWith("ROS 2 topic /odom sent only impossible samples"), run.toString());
+        JsonNode ros2 = report.path("ros2");
+        assertTrue(ros2.path("fault").asText().contains("x = NaN"), "ros2: " + ros2);
+        assertTrue(ros2.path("rejected_samples").path("/odom").asLong() > 0, "ros2: " + ros2);
+        assertEquals(0, ros2.path("rejected_samples").path("/scan").asLong(), "ros2: " + ros2);
+        assertTrue(report.path("player").isMissingNode(), "no player section for a ROS 2 robot");
+        boolean ros2Errors = false;
+        for (JsonNode t : report.path("tasks")) {
+            ros2Errors |= t.path("name").asText().equals("ros2") && t.path("errors").asLong() >= 1;
+        }
+        assertTrue(ros2Errors, "the halt is counted as an error of the ros2 task");
     }
 
     private String shortLegUnchecked() {

@@ -257,7 +257,7 @@ public final class Ros2DataTask implements Task {
         long sinceNs = (odomFault ? odomWatch : scanWatch).rejectingSinceNs();
         fault = String.format(Locale.ROOT, "ROS 2 topic %s sent only impossible samples for %.1f s of world time (%d"
                         + " rejected in all), latest: %s; robot halted",
-                odomFault ? topics.odom() : topics.scan(), (nowNs - sinceNs) / 1e9, checks.rejected(),
+                odomFault ? topics.qualifiedOdom() : topics.qualifiedScan(), (nowNs - sinceNs) / 1e9, checks.rejected(),
                 checks.lastRejection());
         sendVelocity(zero, nowNs);
         throw new ImpossibleDataException(fault);

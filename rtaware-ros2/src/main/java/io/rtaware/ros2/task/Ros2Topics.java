@@ -26,6 +26,21 @@ public record Ros2Topics(int domain, String namespace, String scan, String odom,
         Ros2Names.resolveTopic(namespace, cmdVel);
     }
 
+    /** @return the fully qualified scan topic: {@link #scan()} resolved under the namespace */
+    public String qualifiedScan() {
+        return Ros2Names.resolveTopic(namespace, scan);
+    }
+
+    /** @return the fully qualified odometry topic: {@link #odom()} resolved under the namespace */
+    public String qualifiedOdom() {
+        return Ros2Names.resolveTopic(namespace, odom);
+    }
+
+    /** @return the fully qualified Twist topic: {@link #cmdVel()} resolved under the namespace */
+    public String qualifiedCmdVel() {
+        return Ros2Names.resolveTopic(namespace, cmdVel);
+    }
+
     /** @return domain 0, no namespace, {@code scan}, {@code odom}, {@code cmd_vel} */
     public static Ros2Topics defaults() {
         return new Ros2Topics(0, "/", "scan", "odom", "cmd_vel");

@@ -1,6 +1,9 @@
 package io.rtaware.ros2.task;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
@@ -8,6 +11,7 @@ import io.rtaware.robot.msg.LaserScan;
 import io.rtaware.robot.msg.Odometry;
 import io.rtaware.robot.msg.RobotKeys;
 import io.rtaware.robot.msg.VelocityCommand;
+import io.rtaware.robot.validate.ImpossibleDataException;
 import io.rtaware.ros2.NativeZenohAssumption;
 import io.rtaware.ros2.graph.QosProfile;
 import io.rtaware.ros2.graph.Ros2Context;
@@ -30,6 +34,7 @@ import java.lang.management.ManagementFactory;
 import java.net.ServerSocket;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
@@ -225,11 +230,188 @@ class Ros2DataTaskTest {
 
     private VelocityCommand takeTwist(SampleBuffer sample) throws Exception {
         assertEquals(ZenohMailbox.Take.SAMPLE, cmdVel.take(TimeUnit.SECONDS.toNanos(10), sample));
+        return decodeTwist(sample);
+    }
+
+    private static VelocityCommand decodeTwist(SampleBuffer sample) {
         byte[] b = new byte[sample.payloadLength()];
         sample.payload().get(0, b);
         VelocityCommand v = new VelocityCommand();
         new TwistCodec().decode(new CdrReader().wrap(b, 0, b.length), new Ros2Header(), v);
         return v;
+    }
+
+    private static final long CYCLE_NS = 20_000_000L;
+
+    @SuppressWarnings("unchecked")
+    private FakeSetup.FakeInput<VelocityCommand> motor() {
+        return (FakeSetup.FakeInput<VelocityCommand>) setup.inputs.get(RobotKeys.MOTOR.name());
+    }
+
+    /** Commands a drive and returns the Twist the robot received for it. */
+    private VelocityCommand drive(SampleBuffer sample) throws Exception {
+        motor().value.set(0.2, 0.1);
+        motor().generation++;
+        task.execute(nowNs += CYCLE_NS);
+        return takeTwist(sample);
+    }
+
+    /**
+     * The Twist the task published last (by its sequence number), waiting for it; every Twist
+     * before it must be the drive command of {@link #drive} (its keep-alives).
+     */
+    private VelocityCommand lastTwistAfterDriving(SampleBuffer sample) throws Exception {
+        sample.attachment().order(ByteOrder.LITTLE_ENDIAN);
+        long last = task.stats().commands();
+        while (true) {
+            VelocityCommand v = takeTwist(sample);
+            if (SampleAttachment.sequence(sample.attachment()) == last) {
+                return v;
+            }
+            assertEquals(0.2, v.vxMps, 1e-12, "before the halt, the drive command");
+            assertEquals(0.1, v.omegaRadPerSec, 1e-12, "before the halt, the drive command");
+        }
+    }
+
+    /** Every Twist the robot has received by now, without waiting. */
+    private List<VelocityCommand> receivedTwists(SampleBuffer sample) throws Exception {
+        List<VelocityCommand> twists = new ArrayList<>();
+        while (cmdVel.take(0, sample) == ZenohMailbox.Take.SAMPLE) {
+            twists.add(decodeTwist(sample));
+        }
+        return twists;
+    }
+
+    /**
+     * Runs cycles of {@link #CYCLE_NS} of world time, publishing one sample before each, until a
+     * sample of the topic has been rejected; returns the world time of the cycle that rejected it
+     * (the start of the streak).
+     */
+    private long cyclesUntilRejected(boolean scanTopic, Publish publish) throws Exception {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        long before = scanTopic ? task.stats().scanRejected() : task.stats().odomRejected();
+        while ((scanTopic ? task.stats().scanRejected() : task.stats().odomRejected()) == before) {
+            assertTrue(System.nanoTime() < deadline, "no rejection; " + task.stats());
+            publish.next();
+            task.execute(nowNs += CYCLE_NS);
+        }
+        return nowNs;
+    }
+
+    /** Publishes the next sample of a test's stream. */
+    private interface Publish {
+        void next() throws Exception;
+    }
+
+    /**
+     * Runs cycles, publishing before each, until one throws; checks that it is the cycle a
+     * second of world time after the streak began, and returns the exception.
+     */
+    private ImpossibleDataException cyclesUntilHalted(long streakStartNs, Publish publish) throws Exception {
+        while (nowNs + CYCLE_NS < streakStartNs + Ros2DataTask.IMPOSSIBLE_DATA_FAULT_AFTER_NS) {
+            publish.next();
+            task.execute(nowNs += CYCLE_NS);
+            assertNull(task.fault(), "no halt before a second of world time of rejections");
+        }
+        publish.next();
+        ImpossibleDataException e = assertThrows(ImpossibleDataException.class, () -> task.execute(nowNs += CYCLE_NS));
+        assertEquals(streakStartNs + Ros2DataTask.IMPOSSIBLE_DATA_FAULT_AFTER_NS, nowNs,
+                "halted exactly a second of world time after the first rejected sample");
+        assertEquals(task.fault(), e.getMessage());
+        return e;
+    }
+
+    /**
+     * After the halt: a new drive command, then cycles for three keep-alive periods of world time;
+     * the robot receives exactly the three zero Twists of the keep-alive, nothing else.
+     */
+    private void onlyZeroVelocitiesFromNowOn(SampleBuffer sample) throws Exception {
+        motor().value.set(0.3, -0.2);
+        motor().generation++;
+        long until = nowNs + 3 * 500_000_000L;
+        List<VelocityCommand> afterHalt = new ArrayList<>();
+        while (nowNs < until) {
+            task.execute(nowNs += CYCLE_NS);
+            afterHalt.addAll(receivedTwists(sample));
+        }
+        while (afterHalt.size() < 3) { // the last ones may still be in flight
+            afterHalt.add(takeTwist(sample));
+        }
+        for (VelocityCommand v : afterHalt) {
+            assertTrue(v.isStop(), "only zero velocities after the halt, got " + v.vxMps + " m/s, "
+                    + v.omegaRadPerSec + " rad/s");
+        }
+        assertEquals(3, afterHalt.size(), "one zero Twist per keep-alive period");
+    }
+
+    @Test
+    void scansOfNanRangesForASecondOfWorldTimeHaltTheRobot() throws Exception {
+        firstScan();
+        SampleBuffer sample = new SampleBuffer(1024, 64);
+        assertEquals(0.2, drive(sample).vxMps, 1e-12);
+        scan.rangesM[2] = Float.NaN;
+        long[] stampNs = {20_000_000_000L};
+        Publish nanScan = () -> publishScan(stampNs[0] += CYCLE_NS);
+        long streakStartNs = cyclesUntilRejected(true, nanScan);
+        int committed = published("laser");
+
+        ImpossibleDataException e = cyclesUntilHalted(streakStartNs, nanScan);
+        assertTrue(e.getMessage().startsWith("ROS 2 topic /robot1/scan sent only impossible samples for 1.0 s of world "
+                + "time"), e.getMessage());
+        assertTrue(e.getMessage().contains("range[2] = NaN"), e.getMessage());
+        assertTrue(e.getMessage().endsWith("robot halted"), e.getMessage());
+        assertTrue(lastTwistAfterDriving(sample).isStop(), "a zero Twist in the cycle that halted");
+        onlyZeroVelocitiesFromNowOn(sample);
+        assertEquals(committed, published("laser"), "no impossible scan committed");
+        assertTrue(task.stats().scanRejected() >= 2, task.stats().toString());
+        assertEquals(0, task.stats().odomRejected());
+    }
+
+    @Test
+    void odometryWithANanPoseForASecondOfWorldTimeHaltsTheRobot() throws Exception {
+        firstScan();
+        SampleBuffer sample = new SampleBuffer(1024, 64);
+        drive(sample);
+        publishOdomUntil(2_000_000_000L, () -> published("odometry") >= 1, "a true pose");
+        int truePoses = published("odometry");
+        odom.xM = Double.NaN;
+        long[] stampNs = {3_000_000_000L};
+        Publish nanPose = () -> publishOdom(stampNs[0] += CYCLE_NS);
+        long streakStartNs = cyclesUntilRejected(false, nanPose);
+
+        ImpossibleDataException e = cyclesUntilHalted(streakStartNs, nanPose);
+        assertTrue(e.getMessage().startsWith("ROS 2 topic /robot1/odom sent only impossible samples for 1.0 s"),
+                e.getMessage());
+        assertTrue(e.getMessage().contains("x = NaN"), e.getMessage());
+        assertTrue(lastTwistAfterDriving(sample).isStop(), "a zero Twist in the cycle that halted");
+        onlyZeroVelocitiesFromNowOn(sample);
+        assertEquals(truePoses, published("odometry"), "only the true poses were committed");
+        assertEquals(0, task.stats().scanRejected());
+    }
+
+    @Test
+    void aTrueSampleBetweenImpossibleOnesStartsTheSecondAgain() throws Exception {
+        firstScan();
+        publishOdomUntil(2_000_000_000L, () -> published("odometry") >= 1, "a true pose");
+        long[] stampNs = {3_000_000_000L};
+        odom.xM = Double.NaN;
+        Publish nanPose = () -> publishOdom(stampNs[0] += CYCLE_NS);
+        long firstStreakNs = cyclesUntilRejected(false, nanPose);
+        while (nowNs < firstStreakNs + 800_000_000L) {
+            nanPose.next();
+            task.execute(nowNs += CYCLE_NS);
+        }
+        odom.xM = 1.5;
+        int before = published("odometry");
+        publishOdom(stampNs[0] += CYCLE_NS); // the route exists: the impossible poses arrived on it
+        executeUntil(() -> published("odometry") > before, "the true pose between the impossible ones");
+        odom.xM = Double.NaN;
+        long secondStreakNs = cyclesUntilRejected(false, nanPose);
+        assertTrue(secondStreakNs > firstStreakNs + 800_000_000L, "a new streak");
+        assertNull(task.fault(), "no halt a second after the first streak began");
+
+        cyclesUntilHalted(secondStreakNs, nanPose);
+        assertNotNull(task.fault());
     }
 
     @Test
