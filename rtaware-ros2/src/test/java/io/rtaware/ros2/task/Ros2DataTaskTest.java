@@ -171,6 +171,37 @@ class Ros2DataTaskTest {
     }
 
     @Test
+    void infiniteBeamsMeanWhatRep117SaysAndNanStillRejectsTheScan() throws Exception {
+        firstScan();
+        int before = published("laser");
+        scan.rangesM[1] = Float.POSITIVE_INFINITY; // no return within range
+        scan.rangesM[3] = Float.NEGATIVE_INFINITY; // too close to measure
+        long stamp = 3_000_000_000L;
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (published("laser") == before) {
+            assertTrue(System.nanoTime() < deadline, "the scan with infinite beams was not committed; " + task.stats());
+            publishScan(stamp++);
+            nowNs += 20_000_000L;
+            task.execute(nowNs);
+        }
+        LaserScan got = (LaserScan) setup.outputs.get("laser").value;
+        assertEquals(4.0f, got.rangesM[1], "+Inf is a free beam to the maximum range");
+        assertEquals(0.0f, got.rangesM[3], "-Inf is an obstacle nearer than the sensor measures");
+        assertEquals(2.0f, got.rangesM[2]);
+        assertEquals(0, task.stats().scanRejected());
+
+        scan.rangesM[2] = Float.NaN; // an erroneous beam: nothing says what is there
+        deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (task.stats().scanRejected() == 0) {
+            assertTrue(System.nanoTime() < deadline, "the scan with a NaN beam was not rejected; " + task.stats());
+            publishScan(stamp++);
+            nowNs += 20_000_000L;
+            task.execute(nowNs);
+        }
+        assertEquals(2.0f, got.rangesM[2], "the committed scan is still the last good one");
+    }
+
+    @Test
     void garbageIsCountedAndDroppedAndTheTaskGoesOn() throws Exception {
         firstScan();
         int scansBefore = published("laser");
