@@ -109,6 +109,9 @@ public final class ReplayCommand implements Callable<Integer> {
             throw new UserError(e.getMessage());
         } catch (IOException e) {
             throw new UserError("cannot read " + file + ": " + e.getMessage());
+        } catch (RuntimeException e) {
+            // A malformed file the reader did not anticipate (e.g. a compressed chunk that breaks the decompressor).
+            throw new UserError(file + ": not a readable MCAP recording (" + e + ")");
         } catch (OutOfMemoryError e) {
             throw new UserError(file + " does not fit in this JVM's heap (" + Runtime.getRuntime().maxMemory() / (1 << 20)
                     + " MB); give it more with RTAWARE_JAVA_OPTS=-Xmx...");
