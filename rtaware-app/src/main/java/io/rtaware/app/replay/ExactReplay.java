@@ -2,6 +2,8 @@ package io.rtaware.app.replay;
 
 import io.rtaware.core.data.Key;
 import io.rtaware.core.data.StateValue;
+import io.rtaware.core.monitor.MonitorListener;
+import io.rtaware.core.monitor.TaskInfo;
 import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.testing.TaskHarness;
 import io.rtaware.core.time.ManualClock;
@@ -115,6 +117,8 @@ public final class ExactReplay {
         final Port<?>[] inputs;
         final Port<?>[] outputs;
         final TaskHarness harness;
+        /** The task's outputs by the harness's key index, for the commit listener. */
+        Port<?>[] outputByKey = new Port<?>[0];
         final Histogram execNs = new Histogram(1, HIGHEST_NS, 3);
         final Port<?>[] due;
         long cycles;
@@ -149,7 +153,21 @@ public final class ExactReplay {
             for (Port<?> in : inputs) {
                 builder.input(in.codec.key());
             }
-            harness = builder.task(spec.name(), spec.task()).build();
+            harness = builder.task(spec.name(), spec.task()).listener(new MonitorListener() {
+                @Override
+                public void onCommitValue(TaskInfo producer, int keyIndex, long generation, long nowNs,
+                                          StateValue<?> value) {
+                    Port<?> out = keyIndex < outputByKey.length ? outputByKey[keyIndex] : null;
+                    if (out != null) {
+                        out.committed(generation, value);
+                    }
+                }
+            }).build();
+            List<Key<?>> all = harness.monitor().keys();
+            outputByKey = new Port<?>[all.size()];
+            for (Port<?> out : outputs) {
+                outputByKey[all.indexOf(out.codec.key())] = out;
+            }
         }
 
         private <T extends StateValue<T>> Port<T> port(Key<T> key, boolean input) throws IOException {
@@ -250,7 +268,7 @@ public final class ExactReplay {
                         error != null ? error.toString() : "returned");
             }
             for (Port<?> out : outputs) {
-                long g = harness.generation(out.codec.key());
+                long g = out.committedGeneration;
                 boolean replayCommitted = g != out.replayGeneration;
                 out.replayGeneration = g;
                 if (out.channel == null) {
@@ -273,7 +291,7 @@ public final class ExactReplay {
                     d = new Difference(cycle, m.releaseNs(), out.codec.key().name(), "(commit)",
                             recordedCommitted ? "committed" : "no commit", replayCommitted ? "committed" : "no commit");
                 } else if (recordedCommitted) {
-                    d = out.compare(harness, next, cycle, m.releaseNs());
+                    d = out.compare(next, cycle, m.releaseNs());
                 }
             }
             return d;
@@ -294,6 +312,8 @@ public final class ExactReplay {
         long fedGeneration;
         /** Outputs: the harness's generation after the last cycle. */
         long replayGeneration;
+        /** Outputs: the generation of the replayed task's last commit. */
+        long committedGeneration;
         Recording.Commit pending;
 
         Port(ValueCodec<T> codec, Recording.KeyChannel channel) {
@@ -308,8 +328,15 @@ public final class ExactReplay {
             pending = null;
         }
 
-        Difference compare(TaskHarness harness, Recording.Commit recorded, long cycle, long releaseNs) throws IOException {
-            harness.monitor().read(codec.key(), buffer);
+        /** Outputs: the replayed task's newest commit, copied here when it commits. */
+        @SuppressWarnings("unchecked")
+        void committed(long generation, StateValue<?> value) {
+            buffer.copyFrom((T) value);
+            committedGeneration = generation;
+        }
+
+        /** Compares the value last {@link #committed} with a recorded commit. */
+        Difference compare(Recording.Commit recorded, long cycle, long releaseNs) throws IOException {
             if (codec.sameAs(buffer, recorded)) {
                 return null;
             }

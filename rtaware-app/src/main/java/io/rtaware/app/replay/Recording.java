@@ -19,7 +19,6 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 
 /**
  * What replay needs from a recording, loaded into memory: the {@code rtaware.run} metadata, every
@@ -41,15 +40,26 @@ public final class Recording {
     public record Cycle(long number, TaskCycleMessage message) {
     }
 
-    /** A key's channel and its commits in generation order. */
+    /**
+     * A key's channel and its commits in generation order.
+     *
+     * @param key the key's name
+     * @param messageEncoding {@code cdr} or {@code json}
+     * @param frameId the frame id of its ROS 2 header
+     * @param commits its commits in generation order
+     * @param generations the generation of each commit, ascending
+     */
     public record KeyChannel(String key, String messageEncoding, String frameId, List<Commit> commits,
-                             Map<Long, Commit> byGeneration) {
+                             long[] generations) {
         /**
+         * Finds a commit by generation without allocating.
+         *
          * @param generation a generation
          * @return its commit, or null if the recording lacks it (dropped)
          */
         public Commit generation(long generation) {
-            return byGeneration.get(generation);
+            int i = Arrays.binarySearch(generations, generation);
+            return i < 0 ? null : commits.get(i);
         }
     }
 
@@ -187,21 +197,23 @@ public final class Recording {
                 }
             }
             List<Commit> commits = new ArrayList<>(data.size());
-            Map<Long, Commit> byGeneration = new HashMap<>();
             for (int i = 0; i < data.size(); i++) {
                 long generation = stamps.get(i)[0];
                 byte[] s = stateByGeneration.get(generation);
                 if (state != null && s == null) {
                     continue; // the value without its state message cannot be rebuilt: as if dropped
                 }
-                Commit c = new Commit(stamps.get(i)[1], generation, data.get(i), s);
-                if (byGeneration.put(generation, c) != null) {
-                    throw new McapFormatException(file + ": key '" + key + "' has generation " + generation + " twice");
-                }
-                commits.add(c);
+                commits.add(new Commit(stamps.get(i)[1], generation, data.get(i), s));
             }
             commits.sort(Comparator.comparingLong(Commit::generation));
-            return new KeyChannel(key, encoding, frame, List.copyOf(commits), byGeneration);
+            long[] generations = new long[commits.size()];
+            for (int i = 0; i < generations.length; i++) {
+                generations[i] = commits.get(i).generation();
+                if (i > 0 && generations[i] == generations[i - 1]) {
+                    throw new McapFormatException(file + ": key '" + key + "' has generation " + generations[i] + " twice");
+                }
+            }
+            return new KeyChannel(key, encoding, frame, List.copyOf(commits), generations);
         }
     }
 
@@ -229,10 +241,5 @@ public final class Recording {
             cycles.sort(Comparator.comparingLong(Cycle::number));
             return new TaskTimeline(task, inputs, List.copyOf(cycles));
         }
-    }
-
-    /** @return names of the keys recorded, for messages */
-    Set<String> keyNames() {
-        return keys.keySet();
     }
 }

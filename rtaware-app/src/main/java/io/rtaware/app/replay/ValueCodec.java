@@ -1,6 +1,5 @@
 package io.rtaware.app.replay;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.core.data.Key;
 import io.rtaware.core.data.StateValue;
 import io.rtaware.record.RosCodecs;
@@ -16,6 +15,7 @@ import java.io.IOException;
 import java.lang.reflect.Array;
 import java.lang.reflect.Field;
 import java.util.Arrays;
+import java.util.List;
 
 /**
  * One key's values in and out of a recording, as the recorder encodes them: a ROS 2-typed key
@@ -27,15 +27,13 @@ import java.util.Arrays;
  */
 final class ValueCodec<T extends StateValue<T>> {
 
-    private static final ObjectMapper JSON = new ObjectMapper();
-
     private final Key<T> key;
     private final String frameId;
     private final Ros2Codec<T> ros;
     private final JsonStateCodec json;
     private final StateFields fields;
     private final CdrReader reader = new CdrReader();
-    private final CdrWriter cdr = new CdrWriter(4 << 20);
+    private final CdrWriter cdr;
     private final ByteBuf text = new ByteBuf(1 << 14);
     private final Ros2Header header = new Ros2Header();
     private final T recorded;
@@ -49,6 +47,9 @@ final class ValueCodec<T extends StateValue<T>> {
         this.json = new JsonStateCodec(key.type(), ros != null);
         this.fields = StateFields.of(key.type());
         this.recorded = key.newBuffer();
+        // Room for the largest message of this key: its fields plus the ROS 2 message's headers.
+        this.cdr = ros == null ? null : new CdrWriter((int) Math.min(Integer.MAX_VALUE - 8,
+                2 * fields.estimateBytes(recorded) + (64 << 10)));
         this.replayed = key.newBuffer();
     }
 
@@ -58,7 +59,7 @@ final class ValueCodec<T extends StateValue<T>> {
     }
 
     /**
-     * Sets {@code into} to a recorded commit's value.
+     * Sets {@code into} to a recorded commit's value. Allocates nothing.
      *
      * @param commit the commit
      * @param into receives the value
@@ -69,23 +70,29 @@ final class ValueCodec<T extends StateValue<T>> {
             if (ros != null) {
                 ros.decode(reader.wrap(commit.data(), 0, commit.data().length), header, into);
                 if (commit.state() != null) {
-                    json.decode(JSON.readTree(commit.state()), into);
+                    json.decode(commit.state(), 0, commit.state().length, into);
                 }
             } else {
-                json.decode(JSON.readTree(commit.data()), into);
+                json.decode(commit.data(), 0, commit.data().length, into);
             }
-        } catch (CdrException | IllegalArgumentException | IOException e) {
+        } catch (CdrException | IllegalArgumentException e) {
             throw new IOException("recorded value of '" + key.name() + "' (generation " + commit.generation()
                     + ") is not readable: " + e.getMessage());
         }
     }
 
     /**
+     * Tells whether a value is what a recorded commit holds, as far as the recording carries it:
+     * a ROS 2-typed value must encode to the same CDR bytes (header stamped as recorded) and
+     * equal the recorded state fields; any other value must equal every recorded field. Doubles
+     * are equal when their bits are. Allocates nothing.
+     *
      * @param value a value
      * @param commit a recorded commit
-     * @return true if the value encodes to exactly the recorded messages (header stamped as recorded)
+     * @return true if they are the same
+     * @throws IOException if the recorded commit is not readable
      */
-    boolean sameAs(T value, Recording.Commit commit) {
+    boolean sameAs(T value, Recording.Commit commit) throws IOException {
         if (ros != null) {
             header.set(commit.timeNs(), frameId);
             ros.encode(header, value, cdr);
@@ -95,13 +102,11 @@ final class ValueCodec<T extends StateValue<T>> {
             if (commit.state() == null) {
                 return true;
             }
-            text.clear();
-            json.encode(value, text);
-            return Arrays.equals(text.array(), 0, text.size(), commit.state(), 0, commit.state().length);
         }
-        text.clear();
-        json.encode(value, text);
-        return Arrays.equals(text.array(), 0, text.size(), commit.data(), 0, commit.data().length);
+        decode(commit, recorded);
+        // The CDR bytes matched; of a ROS 2-typed value, compare the scalars the state carries exactly
+        // (its arrays came back through the ROS type, which may round them, e.g. yaw as a quaternion).
+        return firstDifferentField(recorded, value, ros != null) == null;
     }
 
     /**
@@ -130,35 +135,87 @@ final class ValueCodec<T extends StateValue<T>> {
             data = Arrays.copyOf(text.array(), text.size());
         }
         decode(new Recording.Commit(commit.timeNs(), commit.generation(), data, state), replayed);
+        Difference d = firstDifferentField(recorded, replayed, false);
+        if (d != null) {
+            return d;
+        }
+        return new Difference("(encoding)", "-", "-");
+    }
+
+    /**
+     * @param scalarsOnly true to compare the non-array fields only
+     * @return the first field in which the two values differ (arrays up to their count), or null;
+     *     allocates only to describe a difference
+     */
+    private Difference firstDifferentField(T a, T b, boolean scalarsOnly) {
+        int countA = fields.count(a);
+        int countB = fields.count(b);
+        if (!scalarsOnly && countA != countB) {
+            return new Difference("count", Integer.toString(countA), Integer.toString(countB));
+        }
         try {
-            int countA = fields.count(recorded);
-            int countB = fields.count(replayed);
-            if (countA != countB) {
-                return new Difference("count", Integer.toString(countA), Integer.toString(countB));
-            }
-            for (Field f : fields.fields()) {
-                Object a = f.get(recorded);
-                Object b = f.get(replayed);
-                if (f.getType().isArray()) {
-                    int n = Math.min(Array.getLength(a), Array.getLength(b));
+            List<Field> all = fields.fields();
+            for (int k = 0; k < all.size(); k++) { // indexed: an iterator would allocate on every compare
+                Field f = all.get(k);
+                Class<?> t = f.getType();
+                if (t.isArray() && scalarsOnly) {
+                    continue;
+                }
+                if (t.isArray()) {
+                    Object x = f.get(a);
+                    Object y = f.get(b);
+                    int n = Math.min(Array.getLength(x), Array.getLength(y));
                     if (countA >= 0) {
                         n = Math.min(n, countA);
                     }
-                    for (int i = 0; i < n; i++) {
-                        Object x = Array.get(a, i);
-                        Object y = Array.get(b, i);
-                        if (!x.equals(y)) {
-                            return new Difference(f.getName() + "[" + i + "]", x.toString(), y.toString());
-                        }
+                    int i = firstDifferentElement(x, y, t.getComponentType(), n);
+                    if (i >= 0) {
+                        return new Difference(f.getName() + "[" + i + "]", String.valueOf(Array.get(x, i)),
+                                String.valueOf(Array.get(y, i)));
                     }
-                } else if (!a.equals(b)) {
-                    return new Difference(f.getName(), a.toString(), b.toString());
+                } else if (t == double.class || t == float.class) {
+                    if (Double.doubleToLongBits(f.getDouble(a)) != Double.doubleToLongBits(f.getDouble(b))) {
+                        return new Difference(f.getName(), Double.toString(f.getDouble(a)), Double.toString(f.getDouble(b)));
+                    }
+                } else if (t == boolean.class) {
+                    if (f.getBoolean(a) != f.getBoolean(b)) {
+                        return new Difference(f.getName(), Boolean.toString(f.getBoolean(a)), Boolean.toString(f.getBoolean(b)));
+                    }
+                } else if (f.getLong(a) != f.getLong(b)) {
+                    return new Difference(f.getName(), Long.toString(f.getLong(a)), Long.toString(f.getLong(b)));
                 }
             }
         } catch (IllegalAccessException e) {
             throw new IllegalStateException("field of " + key.type().getName() + " not readable", e);
         }
-        return new Difference("(encoding)", "-", "-");
+        return null;
+    }
+
+    private static int firstDifferentElement(Object x, Object y, Class<?> c, int n) {
+        for (int i = 0; i < n; i++) {
+            boolean same;
+            if (c == double.class) {
+                same = Double.doubleToLongBits(((double[]) x)[i]) == Double.doubleToLongBits(((double[]) y)[i]);
+            } else if (c == float.class) {
+                same = Float.floatToIntBits(((float[]) x)[i]) == Float.floatToIntBits(((float[]) y)[i]);
+            } else if (c == long.class) {
+                same = ((long[]) x)[i] == ((long[]) y)[i];
+            } else if (c == int.class) {
+                same = ((int[]) x)[i] == ((int[]) y)[i];
+            } else if (c == short.class) {
+                same = ((short[]) x)[i] == ((short[]) y)[i];
+            } else if (c == byte.class) {
+                same = ((byte[]) x)[i] == ((byte[]) y)[i];
+            } else if (c == boolean.class) {
+                same = ((boolean[]) x)[i] == ((boolean[]) y)[i];
+            } else {
+                same = ((char[]) x)[i] == ((char[]) y)[i];
+            }
+            if (!same) {
+                return i;
+            }
+        }
+        return -1;
     }
 
     /**

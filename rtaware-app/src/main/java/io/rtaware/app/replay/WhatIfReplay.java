@@ -12,9 +12,9 @@ import io.rtaware.core.task.Task;
 import io.rtaware.core.task.TaskSetup;
 import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.ManualClock;
+import io.rtaware.record.TaskCycleMessage;
 import java.io.IOException;
 import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
@@ -79,20 +79,21 @@ public final class WhatIfReplay {
                 feeds.add(feed(key, channel));
             }
         }
-        List<Due> stream = new ArrayList<>();
         long startNs = 0;
-        for (int i = 0; i < feeds.size(); i++) {
-            for (Recording.Commit c : feeds.get(i).channel.commits()) {
-                stream.add(new Due(c.timeNs(), i, c));
-                startNs = Math.min(startNs, c.timeNs());
+        long values = 0;
+        for (Feed<?> f : feeds) {
+            List<Recording.Commit> commits = f.channel.commits();
+            values += commits.size();
+            if (!commits.isEmpty()) {
+                startNs = Math.min(startNs, commits.get(0).timeNs());
             }
         }
-        stream.sort(Comparator.comparingLong(Due::timeNs).thenComparingInt(Due::feed));
         String dataTask = recording.tasks().keySet().stream().filter(t -> !controllerNames.contains(t))
                 .findFirst().orElse("player");
 
         ManualClock clock = new ManualClock(startNs);
-        Feeder feeder = new Feeder(feeds);
+        Feed<?>[] fedKeys = feeds.toArray(new Feed<?>[0]); // arrays: iterating them allocates nothing
+        Feeder feeder = new Feeder(fedKeys);
         Monitor.Builder builder = Monitor.builder(clock)
                 .task(new TaskSpec(dataTask, Schedule.continuous(), ErrorPolicy.CONTINUE, feeder));
         for (TaskSpec spec : controllerTasks) {
@@ -101,26 +102,28 @@ public final class WhatIfReplay {
         }
         Monitor monitor = builder.build();
         StepExecutor step = monitor.startStepped();
-        int i = 0;
-        while (i < stream.size()) {
-            long t = stream.get(i).timeNs();
-            step.runUntil(t);
-            // Every feed due at t in one cycle; a key due twice at t gets a cycle per value.
-            while (i < stream.size() && stream.get(i).timeNs() == t) {
-                int j = i;
-                while (j < stream.size() && stream.get(j).timeNs() == t && feeds.get(stream.get(j).feed()).pending == null) {
-                    Due d = stream.get(j);
-                    feeds.get(d.feed()).pending = d.commit();
-                    j++;
-                }
-                step.releaseNow(dataTask);
-                feeder.rethrow();
-                i = j;
+        // Merge the feeds by commit time (ties: feed order); every feed due at a time goes in one cycle
+        // of the data task, a key due twice at one time gets a cycle per value. Allocates nothing.
+        while (true) {
+            long t = Long.MAX_VALUE;
+            for (Feed<?> f : fedKeys) {
+                t = Math.min(t, f.nextTimeNs());
             }
+            if (t == Long.MAX_VALUE) {
+                break;
+            }
+            step.runUntil(t);
+            for (Feed<?> f : fedKeys) {
+                if (f.nextTimeNs() == t) {
+                    f.pending = f.channel.commits().get(f.next++);
+                }
+            }
+            step.releaseNow(dataTask);
+            feeder.rethrow();
         }
         step.runUntil(Math.max(clock.nanos(), recording.endNs()));
         Report report = monitor.stop();
-        return new Result(report, dataTask, List.copyOf(fed), stream.size());
+        return new Result(report, dataTask, List.copyOf(fed), values);
     }
 
     private static <T extends StateValue<T>> Feed<T> feed(Key<T> key, Recording.KeyChannel channel) {
@@ -133,12 +136,19 @@ public final class WhatIfReplay {
         if (timeline == null) {
             return new long[0];
         }
-        return timeline.cycles().stream().map(Recording.Cycle::message).filter(m -> !m.outcome().equals("skipped"))
-                .mapToLong(m -> Math.max(0, m.endNs() - m.startNs())).toArray();
-    }
-
-    /** One recorded value due at a world time. */
-    private record Due(long timeNs, int feed, Recording.Commit commit) {
+        int n = 0;
+        for (Recording.Cycle c : timeline.cycles()) {
+            n += c.message().outcome().equals("skipped") ? 0 : 1;
+        }
+        long[] execNs = new long[n];
+        int i = 0;
+        for (Recording.Cycle c : timeline.cycles()) {
+            TaskCycleMessage m = c.message();
+            if (!m.outcome().equals("skipped")) {
+                execNs[i++] = Math.max(0, m.endNs() - m.startNs());
+            }
+        }
+        return execNs;
     }
 
     /** One sensor key: its codec, recorded channel, output, and the value due now. */
@@ -147,10 +157,17 @@ public final class WhatIfReplay {
         final Recording.KeyChannel channel;
         Output<T> out;
         Recording.Commit pending;
+        /** Index of the next commit to feed. */
+        int next;
 
         Feed(ValueCodec<T> codec, Recording.KeyChannel channel) {
             this.codec = codec;
             this.channel = channel;
+        }
+
+        /** @return world time of the next commit to feed, or {@link Long#MAX_VALUE} when all are fed */
+        long nextTimeNs() {
+            return next < channel.commits().size() ? channel.commits().get(next).timeNs() : Long.MAX_VALUE;
         }
 
         void init(TaskSetup setup) {
@@ -168,16 +185,18 @@ public final class WhatIfReplay {
 
     /** The data task of the replay: commits the sensor values handed to it. */
     private static final class Feeder implements Task {
-        private final List<Feed<?>> feeds;
+        private final Feed<?>[] feeds;
         private IOException failure;
 
-        Feeder(List<Feed<?>> feeds) {
+        Feeder(Feed<?>[] feeds) {
             this.feeds = feeds;
         }
 
         @Override
         public void initialize(TaskSetup setup) {
-            feeds.forEach(f -> f.init(setup));
+            for (Feed<?> f : feeds) {
+                f.init(setup);
+            }
         }
 
         @Override

@@ -88,7 +88,7 @@ class SyntheticReplayTest {
         }
     }
 
-    private static List<TaskSpec> graph(boolean noisy, long followerPeriodNs) {
+    static List<TaskSpec> graphOf(boolean noisy, long followerPeriodNs) {
         return List.of(new TaskSpec("sensor", Schedule.periodic(10 * MS), ErrorPolicy.CONTINUE, new Sensor()),
                 new TaskSpec("follower", Schedule.periodic(followerPeriodNs), ErrorPolicy.CONTINUE, new Follower(noisy)));
     }
@@ -96,7 +96,7 @@ class SyntheticReplayTest {
     private Recording record(boolean noisy) throws Exception {
         Path file = dir.resolve(noisy ? "noisy.mcap" : "steady.mcap");
         Monitor.Builder builder = Monitor.builder(new ManualClock());
-        graph(noisy, 25 * MS).forEach(builder::task);
+        graphOf(noisy, 25 * MS).forEach(builder::task);
         Monitor monitor = builder.build();
         RunRecorder recorder = RecordingListener.attach(monitor, file, new RecordingPlan());
         StepExecutor step = monitor.startStepped();
@@ -109,7 +109,7 @@ class SyntheticReplayTest {
     @Test
     void aBehaviorThatIsAFunctionOfItsInputsReplaysIdenticallyInEveryCycle() throws Exception {
         Recording recording = record(false);
-        ExactReplay.TaskResult r = ExactReplay.replay(recording, () -> graph(false, 25 * MS), "follower");
+        ExactReplay.TaskResult r = ExactReplay.replay(recording, () -> graphOf(false, 25 * MS), "follower");
         assertEquals(12, r.cycles(), "releases at 0, 25, ..., 275 ms");
         assertEquals(12, r.identical());
         assertEquals(0, r.different());
@@ -120,7 +120,7 @@ class SyntheticReplayTest {
     @Test
     void anUnseededRandomInTheOutputIsCaughtAtItsFirstCycleWithKeyAndField() throws Exception {
         Recording recording = record(true);
-        ExactReplay.TaskResult r = ExactReplay.replay(recording, () -> graph(true, 25 * MS), "follower");
+        ExactReplay.TaskResult r = ExactReplay.replay(recording, () -> graphOf(true, 25 * MS), "follower");
         assertEquals(12, r.cycles());
         assertEquals(3, r.identical(), "the first three cycles add no noise");
         assertEquals(9, r.different());
@@ -151,7 +151,7 @@ class SyntheticReplayTest {
         }
         recorder.finish();
         Recording recording = Recording.load(McapReader.open(file), file);
-        ExactReplay.TaskResult r = ExactReplay.replay(recording, () -> graph(false, 20 * MS), "follower");
+        ExactReplay.TaskResult r = ExactReplay.replay(recording, () -> graphOf(false, 20 * MS), "follower");
         assertEquals(4, r.cycles());
         assertEquals(2, r.identical());
         assertEquals(0, r.different());
