@@ -171,11 +171,15 @@ public final class ReplayCommand implements Callable<Integer> {
         String analysis = ReportSections.enrich(doc, cores).text();
         stdout.print(SummaryTable.format(result.report()));
         stdout.println();
+        long cycles = result.report().tasks().stream().filter(t -> NavConfig.TASK_NAMES.contains(t.name()))
+                .mapToLong(t -> t.runs()).sum();
         stdout.printf(Locale.ROOT, "what-if replay of %s with periods %s (recorded: %s): open loop, the robot's path is the"
                         + " recorded one; %d values of %s fed by '%s' at their recorded times; each cycle charged its"
-                        + " task's recorded execution times in order; one core (step executor); %.1f s of world time in"
-                        + " %.2f s%n", recording.file(), asked, defaults, result.sensorCommits(),
-                String.join(", ", result.sensorKeys()), result.dataTask(), result.report().durationS(), wallS);
+                        + " task's recorded execution times in order; one core (step executor)%n", recording.file(), asked,
+                defaults, result.sensorCommits(), String.join(", ", result.sensorKeys()), result.dataTask());
+        stdout.printf(Locale.ROOT, "%d cycles, %.1f s of world time in %.2f s of wall time: %.0f cycles/s, %.1f s of world"
+                + " time per wall second%n", cycles, result.report().durationS(), wallS, wallS > 0 ? cycles / wallS : 0,
+                wallS > 0 ? result.report().durationS() / wallS : 0);
         stdout.println();
         stdout.print(analysis);
         if (out != null) {
