@@ -250,6 +250,11 @@ public final class WhatIfReplay {
         }
 
         @Override
+        public boolean blocks() {
+            return task.blocks();
+        }
+
+        @Override
         public void terminate() throws Exception {
             task.terminate();
         }
