@@ -75,9 +75,9 @@ public final class ReplayCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw new UserError(file + ": " + e.getMessage());
         }
-        List<String> known = new ArrayList<>();
-        for (String name : recording.tasks().keySet()) {
-            if (NavConfig.TASK_NAMES.contains(name)) {
+        List<String> known = new ArrayList<>(); // in the controller's order, as run reports them
+        for (String name : NavConfig.TASK_NAMES) {
+            if (recording.tasks().containsKey(name)) {
                 known.add(name);
             }
         }
