@@ -72,10 +72,13 @@ public final class ExactReplay {
      * @param firstDifference the first difference, or null
      * @param notReplayable cycles that could not be replayed exactly (recorder drops)
      * @param firstNotReplayable the first of them, or null
+     * @param inputsMoved input values committed at another time than recorded, because the manual
+     *     clock had passed it or it lay after the cycle's start (a race in the run): their age differs
      * @param execNs execution time of each replayed cycle on this machine (wall ns)
      */
     public record TaskResult(String name, long cycles, long identical, long different, Difference firstDifference,
-                             long notReplayable, NotReplayable firstNotReplayable, Histogram execNs) {
+                             long notReplayable, NotReplayable firstNotReplayable, long inputsMoved,
+                             Histogram execNs) {
     }
 
     /**
@@ -127,6 +130,7 @@ public final class ExactReplay {
         Difference first;
         long notReplayable;
         NotReplayable firstNotReplayable;
+        long inputsMoved;
 
         Run(Recording recording, TaskKeys keys, TaskSpec spec, Recording.TaskTimeline timeline) throws IOException {
             this.recording = recording;
@@ -219,7 +223,7 @@ public final class ExactReplay {
             }
             harness.stop();
             return new TaskResult(spec.name(), cycles, identical, different, first, notReplayable,
-                    firstNotReplayable, execNs);
+                    firstNotReplayable, inputsMoved, execNs);
         }
 
         private void notReplayable(long cycle, String reason) {
@@ -254,6 +258,9 @@ public final class ExactReplay {
             for (int i = 0; i < n; i++) {
                 Port<?> in = due[i];
                 long atNs = Math.min(Math.max(in.pending.timeNs(), harness.nowNs()), Math.max(m.startNs(), harness.nowNs()));
+                if (atNs != in.pending.timeNs()) {
+                    inputsMoved++;
+                }
                 in.publish(harness, atNs);
                 due[i] = null;
             }

@@ -33,10 +33,13 @@ public record ReplayJson(String schema, String file, List<TaskEntry> tasks) {
      * @param firstDifference the first difference, or null
      * @param notReplayable cycles that could not be replayed exactly (the recorder dropped a record they need)
      * @param firstNotReplayable the first of them, or null
+     * @param inputsMoved input values committed at another time than recorded (a race in the run;
+     *     only their age differs)
      * @param execUs execution time per cycle on this machine, microseconds
      */
     public record TaskEntry(String name, long cycles, long identical, long different, FirstDifference firstDifference,
-                            long notReplayable, ExactReplay.NotReplayable firstNotReplayable, ExecUs execUs) {
+                            long notReplayable, ExactReplay.NotReplayable firstNotReplayable, long inputsMoved,
+                            ExecUs execUs) {
     }
 
     /**
@@ -76,7 +79,7 @@ public record ReplayJson(String schema, String file, List<TaskEntry> tasks) {
         ExecUs exec = h.getTotalCount() == 0 ? new ExecUs(0, 0, 0)
                 : new ExecUs(us(h.getValueAtPercentile(50)), us(h.getValueAtPercentile(99)), us(h.getMaxValue()));
         return new TaskEntry(r.name(), r.cycles(), r.identical(), r.different(), first, r.notReplayable(),
-                r.firstNotReplayable(), exec);
+                r.firstNotReplayable(), r.inputsMoved(), exec);
     }
 
     private static double us(long ns) {
@@ -120,6 +123,11 @@ public record ReplayJson(String schema, String file, List<TaskEntry> tasks) {
                 sb.append(String.format(Locale.ROOT, "%s: first difference in cycle %d (release %.3f s): key %s, field %s:"
                         + " recorded %s, replayed %s%n", t.name(), d.cycle(), d.releaseS(), d.key(), d.field(),
                         d.recorded(), d.replayed()));
+            }
+            if (t.inputsMoved() > 0) {
+                sb.append(String.format(Locale.ROOT, "%s: %d input values fed at another time than their recorded"
+                        + " commit (committed on another thread around this task's cycle start; only their age"
+                        + " differs)%n", t.name(), t.inputsMoved()));
             }
             if (t.firstNotReplayable() != null) {
                 sb.append(String.format(Locale.ROOT, "%s: not replayable from cycle %d on: %s%n", t.name(),

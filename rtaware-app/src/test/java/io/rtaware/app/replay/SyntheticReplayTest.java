@@ -114,6 +114,7 @@ class SyntheticReplayTest {
         assertEquals(12, r.identical());
         assertEquals(0, r.different());
         assertNull(r.firstDifference());
+        assertEquals(0, r.inputsMoved(), "one thread, one clock: every input committed at its recorded time");
         assertEquals(12, r.execNs().getTotalCount());
     }
 
