@@ -6,6 +6,7 @@ import io.rtaware.app.experiment.ExperimentCommand;
 import io.rtaware.app.experiment.ReportCommand;
 import io.rtaware.app.player.PlayerProbeCommand;
 import io.rtaware.app.record.InspectCommand;
+import io.rtaware.app.replay.ReplayCommand;
 import io.rtaware.app.run.RunCommand;
 import io.rtaware.app.sim.SimCommand;
 import io.rtaware.app.sim.WorldCommand;
@@ -27,7 +28,8 @@ import picocli.CommandLine.Command;
                 "pauses of 15-28 ms under garbage load go straight into release lateness",
                 "(README, Performance: rtaware bench --compare --gc-pressure 200)."},
         subcommands = {RunCommand.class, SimCommand.class, WorldCommand.class, BenchCommand.class, AnalyzeCommand.class,
-                ExperimentCommand.class, ReportCommand.class, PlayerProbeCommand.class, InspectCommand.class, CommandLine.HelpCommand.class})
+                ExperimentCommand.class, ReportCommand.class, PlayerProbeCommand.class, InspectCommand.class, ReplayCommand.class,
+                CommandLine.HelpCommand.class})
 public final class RtawareCli {
 
     /** Exit status for a mistake in the user's input. */

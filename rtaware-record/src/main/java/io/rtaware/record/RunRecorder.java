@@ -65,6 +65,18 @@ public final class RunRecorder {
     public static final byte TASK_ERROR = 3;
     private static final String[] EVENT_KINDS = {"deadline_miss", "expired_read", "period_change", "task_error"};
 
+    /**
+     * Channel metadata naming what a message's MCAP sequence number counts: on key channels
+     * ({@value #SEQUENCE_GENERATION}) the commit's generation, on timing channels
+     * ({@value #SEQUENCE_CYCLE}) the record's number among the task's records from 0, dropped ones
+     * included; so a reader sees exactly which commits and cycles a recording lacks.
+     */
+    public static final String SEQUENCE = "sequence";
+    /** {@link #SEQUENCE} of key channels. */
+    public static final String SEQUENCE_GENERATION = "generation";
+    /** {@link #SEQUENCE} of timing channels. */
+    public static final String SEQUENCE_CYCLE = "cycle";
+
     private static final long IDLE_PARK_NS = 1_000_000;
     private static final int CDR_CAPACITY = 2 << 20;
 
@@ -122,7 +134,7 @@ public final class RunRecorder {
             for (int t = 0; t < tasks.length; t++) {
                 List<String> inputs = taskInputs.get(t);
                 int channel = writer.addChannel(cycleSchema, RecordingPlan.TIMING_PREFIX + taskNames.get(t), "cdr",
-                        Map.of("task", taskNames.get(t), "inputs", String.join(",", inputs)));
+                        Map.of("task", taskNames.get(t), "inputs", String.join(",", inputs), SEQUENCE, SEQUENCE_CYCLE));
                 tasks[t] = new CycleRing(channel, inputs.size(), plan.cycleSlots());
             }
             int eventSchema = writer.addSchema(TimingTypes.MONITOR_EVENT.name(), "ros2msg",
@@ -306,6 +318,7 @@ public final class RunRecorder {
     private final class KeyRing {
         final StateValue<?>[] slots;
         final long[] times;
+        final long[] generations;
         final AtomicLong head = new AtomicLong();
         final AtomicLong tail = new AtomicLong();
         final int channel;
@@ -326,21 +339,24 @@ public final class RunRecorder {
                 slots[i] = key.newBuffer();
             }
             times = new long[n];
+            generations = new long[n];
             frame = plan.frameOf(key.name());
             ros = RosCodecs.forType(key.type());
             String topic = plan.topicOf(key.name());
             if (ros != null) {
                 int schema = writer.addSchema(ros.type().name(), "ros2msg", ros.type().schemaText());
-                channel = writer.addChannel(schema, topic, "cdr", Map.of("key", key.name(), "frame_id", frame));
+                channel = writer.addChannel(schema, topic, "cdr", Map.of("key", key.name(), "frame_id", frame,
+                        SEQUENCE, SEQUENCE_GENERATION));
                 jsonCodec = new JsonStateCodec(key.type(), true);
                 int stateSchema = writer.addSchema("rtaware/state/" + key.type().getSimpleName(), "jsonschema",
                         jsonCodec.jsonSchema());
                 stateChannel = writer.addChannel(stateSchema, RecordingPlan.STATE_PREFIX + key.name(), "json",
-                        Map.of("key", key.name()));
+                        Map.of("key", key.name(), SEQUENCE, SEQUENCE_GENERATION));
             } else {
                 jsonCodec = new JsonStateCodec(key.type(), false);
                 int schema = writer.addSchema(key.type().getName(), "jsonschema", jsonCodec.jsonSchema());
-                channel = writer.addChannel(schema, topic, "json", Map.of("key", key.name()));
+                channel = writer.addChannel(schema, topic, "json", Map.of("key", key.name(), SEQUENCE,
+                        SEQUENCE_GENERATION));
                 stateChannel = 0;
             }
         }
@@ -354,6 +370,7 @@ public final class RunRecorder {
             int s = (int) (h % slots.length);
             ((StateValue) slots[s]).copyFrom(value);
             times[s] = timeNs;
+            generations[s] = generation;
             head.lazySet(h + 1);
             return true;
         }
@@ -365,17 +382,18 @@ public final class RunRecorder {
             for (long i = t; i < h; i++) {
                 int s = (int) (i % slots.length);
                 long time = times[s];
+                long generation = generations[s];
                 if (ros != null) {
                     header.set(time, frame);
                     ros.encode(header, slots[s], cdr);
-                    writer.writeMessage(channel, time, time, cdr.buffer(), 0, cdr.size());
+                    writer.writeMessage(channel, generation, time, time, cdr.buffer(), 0, cdr.size());
                     json.clear();
                     jsonCodec.encode(slots[s], json);
-                    writer.writeMessage(stateChannel, time, time, json.array(), 0, json.size());
+                    writer.writeMessage(stateChannel, generation, time, time, json.array(), 0, json.size());
                 } else {
                     json.clear();
                     jsonCodec.encode(slots[s], json);
-                    writer.writeMessage(channel, time, time, json.array(), 0, json.size());
+                    writer.writeMessage(channel, generation, time, time, json.array(), 0, json.size());
                 }
                 tail.lazySet(i + 1);
             }
@@ -393,6 +411,9 @@ public final class RunRecorder {
         final long[] end;
         final long[] skipped;
         final long[] generations;
+        final long[] numbers;
+        /** Records offered so far, dropped ones included (producer thread only). */
+        long offered;
         final AtomicLong head = new AtomicLong();
         final AtomicLong tail = new AtomicLong();
 
@@ -404,15 +425,18 @@ public final class RunRecorder {
             start = new long[n];
             end = new long[n];
             skipped = new long[n];
+            numbers = new long[n];
             generations = new long[n * Math.max(1, inputs)];
         }
 
         boolean offer(byte what, long r, long s0, long e, long skips, long[] gens) {
+            long number = offered++;
             long h = head.get();
             if (h - tail.get() >= outcome.length) {
                 return false;
             }
             int s = (int) (h % outcome.length);
+            numbers[s] = number;
             outcome[s] = what;
             release[s] = r;
             start[s] = s0;
@@ -442,7 +466,7 @@ public final class RunRecorder {
                 for (int k = 0; k < inputs; k++) {
                     cdr.writeInt64(generations[s * inputs + k]);
                 }
-                writer.writeMessage(channel, end[s], end[s], cdr.buffer(), 0, cdr.size());
+                writer.writeMessage(channel, numbers[s], end[s], end[s], cdr.buffer(), 0, cdr.size());
                 tail.lazySet(i + 1);
             }
             return (int) (h - t);

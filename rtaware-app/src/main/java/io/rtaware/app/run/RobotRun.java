@@ -222,7 +222,7 @@ public final class RobotRun {
         MonitorExporter exporter = export.map(e -> e.start(monitor, RunExports.keys(nav), err)).orElse(null);
         ConsoleReporter console = CommandMonitor.console(monitor, options.quiet(), err);
         TraceRecorder trace = options.trace().attach(monitor);
-        RunRecorder recorder = record.attach(monitor, RunRecording.plan(scenario, options));
+        RunRecorder recorder = record.attach(monitor, RunRecording.plan(scenario, options, navConfig, model.name()));
 
         // Everything the termination handler reads exists before the start: Ctrl-C may run it on
         // the shutdown-hook thread at any moment from here on.

@@ -1,6 +1,8 @@
 package io.rtaware.app.run;
 
+import io.rtaware.app.replay.ControllerMetadata;
 import io.rtaware.core.time.Clock;
+import io.rtaware.nav.NavConfig;
 import io.rtaware.nav.NavKeys;
 import io.rtaware.record.RecordingPlan;
 import io.rtaware.record.RosCodecs;
@@ -27,10 +29,12 @@ final class RunRecording {
     /**
      * @param scenario the scenario
      * @param options the run's options
+     * @param navConfig the controller's configuration (recorded whole, for replay)
+     * @param modelName the robot model's name
      * @return the plan
      */
-    static RecordingPlan plan(Scenario scenario, RunOptions options) {
-        return new RecordingPlan()
+    static RecordingPlan plan(Scenario scenario, RunOptions options, NavConfig navConfig, String modelName) {
+        RecordingPlan plan = new RecordingPlan()
                 .topic(RobotKeys.LASER.name(), "/scan", RosCodecs.BASE_FRAME)
                 .topic(RobotKeys.ODOMETRY.name(), "/odom", "odom")
                 .topic(RobotKeys.MOTOR.name(), "/cmd_vel", RosCodecs.BASE_FRAME)
@@ -44,6 +48,9 @@ final class RunRecording {
                 .metadata("grid_resolution_m", Double.toString(options.gridResolutionM()))
                 .metadata("robot", options.builtInSimulator() ? "built-in simulator"
                         : String.format(Locale.ROOT, "player %s:%d", options.playerHost(), options.playerPort()));
+        ControllerMetadata.entries(navConfig, modelName, Runtime.getRuntime().availableProcessors())
+                .forEach(plan::metadata);
+        return plan;
     }
 
     /**

@@ -124,7 +124,7 @@ public final class TaskHarness {
         advanceTo(atNs);
         typed.pending = value;
         try {
-            step.releaseNow(SCRIPT_PREFIX + key.name());
+            step.releaseNow(typed.taskName);
         } finally {
             typed.pending = null;
         }
@@ -203,11 +203,14 @@ public final class TaskHarness {
     /** The producer of a scripted input: publishes the value the test hands it, once per cycle. */
     private static final class Scripted<T extends StateValue<T>> implements Task {
         private final Key<T> key;
+        /** Its task name, made once: publishing allocates nothing (replay feeds values through it per cycle). */
+        final String taskName;
         private Output<T> out;
         T pending;
 
         Scripted(Key<T> key) {
             this.key = key;
+            this.taskName = SCRIPT_PREFIX + key.name();
         }
 
         @Override
@@ -308,7 +311,7 @@ public final class TaskHarness {
                 }
             });
             // Scripts first: at a tie in time, a scripted commit is visible to the tasks.
-            scripts.forEach((key, script) -> monitor.task(SCRIPT_PREFIX + key, Schedule.continuous(), script));
+            scripts.forEach((key, script) -> monitor.task(script.taskName, Schedule.continuous(), script));
             specs.forEach(monitor::task);
             listeners.forEach(monitor::listener);
             return new TaskHarness(clock, monitor.build(), Map.copyOf(scripts), lastErrors);

@@ -210,11 +210,33 @@ public final class McapWriter implements Closeable {
         if (channelId < 1 || channelId > channelCount) {
             throw new IllegalArgumentException("unknown MCAP channel id " + channelId);
         }
+        writeMessage(channelId, channelSequence[channelId]++, logTimeNs, publishTimeNs, data, offset, length);
+    }
+
+    /**
+     * Appends a message with a sequence number of the caller's (MCAP: "an optional message
+     * counter assigned by the publisher"; rtaware puts the commit's generation there, so that a
+     * reader sees which generations a recording lacks).
+     *
+     * @param channelId a channel id from {@link #addChannel}
+     * @param sequence the sequence number (its low 32 bits are written)
+     * @param logTimeNs log time in ns
+     * @param publishTimeNs publish time in ns
+     * @param data message bytes
+     * @param offset first byte
+     * @param length number of bytes
+     * @throws IOException if a chunk had to be written and writing failed
+     */
+    public void writeMessage(int channelId, long sequence, long logTimeNs, long publishTimeNs, byte[] data, int offset,
+                             int length) throws IOException {
+        if (channelId < 1 || channelId > channelCount) {
+            throw new IllegalArgumentException("unknown MCAP channel id " + channelId);
+        }
         int recordOffset = chunk.size();
         chunk.u8(Opcode.MESSAGE);
         chunk.u64(2 + 4 + 8 + 8 + (long) length);
         chunk.u16(channelId);
-        chunk.u32(channelSequence[channelId]++);
+        chunk.u32(sequence);
         chunk.u64(logTimeNs);
         chunk.u64(publishTimeNs);
         chunk.bytes(data, offset, length);

@@ -1,0 +1,205 @@
+package io.rtaware.app.replay;
+
+import io.rtaware.app.UserError;
+import io.rtaware.app.output.OutputFolder;
+import io.rtaware.app.report.ReportSections;
+import io.rtaware.app.run.TaskPeriods;
+import io.rtaware.core.report.ReportDocument;
+import io.rtaware.core.report.SummaryTable;
+import io.rtaware.core.task.TaskSpec;
+import io.rtaware.nav.Behavior;
+import io.rtaware.nav.NavConfig;
+import io.rtaware.nav.NavController;
+import io.rtaware.record.mcap.McapFormatException;
+import io.rtaware.record.mcap.McapReader;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import java.util.function.Supplier;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/**
+ * {@code rtaware replay FILE.mcap}: a recording of {@code rtaware run --record} re-executed
+ * offline. Without {@code --periods}: exact re-execution of every recorded cycle of the
+ * controller's tasks ({@link ExactReplay}), compared with the recorded outputs; with
+ * {@code --periods}: the controller with other periods on the recorded sensor stream
+ * ({@link WhatIfReplay}), reported as a run is. The controller is rebuilt from the recording's
+ * {@code rtaware.run} metadata ({@link ControllerMetadata}).
+ */
+@Command(name = "replay", mixinStandardHelpOptions = true,
+        description = {"Re-execute a recording of 'rtaware run --record' offline.",
+            "Exact (default): feed every recorded cycle of the controller's tasks the inputs it read, run it on the",
+            "step executor, and compare its outputs with the recorded ones (a difference means the behavior depends",
+            "on something besides its inputs). What-if (--periods): run the controller with other periods on the",
+            "recorded sensor stream, charging each cycle a recorded execution time, and report as 'run' does (open loop)."})
+public final class ReplayCommand implements Callable<Integer> {
+
+    @Parameters(index = "0", paramLabel = "FILE.mcap", description = "A recording (run --record).")
+    Path file;
+
+    @Option(names = "--task", paramLabel = "NAME", description = "Replay only this task (exact replay).")
+    String task;
+
+    @Option(names = "--out", paramLabel = "DIR",
+            description = "Write replay.json (exact) or report.json (what-if) into this folder.")
+    Path out;
+
+    @Option(names = "--periods", paramLabel = "TASK=MS,...",
+            description = "What-if: periods to try, e.g. planner=50 (ms; tasks not named keep the recorded periods).")
+    String periods;
+
+    @Override
+    public Integer call() throws IOException {
+        if (task != null && periods != null) {
+            throw new UserError("--task and --periods exclude each other (--task selects a task for exact replay)");
+        }
+        if (out != null) {
+            OutputFolder.of("--out", out);
+        }
+        Recording recording = load(file);
+        if (recording.tasks().isEmpty()) {
+            throw new UserError(file + " has no /rtaware/timing channels: not a recording of 'rtaware run --record'");
+        }
+        NavConfig recorded;
+        try {
+            recorded = ControllerMetadata.navConfig(recording.runMetadata());
+        } catch (IllegalArgumentException e) {
+            throw new UserError(file + ": " + e.getMessage());
+        }
+        List<String> known = new ArrayList<>(); // in the controller's order, as run reports them
+        for (String name : NavConfig.TASK_NAMES) {
+            if (recording.tasks().containsKey(name)) {
+                known.add(name);
+            }
+        }
+        if (known.isEmpty()) {
+            throw new UserError(file + " has no cycles of the controller's tasks (" + String.join(", ", NavConfig.TASK_NAMES) + ")");
+        }
+        PrintStream stdout = System.out;
+        try {
+            if (periods != null) {
+                return whatIf(recording, recorded, stdout);
+            }
+            if (task != null && !known.contains(task)) {
+                throw new UserError("unknown task '" + task + "' in " + file + "; tasks: " + String.join(", ", known));
+            }
+            return exact(recording, recorded, task == null ? known : List.of(task), stdout);
+        } catch (McapFormatException e) {
+            throw new UserError(e.getMessage());
+        } catch (IOException e) {
+            throw new UserError(file + ": " + e.getMessage());
+        }
+    }
+
+    private static Recording load(Path file) {
+        try {
+            return Recording.load(McapReader.open(file), file);
+        } catch (NoSuchFileException e) {
+            throw new UserError("no such file: " + file);
+        } catch (McapFormatException e) {
+            throw new UserError(e.getMessage());
+        } catch (IOException e) {
+            throw new UserError("cannot read " + file + ": " + e.getMessage());
+        } catch (RuntimeException e) {
+            // A malformed file the reader did not anticipate (e.g. a compressed chunk that breaks the decompressor).
+            throw new UserError(file + ": not a readable MCAP recording (" + e + ")");
+        } catch (OutOfMemoryError e) {
+            throw new UserError(file + " does not fit in this JVM's heap (" + Runtime.getRuntime().maxMemory() / (1 << 20)
+                    + " MB); give it more with RTAWARE_JAVA_OPTS=-Xmx...");
+        }
+    }
+
+    private int exact(Recording recording, NavConfig config, List<String> tasks, PrintStream stdout) throws IOException {
+        Supplier<List<TaskSpec>> controller = () -> new NavController(config).taskSpecs();
+        long wallStart = System.nanoTime();
+        List<ExactReplay.TaskResult> results = new ArrayList<>();
+        for (String name : tasks) {
+            results.add(ExactReplay.replay(recording, controller, name));
+        }
+        double wallS = (System.nanoTime() - wallStart) / 1e9;
+        ReplayJson json = ReplayJson.of(recording.file().toString(), results);
+        stdout.print(ReplayJson.text(recording, json, wallS));
+        if (out != null) {
+            Path target = out.resolve("replay.json");
+            try {
+                ReplayJson.write(json, target);
+            } catch (IOException e) {
+                throw new UserError("cannot write " + target + ": " + e.getMessage());
+            }
+            stdout.println("replay written to " + target);
+        }
+        return 0;
+    }
+
+    private int whatIf(Recording recording, NavConfig recorded, PrintStream stdout) throws IOException {
+        TaskPeriods defaults = TaskPeriods.of(recorded.periods().ns(Behavior.WAYPOINT) / 1e6,
+                recorded.periods().ns(Behavior.OBSTACLE) / 1e6, recorded.periods().ns(Behavior.OCCUPANCY) / 1e6,
+                recorded.periods().ns(Behavior.PLANNER) / 1e6);
+        TaskPeriods asked = TaskPeriods.parse(periods, defaults);
+        NavConfig config;
+        try {
+            config = ControllerMetadata.withPeriods(recorded, asked.nanosByTask());
+        } catch (IllegalArgumentException e) {
+            throw new UserError("--periods: " + e.getMessage());
+        }
+        long wallStart = System.nanoTime();
+        WhatIfReplay.Result result = WhatIfReplay.replay(recording, new NavController(config).taskSpecs(),
+                new NavController(config).taskSpecs());
+        double wallS = (System.nanoTime() - wallStart) / 1e9;
+        int cores = cores(recording);
+        ReportDocument doc = new ReportDocument(result.report());
+        Map<String, Object> section = new LinkedHashMap<>();
+        section.put("file", recording.file().toString());
+        section.put("mode", "what-if");
+        section.put("open_loop", true);
+        section.put("periods_ms", asked.millis());
+        section.put("recorded_periods_ms", defaults.millis());
+        section.put("sensor_keys", result.sensorKeys());
+        section.put("sensor_commits", result.sensorCommits());
+        section.put("exec_time", "each task's recorded execution times in order, starting over when they run out");
+        section.put("cores", cores);
+        doc.section("replay", section);
+        String analysis = ReportSections.enrich(doc, cores).text();
+        stdout.print(SummaryTable.format(result.report()));
+        stdout.println();
+        long cycles = result.report().tasks().stream().filter(t -> NavConfig.TASK_NAMES.contains(t.name()))
+                .mapToLong(t -> t.runs()).sum();
+        stdout.printf(Locale.ROOT, "what-if replay of %s with periods %s (recorded: %s): open loop, the robot's path is the"
+                        + " recorded one; %d values of %s fed by '%s' at their recorded times; each cycle charged its"
+                        + " task's recorded execution times in order; one core (step executor)%n", recording.file(), asked,
+                defaults, result.sensorCommits(), String.join(", ", result.sensorKeys()), result.dataTask());
+        stdout.printf(Locale.ROOT, "%d cycles, %.1f s of world time in %.2f s of wall time: %.0f cycles/s, %.1f s of world"
+                + " time per wall second%n", cycles, result.report().durationS(), wallS, wallS > 0 ? cycles / wallS : 0,
+                wallS > 0 ? result.report().durationS() / wallS : 0);
+        stdout.println();
+        stdout.print(analysis);
+        if (out != null) {
+            Path target = out.resolve("report.json");
+            try {
+                doc.write(target);
+            } catch (IOException e) {
+                throw new UserError("cannot write " + target + ": " + e.getMessage());
+            }
+            stdout.println("report written to " + target);
+        }
+        return 0;
+    }
+
+    private static int cores(Recording recording) {
+        String recorded = recording.runMetadata().get(ControllerMetadata.CORES);
+        try {
+            return recorded == null ? Runtime.getRuntime().availableProcessors() : Math.max(1, Integer.parseInt(recorded));
+        } catch (NumberFormatException e) {
+            return Runtime.getRuntime().availableProcessors();
+        }
+    }
+}
