@@ -78,8 +78,10 @@ public final class Monitor {
 
     /**
      * What the monitor itself keeps per task on the heap (histograms of execution time and
-     * lateness, counters), so that a command can refuse a task set that cannot fit before it
-     * allocates anything. Measured from HdrHistogram's footprint estimate, not guessed.
+     * lateness, the latest execution times for the live p99, counters), so that a command can
+     * refuse a task set that cannot fit before it allocates anything: about 32 KB, from
+     * HdrHistogram's footprint estimate of the histograms plus the rest as measured, under either
+     * executor.
      *
      * @return bytes per task, not counting the task's own data
      */
