@@ -1,9 +1,9 @@
 package io.rtaware.core.monitor;
 
 import io.rtaware.core.report.Percentiles;
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
 import java.util.Arrays;
-import java.util.concurrent.atomic.AtomicLong;
-import java.util.concurrent.atomic.AtomicLongArray;
 import org.HdrHistogram.AbstractHistogram;
 import org.HdrHistogram.Histogram;
 import org.HdrHistogram.IntCountsHistogram;
@@ -14,7 +14,10 @@ import org.HdrHistogram.IntCountsHistogram;
  * <p>Writers: the task's cycle (its own thread, or whichever pool worker runs it) records every
  * cycle; the watchdog adds misses it detects, and any thread may count a listener fault. Counts
  * written by the cycle alone are published with ordered stores (no read-modify-write on the hot
- * path); misses, which two threads add, are atomic.
+ * path); misses, which two threads add, are atomic. The counters are plain fields of this one
+ * object, accessed through {@link VarHandle}s, rather than an object each: with thousands of
+ * tasks a pool worker finds every task's state out of its caches, and each object touched per
+ * cycle is one more cache miss (issue 16's profile at 10 000 tasks).
  *
  * <p>Memory (issue 16: 10 000 tasks in the launcher's 512 MB heap): two histograms per task,
  * lateness and execution time, recorded by the cycle and read only after the task's cycles have
@@ -40,20 +43,51 @@ final class CycleStatistics {
     /** The live p99 covers the latest this many cycles (all of them before that many have run). */
     static final int RECENT_EXEC_CYCLES = 256;
     /**
-     * Heap of this object besides its histograms and ring: its header and fields, the eight
-     * counters, the ring's header and the ring's counter, as {@code
-     * CycleStatisticsFootprintTest} measures them with the JVM's allocation counter.
+     * Heap besides HdrHistogram's footprint estimate of the histograms and the ring's elements:
+     * this object, the ring's header, and what the histograms' objects take beyond that estimate
+     * (80 bytes each), as {@code MonitorFootprintTest} measures them with the JVM's allocation
+     * counter.
      */
-    private static final long FIELDS_BYTES = 512;
+    private static final long FIELDS_BYTES = 384;
 
-    private final AtomicLong releases = new AtomicLong();
-    private final AtomicLong runs = new AtomicLong();
-    private final AtomicLong misses = new AtomicLong();
-    private final AtomicLong skipped = new AtomicLong();
-    private final AtomicLong staleRuns = new AtomicLong();
-    private final AtomicLong errors = new AtomicLong();
-    private final AtomicLong expiredReads = new AtomicLong();
-    private final AtomicLong listenerErrors = new AtomicLong();
+    private static final VarHandle RELEASES;
+    private static final VarHandle RUNS;
+    private static final VarHandle MISSES;
+    private static final VarHandle SKIPPED;
+    private static final VarHandle STALE_RUNS;
+    private static final VarHandle ERRORS;
+    private static final VarHandle EXPIRED_READS;
+    private static final VarHandle LISTENER_ERRORS;
+    private static final VarHandle RECENT_EXEC_COUNT;
+    private static final VarHandle RECENT_EXEC_SLOT = MethodHandles.arrayElementVarHandle(long[].class);
+
+    static {
+        try {
+            MethodHandles.Lookup lookup = MethodHandles.lookup();
+            RELEASES = lookup.findVarHandle(CycleStatistics.class, "releases", long.class);
+            RUNS = lookup.findVarHandle(CycleStatistics.class, "runs", long.class);
+            MISSES = lookup.findVarHandle(CycleStatistics.class, "misses", long.class);
+            SKIPPED = lookup.findVarHandle(CycleStatistics.class, "skipped", long.class);
+            STALE_RUNS = lookup.findVarHandle(CycleStatistics.class, "staleRuns", long.class);
+            ERRORS = lookup.findVarHandle(CycleStatistics.class, "errors", long.class);
+            EXPIRED_READS = lookup.findVarHandle(CycleStatistics.class, "expiredReads", long.class);
+            LISTENER_ERRORS = lookup.findVarHandle(CycleStatistics.class, "listenerErrors", long.class);
+            RECENT_EXEC_COUNT = lookup.findVarHandle(CycleStatistics.class, "recentExecCount", long.class);
+        } catch (ReflectiveOperationException e) {
+            throw new ExceptionInInitializerError(e);
+        }
+    }
+
+    // Written through the VarHandles above: ordered stores by the cycle's thread, atomic adds
+    // where two threads write (misses, listener errors), acquiring reads by anyone.
+    private long releases;
+    private long runs;
+    private long misses;
+    private long skipped;
+    private long staleRuns;
+    private long errors;
+    private long expiredReads;
+    private long listenerErrors;
 
     private AbstractHistogram latenessNs = newHistogram();
     private long latenessMaxNs;
@@ -64,9 +98,9 @@ final class CycleStatistics {
     private double execSumNs;
 
     /** The latest execution times, slot {@code n % RECENT_EXEC_CYCLES} for the n-th cycle. */
-    private final AtomicLongArray recentExecNs = new AtomicLongArray(RECENT_EXEC_CYCLES);
+    private final long[] recentExecNs = new long[RECENT_EXEC_CYCLES];
     /** Execution times written to {@link #recentExecNs} so far. */
-    private final AtomicLong recentExecCount = new AtomicLong();
+    private long recentExecCount;
 
     /**
      * @return the heap bytes one instance takes: its two histograms as HdrHistogram estimates
@@ -84,8 +118,8 @@ final class CycleStatistics {
 
     /** A release came due and its cycle starts now (cycle's thread). */
     void released(long latenessNs) {
-        increment(releases);
-        increment(runs);
+        RELEASES.setRelease(this, releases + 1);
+        RUNS.setRelease(this, runs + 1);
         this.latenessNs = record(this.latenessNs, latenessNs);
         latenessSumNs += latenessNs;
         if (latenessNs > latenessMaxNs) {
@@ -100,76 +134,76 @@ final class CycleStatistics {
         if (execNs > execMaxNs) {
             execMaxNs = execNs;
         }
-        long n = recentExecCount.getPlain();
-        recentExecNs.setRelease((int) (n % RECENT_EXEC_CYCLES), execNs);
-        recentExecCount.setRelease(n + 1);
+        long n = recentExecCount;
+        RECENT_EXEC_SLOT.setRelease(recentExecNs, (int) (n % RECENT_EXEC_CYCLES), execNs);
+        RECENT_EXEC_COUNT.setRelease(this, n + 1);
     }
 
     /** {@code count} releases were skipped, each a release and a miss (cycle's thread). */
     void skipped(long count) {
-        releases.setRelease(releases.getPlain() + count);
-        skipped.setRelease(skipped.getPlain() + count);
-        misses.addAndGet(count);
+        RELEASES.setRelease(this, releases + count);
+        SKIPPED.setRelease(this, skipped + count);
+        MISSES.getAndAdd(this, count);
     }
 
     /** A cycle missed its deadline (cycle's thread or watchdog). */
     void missed() {
-        misses.incrementAndGet();
+        MISSES.getAndAdd(this, 1L);
     }
 
     void staleRun() {
-        increment(staleRuns);
+        STALE_RUNS.setRelease(this, staleRuns + 1);
     }
 
     void error() {
-        increment(errors);
+        ERRORS.setRelease(this, errors + 1);
     }
 
     void expiredRead() {
-        increment(expiredReads);
+        EXPIRED_READS.setRelease(this, expiredReads + 1);
     }
 
     /** A listener failed on one of this task's events (any thread). */
     void listenerError() {
-        listenerErrors.incrementAndGet();
+        LISTENER_ERRORS.getAndAdd(this, 1L);
     }
 
     long releases() {
-        return releases.get();
+        return (long) RELEASES.getAcquire(this);
     }
 
     long runs() {
-        return runs.get();
+        return (long) RUNS.getAcquire(this);
     }
 
     long misses() {
-        return misses.get();
+        return (long) MISSES.getAcquire(this);
     }
 
     long skippedReleases() {
-        return skipped.get();
+        return (long) SKIPPED.getAcquire(this);
     }
 
     long staleRuns() {
-        return staleRuns.get();
+        return (long) STALE_RUNS.getAcquire(this);
     }
 
     long errors() {
-        return errors.get();
+        return (long) ERRORS.getAcquire(this);
     }
 
     long expiredReads() {
-        return expiredReads.get();
+        return (long) EXPIRED_READS.getAcquire(this);
     }
 
     long listenerErrors() {
-        return listenerErrors.get();
+        return (long) LISTENER_ERRORS.getAcquire(this);
     }
 
     /** Live counters, safe at any time from any thread; allocates (not for the cycle's thread). */
     TaskCounters counters() {
-        return new TaskCounters(releases.get(), runs.get(), misses.get(), skipped.get(), staleRuns.get(),
-                errors.get(), expiredReads.get(), recentExecP99Ns());
+        return new TaskCounters(releases(), runs(), misses(), skippedReleases(), staleRuns(), errors(),
+                expiredReads(), recentExecP99Ns());
     }
 
     /**
@@ -179,14 +213,14 @@ final class CycleStatistics {
      * may replace the oldest value read, which a live figure can afford.
      */
     private long recentExecP99Ns() {
-        long count = recentExecCount.getAcquire();
+        long count = (long) RECENT_EXEC_COUNT.getAcquire(this);
         int n = (int) Math.min(count, RECENT_EXEC_CYCLES);
         if (n == 0) {
             return 0;
         }
         long[] latest = new long[n];
         for (int i = 0; i < n; i++) {
-            latest[i] = recentExecNs.getAcquire(i);
+            latest[i] = (long) RECENT_EXEC_SLOT.getAcquire(recentExecNs, i);
         }
         Arrays.sort(latest);
         return latest[(int) Math.ceil(0.99 * n) - 1];
@@ -220,10 +254,5 @@ final class CycleStatistics {
         }
         target.recordValue(Math.min(Math.max(valueNs, 1), HIGHEST_TRACKABLE_NS));
         return target;
-    }
-
-    /** Single writer: an ordered store instead of an atomic increment. */
-    private static void increment(AtomicLong counter) {
-        counter.setRelease(counter.getPlain() + 1);
     }
 }

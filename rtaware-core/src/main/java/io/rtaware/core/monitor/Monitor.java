@@ -521,6 +521,10 @@ public final class Monitor {
             return this;
         }
 
+        /** Shared by the tasks without inputs or outputs: fewer objects for a cycle to touch. */
+        private static final InputHandle<?>[] NO_INPUTS = new InputHandle<?>[0];
+        private static final OutputHandle<?>[] NO_OUTPUTS = new OutputHandle<?>[0];
+
         /**
          * Initialization: calls {@code initialize} on every task, then verifies names, schedules
          * and the data graph.
@@ -549,8 +553,7 @@ public final class Monitor {
             List<TaskRuntime> runtimes = new ArrayList<>();
             for (TaskDeclarations declarations : declared) {
                 TaskRuntime runtime = new TaskRuntime(declarations.spec, runtimes.size(), clock, events,
-                        declarations.inputs.toArray(new InputHandle<?>[0]),
-                        declarations.outputs.toArray(new OutputHandle<?>[0]));
+                        declarations.inputs.toArray(NO_INPUTS), declarations.outputs.toArray(NO_OUTPUTS));
                 if (adaptivePolicy != null) {
                     runtime.adaptive(adaptivePolicy);
                 }

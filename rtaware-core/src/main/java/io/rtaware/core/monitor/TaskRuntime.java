@@ -6,6 +6,8 @@ import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Clock;
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -73,6 +75,9 @@ final class TaskRuntime implements TaskInfo {
         return CycleStatistics.estimatedHeapBytes() + FIXED_OVERHEAD_BYTES;
     }
 
+    /** The input generations of every task without inputs (shared: one object less per task). */
+    private static final long[] NO_GENERATIONS = new long[0];
+
     /** How the task is released: the only switch on the schedule's kind. */
     private enum Release { PERIODIC, CONTINUOUS, ONCE }
 
@@ -105,8 +110,21 @@ final class TaskRuntime implements TaskInfo {
     // The next release, written by the cycle's thread between cycles.
     private long nextIndex;
     private long nextReleaseNs = NEVER;
-    /** {@link #nextIndex} for the watchdog; -1 before the start and once never released again. */
-    private volatile long pendingIndex = -1;
+    /**
+     * {@link #nextIndex} for the threaded executor's watchdog; -1 before the start and once never
+     * released again. Published with an ordered store, not a volatile one (no fence per cycle): a
+     * watchdog that reads an older index wakes for an earlier deadline, which is only early.
+     */
+    private long pendingIndex = -1;
+    private static final VarHandle PENDING_INDEX;
+
+    static {
+        try {
+            PENDING_INDEX = MethodHandles.lookup().findVarHandle(TaskRuntime.class, "pendingIndex", long.class);
+        } catch (ReflectiveOperationException e) {
+            throw new ExceptionInInitializerError(e);
+        }
+    }
 
     TaskRuntime(TaskSpec spec, int index, Clock clock, ListenerFanOut events, InputHandle<?>[] inputs,
                 OutputHandle<?>[] outputs) {
@@ -115,7 +133,7 @@ final class TaskRuntime implements TaskInfo {
         this.clock = clock;
         this.events = events;
         this.inputs = inputs;
-        this.inputGenerations = new long[inputs.length];
+        this.inputGenerations = inputs.length == 0 ? NO_GENERATIONS : new long[inputs.length];
         List<String> names = new ArrayList<>(inputs.length);
         for (InputHandle<?> input : inputs) {
             names.add(input.key().name());
@@ -212,7 +230,7 @@ final class TaskRuntime implements TaskInfo {
         grid = grid.anchoredAt(startNs + offsetNs);
         nextIndex = 0;
         nextReleaseNs = release == Release.PERIODIC ? grid.releaseNs(0) : startNs + offsetNs;
-        pendingIndex = release == Release.PERIODIC ? 0 : -1;
+        PENDING_INDEX.setRelease(this, release == Release.PERIODIC ? 0L : -1L);
         setState(TaskState.RUNNING, startNs);
     }
 
@@ -266,7 +284,7 @@ final class TaskRuntime implements TaskInfo {
         if (running != Long.MAX_VALUE) {
             return running;
         }
-        long k = pendingIndex;
+        long k = (long) PENDING_INDEX.getAcquire(this);
         return k < 0 ? Long.MAX_VALUE : deadlineOf(k);
     }
 
@@ -424,7 +442,7 @@ final class TaskRuntime implements TaskInfo {
                 long next = nextAfter(k, endNs);
                 nextIndex = next;
                 nextReleaseNs = grid.releaseNs(next);
-                pendingIndex = next;
+                PENDING_INDEX.setRelease(this, next);
             }
             case CONTINUOUS -> {
                 nextIndex = k + 1;
@@ -445,7 +463,7 @@ final class TaskRuntime implements TaskInfo {
 
     private void neverAgain() {
         nextReleaseNs = NEVER;
-        pendingIndex = -1;
+        PENDING_INDEX.setRelease(this, -1L);
     }
 
     /**
