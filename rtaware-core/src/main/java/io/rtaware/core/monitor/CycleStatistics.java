@@ -143,12 +143,12 @@ final class CycleStatistics {
     void skipped(long count) {
         RELEASES.setRelease(this, releases + count);
         SKIPPED.setRelease(this, skipped + count);
-        MISSES.getAndAdd(this, count);
+        addAtomically(MISSES, count);
     }
 
     /** A cycle missed its deadline (cycle's thread or watchdog). */
     void missed() {
-        MISSES.getAndAdd(this, 1L);
+        addAtomically(MISSES, 1);
     }
 
     void staleRun() {
@@ -165,7 +165,7 @@ final class CycleStatistics {
 
     /** A listener failed on one of this task's events (any thread). */
     void listenerError() {
-        LISTENER_ERRORS.getAndAdd(this, 1L);
+        addAtomically(LISTENER_ERRORS, 1);
     }
 
     long releases() {
@@ -234,6 +234,17 @@ final class CycleStatistics {
     /** @return lateness over the run; call only after the task's cycles have stopped */
     Percentiles latenessUs() {
         return Percentiles.ofNanos(latenessNs, latenessMaxNs, latenessSumNs);
+    }
+
+    /**
+     * An atomic add through a counter's VarHandle, invoked with its exact type (a call whose
+     * result is dropped would not match {@code getAndAdd}'s type, and an inexact invocation goes
+     * through a type adaptation that may allocate).
+     *
+     * @return the counter's new value
+     */
+    private long addAtomically(VarHandle counter, long delta) {
+        return (long) counter.getAndAdd(this, delta) + delta;
     }
 
     private static AbstractHistogram newHistogram() {
