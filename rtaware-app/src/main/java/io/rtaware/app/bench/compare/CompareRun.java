@@ -171,6 +171,12 @@ public final class CompareRun {
     private void runSegment(SegmentExecutor executor, List<ReleaseStats> stats, ExecutorTotals totals)
             throws InterruptedException {
         executor.prepare(specs, stats);
+        // Collects the previous segments' garbage (a 1000-task monitor is 32 MB) now, while no
+        // task thread runs: a collection started by it inside the next window would stop every
+        // thread alive for its handshakes (ZGC's HandshakeAllThreads took up to 292 ms with 1000
+        // task threads in issue 16's profile) and charge that to whichever executor runs then,
+        // most often the one whose preparation allocated. A no-op under Epsilon.
+        System.gc();
         long startNs = System.nanoTime();
         long fromNs = startNs + settleNs;
         long untilNs = startNs + segmentNs;
