@@ -47,6 +47,18 @@ class LimitsCliTest {
     }
 
     @Test
+    void tenThousandTasksFitTheDefaultHeapButTheirComparisonDoesNot() {
+        // Issue 16: 10 000 tasks at 100 Hz on the pooled executor in the launcher's heap, with
+        // 64 MB already in use (the JVM, the command's classes).
+        long needed = MemoryBudget.times(10_000, io.rtaware.core.monitor.Monitor.estimatedHeapBytesPerTask());
+        new MemoryBudget(HEAP_512_MB, 64L * 1024 * 1024).require(needed, "--tasks 10000");
+        CliRun.of(HEAP_512, "bench", "--compare", "--executor", "pooled", "--tasks", "10000", "--duration", "1s")
+                .assertOneLineUserError("10000 task(s) (43 KB of monitor and comparison bookkeeping per task)");
+        CliRun.of(HEAP_512, "bench", "--sweep-tasks", "10,10000", "--duration", "1s")
+                .assertOneLineUserError("10000 task(s) (43 KB of monitor and comparison bookkeeping per task)");
+    }
+
+    @Test
     void aTraceCapacityThatCannotFitIsRefused() {
         String trace = dir.resolve("t.json").toString();
         CliRun.of(HEAP_512, "bench", "--trace", trace, "--trace-capacity", "2000000000", "--duration", "1s")

@@ -5,6 +5,7 @@ import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.bench.compare.CompareReport;
 import io.rtaware.app.bench.compare.CompareRun;
 import io.rtaware.app.bench.compare.Goal;
+import io.rtaware.app.bench.compare.ReleaseStats;
 import io.rtaware.app.bench.compare.RunResult;
 import io.rtaware.app.bench.compare.TaskSweep;
 import io.rtaware.app.cli.CommandMonitor;
@@ -203,11 +204,16 @@ public final class BenchCommand implements Callable<Integer> {
             OutputFile.of("--json", json);
         }
         trace.checkOutput();
-        long perTaskBytes = Monitor.estimatedHeapBytesPerTask();
-        memory.get().require(MemoryBudget.times(specs.size(), perTaskBytes),
-                specs.size() + " task(s) (" + perTaskBytes / 1024 + " KB of monitor bookkeeping per task)");
-        memory.get().require(MemoryBudget.add(MemoryBudget.times(specs.size(), perTaskBytes), trace.heapBytes()),
-                trace.describe() + " with " + specs.size() + " task(s)");
+        // A comparison (and each count of a sweep) keeps a monitor and the comparison's own
+        // per-task lateness histogram at once.
+        boolean comparing = compare || sweepTasks != null;
+        int taskCount = sweepTasks == null || sweepTasks.isEmpty() ? specs.size()
+                : sweepTasks.stream().filter(n -> n != null).mapToInt(Integer::intValue).max().orElse(specs.size());
+        long perTaskBytes = Monitor.estimatedHeapBytesPerTask() + (comparing ? ReleaseStats.estimatedHeapBytes() : 0);
+        memory.get().require(MemoryBudget.times(taskCount, perTaskBytes), taskCount + " task(s) (" + perTaskBytes / 1024
+                + " KB of " + (comparing ? "monitor and comparison" : "monitor") + " bookkeeping per task)");
+        memory.get().require(MemoryBudget.add(MemoryBudget.times(taskCount, perTaskBytes), trace.heapBytes()),
+                trace.describe() + " with " + taskCount + " task(s)");
         if (durationNs <= 0) {
             throw new UserError("--duration must be positive, got " + Durations.format(durationNs));
         }

@@ -1,221 +1,269 @@
 package io.rtaware.core.monitor;
 
 import io.rtaware.core.report.Percentiles;
-import java.util.concurrent.atomic.AtomicLong;
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
+import java.util.Arrays;
+import org.HdrHistogram.AbstractHistogram;
 import org.HdrHistogram.Histogram;
-import org.HdrHistogram.SingleWriterRecorder;
+import org.HdrHistogram.IntCountsHistogram;
 
 /**
  * One task's counts and distributions: what the report and the live counters say about it.
  *
- * <p>Writers: the task's thread records every cycle; the watchdog adds misses it detects, and
- * any thread may count a listener fault. Counts written by the task's thread alone are
- * published with ordered stores (no read-modify-write on the hot path); misses, which two
- * threads add, are atomic. Execution times go to an HdrHistogram {@link SingleWriterRecorder}:
- * readers take its interval histograms, which feed both the whole-run distribution and the live
- * p99 of the latest cycles, while the task's thread records without locks or allocation.
- * Lateness is only reported at the end, so it goes to a plain histogram read after the task's
- * thread has stopped.
+ * <p>Writers: the task's cycle (its own thread, or whichever pool worker runs it) records every
+ * cycle; the watchdog adds misses it detects, and any thread may count a listener fault. Counts
+ * written by the cycle alone are published with ordered stores (no read-modify-write on the hot
+ * path); misses, which two threads add, are atomic. The counters are plain fields of this one
+ * object, accessed through {@link VarHandle}s, rather than an object each: with thousands of
+ * tasks a pool worker finds every task's state out of its caches, and each object touched per
+ * cycle is one more cache miss (issue 16's profile at 10 000 tasks).
+ *
+ * <p>Memory (issue 16: 10 000 tasks in the launcher's 512 MB heap): two histograms per task,
+ * lateness and execution time, recorded by the cycle and read only after the task's cycles have
+ * stopped, plus a ring of the latest {@value #RECENT_EXEC_CYCLES} execution times for the live
+ * p99. The histograms keep HdrHistogram's two significant digits with a resolution of
+ * {@value #LOWEST_DISCERNIBLE_NS} ns below 2 us, which is the resolution a 1 ns histogram has
+ * from 1 us up anyway (the report rounds to 0.1 us). Their range ends at {@value
+ * #HIGHEST_TRACKABLE_NS} ns (about 17 s, longer than any deadline a controller is built for):
+ * a larger value is counted there, the exact maximum is kept beside, and a percentile that falls
+ * into that top bucket reads as the maximum ({@link Percentiles#ofNanos}). Counts are 32-bit
+ * ({@link IntCountsHistogram}, half the bytes); a bucket cannot overflow while the histogram's
+ * total stays below {@link Integer#MAX_VALUE}, so at that total (after 2^31 - 1 cycles, 24.8 days
+ * of a 1 kHz task) the histogram is copied once into a 64-bit one: the only allocation on the
+ * cycle's path, once per task and run.
  */
 final class CycleStatistics {
 
-    private static final long HIGHEST_TRACKABLE_NS = 3_600_000_000_000L;
+    /** Top of the histograms' range: 2^34 ns, about 17.2 s; larger values are clamped to it. */
+    static final long HIGHEST_TRACKABLE_NS = 1L << 34;
+    /** Resolution below 2 us: 8 ns (a 1 ns histogram of two digits has 8 ns buckets from 1 us up). */
+    static final long LOWEST_DISCERNIBLE_NS = 8;
     private static final int SIGNIFICANT_DIGITS = 2;
-    /** The live p99 covers at least this many of the latest cycles, once that many have run. */
-    static final int RECENT_EXEC_CYCLES = 128;
-
+    /** The live p99 covers the latest this many cycles (all of them before that many have run). */
+    static final int RECENT_EXEC_CYCLES = 256;
     /**
-     * Histograms one instance holds: lateness, the recorder's two, the whole run's, the interval,
-     * and the three windows of the live p99.
+     * Heap besides HdrHistogram's footprint estimate of the histograms and the ring's elements:
+     * this object, the ring's header, and what the histograms' objects take beyond that estimate
+     * (80 bytes each), as {@code MonitorFootprintTest} measures them with the JVM's allocation
+     * counter.
      */
-    private static final int HISTOGRAMS = 8;
+    private static final long FIELDS_BYTES = 384;
 
-    private final AtomicLong releases = new AtomicLong();
-    private final AtomicLong runs = new AtomicLong();
-    private final AtomicLong misses = new AtomicLong();
-    private final AtomicLong skipped = new AtomicLong();
-    private final AtomicLong staleRuns = new AtomicLong();
-    private final AtomicLong errors = new AtomicLong();
-    private final AtomicLong expiredReads = new AtomicLong();
-    private final AtomicLong listenerErrors = new AtomicLong();
+    private static final VarHandle RELEASES;
+    private static final VarHandle RUNS;
+    private static final VarHandle MISSES;
+    private static final VarHandle SKIPPED;
+    private static final VarHandle STALE_RUNS;
+    private static final VarHandle ERRORS;
+    private static final VarHandle EXPIRED_READS;
+    private static final VarHandle LISTENER_ERRORS;
+    private static final VarHandle RECENT_EXEC_COUNT;
+    private static final VarHandle RECENT_EXEC_SLOT = MethodHandles.arrayElementVarHandle(long[].class);
 
-    private final Histogram latenessNs = new Histogram(1, HIGHEST_TRACKABLE_NS, SIGNIFICANT_DIGITS);
+    static {
+        try {
+            MethodHandles.Lookup lookup = MethodHandles.lookup();
+            RELEASES = lookup.findVarHandle(CycleStatistics.class, "releases", long.class);
+            RUNS = lookup.findVarHandle(CycleStatistics.class, "runs", long.class);
+            MISSES = lookup.findVarHandle(CycleStatistics.class, "misses", long.class);
+            SKIPPED = lookup.findVarHandle(CycleStatistics.class, "skipped", long.class);
+            STALE_RUNS = lookup.findVarHandle(CycleStatistics.class, "staleRuns", long.class);
+            ERRORS = lookup.findVarHandle(CycleStatistics.class, "errors", long.class);
+            EXPIRED_READS = lookup.findVarHandle(CycleStatistics.class, "expiredReads", long.class);
+            LISTENER_ERRORS = lookup.findVarHandle(CycleStatistics.class, "listenerErrors", long.class);
+            RECENT_EXEC_COUNT = lookup.findVarHandle(CycleStatistics.class, "recentExecCount", long.class);
+        } catch (ReflectiveOperationException e) {
+            throw new ExceptionInInitializerError(e);
+        }
+    }
+
+    // Written through the VarHandles above: ordered stores by the cycle's thread, atomic adds
+    // where two threads write (misses, listener errors), acquiring reads by anyone.
+    private long releases;
+    private long runs;
+    private long misses;
+    private long skipped;
+    private long staleRuns;
+    private long errors;
+    private long expiredReads;
+    private long listenerErrors;
+
+    private AbstractHistogram latenessNs = newHistogram();
     private long latenessMaxNs;
     private double latenessSumNs;
 
-    private final SingleWriterRecorder execRecorder =
-            new SingleWriterRecorder(1, HIGHEST_TRACKABLE_NS, SIGNIFICANT_DIGITS);
+    private AbstractHistogram execNs = newHistogram();
     private long execMaxNs;
     private double execSumNs;
 
-    // Reader side of the execution-time recorder, guarded by this object's monitor. Created on
-    // the first read that needs them (the whole run at the report, the recent windows at the
-    // first live p99), by the reader: a histogram of this range is ~35 KB, and a monitor of
-    // 1000 tasks that nobody reads live would otherwise zero 140 MB of them at build time
-    // (issue 16's profile: Histogram.<init> under Monitor.Builder.build was 60 % of the
-    // allocation and a quarter of the main thread's samples of a 1000-task comparison).
-    private Histogram execWholeRunNs;
-    private Histogram execIntervalNs;
-    /** The latest cycles since the first live read: the previous full window and the one filling up. */
-    private Histogram execOlderNs;
-    private Histogram execNewerNs;
-    private Histogram execRecentNs;
+    /** The latest execution times, slot {@code n % RECENT_EXEC_CYCLES} for the n-th cycle. */
+    private final long[] recentExecNs = new long[RECENT_EXEC_CYCLES];
+    /** Execution times written to {@link #recentExecNs} so far. */
+    private long recentExecCount;
 
     /**
-     * @return the heap bytes one instance's histograms take, as HdrHistogram estimates them
+     * @return the heap bytes one instance takes: its two histograms as HdrHistogram estimates
+     *     their footprint, the ring of recent execution times, and its fields
      */
     static long estimatedHeapBytes() {
-        return HISTOGRAMS * new Histogram(1, HIGHEST_TRACKABLE_NS, SIGNIFICANT_DIGITS).getEstimatedFootprintInBytes();
+        return 2 * newHistogram().getEstimatedFootprintInBytes() + (long) RECENT_EXEC_CYCLES * Long.BYTES
+                + FIELDS_BYTES;
     }
 
-    /** A release came due and its cycle starts now (task thread). */
+    /** @return HdrHistogram's footprint estimate of the two histograms this instance holds now */
+    long histogramFootprintBytes() {
+        return latenessNs.getEstimatedFootprintInBytes() + execNs.getEstimatedFootprintInBytes();
+    }
+
+    /** A release came due and its cycle starts now (cycle's thread). */
     void released(long latenessNs) {
-        increment(releases);
-        increment(runs);
-        this.latenessNs.recordValue(clamp(latenessNs));
+        RELEASES.setRelease(this, releases + 1);
+        RUNS.setRelease(this, runs + 1);
+        this.latenessNs = record(this.latenessNs, latenessNs);
         latenessSumNs += latenessNs;
         if (latenessNs > latenessMaxNs) {
             latenessMaxNs = latenessNs;
         }
     }
 
-    /** A cycle ended after {@code execNs} of world time (task thread). */
+    /** A cycle ended after {@code execNs} of world time (cycle's thread). */
     void cycleEnded(long execNs) {
-        execRecorder.recordValue(clamp(execNs));
+        this.execNs = record(this.execNs, execNs);
         execSumNs += execNs;
         if (execNs > execMaxNs) {
             execMaxNs = execNs;
         }
+        long n = recentExecCount;
+        RECENT_EXEC_SLOT.setRelease(recentExecNs, (int) (n % RECENT_EXEC_CYCLES), execNs);
+        RECENT_EXEC_COUNT.setRelease(this, n + 1);
     }
 
-    /** {@code count} releases were skipped, each a release and a miss (task thread). */
+    /** {@code count} releases were skipped, each a release and a miss (cycle's thread). */
     void skipped(long count) {
-        releases.setRelease(releases.getPlain() + count);
-        skipped.setRelease(skipped.getPlain() + count);
-        misses.addAndGet(count);
+        RELEASES.setRelease(this, releases + count);
+        SKIPPED.setRelease(this, skipped + count);
+        addAtomically(MISSES, count);
     }
 
-    /** A cycle missed its deadline (task thread or watchdog). */
+    /** A cycle missed its deadline (cycle's thread or watchdog). */
     void missed() {
-        misses.incrementAndGet();
+        addAtomically(MISSES, 1);
     }
 
     void staleRun() {
-        increment(staleRuns);
+        STALE_RUNS.setRelease(this, staleRuns + 1);
     }
 
     void error() {
-        increment(errors);
+        ERRORS.setRelease(this, errors + 1);
     }
 
     void expiredRead() {
-        increment(expiredReads);
+        EXPIRED_READS.setRelease(this, expiredReads + 1);
     }
 
     /** A listener failed on one of this task's events (any thread). */
     void listenerError() {
-        listenerErrors.incrementAndGet();
+        addAtomically(LISTENER_ERRORS, 1);
     }
 
     long releases() {
-        return releases.get();
+        return (long) RELEASES.getAcquire(this);
     }
 
     long runs() {
-        return runs.get();
+        return (long) RUNS.getAcquire(this);
     }
 
     long misses() {
-        return misses.get();
+        return (long) MISSES.getAcquire(this);
     }
 
     long skippedReleases() {
-        return skipped.get();
+        return (long) SKIPPED.getAcquire(this);
     }
 
     long staleRuns() {
-        return staleRuns.get();
+        return (long) STALE_RUNS.getAcquire(this);
     }
 
     long errors() {
-        return errors.get();
+        return (long) ERRORS.getAcquire(this);
     }
 
     long expiredReads() {
-        return expiredReads.get();
+        return (long) EXPIRED_READS.getAcquire(this);
     }
 
     long listenerErrors() {
-        return listenerErrors.get();
+        return (long) LISTENER_ERRORS.getAcquire(this);
     }
 
-    /** Live counters, safe at any time from any thread; allocates (not for task threads). */
+    /** Live counters, safe at any time from any thread; allocates (not for the cycle's thread). */
     TaskCounters counters() {
-        return new TaskCounters(releases.get(), runs.get(), misses.get(), skipped.get(), staleRuns.get(),
-                errors.get(), expiredReads.get(), recentExecP99Ns());
+        return new TaskCounters(releases(), runs(), misses(), skippedReleases(), staleRuns(), errors(),
+                expiredReads(), recentExecP99Ns());
     }
 
     /**
-     * The 99th percentile (to HdrHistogram's two significant digits) of the latest cycles'
-     * execution times: the window filling up plus the previous full one, so at least the latest
-     * {@value #RECENT_EXEC_CYCLES} cycles once that many have run; 0 before the first cycle.
+     * The 99th percentile of the latest {@value #RECENT_EXEC_CYCLES} cycles' execution times (of
+     * all cycles before that many have run), exact: with n values sorted, the ceil(0.99 n)-th,
+     * as HdrHistogram ranks them; 0 before the first cycle. A cycle that ends during the read
+     * may replace the oldest value read, which a live figure can afford.
      */
-    private synchronized long recentExecP99Ns() {
-        if (execRecentNs == null) {
-            execOlderNs = newHistogram();
-            execNewerNs = newHistogram();
-            execRecentNs = newHistogram();
+    private long recentExecP99Ns() {
+        long count = (long) RECENT_EXEC_COUNT.getAcquire(this);
+        int n = (int) Math.min(count, RECENT_EXEC_CYCLES);
+        if (n == 0) {
+            return 0;
         }
-        drainExecRecorder();
-        execRecentNs.reset();
-        execRecentNs.add(execOlderNs);
-        execRecentNs.add(execNewerNs);
-        return execRecentNs.getTotalCount() == 0 ? 0 : execRecentNs.getValueAtPercentile(99);
+        long[] latest = new long[n];
+        for (int i = 0; i < n; i++) {
+            latest[i] = (long) RECENT_EXEC_SLOT.getAcquire(recentExecNs, i);
+        }
+        Arrays.sort(latest);
+        return latest[(int) Math.ceil(0.99 * n) - 1];
     }
 
-    /** Moves what the task recorded since the last read into the whole-run and recent windows. */
-    private void drainExecRecorder() {
-        if (execWholeRunNs == null) {
-            execWholeRunNs = newHistogram();
-        }
-        execIntervalNs = execRecorder.getIntervalHistogram(execIntervalNs);
-        if (execIntervalNs.getTotalCount() == 0) {
-            return;
-        }
-        execWholeRunNs.add(execIntervalNs);
-        if (execNewerNs == null) {
-            return; // nobody reads the live p99: no recent windows to keep
-        }
-        execNewerNs.add(execIntervalNs);
-        if (execNewerNs.getTotalCount() >= RECENT_EXEC_CYCLES) {
-            Histogram full = execNewerNs;
-            execNewerNs = execOlderNs;
-            execNewerNs.reset();
-            execOlderNs = full;
-        }
+    /** @return execution times over the run; call only after the task's cycles have stopped */
+    Percentiles execUs() {
+        return Percentiles.ofNanos(execNs, execMaxNs, execSumNs);
     }
 
-    private static Histogram newHistogram() {
-        return new Histogram(1, HIGHEST_TRACKABLE_NS, SIGNIFICANT_DIGITS);
-    }
-
-    /** @return execution times over the run; call only after the task's thread has stopped */
-    synchronized Percentiles execUs() {
-        drainExecRecorder();
-        return Percentiles.ofNanos(execWholeRunNs, execMaxNs, execSumNs);
-    }
-
-    /** @return lateness over the run; call only after the task's thread has stopped */
+    /** @return lateness over the run; call only after the task's cycles have stopped */
     Percentiles latenessUs() {
         return Percentiles.ofNanos(latenessNs, latenessMaxNs, latenessSumNs);
     }
 
-    /** Single writer: an ordered store instead of an atomic increment. */
-    private static void increment(AtomicLong counter) {
-        counter.setRelease(counter.getPlain() + 1);
+    /**
+     * An atomic add through a counter's VarHandle, invoked with its exact type (a call whose
+     * result is dropped would not match {@code getAndAdd}'s type, and an inexact invocation goes
+     * through a type adaptation that may allocate).
+     *
+     * @return the counter's new value
+     */
+    private long addAtomically(VarHandle counter, long delta) {
+        return (long) counter.getAndAdd(this, delta) + delta;
     }
 
-    private static long clamp(long valueNs) {
-        return Math.min(Math.max(valueNs, 1), HIGHEST_TRACKABLE_NS);
+    private static AbstractHistogram newHistogram() {
+        return new IntCountsHistogram(LOWEST_DISCERNIBLE_NS, HIGHEST_TRACKABLE_NS, SIGNIFICANT_DIGITS);
+    }
+
+    /**
+     * Records a value, first copying a 32-bit histogram whose total has reached
+     * {@link Integer#MAX_VALUE} into a 64-bit one (below that total no bucket can overflow).
+     *
+     * @return the histogram to keep: the same one, or its 64-bit copy
+     */
+    static AbstractHistogram record(AbstractHistogram histogram, long valueNs) {
+        AbstractHistogram target = histogram;
+        if (histogram instanceof IntCountsHistogram && histogram.getTotalCount() >= Integer.MAX_VALUE) {
+            target = new Histogram(histogram);
+            target.add(histogram);
+        }
+        target.recordValue(Math.min(Math.max(valueNs, 1), HIGHEST_TRACKABLE_NS));
+        return target;
     }
 }

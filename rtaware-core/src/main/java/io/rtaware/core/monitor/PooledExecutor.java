@@ -255,7 +255,8 @@ final class PooledExecutor implements Executor {
             faults.report("executor, cycle of task '" + runtime.name() + "'", fault);
             runtime.recoverAfterFault(clock.nanos());
         } finally {
-            current.set(worker, null);
+            // An ordered store: a watchdog that still sees the finished task finds its token done.
+            current.setRelease(worker, null);
         }
     }
 

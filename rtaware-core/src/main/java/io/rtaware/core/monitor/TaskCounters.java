@@ -10,10 +10,10 @@ package io.rtaware.core.monitor;
  * @param staleRuns cycles without new input data
  * @param errors cycles that threw
  * @param expiredReads reads of inputs older than their declared maximum age
- * @param recentExecP99Ns 99th percentile (to HdrHistogram's two significant digits) of the
- *     execution times of the latest cycles: at least the latest 128 once that many have run, at
- *     most about twice that plus those since the previous read; 0 before the first cycle. A live
- *     figure for observers; the report's percentiles cover the whole run
+ * @param recentExecP99Ns 99th percentile (exact, in ns) of the execution times of the latest
+ *     256 cycles (of all cycles before 256 have run): of n values sorted, the ceil(0.99 n)-th,
+ *     so the third largest of 256; 0 before the first cycle. A live figure for observers; the
+ *     report's percentiles cover the whole run
  */
 public record TaskCounters(long releases, long runs, long misses, long skipped, long staleRuns,
                            long errors, long expiredReads, long recentExecP99Ns) {

@@ -32,6 +32,11 @@ public record Percentiles(double p50, double p90, double p99, double max, double
     }
 
     /**
+     * Each percentile is the upper bound of the histogram bucket it falls into, and never above
+     * the exact maximum. A recorder that clamps values above the histogram's range into its top
+     * bucket keeps the exact maximum as that bucket's upper bound: a percentile there reads as the
+     * maximum.
+     *
      * @param histogramNs a histogram of nanosecond values
      * @param exactMaxNs the exact maximum (a histogram rounds and clamps)
      * @param exactSumNs the exact sum, for the mean
@@ -42,11 +47,16 @@ public record Percentiles(double p50, double p90, double p99, double max, double
         if (n == 0) {
             return EMPTY;
         }
-        // Histogram buckets report their upper bound; no percentile can exceed the exact maximum.
-        return new Percentiles(us(Math.min(histogramNs.getValueAtPercentile(50), exactMaxNs)),
-                us(Math.min(histogramNs.getValueAtPercentile(90), exactMaxNs)),
-                us(Math.min(histogramNs.getValueAtPercentile(99), exactMaxNs)), us(exactMaxNs), us(exactSumNs / n),
-                us(Math.min(histogramNs.getValueAtPercentile(99.9), exactMaxNs)));
+        return new Percentiles(us(atPercentile(histogramNs, 50, exactMaxNs)),
+                us(atPercentile(histogramNs, 90, exactMaxNs)),
+                us(atPercentile(histogramNs, 99, exactMaxNs)), us(exactMaxNs), us(exactSumNs / n),
+                us(atPercentile(histogramNs, 99.9, exactMaxNs)));
+    }
+
+    private static long atPercentile(AbstractHistogram histogramNs, double percentile, long exactMaxNs) {
+        long valueNs = histogramNs.getValueAtPercentile(percentile);
+        boolean topBucket = valueNs >= histogramNs.lowestEquivalentValue(histogramNs.getHighestTrackableValue());
+        return topBucket ? exactMaxNs : Math.min(valueNs, exactMaxNs);
     }
 
     private static double us(double ns) {

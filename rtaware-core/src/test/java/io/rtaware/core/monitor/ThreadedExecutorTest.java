@@ -128,7 +128,10 @@ class ThreadedExecutorTest {
         assertTrue(monitor.awaitTermination(Duration.ofSeconds(10)), "STOP_ALL terminates the monitor");
         assertTrue(handled.await(10, TimeUnit.SECONDS), "the termination handler ran");
         assertEquals(1, monitor.report().task("bomb").errors(), "one error: the task was not released again");
-        assertEquals(1, monitor.report().task("bystander").runs(), "the clock never moved: release 0 only");
+        long bystanderRuns = monitor.report().task("bystander").runs();
+        // The clock never moved, so release 0 at most; the stop may come before the bystander's
+        // thread has run it (seen once in about ten runs of this test on the loaded machine).
+        assertTrue(bystanderRuns <= 1, "the clock never moved: release 0 only, got " + bystanderRuns + " runs");
     }
 
     @ParameterizedTest

@@ -38,7 +38,23 @@ public final class CompareRun {
     private final Family family;
     private final int workers;
 
-    /** Which executors a comparison runs, besides the park loop. */
+    /**
+     * Most tasks per core for which the executors with a thread per task run. Beyond, their
+     * threads outnumber what the cores can wake at the tasks' rates: measured here (2 cores),
+     * 10 000 tasks at 100 Hz drove the load average past 2000 and the park loop's warm-up segment
+     * had not ended after 9 minutes, taking the machine from everything else on it.
+     */
+    static final int THREAD_PER_TASK_LIMIT_PER_CORE = 1000;
+
+    /**
+     * @param tasks a task count
+     * @return whether the executors with a thread per task run for it on this machine
+     */
+    static boolean threadPerTaskFits(int tasks) {
+        return tasks <= (long) THREAD_PER_TASK_LIMIT_PER_CORE * Runtime.getRuntime().availableProcessors();
+    }
+
+    /** Which executors a comparison runs, besides the park loop (left out with the thread-per-task ones). */
     public enum Family {
         /** rtaware threaded and pooled, STPE per task and pooled. */
         ALL,
@@ -65,7 +81,7 @@ public final class CompareRun {
      * @param measuredNs measured time wanted per executor; rounded up to whole segments
      * @param segmentNs length of one executor's turn
      * @param progress where to print one line per round
-     * @param family which executors to compare (the park loop always runs: it is the floor)
+     * @param family which executors to compare (the park loop runs too: it is the floor; see {@link #THREAD_PER_TASK_LIMIT_PER_CORE})
      * @param workers threads of the pooled executors (rtaware's pool and the pooled STPE)
      */
     public CompareRun(List<BenchSpec> specs, BusyWork work, long measuredNs, long segmentNs, PrintStream progress,
@@ -114,20 +130,27 @@ public final class CompareRun {
             threads.setThreadAllocatedMemoryEnabled(true);
         }
         Map<String, Supplier<SegmentExecutor>> executors = new LinkedHashMap<>();
-        if (family != Family.POOLED) {
+        boolean threadPerTask = threadPerTaskFits(specs.size());
+        if (!threadPerTask) {
+            progress.printf("compare: %d tasks is more than %d per core: the executors with a thread per task "
+                    + "(rtaware, stpe, park-loop) are left out%n", specs.size(), THREAD_PER_TASK_LIMIT_PER_CORE);
+        }
+        if (family != Family.POOLED && threadPerTask) {
             executors.put("rtaware", () -> new RtawareSegment(work, "rtaware", ExecutorKind.threaded()));
         }
         if (family != Family.THREADED) {
             executors.put("rtaware-pooled", () -> new RtawareSegment(work, "rtaware-pooled",
                     ExecutorKind.pooled(workers, ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST)));
         }
-        if (family != Family.POOLED) {
+        if (family != Family.POOLED && threadPerTask) {
             executors.put("stpe", () -> new StpeSegment(work, 0));
         }
         if (family != Family.THREADED) {
             executors.put("stpe-pooled", () -> new StpeSegment(work, workers));
         }
-        executors.put("park-loop", () -> new ParkLoopSegment(work));
+        if (threadPerTask) {
+            executors.put("park-loop", () -> new ParkLoopSegment(work));
+        }
         Map<String, ExecutorTotals> totals = new LinkedHashMap<>();
         executors.keySet().forEach(name -> totals.put(name, new ExecutorTotals(name)));
         List<ReleaseStats> stats = new ArrayList<>();
@@ -148,6 +171,12 @@ public final class CompareRun {
     private void runSegment(SegmentExecutor executor, List<ReleaseStats> stats, ExecutorTotals totals)
             throws InterruptedException {
         executor.prepare(specs, stats);
+        // Collects the previous segments' garbage (a 1000-task monitor is 32 MB) now, while no
+        // task thread runs: a collection started by it inside the next window would stop every
+        // thread alive for its handshakes (ZGC's HandshakeAllThreads took up to 292 ms with 1000
+        // task threads in issue 16's profile) and charge that to whichever executor runs then,
+        // most often the one whose preparation allocated. A no-op under Epsilon.
+        System.gc();
         long startNs = System.nanoTime();
         long fromNs = startNs + settleNs;
         long untilNs = startNs + segmentNs;
