@@ -1,5 +1,6 @@
 package io.rtaware.core.data;
 
+import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.StampedLock;
 
 /**
@@ -8,15 +9,29 @@ import java.util.concurrent.locks.StampedLock;
  *
  * <p>Thread-safe: any number of consumers copy out under the shared read lock while the single
  * producer commits under the exclusive write lock (the paper's locking scheme, with
- * {@link StampedLock}, whose read lock keeps no per-thread hold count). Neither path allocates.
+ * {@link StampedLock}, whose read lock keeps no per-thread hold count). Neither path allocates:
+ * the locks are taken with {@code tryWriteLock}/{@code tryReadLock} and a short back-off, never
+ * by joining StampedLock's wait queue, whose nodes are allocated on contention (the Epsilon guard
+ * caught a {@code StampedLock$WriterNode} from a commit that met a reader). A copy in or out takes
+ * well under a microsecond, so a waiter spins briefly, then yields, then parks for
+ * {@value #BACK_OFF_PARK_NS} ns at a time.
  *
  * @param <T> the value type
  */
 public final class StateVariable<T extends StateValue<T>> {
 
+    /** Busy-wait rounds before a waiter starts yielding the processor. */
+    private static final int SPINS = 16;
+    /** Rounds (spinning included) before a waiter starts parking. */
+    private static final int YIELDS = 1024;
+    /** How long a waiter parks per round once it parks, ns. */
+    static final long BACK_OFF_PARK_NS = 10_000L;
+
     private final Key<T> key;
     private final T value;
     private final StampedLock lock = new StampedLock();
+    /** Set by the producer while it waits for readers to leave (one producer per key). */
+    private volatile boolean writerWaiting;
 
     private volatile long generation;
     private long commitTimeNs;
@@ -44,7 +59,7 @@ public final class StateVariable<T extends StateValue<T>> {
      * @param nowNs world time of the commit
      */
     public void commit(T source, long nowNs) {
-        long stamp = lock.writeLock();
+        long stamp = writeLock();
         try {
             value.copyFrom(source);
             long gen = generation;
@@ -80,7 +95,7 @@ public final class StateVariable<T extends StateValue<T>> {
             cursor.set(heldGeneration, cursor.commitTimeNs());
             return;
         }
-        long stamp = lock.readLock();
+        long stamp = readLock();
         try {
             target.copyFrom(value);
             cursor.set(generation, commitTimeNs);
@@ -96,13 +111,51 @@ public final class StateVariable<T extends StateValue<T>> {
 
     /** @return a consistent snapshot of the feed statistics */
     public FeedStats feedStats() {
-        long stamp = lock.readLock();
+        long stamp = readLock();
         try {
             long gen = generation;
             return new FeedStats(gen, gen == 0 ? 0 : firstCommitNs, gen == 0 ? 0 : commitTimeNs,
                     gen < 2 ? 0 : minIntervalNs, gen < 2 ? 0 : maxIntervalNs);
         } finally {
             lock.unlockRead(stamp);
+        }
+    }
+
+    private long writeLock() {
+        long stamp = lock.tryWriteLock();
+        if (stamp != 0L) {
+            return stamp;
+        }
+        // Readers hold the lock: announce the commit so that no new reader enters meanwhile,
+        // or a steady stream of readers would keep the producer out.
+        writerWaiting = true;
+        for (int round = 0; stamp == 0L; round++) {
+            backOff(round);
+            stamp = lock.tryWriteLock();
+        }
+        writerWaiting = false;
+        return stamp;
+    }
+
+    private long readLock() {
+        for (int round = 0; ; round++) {
+            if (!writerWaiting) {
+                long stamp = lock.tryReadLock();
+                if (stamp != 0L) {
+                    return stamp;
+                }
+            }
+            backOff(round);
+        }
+    }
+
+    private static void backOff(int round) {
+        if (round < SPINS) {
+            Thread.onSpinWait();
+        } else if (round < YIELDS) {
+            Thread.yield();
+        } else {
+            LockSupport.parkNanos(BACK_OFF_PARK_NS);
         }
     }
 

@@ -50,6 +50,11 @@ final class CycleStatistics {
      */
     private static final long FIELDS_BYTES = 384;
 
+    // Atomic adds are invoked on these constants directly and with getAndAdd's exact type
+    // ((long) H.getAndAdd(this, long)): a VarHandle passed as an argument is not a constant, and
+    // where such a call is not compiled yet (a path first taken in steady state, e.g. the first
+    // miss), its access check allocated strings (seen by the Epsilon guard, JFR stack
+    // VarHandle.checkExactAccessMode <- missed()).
     private static final VarHandle RELEASES;
     private static final VarHandle RUNS;
     private static final VarHandle MISSES;
@@ -143,12 +148,12 @@ final class CycleStatistics {
     void skipped(long count) {
         RELEASES.setRelease(this, releases + count);
         SKIPPED.setRelease(this, skipped + count);
-        addAtomically(MISSES, count);
+        long unused = (long) MISSES.getAndAdd(this, count);
     }
 
     /** A cycle missed its deadline (cycle's thread or watchdog). */
     void missed() {
-        addAtomically(MISSES, 1);
+        long unused = (long) MISSES.getAndAdd(this, 1L);
     }
 
     void staleRun() {
@@ -165,7 +170,7 @@ final class CycleStatistics {
 
     /** A listener failed on one of this task's events (any thread). */
     void listenerError() {
-        addAtomically(LISTENER_ERRORS, 1);
+        long unused = (long) LISTENER_ERRORS.getAndAdd(this, 1L);
     }
 
     long releases() {
@@ -234,17 +239,6 @@ final class CycleStatistics {
     /** @return lateness over the run; call only after the task's cycles have stopped */
     Percentiles latenessUs() {
         return Percentiles.ofNanos(latenessNs, latenessMaxNs, latenessSumNs);
-    }
-
-    /**
-     * An atomic add through a counter's VarHandle, invoked with its exact type (a call whose
-     * result is dropped would not match {@code getAndAdd}'s type, and an inexact invocation goes
-     * through a type adaptation that may allocate).
-     *
-     * @return the counter's new value
-     */
-    private long addAtomically(VarHandle counter, long delta) {
-        return (long) counter.getAndAdd(this, delta) + delta;
     }
 
     private static AbstractHistogram newHistogram() {
