@@ -274,14 +274,14 @@ public final class RunRecorder {
     private void discardAll() {
         for (KeyRing k : keys) {
             if (k != null) {
-                k.tail.lazySet(k.head.get());
+                k.index.discardAll();
             }
         }
         for (CycleRing c : tasks) {
-            c.tail.lazySet(c.head.get());
+            c.index.discardAll();
         }
         events.discard();
-        truth.tail.lazySet(truth.head.get());
+        truth.index.discardAll();
     }
 
     /**
@@ -315,12 +315,61 @@ public final class RunRecorder {
     // ---------------------------------------------------------------- rings
 
     /** Single-producer ring of one key's committed values. */
+    /**
+     * The positions of a single-producer, single-consumer ring of {@code capacity} slots: the
+     * producer claims the next position and publishes it once the slot is written; the writer
+     * thread reads the published ones and hands them back. Positions only grow.
+     */
+    private static final class RingIndex {
+        private final AtomicLong head = new AtomicLong();
+        private final AtomicLong tail = new AtomicLong();
+        private final int capacity;
+
+        RingIndex(int capacity) {
+            this.capacity = capacity;
+        }
+
+        /** Producer: the next position to write, or -1 when every slot is still unread. */
+        long claim() {
+            long h = head.get();
+            return h - tail.get() >= capacity ? -1 : h;
+        }
+
+        /** Producer: the slot at {@code position} is written. */
+        void publish(long position) {
+            head.lazySet(position + 1);
+        }
+
+        int slot(long position) {
+            return (int) (position % capacity);
+        }
+
+        /** Consumer: the first position not yet read. */
+        long consumed() {
+            return tail.get();
+        }
+
+        /** Consumer: one past the last position published. */
+        long published() {
+            return head.get();
+        }
+
+        /** Consumer: positions before {@code position} are read and their slots free. */
+        void consumedUpTo(long position) {
+            tail.lazySet(position);
+        }
+
+        /** Consumer: drops every published position unread. */
+        void discardAll() {
+            tail.lazySet(head.get());
+        }
+    }
+
     private final class KeyRing {
         final StateValue<?>[] slots;
         final long[] times;
         final long[] generations;
-        final AtomicLong head = new AtomicLong();
-        final AtomicLong tail = new AtomicLong();
+        final RingIndex index;
         final int channel;
         final int stateChannel;
         @SuppressWarnings("rawtypes")
@@ -340,6 +389,7 @@ public final class RunRecorder {
             }
             times = new long[n];
             generations = new long[n];
+            index = new RingIndex(n);
             frame = plan.frameOf(key.name());
             ros = RosCodecs.forType(key.type());
             String topic = plan.topicOf(key.name());
@@ -363,24 +413,24 @@ public final class RunRecorder {
 
         @SuppressWarnings({"unchecked", "rawtypes"})
         boolean offer(StateValue<?> value, long generation, long timeNs) {
-            long h = head.get();
-            if (h - tail.get() >= slots.length) {
+            long h = index.claim();
+            if (h < 0) {
                 return false;
             }
-            int s = (int) (h % slots.length);
+            int s = index.slot(h);
             ((StateValue) slots[s]).copyFrom(value);
             times[s] = timeNs;
             generations[s] = generation;
-            head.lazySet(h + 1);
+            index.publish(h);
             return true;
         }
 
         @SuppressWarnings("unchecked")
         int drain() throws IOException {
-            long t = tail.get();
-            long h = head.get();
+            long t = index.consumed();
+            long h = index.published();
             for (long i = t; i < h; i++) {
-                int s = (int) (i % slots.length);
+                int s = index.slot(i);
                 long time = times[s];
                 long generation = generations[s];
                 if (ros != null) {
@@ -395,7 +445,7 @@ public final class RunRecorder {
                     jsonCodec.encode(slots[s], json);
                     writer.writeMessage(channel, generation, time, time, json.array(), 0, json.size());
                 }
-                tail.lazySet(i + 1);
+                index.consumedUpTo(i + 1);
             }
             return (int) (h - t);
         }
@@ -414,8 +464,7 @@ public final class RunRecorder {
         final long[] numbers;
         /** Records offered so far, dropped ones included (producer thread only). */
         long offered;
-        final AtomicLong head = new AtomicLong();
-        final AtomicLong tail = new AtomicLong();
+        final RingIndex index;
 
         CycleRing(int channel, int inputs, int n) {
             this.channel = channel;
@@ -427,15 +476,16 @@ public final class RunRecorder {
             skipped = new long[n];
             numbers = new long[n];
             generations = new long[n * Math.max(1, inputs)];
+            index = new RingIndex(n);
         }
 
         boolean offer(byte what, long r, long s0, long e, long skips, long[] gens) {
             long number = offered++;
-            long h = head.get();
-            if (h - tail.get() >= outcome.length) {
+            long h = index.claim();
+            if (h < 0) {
                 return false;
             }
-            int s = (int) (h % outcome.length);
+            int s = index.slot(h);
             numbers[s] = number;
             outcome[s] = what;
             release[s] = r;
@@ -445,15 +495,15 @@ public final class RunRecorder {
             for (int i = 0; i < inputs; i++) {
                 generations[s * inputs + i] = gens == null ? 0 : gens[i];
             }
-            head.lazySet(h + 1);
+            index.publish(h);
             return true;
         }
 
         int drain() throws IOException {
-            long t = tail.get();
-            long h = head.get();
+            long t = index.consumed();
+            long h = index.published();
             for (long i = t; i < h; i++) {
-                int s = (int) (i % outcome.length);
+                int s = index.slot(i);
                 cdr.begin();
                 cdr.writeInt64(release[s]);
                 cdr.writeInt64(start[s]);
@@ -467,7 +517,7 @@ public final class RunRecorder {
                     cdr.writeInt64(generations[s * inputs + k]);
                 }
                 writer.writeMessage(channel, numbers[s], end[s], end[s], cdr.buffer(), 0, cdr.size());
-                tail.lazySet(i + 1);
+                index.consumedUpTo(i + 1);
             }
             return (int) (h - t);
         }
@@ -578,8 +628,7 @@ public final class RunRecorder {
         final double[] y;
         final double[] yaw;
         final PlanarPose pose = new PlanarPose();
-        final AtomicLong head = new AtomicLong();
-        final AtomicLong tail = new AtomicLong();
+        final RingIndex index;
 
         PoseRing(int channel, Ros2Codec<?> codec, int n) {
             this.channel = channel;
@@ -588,33 +637,34 @@ public final class RunRecorder {
             x = new double[n];
             y = new double[n];
             yaw = new double[n];
+            index = new RingIndex(n);
         }
 
         synchronized boolean offer(long t, double px, double py, double pyaw) {
-            long h = head.get();
-            if (h - tail.get() >= time.length) {
+            long h = index.claim();
+            if (h < 0) {
                 return false;
             }
-            int s = (int) (h % time.length);
+            int s = index.slot(h);
             time[s] = t;
             x[s] = px;
             y[s] = py;
             yaw[s] = pyaw;
-            head.lazySet(h + 1);
+            index.publish(h);
             return true;
         }
 
         @SuppressWarnings("unchecked")
         int drain() throws IOException {
-            long t = tail.get();
-            long h = head.get();
+            long t = index.consumed();
+            long h = index.published();
             for (long i = t; i < h; i++) {
-                int s = (int) (i % time.length);
+                int s = index.slot(i);
                 pose.set(x[s], y[s], yaw[s]);
                 header.set(time[s], "map");
                 codec.encode(header, pose, cdr);
                 writer.writeMessage(channel, time[s], time[s], cdr.buffer(), 0, cdr.size());
-                tail.lazySet(i + 1);
+                index.consumedUpTo(i + 1);
             }
             return (int) (h - t);
         }
