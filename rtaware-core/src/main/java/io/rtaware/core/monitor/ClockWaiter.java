@@ -27,8 +27,15 @@ interface ClockWaiter {
      */
     void park(int party, long targetNs);
 
-    /** Party {@code party} is busy again (about to be unparked, or back from a park). */
-    void busy(int party);
+    /**
+     * Wakes party {@code party} for another thread (new work, an earlier deadline): the request is
+     * recorded before the thread is unparked, so a waiter that tracks who is idle never takes a
+     * party that is about to wake for an idle one.
+     *
+     * @param party the party to wake
+     * @param thread its thread
+     */
+    void wake(int party, Thread thread);
 
     /** Party {@code party} will not wait again (its thread is returning). */
     void done(int party);

@@ -1,23 +1,34 @@
 package io.rtaware.core.monitor;
 
 import io.rtaware.core.time.ManualClock;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicLongArray;
 import java.util.concurrent.atomic.AtomicReferenceArray;
 import java.util.concurrent.locks.LockSupport;
 
 /**
  * Waits on a {@link ManualClock}: a thread parks until the clock is advanced (every advance
- * unparks every party), so the threaded executor, with its real threads, runs on stepped time.
- * A test can then step exactly as WPILib tests its {@code TimedRobot} on paused time: advance
- * to the next moment something is due ({@link #nextWakeNs()}), wait until every thread has
- * reacted and is waiting again ({@link #awaitIdle()}), repeat. Thread-safe.
+ * wakes every party), so the threaded and pooled executors, with their real threads, run on
+ * stepped time. A test can then step exactly as WPILib tests its {@code TimedRobot} on paused
+ * time: wait until every thread is waiting for a time still ahead ({@link #awaitIdleNextWakeNs()}),
+ * advance the clock to the earliest of those times, repeat.
+ *
+ * <p>Idle is decided on one consistent view. Per party it keeps the time it waits for, the
+ * number of wake requests made for it (an advance of the clock, another thread's
+ * {@link #wake}) and the number it had seen when it announced its wait: a party whose requests
+ * outnumber what it has seen is about to wake, whatever its announced time says. Every change
+ * of that state bumps one counter, and a view is taken only if the counter did not move while
+ * it was read. A stale permit (an unpark of a thread that was running) only makes a thread wait
+ * again for the same time, which changes nothing a view depends on. Thread-safe.
  */
 final class ManualClockWaiter implements ClockWaiter {
 
     /** Slot value of a party that is running (not waiting). */
     private static final long BUSY = Long.MIN_VALUE;
-    /** Slot value of a party that will not wait again. */
-    private static final long DONE = Long.MAX_VALUE;
+    /** Slot value of a party that will not wait again; never a world time (those are not negative). */
+    private static final long DONE = Long.MIN_VALUE + 1;
+    /** What {@link #idleNextWakeNs()} says while some party is not idle. */
+    static final long NOT_IDLE = Long.MIN_VALUE;
     /** Idle step of zero-duration continuous cycles, as in the step executor. */
     private static final long ZERO_CYCLE_SPACING_NS = StepExecutor.DEFAULT_IDLE_STEP_NS;
     /** Guard against a test that waits forever for a thread that never parks (a bug). */
@@ -25,8 +36,14 @@ final class ManualClockWaiter implements ClockWaiter {
 
     private final ManualClock clock;
     private final AtomicReferenceArray<Thread> threads;
-    /** Per party: the world time it waits for, {@link #BUSY} or {@link #DONE}. */
+    /** Per party: the world time it waits for ({@link Long#MAX_VALUE}: until woken), {@link #BUSY} or {@link #DONE}. */
     private final AtomicLongArray waitingUntil;
+    /** Per party: wake requests made for it so far. */
+    private final AtomicLongArray wakeRequests;
+    /** Per party: the wake requests it had seen when it announced its current wait. */
+    private final AtomicLongArray wakesSeen;
+    /** Bumped by every change of the three arrays above: a view read while it stood still is consistent. */
+    private final AtomicLong changes = new AtomicLong();
     private final Runnable unsubscribe;
 
     /**
@@ -37,6 +54,8 @@ final class ManualClockWaiter implements ClockWaiter {
         this.clock = clock;
         this.threads = new AtomicReferenceArray<>(parties);
         this.waitingUntil = new AtomicLongArray(parties);
+        this.wakeRequests = new AtomicLongArray(parties);
+        this.wakesSeen = new AtomicLongArray(parties);
         for (int i = 0; i < parties; i++) {
             waitingUntil.set(i, BUSY);
         }
@@ -44,7 +63,7 @@ final class ManualClockWaiter implements ClockWaiter {
             for (int i = 0; i < threads.length(); i++) {
                 Thread t = threads.get(i);
                 if (t != null) {
-                    LockSupport.unpark(t);
+                    wake(i, t);
                 }
             }
         });
@@ -60,23 +79,30 @@ final class ManualClockWaiter implements ClockWaiter {
         if (clock.nanos() >= targetNs) {
             return;
         }
-        // Announced before the re-check: an advance after the check unparks this thread, and an
-        // unpark before the park makes the park return at once.
+        // Announced before the re-check: a wake requested after the announcement is seen by the
+        // re-check or unparks this thread, and an unpark before the park makes it return at once.
+        long seen = wakeRequests.get(party);
+        wakesSeen.set(party, seen);
         waitingUntil.set(party, targetNs);
-        if (clock.nanos() < targetNs) {
+        changes.incrementAndGet();
+        if (clock.nanos() < targetNs && wakeRequests.get(party) == seen) {
             LockSupport.park(this);
         }
         waitingUntil.set(party, BUSY);
+        changes.incrementAndGet();
     }
 
     @Override
-    public void busy(int party) {
-        waitingUntil.set(party, BUSY);
+    public void wake(int party, Thread thread) {
+        wakeRequests.incrementAndGet(party);
+        changes.incrementAndGet();
+        LockSupport.unpark(thread);
     }
 
     @Override
     public void done(int party) {
         waitingUntil.set(party, DONE);
+        changes.incrementAndGet();
     }
 
     @Override
@@ -90,42 +116,48 @@ final class ManualClockWaiter implements ClockWaiter {
     }
 
     /**
-     * Waits until every party is parked for a time still ahead of the clock, or done: nothing
-     * happens any more until the clock is advanced.
+     * Waits until every party waits for a time still ahead of the clock with no wake pending, or
+     * is done: nothing happens any more until the clock is advanced.
      *
+     * @return the earliest world time a party waits for ({@link Long#MAX_VALUE} if none waits for a time)
      * @throws IllegalStateException if that does not happen within 10 s of wall time
      */
-    void awaitIdle() {
+    long awaitIdleNextWakeNs() {
         long giveUpNs = System.nanoTime() + IDLE_TIMEOUT_NS;
-        while (!isIdle()) {
+        while (true) {
+            long next = idleNextWakeNs();
+            if (next != NOT_IDLE) {
+                return next;
+            }
             if (System.nanoTime() - giveUpNs > 0) {
                 throw new IllegalStateException("the executor's threads did not become idle at t=" + clock.nanos()
-                        + " ns: " + waitingUntil);
+                        + " ns: waiting until " + waitingUntil + ", wake requests " + wakeRequests
+                        + ", seen " + wakesSeen);
             }
             Thread.yield();
         }
     }
 
-    private boolean isIdle() {
+    /**
+     * One look, without waiting.
+     *
+     * @return the earliest time a party waits for, if all are idle in one consistent view; else
+     *     {@link #NOT_IDLE}
+     */
+    long idleNextWakeNs() {
+        long before = changes.get();
         long now = clock.nanos();
-        for (int i = 0; i < waitingUntil.length(); i++) {
-            long until = waitingUntil.get(i);
-            if (until == BUSY || (until != DONE && until <= now)) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    /** @return the earliest world time a party waits for ({@link Long#MAX_VALUE} if none waits) */
-    long nextWakeNs() {
         long earliest = Long.MAX_VALUE;
         for (int i = 0; i < waitingUntil.length(); i++) {
             long until = waitingUntil.get(i);
-            if (until != BUSY && until != DONE && until < earliest) {
-                earliest = until;
+            if (until == DONE) {
+                continue;
             }
+            if (until == BUSY || until <= now || wakeRequests.get(i) != wakesSeen.get(i)) {
+                return NOT_IDLE;
+            }
+            earliest = Math.min(earliest, until);
         }
-        return earliest;
+        return changes.get() == before && clock.nanos() == now ? earliest : NOT_IDLE;
     }
 }

@@ -37,8 +37,8 @@ final class ParkingClockWaiter implements ClockWaiter {
     }
 
     @Override
-    public void busy(int party) {
-        // Nothing to track.
+    public void wake(int party, Thread thread) {
+        LockSupport.unpark(thread);
     }
 
     @Override

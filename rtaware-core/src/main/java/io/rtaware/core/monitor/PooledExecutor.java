@@ -234,8 +234,7 @@ final class PooledExecutor implements Executor {
             long until = parkedUntil[w];
             if (until != NOT_PARKED && (dueNs == Long.MAX_VALUE || dueNs < until)) {
                 parkedUntil[w] = NOT_PARKED;
-                waiter.busy(firstWorkerParty + w);
-                LockSupport.unpark(workers[w]);
+                waiter.wake(firstWorkerParty + w, workers[w]);
                 return;
             }
         }
@@ -263,8 +262,7 @@ final class PooledExecutor implements Executor {
     /** As on the threaded executor: wakes the watchdog if this cycle's deadline is earlier. */
     private void wakeWatchdogFor(TaskRuntime runtime) {
         if (runtime.runningDeadlineNs() < watchdogWakeNs) {
-            waiter.busy(watchdogParty);
-            LockSupport.unpark(watchdog);
+            waiter.wake(watchdogParty, watchdog);
         }
     }
 

@@ -176,8 +176,7 @@ final class ThreadedExecutor implements Executor {
      */
     private void wakeWatchdogFor(TaskRuntime runtime) {
         if (runtime.runningDeadlineNs() < watchdogWakeNs) {
-            waiter.busy(watchdogParty);
-            LockSupport.unpark(watchdog);
+            waiter.wake(watchdogParty, watchdog);
         }
     }
 

@@ -23,8 +23,7 @@ final class SteppedThreads {
     /** Runs every release before {@code endNs}; the clock stays at the last moment something was due. */
     void runUntil(long endNs) {
         while (true) {
-            waiter.awaitIdle();
-            long next = waiter.nextWakeNs();
+            long next = waiter.awaitIdleNextWakeNs();
             if (next >= endNs) {
                 return;
             }
