@@ -29,6 +29,18 @@ final class FrameworkFaults {
         }
     }
 
+    /**
+     * A listener's fault, reported as "listener <i>class</i>.<i>event</i> on task '<i>task</i>'".
+     *
+     * @param listenerClass the listener's class name
+     * @param event the listener method that threw
+     * @param task the task whose event it was
+     * @param error what was thrown
+     */
+    void reportListenerFault(String listenerClass, String event, String task, Throwable error) {
+        report("listener " + listenerClass + "." + event + " on task '" + task + "'", error);
+    }
+
     /** @return faults so far */
     long count() {
         return count.get();
