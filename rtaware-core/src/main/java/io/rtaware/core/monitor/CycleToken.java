@@ -5,7 +5,8 @@ import java.util.concurrent.atomic.AtomicLong;
 /**
  * Which of a periodic task's cycles is running, shared by the task's thread and the watchdog so
  * that each miss is reported exactly once: whoever claims a running cycle past its deadline
- * (the watchdog at the deadline, or the task's thread when the cycle returns) reports it.
+ * (the watchdog at the deadline, or the task's thread when the cycle returns) reports it; a cycle
+ * that starts after its deadline is reported by the task's thread at its start.
  *
  * <p>One atomic long: odd {@code 2k+1} while cycle k runs; even when none runs (a claim moves
  * {@code 2k+1} to {@code 2k+2}). Thread-safe and allocation-free.
@@ -17,6 +18,15 @@ final class CycleToken {
     /** Marks cycle {@code k} running (task thread). */
     void start(long k) {
         token.set(2 * k + 1);
+    }
+
+    /**
+     * Starts cycle {@code k} whose deadline had already passed when it started (task thread): its
+     * miss is certain and the caller reports it now, so the cycle is never seen as running: the
+     * watchdog has nothing to claim and {@link #finish} returns false.
+     */
+    void startAlreadyMissed(long k) {
+        token.set(2 * k + 2);
     }
 
     /**

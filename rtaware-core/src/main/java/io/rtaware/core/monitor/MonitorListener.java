@@ -12,7 +12,8 @@ public interface MonitorListener {
 
     /**
      * A release did not finish by its deadline. Reported at the deadline while the task is still
-     * running ({@code stillRunning}), or when a late cycle returns if the watchdog had not seen it.
+     * running ({@code stillRunning}), at the start of a cycle that started after its deadline
+     * (also {@code stillRunning}), or when a late cycle returns if the watchdog had not seen it.
      *
      * @param task the task
      * @param releaseNs scheduled release

@@ -4,6 +4,7 @@ import io.rtaware.core.time.Clock;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.atomic.AtomicLongArray;
 import java.util.concurrent.atomic.AtomicReferenceArray;
 import java.util.concurrent.locks.LockSupport;
 
@@ -62,6 +63,13 @@ final class PooledExecutor implements Executor {
     private final Thread[] workers;
     /** What each worker runs now (null: nothing); the watchdog scans these. */
     private final AtomicReferenceArray<TaskRuntime> current;
+    /**
+     * Per worker: the earliest deadline among the cycles of its batch not yet ended (the running
+     * one included), {@link Long#MAX_VALUE} between batches. The watchdog sleeps until the
+     * earliest of these, so a worker starting the next cycle of its batch finds it already due
+     * to wake in time and does not wake it again: one wake per batch deadline, not one per cycle.
+     */
+    private final AtomicLongArray batchDeadlineNs;
 
     // The timer structure, guarded by the lock.
     private final Object lock = new Object();
@@ -107,6 +115,10 @@ final class PooledExecutor implements Executor {
         this.watchdogParty = firstWorkerParty + workerCount;
         this.workers = new Thread[workerCount];
         this.current = new AtomicReferenceArray<>(workerCount);
+        this.batchDeadlineNs = new AtomicLongArray(workerCount);
+        for (int w = 0; w < workerCount; w++) {
+            batchDeadlineNs.set(w, Long.MAX_VALUE);
+        }
         this.waiting = new TaskHeap(pooled.length);
         this.ready = new TaskHeap(pooled.length);
         this.parkedUntil = new long[workerCount];
@@ -180,6 +192,8 @@ final class PooledExecutor implements Executor {
             return;
         }
         int[] batch = new int[MAX_BATCH];
+        // deadlinesFrom[i]: the earliest deadline of batch[i..claimed-1] (what is left from cycle i on).
+        long[] deadlinesFrom = new long[MAX_BATCH];
         int claimed = 0;
         try {
             while (running) {
@@ -213,9 +227,16 @@ final class PooledExecutor implements Executor {
                     waiter.park(party, parkUntilNs);
                     continue;
                 }
+                long earliest = Long.MAX_VALUE;
+                for (int i = claimed - 1; i >= 0; i--) {
+                    earliest = Math.min(earliest, pooled[batch[i]].nextDeadlineNs());
+                    deadlinesFrom[i] = earliest;
+                }
                 for (int i = 0; i < claimed && running; i++) {
+                    batchDeadlineNs.setRelease(worker, deadlinesFrom[i]);
                     runCycle(worker, pooled[batch[i]]);
                 }
+                batchDeadlineNs.setRelease(worker, Long.MAX_VALUE);
             }
         } catch (VirtualMachineError fatal) {
             faults.report("pool worker " + worker + " (fatal VM error: stopping every task)", fatal);
@@ -266,7 +287,10 @@ final class PooledExecutor implements Executor {
         }
     }
 
-    /** Sleeps until the earliest deadline of a cycle running on a worker, then claims the misses. */
+    /**
+     * Sleeps until the earliest deadline of the cycles the workers run now or will run next in
+     * their batches, then claims the misses of cycles still running past their deadline.
+     */
     private void watch() {
         try {
             while (running) {
@@ -275,13 +299,16 @@ final class PooledExecutor implements Executor {
                     long now = clock.nanos();
                     for (int w = 0; w < workers.length; w++) {
                         TaskRuntime runtime = current.get(w);
-                        if (runtime == null) {
-                            continue;
+                        if (runtime != null) {
+                            runtime.checkDeadline(now);
+                            long deadline = runtime.runningDeadlineNs();
+                            if (deadline > now && deadline < earliest) {
+                                earliest = deadline;
+                            }
                         }
-                        runtime.checkDeadline(now);
-                        long deadline = runtime.runningDeadlineNs();
-                        if (deadline > now && deadline < earliest) {
-                            earliest = deadline;
+                        long batchDeadline = batchDeadlineNs.getAcquire(w);
+                        if (batchDeadline > now && batchDeadline < earliest) {
+                            earliest = batchDeadline;
                         }
                     }
                 } catch (Throwable fault) {

@@ -308,9 +308,19 @@ final class TaskRuntime implements TaskInfo {
         statistics.released(Math.max(0, cycleStartNs - releaseNs));
         boolean periodic = release == Release.PERIODIC;
         if (periodic) {
-            token.start(k);
-            if (cycleStarted != null) {
-                cycleStarted.run();
+            long deadline = deadlineOf(k);
+            if (cycleStartNs > deadline) {
+                // Started after its deadline (it waited for a thread or a worker): the miss is
+                // certain and reported now, as the watchdog would at its next look; nothing for
+                // the watchdog to watch, so it is not woken (a backlog would wake it every cycle).
+                token.startAlreadyMissed(k);
+                statistics.missed();
+                events.onDeadlineMiss(this, releaseNs, deadline, cycleStartNs, true);
+            } else {
+                token.start(k);
+                if (cycleStarted != null) {
+                    cycleStarted.run();
+                }
             }
         }
 
