@@ -47,15 +47,6 @@ final class PooledExecutor implements Executor {
      * ready heap; a later release with an earlier deadline waits for at most this many cycles.
      */
     static final int MAX_BATCH = 32;
-    /**
-     * Due releases moved from the waiting heap to the ready heap per lock hold before a worker
-     * claims: 10 000 releases due at one instant took one worker about 2 ms to move in one hold,
-     * with the other worker blocked on the lock. More are moved only while the ready heap's first
-     * release cannot yet be proven to come first (see {@link #readyFirstIsNext(long)}).
-     */
-    static final int MOVE_CHUNK = 256;
-    /** {@link #orderBoundNs} when the order of unmoved releases cannot be bounded: move them all. */
-    private static final long NO_BOUND = -1;
 
     private final Clock clock;
     private final ClockWaiter waiter;
@@ -88,14 +79,6 @@ final class PooledExecutor implements Executor {
     private final long[] parkedUntil;
     private static final long NOT_PARKED = Long.MIN_VALUE;
 
-    /**
-     * What no due release still in the waiting heap can beat, so that the ready heap's first may
-     * be claimed before every due release is moved: earliest deadline first, the shortest
-     * relative deadline of the pooled tasks (a release at {@code r} or later has its deadline at
-     * {@code r + orderBoundNs} or later); rate-monotonic, the shortest period. {@link #NO_BOUND}
-     * if a pooled task's deadline or period can change (adaptive periods). Set at start.
-     */
-    private long orderBoundNs = NO_BOUND;
     private volatile boolean running;
     private Thread watchdog;
     private volatile long watchdogWakeNs = Long.MAX_VALUE;
@@ -188,7 +171,6 @@ final class PooledExecutor implements Executor {
         }
         long startNs = dedicated != null ? dedicated.start() : clock.nanos();
         synchronized (lock) {
-            orderBoundNs = orderBound();
             for (int slot = 0; slot < pooled.length; slot++) {
                 TaskRuntime runtime = pooled[slot];
                 runtime.onCycleStart(() -> wakeWatchdogFor(runtime));
@@ -225,17 +207,13 @@ final class PooledExecutor implements Executor {
                     }
                     claimed = 0;
                     long now = clock.nanos();
-                    int moved = 0;
-                    while (moved < MOVE_CHUNK && moveDue(now)) {
-                        moved++;
+                    while (waiting.size() > 0 && waiting.peekKey() <= now) {
+                        int due = waiting.pop();
+                        ready.push(due, readyKey(pooled[due]));
                     }
                     int share = Math.min(MAX_BATCH, Math.max(1, ready.size() / workers.length));
-                    while (claimed < share) {
-                        if (readyFirstIsNext(now)) {
-                            batch[claimed++] = ready.pop();
-                        } else if (!moveDue(now)) {
-                            break; // nothing ready and nothing due
-                        }
+                    while (claimed < share && ready.size() > 0) {
+                        batch[claimed++] = ready.pop();
                     }
                     if (claimed > 0) {
                         parkedUntil[worker] = NOT_PARKED;
@@ -266,51 +244,6 @@ final class PooledExecutor implements Executor {
         } finally {
             waiter.done(party);
         }
-    }
-
-    /** Moves the earliest due release from waiting to ready; false if none is due. Holding the lock. */
-    private boolean moveDue(long nowNs) {
-        if (waiting.size() == 0 || waiting.peekKey() > nowNs) {
-            return false;
-        }
-        int due = waiting.pop();
-        ready.push(due, readyKey(pooled[due]));
-        return true;
-    }
-
-    /**
-     * Whether the ready heap's first release is the one to run next among all due releases, the
-     * ones not yet moved from the waiting heap included: there are none, or none can come first
-     * (see {@link #orderBoundNs}). Ties between equal keys may then go to a ready release over an
-     * unmoved one with a lower slot. Holding the lock.
-     */
-    private boolean readyFirstIsNext(long nowNs) {
-        if (ready.size() == 0) {
-            return false;
-        }
-        if (waiting.size() == 0 || waiting.peekKey() > nowNs) {
-            return true;
-        }
-        if (orderBoundNs == NO_BOUND) {
-            return false;
-        }
-        return order == ExecutorKind.PoolOrder.RATE_MONOTONIC
-                ? ready.peekKey() <= orderBoundNs
-                : ready.peekKey() <= waiting.peekKey() + orderBoundNs;
-    }
-
-    /** @return {@link #orderBoundNs} for the pooled tasks as they are now */
-    private long orderBound() {
-        long bound = Long.MAX_VALUE;
-        for (TaskRuntime runtime : pooled) {
-            long value = order == ExecutorKind.PoolOrder.RATE_MONOTONIC ? runtime.fixedPeriodNs()
-                    : runtime.fixedDeadlineNs();
-            if (value < 0) {
-                return NO_BOUND;
-            }
-            bound = Math.min(bound, value);
-        }
-        return bound;
     }
 
     /**

@@ -65,40 +65,6 @@ class PooledExecutorTest {
     }
 
     @Test
-    void moreDueReleasesThanOneMoveChunkStillRunEarliestDeadlineFirst() {
-        // 300 releases due at 0 ms, more than one chunk moves from the waiting heap at once; the
-        // one with the 2 ms deadline is registered last and must still run first, and the rest in
-        // slot order.
-        int filler = PooledExecutor.MOVE_CHUNK + 43;
-        Monitor.Builder builder = Monitor.builder(clock);
-        for (int i = 0; i < filler; i++) {
-            builder.task("t" + i, periodic(20, 20), recording("t" + i));
-        }
-        builder.task("urgent", periodic(20, 2), recording("urgent"));
-        run(ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST, 1, 10, builder);
-
-        assertEquals(filler + 1, starts.size());
-        assertEquals("urgent@0", starts.get(0), "the earliest deadline first, although moved last");
-        for (int i = 0; i < filler; i++) {
-            assertEquals("t" + i + "@0", starts.get(i + 1), "equal deadlines in registration order");
-        }
-    }
-
-    @Test
-    void rateMonotonicAlsoHoldsAcrossMoveChunks() {
-        int filler = PooledExecutor.MOVE_CHUNK + 43;
-        Monitor.Builder builder = Monitor.builder(clock);
-        for (int i = 0; i < filler; i++) {
-            builder.task("t" + i, periodic(20, 20), recording("t" + i));
-        }
-        builder.task("frequent", periodic(10, 10), recording("frequent"));
-        run(ExecutorKind.PoolOrder.RATE_MONOTONIC, 1, 5, builder);
-
-        assertEquals("frequent@0", starts.get(0), "the shortest period first, although moved last");
-        assertEquals(filler + 1, starts.size());
-    }
-
-    @Test
     void aReleaseWaitingForTheOnlyWorkerIsLateByTheCycleBeforeIt() {
         Monitor.Builder builder = Monitor.builder(clock)
                 .task("busy", periodic(10, 10), FnTask.of(now -> clock.advance(ms(3))))
