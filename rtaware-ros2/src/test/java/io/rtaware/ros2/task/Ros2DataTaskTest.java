@@ -1,12 +1,14 @@
 package io.rtaware.ros2.task;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
-import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import io.rtaware.core.data.Key;
+import io.rtaware.core.testing.TaskHarness;
 import io.rtaware.robot.msg.LaserScan;
 import io.rtaware.robot.msg.Odometry;
 import io.rtaware.robot.msg.RobotKeys;
@@ -43,11 +45,17 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
-/** The ROS 2 data task against a robot made of another Zenoh session on loopback. */
+/**
+ * The ROS 2 data task against a robot made of another Zenoh session on loopback, driven through
+ * the {@link TaskHarness}: its real input and output handles, one cycle at a time on a manual
+ * clock, the controller's motor commands committed as a scripted input.
+ */
 @Timeout(60)
 class Ros2DataTaskTest {
 
     private static final int MAX_MESSAGE_BYTES = 20_000;
+    /** World time between two cycles of the data task. */
+    private static final long CYCLE_NS = 20_000_000L;
 
     private Ros2Context robot;
     private Ros2Node robotNode;
@@ -55,7 +63,7 @@ class Ros2DataTaskTest {
     private Ros2Publisher odomPub;
     private ZenohMailbox cmdVel;
     private Ros2DataTask task;
-    private FakeSetup setup;
+    private TaskHarness harness;
     private final CdrWriter writer = new CdrWriter(64 * 1024);
     private final Ros2Header header = new Ros2Header();
     private final LaserScan scan = new LaserScan();
@@ -78,8 +86,7 @@ class Ros2DataTaskTest {
         Ros2Context controller = Ros2Context.open(ZenohConfig.loopbackPeer().withConnect(List.of(endpoint)), 0);
         task = new Ros2DataTask(controller, new Ros2Topics(0, "/robot1", "scan", "odom", "cmd_vel"), 20, 500,
                 MAX_MESSAGE_BYTES);
-        setup = new FakeSetup();
-        task.initialize(setup);
+        harness = TaskHarness.builder().input(RobotKeys.MOTOR).task("ros2", task).build();
         scan.setCount(5);
         scan.minAngleRad = -1;
         scan.maxAngleRad = 1;
@@ -95,16 +102,38 @@ class Ros2DataTaskTest {
 
     @AfterEach
     void close() throws Exception {
-        if (task != null) {
-            task.terminate();
+        if (harness != null) {
+            harness.stop();
         }
         if (robot != null) {
             robot.close();
         }
     }
 
-    private int published(String key) {
-        return setup.outputs.get(key).published;
+    /** @return how many values the data task has committed to the key */
+    private long published(Key<?> key) {
+        return harness.generation(key);
+    }
+
+    /** Runs one cycle of the data task {@link #CYCLE_NS} of world time after the previous one; it must not throw. */
+    private void cycle() {
+        Throwable thrown = cycleThrowing();
+        if (thrown != null) {
+            throw new AssertionError("the data task's cycle threw", thrown);
+        }
+    }
+
+    /** @return what one cycle of the data task, {@link #CYCLE_NS} after the previous one, threw (null if nothing) */
+    private Throwable cycleThrowing() {
+        nowNs += CYCLE_NS;
+        return harness.cycle("ros2", nowNs);
+    }
+
+    /** Commits a motor command now, as the controller's mediator would; the next cycle sends it. */
+    private void command(double vxMps, double omegaRadPerSec) {
+        VelocityCommand command = new VelocityCommand();
+        command.set(vxMps, omegaRadPerSec);
+        harness.publish(RobotKeys.MOTOR, command, nowNs);
     }
 
     private void publishScan(long stampNs) throws Exception {
@@ -122,8 +151,7 @@ class Ros2DataTaskTest {
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
         while (!done.getAsBoolean()) {
             assertTrue(System.nanoTime() < deadline, "timed out waiting for " + what + "; " + task.stats());
-            nowNs += 20_000_000L;
-            task.execute(nowNs);
+            cycle();
         }
     }
 
@@ -137,8 +165,7 @@ class Ros2DataTaskTest {
         while (!done.getAsBoolean()) {
             assertTrue(System.nanoTime() < deadline, "timed out waiting for " + what + "; " + task.stats());
             publishOdom(stampNs);
-            nowNs += 20_000_000L;
-            task.execute(nowNs);
+            cycle();
         }
     }
 
@@ -146,24 +173,23 @@ class Ros2DataTaskTest {
     private void firstScan() throws Exception {
         long stamp = 1_000_000_000L;
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (published("laser") == 0) {
+        while (published(RobotKeys.LASER) == 0) {
             assertTrue(System.nanoTime() < deadline, "no scan arrived; " + task.stats());
             publishScan(stamp);
             stamp += 1_000_000;
-            nowNs += 20_000_000L;
-            task.execute(nowNs);
+            cycle();
         }
     }
 
     @Test
     void scansAndOdometryAreCommittedToTheSameKeysAsPlayers() throws Exception {
         firstScan();
-        LaserScan got = (LaserScan) setup.outputs.get("laser").value;
+        LaserScan got = harness.read(RobotKeys.LASER);
         assertEquals(5, got.count());
         assertEquals(2.0f, got.rangesM[2]);
         assertEquals(4.0, got.maxRangeM, 1e-6);
-        publishOdomUntil(2_000_000_000L, () -> published("odometry") >= 1, "odometry");
-        Odometry o = (Odometry) setup.outputs.get(RobotKeys.ODOMETRY.name()).value;
+        publishOdomUntil(2_000_000_000L, () -> published(RobotKeys.ODOMETRY) >= 1, "odometry");
+        Odometry o = harness.read(RobotKeys.ODOMETRY);
         assertEquals(1.5, o.xM, 1e-9);
         assertEquals(0.25, o.yawRad, 1e-9);
         assertEquals(2.0, o.serverTimeS, 1e-9);
@@ -173,18 +199,17 @@ class Ros2DataTaskTest {
     @Test
     void infiniteBeamsMeanWhatRep117SaysAndNanStillRejectsTheScan() throws Exception {
         firstScan();
-        int before = published("laser");
+        long before = published(RobotKeys.LASER);
         scan.rangesM[1] = Float.POSITIVE_INFINITY; // no return within range
         scan.rangesM[3] = Float.NEGATIVE_INFINITY; // too close to measure
         long stamp = 3_000_000_000L;
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (published("laser") == before) {
+        while (published(RobotKeys.LASER) == before) {
             assertTrue(System.nanoTime() < deadline, "the scan with infinite beams was not committed; " + task.stats());
             publishScan(stamp++);
-            nowNs += 20_000_000L;
-            task.execute(nowNs);
+            cycle();
         }
-        LaserScan got = (LaserScan) setup.outputs.get("laser").value;
+        LaserScan got = harness.read(RobotKeys.LASER);
         assertEquals(4.0f, got.rangesM[1], "+Inf is a free beam to the maximum range");
         assertEquals(0.0f, got.rangesM[3], "-Inf is an obstacle nearer than the sensor measures");
         assertEquals(2.0f, got.rangesM[2]);
@@ -195,16 +220,15 @@ class Ros2DataTaskTest {
         while (task.stats().scanRejected() == 0) {
             assertTrue(System.nanoTime() < deadline, "the scan with a NaN beam was not rejected; " + task.stats());
             publishScan(stamp++);
-            nowNs += 20_000_000L;
-            task.execute(nowNs);
+            cycle();
         }
-        assertEquals(2.0f, got.rangesM[2], "the committed scan is still the last good one");
+        assertEquals(2.0f, harness.read(RobotKeys.LASER).rangesM[2], "the committed scan is still the last good one");
     }
 
     @Test
     void garbageIsCountedAndDroppedAndTheTaskGoesOn() throws Exception {
         firstScan();
-        int scansBefore = published("laser");
+        long scansBefore = published(RobotKeys.LASER);
         String scanKey = Ros2Names.topicKey(0, "/robot1/scan", Ros2Types.LASER_SCAN.ddsTypeName(),
                 Ros2Types.LASER_SCAN.typeHash());
         ZenohPublisher raw = robot.session().declarePublisher(scanKey);
@@ -220,22 +244,18 @@ class Ros2DataTaskTest {
         executeUntil(() -> task.stats().malformed() == 3 && task.stats().oversized() == 1, "the garbage to be counted");
         odom.xM = Double.NaN;
         publishOdomUntil(6_000_000_000L, () -> task.stats().odomRejected() >= 1, "the implausible odometry to be counted");
-        assertEquals(scansBefore, published("laser"), "no garbage committed");
-        assertEquals(0, published("odometry"), "an implausible odometry is not committed");
+        assertEquals(scansBefore, published(RobotKeys.LASER), "no garbage committed");
+        assertEquals(0, published(RobotKeys.ODOMETRY), "an implausible odometry is not committed");
         odom.xM = 1;
-        publishOdomUntil(7_000_000_000L, () -> published("odometry") >= 1, "a good odometry after the garbage");
+        publishOdomUntil(7_000_000_000L, () -> published(RobotKeys.ODOMETRY) >= 1, "a good odometry after the garbage");
         raw.close();
     }
 
     @Test
     void motorCommandsArePublishedAsTwistAndTerminateStopsTheRobot() throws Exception {
         firstScan();
-        @SuppressWarnings("unchecked")
-        FakeSetup.FakeInput<VelocityCommand> motor =
-                (FakeSetup.FakeInput<VelocityCommand>) setup.inputs.get(RobotKeys.MOTOR.name());
-        motor.value.set(0.2, -0.1);
-        motor.generation = 1;
-        task.execute(nowNs += 20_000_000L);
+        command(0.2, -0.1);
+        cycle();
         SampleBuffer sample = new SampleBuffer(1024, 64);
         sample.attachment().order(ByteOrder.LITTLE_ENDIAN);
         VelocityCommand twist = takeTwist(sample);
@@ -253,8 +273,8 @@ class Ros2DataTaskTest {
                 + "geometry_msgs::msg::dds_::Twist_/RIHS01_9c45bf16") && t.endsWith("/::,10:,:,:,,")),
                 "cmd_vel publisher token in " + tokens);
 
-        task.terminate();
-        task = null;
+        harness.stop();
+        harness = null;
         VelocityCommand stop = takeTwist(sample);
         assertTrue(stop.isStop(), "a zero Twist before the session closed");
     }
@@ -272,18 +292,10 @@ class Ros2DataTaskTest {
         return v;
     }
 
-    private static final long CYCLE_NS = 20_000_000L;
-
-    @SuppressWarnings("unchecked")
-    private FakeSetup.FakeInput<VelocityCommand> motor() {
-        return (FakeSetup.FakeInput<VelocityCommand>) setup.inputs.get(RobotKeys.MOTOR.name());
-    }
-
     /** Commands a drive and returns the Twist the robot received for it. */
     private VelocityCommand drive(SampleBuffer sample) throws Exception {
-        motor().value.set(0.2, 0.1);
-        motor().generation++;
-        task.execute(nowNs += CYCLE_NS);
+        command(0.2, 0.1);
+        cycle();
         return takeTwist(sample);
     }
 
@@ -324,7 +336,7 @@ class Ros2DataTaskTest {
         while ((scanTopic ? task.stats().scanRejected() : task.stats().odomRejected()) == before) {
             assertTrue(System.nanoTime() < deadline, "no rejection; " + task.stats());
             publish.next();
-            task.execute(nowNs += CYCLE_NS);
+            cycle();
         }
         return nowNs;
     }
@@ -341,11 +353,11 @@ class Ros2DataTaskTest {
     private ImpossibleDataException cyclesUntilHalted(long streakStartNs, Publish publish) throws Exception {
         while (nowNs + CYCLE_NS < streakStartNs + Ros2DataTask.IMPOSSIBLE_DATA_FAULT_AFTER_NS) {
             publish.next();
-            task.execute(nowNs += CYCLE_NS);
+            cycle();
             assertNull(task.fault(), "no halt before a second of world time of rejections");
         }
         publish.next();
-        ImpossibleDataException e = assertThrows(ImpossibleDataException.class, () -> task.execute(nowNs += CYCLE_NS));
+        ImpossibleDataException e = assertInstanceOf(ImpossibleDataException.class, cycleThrowing());
         assertEquals(streakStartNs + Ros2DataTask.IMPOSSIBLE_DATA_FAULT_AFTER_NS, nowNs,
                 "halted exactly a second of world time after the first rejected sample");
         assertEquals(task.fault(), e.getMessage());
@@ -357,12 +369,11 @@ class Ros2DataTaskTest {
      * the robot receives exactly the three zero Twists of the keep-alive, nothing else.
      */
     private void onlyZeroVelocitiesFromNowOn(SampleBuffer sample) throws Exception {
-        motor().value.set(0.3, -0.2);
-        motor().generation++;
+        command(0.3, -0.2);
         long until = nowNs + 3 * 500_000_000L;
         List<VelocityCommand> afterHalt = new ArrayList<>();
         while (nowNs < until) {
-            task.execute(nowNs += CYCLE_NS);
+            cycle();
             afterHalt.addAll(receivedTwists(sample));
         }
         while (afterHalt.size() < 3) { // the last ones may still be in flight
@@ -384,7 +395,7 @@ class Ros2DataTaskTest {
         long[] stampNs = {20_000_000_000L};
         Publish nanScan = () -> publishScan(stampNs[0] += CYCLE_NS);
         long streakStartNs = cyclesUntilRejected(true, nanScan);
-        int committed = published("laser");
+        long committed = published(RobotKeys.LASER);
 
         ImpossibleDataException e = cyclesUntilHalted(streakStartNs, nanScan);
         assertTrue(e.getMessage().startsWith("ROS 2 topic /robot1/scan sent only impossible samples for 1.0 s of world "
@@ -393,7 +404,7 @@ class Ros2DataTaskTest {
         assertTrue(e.getMessage().endsWith("robot halted"), e.getMessage());
         assertTrue(lastTwistAfterDriving(sample).isStop(), "a zero Twist in the cycle that halted");
         onlyZeroVelocitiesFromNowOn(sample);
-        assertEquals(committed, published("laser"), "no impossible scan committed");
+        assertEquals(committed, published(RobotKeys.LASER), "no impossible scan committed");
         assertTrue(task.stats().scanRejected() >= 2, task.stats().toString());
         assertEquals(0, task.stats().odomRejected());
     }
@@ -403,8 +414,8 @@ class Ros2DataTaskTest {
         firstScan();
         SampleBuffer sample = new SampleBuffer(1024, 64);
         drive(sample);
-        publishOdomUntil(2_000_000_000L, () -> published("odometry") >= 1, "a true pose");
-        int truePoses = published("odometry");
+        publishOdomUntil(2_000_000_000L, () -> published(RobotKeys.ODOMETRY) >= 1, "a true pose");
+        long truePoses = published(RobotKeys.ODOMETRY);
         odom.xM = Double.NaN;
         long[] stampNs = {3_000_000_000L};
         Publish nanPose = () -> publishOdom(stampNs[0] += CYCLE_NS);
@@ -416,26 +427,26 @@ class Ros2DataTaskTest {
         assertTrue(e.getMessage().contains("x = NaN"), e.getMessage());
         assertTrue(lastTwistAfterDriving(sample).isStop(), "a zero Twist in the cycle that halted");
         onlyZeroVelocitiesFromNowOn(sample);
-        assertEquals(truePoses, published("odometry"), "only the true poses were committed");
+        assertEquals(truePoses, published(RobotKeys.ODOMETRY), "only the true poses were committed");
         assertEquals(0, task.stats().scanRejected());
     }
 
     @Test
     void aTrueSampleBetweenImpossibleOnesStartsTheSecondAgain() throws Exception {
         firstScan();
-        publishOdomUntil(2_000_000_000L, () -> published("odometry") >= 1, "a true pose");
+        publishOdomUntil(2_000_000_000L, () -> published(RobotKeys.ODOMETRY) >= 1, "a true pose");
         long[] stampNs = {3_000_000_000L};
         odom.xM = Double.NaN;
         Publish nanPose = () -> publishOdom(stampNs[0] += CYCLE_NS);
         long firstStreakNs = cyclesUntilRejected(false, nanPose);
         while (nowNs < firstStreakNs + 800_000_000L) {
             nanPose.next();
-            task.execute(nowNs += CYCLE_NS);
+            cycle();
         }
         odom.xM = 1.5;
-        int before = published("odometry");
+        long before = published(RobotKeys.ODOMETRY);
         publishOdom(stampNs[0] += CYCLE_NS); // the route exists: the impossible poses arrived on it
-        executeUntil(() -> published("odometry") > before, "the true pose between the impossible ones");
+        executeUntil(() -> published(RobotKeys.ODOMETRY) > before, "the true pose between the impossible ones");
         odom.xM = Double.NaN;
         long secondStreakNs = cyclesUntilRejected(false, nanPose);
         assertTrue(secondStreakNs > firstStreakNs + 800_000_000L, "a new streak");
@@ -460,12 +471,11 @@ class Ros2DataTaskTest {
             for (int i = 0; i < 200; i++) {
                 scanCodec.encode(header.set(stampNs += 1_000_000, "laser"), scan, writer);
                 scanPub.publish(writer.buffer(), writer.size(), 1);
-                nowNs += 20_000_000L;
-                task.execute(nowNs);
+                cycle();
             }
             allocated = Math.min(allocated, threads.getThreadAllocatedBytes(id) - before);
         }
         assertEquals(0, allocated, "bytes allocated by 200 publishes and cycles; " + task.stats());
-        assertTrue(published("laser") > 100, "scans committed: " + published("laser"));
+        assertTrue(published(RobotKeys.LASER) > 100, "scans committed: " + published(RobotKeys.LASER));
     }
 }
