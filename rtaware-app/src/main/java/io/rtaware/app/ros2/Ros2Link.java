@@ -86,29 +86,37 @@ public final class Ros2Link implements AutoCloseable {
     public String summary() {
         Ros2Stats s = task.stats();
         Histogram latency = task.latencySnapshot();
-        long samples = s.scans() + s.odometry();
         return String.format(Locale.ROOT,
                 "ros2: %d scans, %d odometry, %d commands; dropped %d (malformed %d, oversized %d, implausible %d, "
                         + "behind %d); scan source-to-commit latency p50 %.2f ms p99 %.2f ms; data task CPU %.1f us/sample",
                 s.scans(), s.odometry(), s.commands(), s.dropped(), s.malformed(), s.oversized(), s.rejected(),
-                s.overflowed(), latency.getValueAtPercentile(50) / 1e6, latency.getValueAtPercentile(99) / 1e6,
-                samples == 0 ? 0.0 : task.cpuNs() / (double) samples / TimeUnit.MICROSECONDS.toNanos(1));
+                s.overflowed(), latencyMs(latency, 50), latencyMs(latency, 99), cpuUsPerSample(s));
     }
 
     /** @return the {@code ros2} section of the run's report */
     public Ros2Section section() {
         Ros2Stats s = task.stats();
         Histogram latency = task.latencySnapshot();
-        long samples = s.scans() + s.odometry();
         Map<String, Long> rejected = new LinkedHashMap<>();
         rejected.put(task.topics().qualifiedScan(), s.scanRejected());
         rejected.put(task.topics().qualifiedOdom(), s.odomRejected());
         Map<String, Double> latencyMs = new LinkedHashMap<>();
-        latencyMs.put("p50", Rounding.toDecimals(latency.getValueAtPercentile(50) / 1e6, 3));
-        latencyMs.put("p99", Rounding.toDecimals(latency.getValueAtPercentile(99) / 1e6, 3));
-        double cpuUs = samples == 0 ? 0.0 : task.cpuNs() / (double) samples / TimeUnit.MICROSECONDS.toNanos(1);
+        latencyMs.put("p50", Rounding.toDecimals(latencyMs(latency, 50), 3));
+        latencyMs.put("p99", Rounding.toDecimals(latencyMs(latency, 99), 3));
         return new Ros2Section(describe(), s.scans(), s.odometry(), s.commands(), rejected, s.malformed(),
-                s.oversized(), s.overflowed(), s.lastProblem(), task.fault(), latencyMs, Rounding.toDecimals(cpuUs, 2));
+                s.oversized(), s.overflowed(), s.lastProblem(), task.fault(), latencyMs,
+                Rounding.toDecimals(cpuUsPerSample(s), 2));
+    }
+
+    /** @return a percentile of the scan source-to-commit latency, milliseconds */
+    private static double latencyMs(Histogram latencyNs, double percentile) {
+        return latencyNs.getValueAtPercentile(percentile) / 1e6;
+    }
+
+    /** @return the data task's thread CPU time per scan or odometry sample received, microseconds */
+    private double cpuUsPerSample(Ros2Stats s) {
+        long samples = s.scans() + s.odometry();
+        return samples == 0 ? 0.0 : task.cpuNs() / (double) samples / TimeUnit.MICROSECONDS.toNanos(1);
     }
 
     /** @return the data task */
