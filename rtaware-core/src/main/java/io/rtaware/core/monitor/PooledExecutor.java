@@ -79,6 +79,14 @@ final class PooledExecutor implements Executor {
     private final long[] parkedUntil;
     private static final long NOT_PARKED = Long.MIN_VALUE;
 
+    /**
+     * True when the waiting heap's order is already the order to run due releases in: earliest
+     * deadline first, and every pooled task has the same fixed relative deadline, so release
+     * order is deadline order (ties by slot in both). Workers then take due releases straight
+     * from the waiting heap: no move to the ready heap, half the heap operations per release.
+     * Set at start, under the lock.
+     */
+    private boolean releaseOrderIsRunOrder;
     private volatile boolean running;
     private Thread watchdog;
     private volatile long watchdogWakeNs = Long.MAX_VALUE;
@@ -171,6 +179,7 @@ final class PooledExecutor implements Executor {
         }
         long startNs = dedicated != null ? dedicated.start() : clock.nanos();
         synchronized (lock) {
+            releaseOrderIsRunOrder = order == ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST && oneFixedDeadline();
             for (int slot = 0; slot < pooled.length; slot++) {
                 TaskRuntime runtime = pooled[slot];
                 runtime.onCycleStart(() -> wakeWatchdogFor(runtime));
@@ -207,13 +216,22 @@ final class PooledExecutor implements Executor {
                     }
                     claimed = 0;
                     long now = clock.nanos();
-                    while (waiting.size() > 0 && waiting.peekKey() <= now) {
-                        int due = waiting.pop();
-                        ready.push(due, readyKey(pooled[due]));
-                    }
-                    int share = Math.min(MAX_BATCH, Math.max(1, ready.size() / workers.length));
-                    while (claimed < share && ready.size() > 0) {
-                        batch[claimed++] = ready.pop();
+                    if (releaseOrderIsRunOrder) {
+                        // How many are due is not known without popping: take one if another
+                        // worker is parked (it is woken for the rest), else up to a batch.
+                        int share = anotherWorkerParked(worker) ? 1 : MAX_BATCH;
+                        while (claimed < share && waiting.size() > 0 && waiting.peekKey() <= now) {
+                            batch[claimed++] = waiting.pop();
+                        }
+                    } else {
+                        while (waiting.size() > 0 && waiting.peekKey() <= now) {
+                            int due = waiting.pop();
+                            ready.push(due, readyKey(pooled[due]));
+                        }
+                        int share = Math.min(MAX_BATCH, Math.max(1, ready.size() / workers.length));
+                        while (claimed < share && ready.size() > 0) {
+                            batch[claimed++] = ready.pop();
+                        }
                     }
                     if (claimed > 0) {
                         parkedUntil[worker] = NOT_PARKED;
@@ -244,6 +262,27 @@ final class PooledExecutor implements Executor {
         } finally {
             waiter.done(party);
         }
+    }
+
+    /** @return whether every pooled task has the same relative deadline, which never changes */
+    private boolean oneFixedDeadline() {
+        long deadline = pooled.length == 0 ? -1 : pooled[0].fixedDeadlineNs();
+        for (TaskRuntime runtime : pooled) {
+            if (deadline < 0 || runtime.fixedDeadlineNs() != deadline) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** @return whether a worker other than {@code worker} is parked; holding the lock */
+    private boolean anotherWorkerParked(int worker) {
+        for (int w = 0; w < parkedUntil.length; w++) {
+            if (w != worker && parkedUntil[w] != NOT_PARKED) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**

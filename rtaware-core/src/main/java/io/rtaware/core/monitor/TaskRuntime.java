@@ -262,6 +262,14 @@ final class TaskRuntime implements TaskInfo {
         return release == Release.PERIODIC ? grid.deadlineOf(k) : Long.MAX_VALUE;
     }
 
+    /**
+     * @return the relative deadline, if periodic and it can never change (no adaptive period);
+     *     else -1
+     */
+    long fixedDeadlineNs() {
+        return release == Release.PERIODIC && adaptive == null ? grid.deadlineNs() : -1;
+    }
+
     /** @return the current period in world nanoseconds (0 unless periodic) */
     long periodNs() {
         return grid.periodNs();

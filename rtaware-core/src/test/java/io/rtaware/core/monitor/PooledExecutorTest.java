@@ -65,6 +65,29 @@ class PooledExecutorTest {
     }
 
     @Test
+    void withOneDeadlineForAllTasksDueReleasesRunInReleaseOrderWhichIsDeadlineOrder() {
+        // Every task has a 5 ms deadline, so the worker takes due releases straight from the
+        // waiting heap. 'hog' holds the only worker from 0 to 3 ms; 'b' (released at 2 ms,
+        // deadline 7) and 'a' (released at 1 ms, deadline 6) are then both due: 'a' first,
+        // although 'b' was registered first.
+        Monitor.Builder builder = Monitor.builder(clock)
+                .task("hog", periodic(10, 5), FnTask.of(now -> {
+                    if (now == 0) {
+                        clock.advance(ms(3));
+                    }
+                }))
+                .task("b", Schedule.periodic(Duration.ofMillis(10), Duration.ofMillis(2), Duration.ofMillis(5)),
+                        recording("b"))
+                .task("a", Schedule.periodic(Duration.ofMillis(10), Duration.ofMillis(1), Duration.ofMillis(5)),
+                        recording("a"));
+        Report report = run(ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST, 1, 9, builder);
+
+        assertEquals(List.of("a@3", "b@3"), starts, "earliest deadline first among the due releases");
+        assertEquals(0, report.task("a").misses() + report.task("b").misses(), "both start before their deadlines");
+        assertEquals(2000.0, report.task("a").latenessUs().max(), "'a' waited 2 ms for the worker");
+    }
+
+    @Test
     void aReleaseWaitingForTheOnlyWorkerIsLateByTheCycleBeforeIt() {
         Monitor.Builder builder = Monitor.builder(clock)
                 .task("busy", periodic(10, 10), FnTask.of(now -> clock.advance(ms(3))))
