@@ -30,6 +30,26 @@ class CycleStatisticsTest {
     }
 
     @Test
+    void executionTimesRecordedInBatchesReportEveryCycleWhateverTheCount() {
+        for (int cycles : new int[] {1, CycleStatistics.EXEC_RECORD_BATCH - 1, CycleStatistics.EXEC_RECORD_BATCH,
+                3 * CycleStatistics.RECENT_EXEC_CYCLES + 7}) {
+            CycleStatistics statistics = new CycleStatistics();
+            Histogram reference = new Histogram(1, 3_600_000_000_000L, 2);
+            long maxNs = 0;
+            double sumNs = 0;
+            for (int i = 0; i < cycles; i++) {
+                long ns = 1_000 + 37L * i * i;
+                statistics.cycleEnded(ns);
+                reference.recordValue(ns);
+                maxNs = Math.max(maxNs, ns);
+                sumNs += ns;
+            }
+            assertEquals(Percentiles.ofNanos(reference, maxNs, sumNs), statistics.execUs(),
+                    cycles + " cycles: the ones still waiting in the ring are recorded before the report");
+        }
+    }
+
+    @Test
     void aValueBeyondTheRangeKeepsItsExactMaximumAndReadsAsItInTheTopBucket() {
         CycleStatistics statistics = new CycleStatistics();
         long tenMinutesNs = 600_000_000_000L;
