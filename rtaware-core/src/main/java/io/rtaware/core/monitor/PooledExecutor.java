@@ -20,14 +20,18 @@ import java.util.concurrent.locks.LockSupport;
  * the tasks it has just run (keyed by the release each {@link TaskRuntime} decided), moves every
  * due release to ready, takes its share of the first ready tasks (at most {@link #MAX_BATCH}),
  * wakes a parked worker if work is left, and runs them outside the lock; with nothing ready it
- * parks with its {@link ClockWaiter} until the earliest waiting release. The lock is the
+ * parks with its {@link ClockWaiter} until the earliest waiting release. Under earliest deadline
+ * first with one fixed relative deadline for every pooled task, release order is deadline order
+ * and workers take due releases straight from the waiting heap (see
+ * {@link #releaseOrderIsRunOrder}). The lock is the
  * happens-before edge between the workers that run one task's consecutive cycles. Every rule of
  * what a cycle means stays the runtime's: the same grid, misses, skips and counts as on the
  * threaded executor (a release that waited for a free worker is late, and one still waiting past
  * its next grid point is skipped by the same rule as after an overrun).
  *
  * <p>A watchdog thread reports misses at the deadline, as on the threaded executor, but it only
- * looks at the cycles the workers run now (one slot per worker), not at every task.
+ * looks at the cycles the workers run now and the rest of their batches (one slot each per
+ * worker), not at every task.
  *
  * <p>Party numbers of the {@link ClockWaiter}: task {@code i} is party {@code i} (only tasks with
  * a thread of their own use theirs), then the inner executor's watchdog, the workers and the
