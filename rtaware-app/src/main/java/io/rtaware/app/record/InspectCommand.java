@@ -14,7 +14,6 @@ import java.awt.BasicStroke;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -149,12 +148,8 @@ public final class InspectCommand implements Callable<Integer> {
     private static McapReader open(Path file) {
         try {
             return McapReader.open(file);
-        } catch (NoSuchFileException e) {
-            throw new UserError("no such file: " + file);
-        } catch (McapFormatException e) {
-            throw new UserError(e.getMessage());
         } catch (IOException e) {
-            throw new UserError("cannot read " + file + ": " + e.getMessage());
+            throw McapFiles.unreadable(file, e);
         }
     }
 

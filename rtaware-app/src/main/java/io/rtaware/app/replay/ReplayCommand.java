@@ -2,6 +2,7 @@ package io.rtaware.app.replay;
 
 import io.rtaware.app.UserError;
 import io.rtaware.app.output.OutputFolder;
+import io.rtaware.app.record.McapFiles;
 import io.rtaware.app.report.ReportSections;
 import io.rtaware.app.run.TaskPeriods;
 import io.rtaware.core.report.ReportDocument;
@@ -14,7 +15,6 @@ import io.rtaware.record.mcap.McapFormatException;
 import io.rtaware.record.mcap.McapReader;
 import java.io.IOException;
 import java.io.PrintStream;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -103,12 +103,8 @@ public final class ReplayCommand implements Callable<Integer> {
     private static Recording load(Path file) {
         try {
             return Recording.load(McapReader.open(file), file);
-        } catch (NoSuchFileException e) {
-            throw new UserError("no such file: " + file);
-        } catch (McapFormatException e) {
-            throw new UserError(e.getMessage());
         } catch (IOException e) {
-            throw new UserError("cannot read " + file + ": " + e.getMessage());
+            throw McapFiles.unreadable(file, e);
         } catch (RuntimeException e) {
             // A malformed file the reader did not anticipate (e.g. a compressed chunk that breaks the decompressor).
             throw new UserError(file + ": not a readable MCAP recording (" + e + ")");
