@@ -43,20 +43,22 @@ final class CycleStatistics {
     /** The live p99 covers the latest this many cycles (all of them before that many have run). */
     static final int RECENT_EXEC_CYCLES = 256;
     /**
-     * Execution times wait in the ring of recent ones and go into their histogram this many at a
-     * time: with thousands of tasks a histogram is out of the caches at every cycle, and one
-     * touch per batch instead of one per cycle is the saving (issue 16's profile at 10 000 tasks:
-     * recording into the two histograms took half the workers' samples). Divides
-     * {@link #RECENT_EXEC_CYCLES}, so a waiting value is never overwritten.
+     * Lateness and execution times wait in small rings and go into their histograms this many at
+     * a time: with thousands of tasks a histogram is out of the caches at every cycle, and one
+     * touch per batch instead of one per cycle is the saving (issue 16's profiles at 10 000
+     * tasks: recording into the two histograms took a third to a half of the workers' samples,
+     * most of them the first read of the histogram's minimum and maximum). Execution times wait
+     * in the ring of recent ones (written anyway for the live p99), lateness in a ring of its own
+     * of this size. Divides {@link #RECENT_EXEC_CYCLES}, so a waiting value is never overwritten.
      */
-    static final int EXEC_RECORD_BATCH = 16;
+    static final int RECORD_BATCH = 16;
     /**
-     * Heap besides HdrHistogram's footprint estimate of the histograms and the ring's elements:
-     * this object, the ring's header, and what the histograms' objects take beyond that estimate
+     * Heap besides HdrHistogram's footprint estimate of the histograms and the rings' elements:
+     * this object, the rings' headers, and what the histograms' objects take beyond that estimate
      * (80 bytes each), as {@code MonitorFootprintTest} measures them with the JVM's allocation
      * counter.
      */
-    private static final long FIELDS_BYTES = 384;
+    private static final long FIELDS_BYTES = 416;
 
     // Atomic adds are invoked on these constants directly and with getAndAdd's exact type
     // ((long) H.getAndAdd(this, long)): a VarHandle passed as an argument is not a constant, and
@@ -105,6 +107,12 @@ final class CycleStatistics {
     private AbstractHistogram latenessNs = newHistogram();
     private long latenessMaxNs;
     private double latenessSumNs;
+    /** Lateness values not yet in {@link #latenessNs}: slot {@code n % RECORD_BATCH} for the n-th release. */
+    private final long[] pendingLatenessNs = new long[RECORD_BATCH];
+    /** Lateness values noted so far. */
+    private long latenessCount;
+    /** Lateness values recorded into {@link #latenessNs} so far (the rest wait in the ring). */
+    private long latenessRecordedCount;
 
     private AbstractHistogram execNs = newHistogram();
     private long execMaxNs;
@@ -119,11 +127,12 @@ final class CycleStatistics {
 
     /**
      * @return the heap bytes one instance takes: its two histograms as HdrHistogram estimates
-     *     their footprint, the ring of recent execution times, and its fields
+     *     their footprint, the rings of recent execution times and of lateness values waiting to
+     *     be recorded, and its fields
      */
     static long estimatedHeapBytes() {
-        return 2 * newHistogram().getEstimatedFootprintInBytes() + (long) RECENT_EXEC_CYCLES * Long.BYTES
-                + FIELDS_BYTES;
+        return 2 * newHistogram().getEstimatedFootprintInBytes()
+                + (long) (RECENT_EXEC_CYCLES + RECORD_BATCH) * Long.BYTES + FIELDS_BYTES;
     }
 
     /** @return HdrHistogram's footprint estimate of the two histograms this instance holds now */
@@ -135,11 +144,24 @@ final class CycleStatistics {
     void released(long latenessNs) {
         RELEASES.setRelease(this, releases + 1);
         RUNS.setRelease(this, runs + 1);
-        this.latenessNs = record(this.latenessNs, latenessNs);
         latenessSumNs += latenessNs;
         if (latenessNs > latenessMaxNs) {
             latenessMaxNs = latenessNs;
         }
+        long n = latenessCount;
+        pendingLatenessNs[(int) (n % RECORD_BATCH)] = latenessNs;
+        latenessCount = n + 1;
+        if ((n + 1) % RECORD_BATCH == 0) {
+            recordLatenessUpTo(n + 1);
+        }
+    }
+
+    /** Records the lateness values waiting in their ring, up to the {@code count}-th (cycle's thread, or after it). */
+    private void recordLatenessUpTo(long count) {
+        for (long i = latenessRecordedCount; i < count; i++) {
+            this.latenessNs = record(this.latenessNs, pendingLatenessNs[(int) (i % RECORD_BATCH)]);
+        }
+        latenessRecordedCount = count;
     }
 
     /** A cycle ended after {@code execNs} of world time (cycle's thread). */
@@ -151,7 +173,7 @@ final class CycleStatistics {
         long n = recentExecCount;
         RECENT_EXEC_SLOT.setRelease(recentExecNs, (int) (n % RECENT_EXEC_CYCLES), execNs);
         RECENT_EXEC_COUNT.setRelease(this, n + 1);
-        if ((n + 1) % EXEC_RECORD_BATCH == 0) {
+        if ((n + 1) % RECORD_BATCH == 0) {
             recordExecUpTo(n + 1);
         }
     }
@@ -259,6 +281,7 @@ final class CycleStatistics {
 
     /** @return lateness over the run; call only after the task's cycles have stopped */
     Percentiles latenessUs() {
+        recordLatenessUpTo(latenessCount);
         return Percentiles.ofNanos(latenessNs, latenessMaxNs, latenessSumNs);
     }
 

@@ -30,8 +30,34 @@ class CycleStatisticsTest {
     }
 
     @Test
+    void latenessRecordedInBatchesReportsEveryReleaseWhateverTheCountAndTwiceTheSame() {
+        for (int releases : new int[] {1, CycleStatistics.RECORD_BATCH - 1, CycleStatistics.RECORD_BATCH,
+                5 * CycleStatistics.RECORD_BATCH + 3}) {
+            CycleStatistics statistics = new CycleStatistics();
+            Histogram reference = new Histogram(1, 3_600_000_000_000L, 2);
+            long maxNs = 0;
+            double sumNs = 0;
+            for (int i = 0; i < releases; i++) {
+                long ns = 2_000 + 53L * i * i;
+                statistics.released(ns);
+                reference.recordValue(ns);
+                maxNs = Math.max(maxNs, ns);
+                sumNs += ns;
+            }
+            Percentiles expected = Percentiles.ofNanos(reference, maxNs, sumNs);
+            assertEquals(expected, statistics.latenessUs(),
+                    releases + " releases: the values still waiting in the ring are recorded before the report");
+            assertEquals(expected, statistics.latenessUs(), releases + " releases: a second report counts none twice");
+            statistics.released(2_000);
+            reference.recordValue(2_000);
+            assertEquals(Percentiles.ofNanos(reference, maxNs, sumNs + 2_000), statistics.latenessUs(),
+                    releases + " releases: a release after a report is recorded once");
+        }
+    }
+
+    @Test
     void executionTimesRecordedInBatchesReportEveryCycleWhateverTheCount() {
-        for (int cycles : new int[] {1, CycleStatistics.EXEC_RECORD_BATCH - 1, CycleStatistics.EXEC_RECORD_BATCH,
+        for (int cycles : new int[] {1, CycleStatistics.RECORD_BATCH - 1, CycleStatistics.RECORD_BATCH,
                 3 * CycleStatistics.RECENT_EXEC_CYCLES + 7}) {
             CycleStatistics statistics = new CycleStatistics();
             Histogram reference = new Histogram(1, 3_600_000_000_000L, 2);
