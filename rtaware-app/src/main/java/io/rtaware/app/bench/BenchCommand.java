@@ -35,6 +35,7 @@ import io.rtaware.record.RecordingStats;
 import io.rtaware.record.RunRecorder;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.Durations;
+import io.rtaware.core.time.SystemClock;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
@@ -81,6 +82,9 @@ public final class BenchCommand implements Callable<Integer> {
     /** Exit status of {@code --fail-on-alloc} when the framework allocated in steady state. */
     public static final int EXIT_ALLOCATED = 4;
 
+    /** Most tasks the warm-up runs (enough to compile every path of a cycle, few enough to fit beside the set). */
+    static final int WARM_UP_TASKS = 1000;
+
     @Option(names = "--tasks", description = "Number of identical tasks (default: ${DEFAULT-VALUE}).", defaultValue = "4")
     int tasks;
 
@@ -97,6 +101,18 @@ public final class BenchCommand implements Callable<Integer> {
 
     @Option(names = "--chain", description = "Each task consumes the previous task's output key.")
     boolean chain;
+
+    @Option(names = "--stagger", description = "Spread the tasks' first releases evenly over their period (task i "
+            + "of n first released at i/n of it) instead of releasing every task at the same instant; on every "
+            + "executor, with --compare and --sweep-tasks too.")
+    boolean stagger;
+
+    @Option(names = "--warmup", converter = DurationConverter.class, defaultValue = "2s",
+            description = "Before the measured run, run up to " + WARM_UP_TASKS + " of the tasks on the same "
+                    + "executor for this long and discard the numbers: the JIT compiles the cycle's code and the "
+                    + "collector settles after the monitor's allocation; 0 for none (default: ${DEFAULT-VALUE}). "
+                    + "--compare and --sweep-tasks warm up with a round of their own.")
+    long warmUpNs;
 
     @Option(names = "--duration", converter = DurationConverter.class, defaultValue = "10s",
             description = "How long to run, in world time (default: ${DEFAULT-VALUE}).")
@@ -210,8 +226,11 @@ public final class BenchCommand implements Callable<Integer> {
         int taskCount = sweepTasks == null || sweepTasks.isEmpty() ? specs.size()
                 : sweepTasks.stream().filter(n -> n != null).mapToInt(Integer::intValue).max().orElse(specs.size());
         long perTaskBytes = Monitor.estimatedHeapBytesPerTask() + (comparing ? ReleaseStats.estimatedHeapBytes() : 0);
-        memory.get().require(MemoryBudget.times(taskCount, perTaskBytes), taskCount + " task(s) (" + perTaskBytes / 1024
-                + " KB of " + (comparing ? "monitor and comparison" : "monitor") + " bookkeeping per task)");
+        // A single run's warm-up monitor is built while the measured one already exists.
+        int warmUpTasks = comparing || warmUpNs <= 0 ? 0 : Math.min(taskCount, WARM_UP_TASKS);
+        memory.get().require(MemoryBudget.times(taskCount + warmUpTasks, perTaskBytes), taskCount + " task(s) ("
+                + perTaskBytes / 1024 + " KB of " + (comparing ? "monitor and comparison" : "monitor")
+                + " bookkeeping per task" + (warmUpTasks > 0 ? ", plus " + warmUpTasks + " for the warm-up" : "") + ")");
         memory.get().require(MemoryBudget.add(MemoryBudget.times(taskCount, perTaskBytes), trace.heapBytes()),
                 trace.describe() + " with " + taskCount + " task(s)");
         if (durationNs <= 0) {
@@ -305,18 +324,9 @@ public final class BenchCommand implements Callable<Integer> {
                         + String.join(", ", specs.stream().map(BenchSpec::name).toList()));
             }
         }
-        Monitor.Builder builder = Monitor.builder(clock).executor(executorKind());
-        if (adaptive) {
-            builder.adaptivePeriods(AdaptivePolicy.defaults());
-        }
+        Monitor.Builder builder = tasks(Monitor.builder(clock), specs, work);
         if (realtime) {
             builder.threadSetup(RealtimeThreads.configure(rtPriority, affinity, System.err));
-        }
-        String previous = null;
-        for (BenchSpec s : specs) {
-            builder.task(s.name(), s.schedule(),
-                    new BenchTask(s.name(), s.workNs(), chain ? previous : null, work));
-            previous = s.name();
         }
         LatenessHistogram histogram = null;
         if (latenessHistogram != null) {
@@ -337,16 +347,18 @@ public final class BenchCommand implements Callable<Integer> {
         OutputWrites writes = new OutputWrites(System.err);
         monitor.onTermination(report -> finish(monitor, report, console, recorder, recording, out, writes));
         monitor.onTermination(report -> liveView.finish(report, null));
+        warmUp(specs, work);
+        ThreadAllocation.prepare();
         monitor.start();
         long wallNs = clock.toWallNanos(durationNs);
         // Steady state: the last two thirds of the run (the first third warms up the JIT).
-        long warmUpNs = wallNs / 3;
-        boolean endedEarly = monitor.awaitTermination(java.time.Duration.ofNanos(warmUpNs));
+        long untilSteadyNs = wallNs / 3;
+        boolean endedEarly = monitor.awaitTermination(java.time.Duration.ofNanos(untilSteadyNs));
         ThreadAllocation allocation = endedEarly ? null : ThreadAllocation.ofFrameworkThreads();
-        long releasesBefore = totalReleases(monitor);
-        endedEarly |= monitor.awaitTermination(java.time.Duration.ofNanos(wallNs - warmUpNs));
+        long releasesBefore = monitor.totalReleases();
+        endedEarly |= monitor.awaitTermination(java.time.Duration.ofNanos(wallNs - untilSteadyNs));
         long allocatedBytes = endedEarly ? -1 : allocation.allocatedSince();
-        long releases = totalReleases(monitor) - releasesBefore;
+        long releases = monitor.totalReleases() - releasesBefore;
         CommandMonitor.stop(monitor, hook);
         liveView.close();
         if (histogram != null) {
@@ -368,6 +380,41 @@ public final class BenchCommand implements Callable<Integer> {
         return writes.exitStatus(0);
     }
 
+    /** Adds the bench tasks to a builder, on the chosen executor, with adaptive periods if asked. */
+    private Monitor.Builder tasks(Monitor.Builder builder, List<BenchSpec> specs, BusyWork work) {
+        builder.executor(executorKind());
+        if (adaptive) {
+            builder.adaptivePeriods(AdaptivePolicy.defaults());
+        }
+        String previous = null;
+        for (BenchSpec s : specs) {
+            builder.task(s.name(), s.schedule(), new BenchTask(s.name(), s.workNs(), chain ? previous : null, work));
+            previous = s.name();
+        }
+        return builder;
+    }
+
+    /**
+     * Runs the first {@link #WARM_UP_TASKS} tasks (all, if fewer) on a monitor of their own for
+     * {@code --warmup} of wall time and drops it; called with the measured monitor built, just
+     * before its start. A run's first second otherwise measures the interpreter and the JIT
+     * compiling the cycle, and, with thousands of tasks, a collector still cycling after the
+     * monitor's allocation (ZGC's allocation-rate rule started a cycle every 200 ms for 1.5 s
+     * after 10 000 tasks were built; most misses of a 20 s pooled run fell in that time, issue 16).
+     */
+    private void warmUp(List<BenchSpec> specs, BusyWork work) throws InterruptedException {
+        if (warmUpNs <= 0) {
+            return;
+        }
+        List<BenchSpec> subset = specs.subList(0, Math.min(specs.size(), WARM_UP_TASKS));
+        System.err.printf(Locale.ROOT, "rtaware bench: warm-up, %d task(s) for %s (not counted)%n", subset.size(),
+                Durations.format(warmUpNs));
+        Monitor warmUp = CommandMonitor.build(tasks(Monitor.builder(new SystemClock()), subset, work));
+        warmUp.start();
+        warmUp.awaitTermination(java.time.Duration.ofNanos(warmUpNs));
+        warmUp.stop();
+    }
+
     private int workerCount() {
         return workers != null ? workers : Runtime.getRuntime().availableProcessors();
     }
@@ -376,14 +423,6 @@ public final class BenchCommand implements Callable<Integer> {
         return "pooled".equals(executor)
                 ? ExecutorKind.pooled(workerCount(), ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST)
                 : ExecutorKind.threaded();
-    }
-
-    private static long totalReleases(Monitor monitor) {
-        long sum = 0;
-        for (int i = 0; i < monitor.tasks().size(); i++) {
-            sum += monitor.counters(i).releases();
-        }
-        return sum;
     }
 
     private void finish(Monitor monitor, Report report, ConsoleReporter console, TraceRecorder recorder,
@@ -413,7 +452,8 @@ public final class BenchCommand implements Callable<Integer> {
 
     private List<BenchSpec> taskSet() {
         if (spec != null) {
-            return BenchSpec.parseList(spec);
+            List<BenchSpec> parsed = BenchSpec.parseList(spec);
+            return stagger ? BenchSpec.staggered(parsed) : parsed;
         }
         if (tasks < 1) {
             throw new UserError("--tasks must be at least 1, got " + tasks);
@@ -421,12 +461,12 @@ public final class BenchCommand implements Callable<Integer> {
         return uniform(tasks);
     }
 
-    /** @return {@code count} tasks t1..tN of --period and --work */
+    /** @return {@code count} tasks t1..tN of --period and --work, staggered with --stagger */
     private List<BenchSpec> uniform(int count) {
         List<BenchSpec> specs = new ArrayList<>();
         for (int i = 1; i <= count; i++) {
             specs.add(BenchSpec.of("t" + i, periodNs, workNs));
         }
-        return specs;
+        return stagger ? BenchSpec.staggered(specs) : specs;
     }
 }

@@ -15,23 +15,45 @@ import java.util.Set;
  * @param workNs CPU work per cycle in wall nanoseconds
  * @param minPeriodNs shortest period with {@code --adaptive} ({@code periodNs} if fixed)
  * @param maxPeriodNs longest period with {@code --adaptive} ({@code periodNs} if fixed)
+ * @param offsetNs first release after the start, in world nanoseconds (0 unless {@code --stagger})
  */
-public record BenchSpec(String name, long periodNs, long workNs, long minPeriodNs, long maxPeriodNs) {
+public record BenchSpec(String name, long periodNs, long workNs, long minPeriodNs, long maxPeriodNs, long offsetNs) {
 
     /**
-     * A fixed period.
+     * A fixed period, first released at the start.
      *
      * @param name task name
      * @param periodNs period
      * @param workNs work per cycle
      */
     public BenchSpec(String name, long periodNs, long workNs) {
-        this(name, periodNs, workNs, periodNs, periodNs);
+        this(name, periodNs, workNs, periodNs, periodNs, 0);
     }
 
-    /** @return the task's schedule: periodic, with the period range if one was given */
+    /** @return the task's schedule: periodic, with its offset and the period range if one was given */
     public io.rtaware.core.task.Schedule.Periodic schedule() {
-        return new io.rtaware.core.task.Schedule.Periodic(periodNs, 0, periodNs, minPeriodNs, maxPeriodNs);
+        return new io.rtaware.core.task.Schedule.Periodic(periodNs, offsetNs, periodNs, minPeriodNs, maxPeriodNs);
+    }
+
+    /**
+     * Spreads the first releases of a task set over the tasks' periods: task i of n (from 0) is
+     * first released {@code floor(i * period / n)} after the start, so n tasks of one period are
+     * released one {@code period / n} apart instead of all at the same instant (the releases of a
+     * real controller's tasks are staggered the same way with their schedules' offsets).
+     *
+     * @param specs the tasks, in order
+     * @return the same tasks with their offsets set
+     */
+    public static List<BenchSpec> staggered(List<BenchSpec> specs) {
+        List<BenchSpec> out = new ArrayList<>(specs.size());
+        int n = specs.size();
+        for (int i = 0; i < n; i++) {
+            BenchSpec s = specs.get(i);
+            // floor(i * period / n) without overflow: period = q * n + r, so it is i * q + floor(i * r / n).
+            long offsetNs = i * (s.periodNs() / n) + (long) i * (s.periodNs() % n) / n;
+            out.add(new BenchSpec(s.name(), s.periodNs(), s.workNs(), s.minPeriodNs(), s.maxPeriodNs(), offsetNs));
+        }
+        return out;
     }
 
     /**
@@ -63,7 +85,7 @@ public record BenchSpec(String name, long periodNs, long workNs, long minPeriodN
                     throw new UserError("--spec entry '" + entry.trim() + "': period range " + parts[1]
                             + " has its maximum below its minimum");
                 }
-                specs.add(new BenchSpec(fixed.name(), min, fixed.workNs(), min, max));
+                specs.add(new BenchSpec(fixed.name(), min, fixed.workNs(), min, max, 0));
             } else {
                 specs.add(of(parts[0], parse(parts[1], "period", entry), parse(parts[2], "work", entry)));
             }

@@ -57,6 +57,21 @@ class LiveCountersTest {
     }
 
     @Test
+    void totalReleasesIsTheSumOfEveryTasksReleasesSkippedOnesIncluded() {
+        Monitor monitor = Monitor.builder(clock)
+                .task("fast", Schedule.periodic(ms(10)), new FnTask(s -> { }, now -> { }))
+                .task("slow", Schedule.periodic(ms(30)), new FnTask(s -> { }, now -> clock.advance(ms(35))))
+                .build();
+        assertEquals(0, monitor.totalReleases(), "nothing released before the start");
+        StepExecutor step = monitor.startStepped();
+        step.runUntil(ms(300));
+        long sum = monitor.counters("fast").releases() + monitor.counters("slow").releases();
+        assertEquals(sum, monitor.totalReleases());
+        assertEquals(true, monitor.counters("slow").skipped() > 0, "the 35 ms cycles of a 30 ms task skip");
+        monitor.stop();
+    }
+
+    @Test
     void producerAndConsumersOfAKey() {
         Monitor monitor = Monitor.builder(clock)
                 .task("a", Schedule.periodic(ms(10)), new FnTask(s -> s.produce(COUNT), now -> { }))

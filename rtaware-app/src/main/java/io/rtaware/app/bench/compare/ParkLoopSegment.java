@@ -8,7 +8,7 @@ import java.util.concurrent.locks.LockSupport;
 
 /**
  * The floor for a Java thread: one thread per task parking until the absolute release
- * {@code t0 + k * period} with {@link LockSupport#parkNanos}, then doing the work. After a run
+ * {@code t0 + offset + k * period} with {@link LockSupport#parkNanos}, then doing the work. After a run
  * that ended past later releases it skips to the first grid point at or after its end, the same
  * rule as rtaware (without it, every release of a stall's backlog would run late back to back
  * and the floor's lateness would measure the backlog, not the wake-up). Nothing else: no
@@ -38,7 +38,9 @@ final class ParkLoopSegment implements SegmentExecutor {
         for (int i = 0; i < specs.size(); i++) {
             BenchSpec spec = specs.get(i);
             ReleaseStats taskStats = stats.get(i);
-            Thread thread = new Thread(() -> loop(t0, spec.periodNs(), spec.workNs(), taskStats), "park-" + spec.name());
+            long firstNs = t0 + spec.offsetNs();
+            Thread thread = new Thread(() -> loop(firstNs, spec.periodNs(), spec.workNs(), taskStats),
+                    "park-" + spec.name());
             thread.setDaemon(true);
             threads.add(thread);
         }

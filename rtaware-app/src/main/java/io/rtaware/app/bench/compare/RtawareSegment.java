@@ -1,5 +1,6 @@
 package io.rtaware.app.bench.compare;
 
+import io.rtaware.app.bench.LiveThreads;
 import io.rtaware.app.bench.BenchSpec;
 import io.rtaware.app.bench.BenchTask;
 import io.rtaware.app.bench.BusyWork;
@@ -7,7 +8,6 @@ import io.rtaware.core.monitor.ExecutorKind;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.MonitorListener;
 import io.rtaware.core.monitor.TaskInfo;
-import io.rtaware.core.task.Schedule;
 import io.rtaware.core.time.SystemClock;
 import java.util.List;
 import java.util.stream.LongStream;
@@ -48,7 +48,7 @@ final class RtawareSegment implements SegmentExecutor {
     public void prepare(List<BenchSpec> specs, List<ReleaseStats> stats) {
         Monitor.Builder builder = Monitor.builder(new SystemClock()).executor(kind);
         for (BenchSpec s : specs) {
-            builder.task(s.name(), Schedule.periodic(s.periodNs()), new BenchTask(s.name(), s.workNs(), null, work));
+            builder.task(s.name(), s.schedule(), new BenchTask(s.name(), s.workNs(), null, work));
         }
         builder.listener(new StatsListener(stats.toArray(new ReleaseStats[0])));
         monitor = builder.build();

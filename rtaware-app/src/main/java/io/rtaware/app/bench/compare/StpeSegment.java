@@ -1,5 +1,6 @@
 package io.rtaware.app.bench.compare;
 
+import io.rtaware.app.bench.LiveThreads;
 import io.rtaware.app.bench.BenchSpec;
 import io.rtaware.app.bench.BusyWork;
 import java.util.ArrayList;
@@ -12,7 +13,7 @@ import java.util.concurrent.TimeUnit;
  * Thread per task ({@code stpe}): each task gets a pool of its own with one thread, so every task
  * has a thread to itself, as under rtaware's threaded executor. Pooled ({@code stpe-pooled}): one
  * pool with as many threads as rtaware's pooled executor has workers, for every task. Run i of a
- * task is intended at {@code t0 + i * period} (fixed rate: the pool runs late runs back to back,
+ * task is intended at {@code t0 + offset + i * period} (fixed rate: the pool runs late runs back to back,
  * it never skips, so a backlog shows as lateness growing past a period and as misses), and its
  * lateness is measured against that.
  */
@@ -63,12 +64,13 @@ final class StpeSegment implements SegmentExecutor {
 
     @Override
     public void start(List<BenchSpec> specs, List<ReleaseStats> stats) {
-        // The pools exist; t0 lies just ahead, so every task's first run is intended at the same t0.
+        // The pools exist; t0 lies just ahead, so every task's first run is intended at t0 plus its offset.
         long t0 = System.nanoTime() + START_AHEAD_NS;
         for (int i = 0; i < specs.size(); i++) {
             BenchSpec spec = specs.get(i);
-            FixedRateRun run = new FixedRateRun(t0, spec.periodNs(), spec.workNs(), work, stats.get(i));
-            pools.get(i).scheduleAtFixedRate(run, Math.max(0, t0 - System.nanoTime()), spec.periodNs(),
+            long firstNs = t0 + spec.offsetNs();
+            FixedRateRun run = new FixedRateRun(firstNs, spec.periodNs(), spec.workNs(), work, stats.get(i));
+            pools.get(i).scheduleAtFixedRate(run, Math.max(0, firstNs - System.nanoTime()), spec.periodNs(),
                     TimeUnit.NANOSECONDS);
         }
     }
