@@ -30,9 +30,8 @@ public final class ThreadAllocation {
 
     /**
      * Loads and starts the JVM's management beans and turns allocation counting on, before a run
-     * starts: done for the first time in the middle of a run, it took one of two cores for about
-     * half a second (class loading and compiling), which a pooled run of 10 000 tasks showed as a
-     * burst of misses at a third of its duration (issue 16).
+     * starts, so that their first use (class loading) does not compete with the tasks for a core
+     * at the start of the steady state, a third into the run.
      */
     public static void prepare() {
         bean();
