@@ -158,9 +158,7 @@ final class CycleStatistics {
 
     /** Records the lateness values waiting in their ring, up to the {@code count}-th (cycle's thread, or after it). */
     private void recordLatenessUpTo(long count) {
-        for (long i = latenessRecordedCount; i < count; i++) {
-            this.latenessNs = record(this.latenessNs, pendingLatenessNs[(int) (i % RECORD_BATCH)]);
-        }
+        latenessNs = recordFromRing(latenessNs, pendingLatenessNs, latenessRecordedCount, count);
         latenessRecordedCount = count;
     }
 
@@ -180,10 +178,22 @@ final class CycleStatistics {
 
     /** Records the execution times waiting in the ring, up to the {@code count}-th (cycle's thread, or after it). */
     private void recordExecUpTo(long count) {
-        for (long i = execRecordedCount; i < count; i++) {
-            this.execNs = record(this.execNs, recentExecNs[(int) (i % RECENT_EXEC_CYCLES)]);
-        }
+        execNs = recordFromRing(execNs, recentExecNs, execRecordedCount, count);
         execRecordedCount = count;
+    }
+
+    /**
+     * Records the {@code from}-th to the {@code to - 1}-th value noted in a ring (the n-th in slot
+     * {@code n % ring.length}).
+     *
+     * @return the histogram to keep (see {@link #record})
+     */
+    private static AbstractHistogram recordFromRing(AbstractHistogram histogram, long[] ring, long from, long to) {
+        AbstractHistogram target = histogram;
+        for (long i = from; i < to; i++) {
+            target = record(target, ring[(int) (i % ring.length)]);
+        }
+        return target;
     }
 
     /** {@code count} releases were skipped, each a release and a miss (cycle's thread). */

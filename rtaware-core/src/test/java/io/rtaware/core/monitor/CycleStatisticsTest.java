@@ -8,7 +8,12 @@ import io.rtaware.core.report.Percentiles;
 import org.HdrHistogram.AbstractHistogram;
 import org.HdrHistogram.Histogram;
 import org.HdrHistogram.IntCountsHistogram;
+import java.util.function.Function;
+import java.util.function.ObjLongConsumer;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
 
 /** The smaller per-task histograms report what the 1 ns to 1 h ones did. */
 class CycleStatisticsTest {
@@ -29,49 +34,46 @@ class CycleStatisticsTest {
                 "from 1 us up the buckets are the same as a 1 ns histogram's");
     }
 
-    @Test
-    void latenessRecordedInBatchesReportsEveryReleaseWhateverTheCountAndTwiceTheSame() {
-        for (int releases : new int[] {1, CycleStatistics.RECORD_BATCH - 1, CycleStatistics.RECORD_BATCH,
-                5 * CycleStatistics.RECORD_BATCH + 3}) {
-            CycleStatistics statistics = new CycleStatistics();
-            Histogram reference = new Histogram(1, 3_600_000_000_000L, 2);
-            long maxNs = 0;
-            double sumNs = 0;
-            for (int i = 0; i < releases; i++) {
-                long ns = 2_000 + 53L * i * i;
-                statistics.released(ns);
-                reference.recordValue(ns);
-                maxNs = Math.max(maxNs, ns);
-                sumNs += ns;
-            }
-            Percentiles expected = Percentiles.ofNanos(reference, maxNs, sumNs);
-            assertEquals(expected, statistics.latenessUs(),
-                    releases + " releases: the values still waiting in the ring are recorded before the report");
-            assertEquals(expected, statistics.latenessUs(), releases + " releases: a second report counts none twice");
-            statistics.released(2_000);
-            reference.recordValue(2_000);
-            assertEquals(Percentiles.ofNanos(reference, maxNs, sumNs + 2_000), statistics.latenessUs(),
-                    releases + " releases: a release after a report is recorded once");
+    /** One of the two series recorded in batches: how a value is noted, and how the report reads the series. */
+    private record Series(String name, ObjLongConsumer<CycleStatistics> note,
+                          Function<CycleStatistics, Percentiles> report) {
+        @Override
+        public String toString() {
+            return name;
         }
     }
 
-    @Test
-    void executionTimesRecordedInBatchesReportEveryCycleWhateverTheCount() {
-        for (int cycles : new int[] {1, CycleStatistics.RECORD_BATCH - 1, CycleStatistics.RECORD_BATCH,
+    static Stream<Series> series() {
+        return Stream.of(new Series("lateness", CycleStatistics::released, CycleStatistics::latenessUs),
+                new Series("execution time", CycleStatistics::cycleEnded, CycleStatistics::execUs));
+    }
+
+    @ParameterizedTest
+    @MethodSource("series")
+    void valuesRecordedInBatchesReportEveryValueWhateverTheCountAndTwiceTheSame(Series series) {
+        for (int count : new int[] {1, CycleStatistics.RECORD_BATCH - 1, CycleStatistics.RECORD_BATCH,
                 3 * CycleStatistics.RECENT_EXEC_CYCLES + 7}) {
             CycleStatistics statistics = new CycleStatistics();
             Histogram reference = new Histogram(1, 3_600_000_000_000L, 2);
             long maxNs = 0;
             double sumNs = 0;
-            for (int i = 0; i < cycles; i++) {
+            for (int i = 0; i < count; i++) {
                 long ns = 1_000 + 37L * i * i;
-                statistics.cycleEnded(ns);
+                series.note().accept(statistics, ns);
                 reference.recordValue(ns);
                 maxNs = Math.max(maxNs, ns);
                 sumNs += ns;
             }
-            assertEquals(Percentiles.ofNanos(reference, maxNs, sumNs), statistics.execUs(),
-                    cycles + " cycles: the ones still waiting in the ring are recorded before the report");
+            Percentiles expected = Percentiles.ofNanos(reference, maxNs, sumNs);
+            assertEquals(expected, series.report().apply(statistics),
+                    series + ", " + count + " values: the ones still waiting in the ring are recorded before the report");
+            assertEquals(expected, series.report().apply(statistics),
+                    series + ", " + count + " values: a second report counts none twice");
+            series.note().accept(statistics, 2_000);
+            reference.recordValue(2_000);
+            assertEquals(Percentiles.ofNanos(reference, Math.max(maxNs, 2_000), sumNs + 2_000),
+                    series.report().apply(statistics),
+                    series + ", " + count + " values: a value noted after a report is recorded once");
         }
     }
 
