@@ -5,6 +5,7 @@ import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.bench.compare.CompareReport;
 import io.rtaware.app.bench.compare.CompareRun;
 import io.rtaware.app.bench.compare.Goal;
+import io.rtaware.app.bench.compare.PairedRounds;
 import io.rtaware.app.bench.compare.ReleaseStats;
 import io.rtaware.app.bench.compare.RunResult;
 import io.rtaware.app.bench.compare.TaskSweep;
@@ -299,7 +300,8 @@ public final class BenchCommand implements Callable<Integer> {
         List<RunResult> runs = run.run();
         CompareReport report = new CompareReport(CompareReport.SCHEMA, specs.size(), specs.get(0).periodNs() / 1e6,
                 specs.get(0).workNs() / 1e6, run.measuredNs() / 1e9, segmentNs / 1e9, loadThreads, gcPressureMbps,
-                System.getProperty("java.vm.version"), CompareRun.collectors(), runs, Goal.check(runs));
+                System.getProperty("java.vm.version"), CompareRun.collectors(), runs, Goal.check(runs),
+                PairedRounds.check(runs));
         out.print(report.table());
         OutputWrites writes = new OutputWrites(System.err);
         if (json != null && writes.write(json, () -> {

@@ -23,10 +23,12 @@ import java.util.Locale;
  * @param gc the collectors in use
  * @param runs one row per executor
  * @param goals the goals checked against the rows
+ * @param paired rtaware's executors against their baselines round by round ({@link PairedRounds})
  */
 public record CompareReport(String schema, int tasks, double periodMs, double workMs, double durationS,
                             double segmentS, int load, double gcPressureMbps, String java, String gc,
-                            List<RunResult> runs, List<Goal> goals) {
+                            List<RunResult> runs, List<Goal> goals,
+                            List<PairedRounds.Paired> paired) {
 
     /** The JSON schema name. */
     public static final String SCHEMA = "rtaware.bench-compare/1";
@@ -67,6 +69,9 @@ public record CompareReport(String schema, int tasks, double periodMs, double wo
         }
         for (Goal g : goals) {
             sb.append(String.format(Locale.ROOT, "%s goal: %s: %s%n", g.pass() ? "PASS" : "MISS", g.goal(), g.value()));
+        }
+        for (PairedRounds.Paired p : paired) {
+            sb.append("paired: ").append(p.line()).append(System.lineSeparator());
         }
         return sb.toString();
     }

@@ -192,6 +192,7 @@ public final class CompareRun {
         executor.stop();
         if (totals != null) {
             stats.forEach(totals::add);
+            totals.endRound();
             totals.addCost(cpu1 - cpu0, allocatedBetween(alloc0, alloc1));
         }
     }

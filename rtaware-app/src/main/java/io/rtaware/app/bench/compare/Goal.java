@@ -35,10 +35,13 @@ public record Goal(String goal, String value, boolean pass) {
         }
         RunResult pooled = find(runs, "rtaware-pooled");
         if (rtaware != null && park != null) {
+            // The ratio of two totals near overload swings from run to run: its interval over the
+            // rounds says how far this run's value can be trusted.
+            String interval = PairedRounds.compare(rtaware, park).map(p -> "; " + p.interval()).orElse("");
             goals.add(ratioGoal("rtaware misses / park-loop misses", rtaware.misses(), park.misses(),
-                    MAX_RATIO_TO_PARK_LOOP));
+                    MAX_RATIO_TO_PARK_LOOP, interval));
             goals.add(ratioGoal("rtaware p99.9 / park-loop p99.9", rtaware.latenessUs().p999(),
-                    park.latenessUs().p999(), MAX_RATIO_TO_PARK_LOOP));
+                    park.latenessUs().p999(), MAX_RATIO_TO_PARK_LOOP, ""));
             goals.add(missShare("rtaware", rtaware));
         }
         if (pooled != null) {
@@ -77,10 +80,11 @@ public record Goal(String goal, String value, boolean pass) {
                 rtaware.allocBytesPerRelease() == 0));
     }
 
-    private static Goal ratioGoal(String what, double value, double floor, double max) {
-        double ratio = floor > 0 ? value / floor : (value > 0 ? Double.POSITIVE_INFINITY : 1.0);
-        return new Goal(what + " <= " + max, String.format(Locale.ROOT, "%.2f (%s / %s)", ratio, num(value),
-                num(floor)), ratio <= max);
+    /** @param detail appended inside the value's parentheses (empty for none) */
+    private static Goal ratioGoal(String what, double value, double floor, double max, String detail) {
+        double ratio = PairedRounds.ratio(value, floor);
+        return new Goal(what + " <= " + max, String.format(Locale.ROOT, "%.2f (%s / %s%s)", ratio, num(value),
+                num(floor), detail), ratio <= max);
     }
 
     private static Goal notWorse(String what, double value, double other) {

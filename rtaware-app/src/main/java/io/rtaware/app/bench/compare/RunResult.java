@@ -1,5 +1,7 @@
 package io.rtaware.app.bench.compare;
 
+import java.util.List;
+
 /**
  * One executor's row of the comparison, as written to the JSON ({@code runs[]}).
  *
@@ -12,9 +14,22 @@ package io.rtaware.app.bench.compare;
  *        release, microseconds; includes the task's work
  * @param allocBytesPerRelease bytes allocated on the executor's threads per release; the bench
  *        task allocates nothing, so this is the executor's (the framework's) own allocation
+ * @param rounds the same executor's numbers round by round (one measured segment each), in round
+ *        order: what {@link PairedRounds} compares executors on; empty where no rounds were kept
  */
 public record RunResult(String executor, Lateness latenessUs, long releases, long misses, long bursts,
-                        double cpuUsPerRelease, double allocBytesPerRelease) {
+                        double cpuUsPerRelease, double allocBytesPerRelease, List<Round> rounds) {
+
+    /** Copies the rounds: the row is a value. */
+    public RunResult {
+        rounds = List.copyOf(rounds);
+    }
+
+    /** A row without its rounds (a sweep's point, or a row made by hand). */
+    public RunResult(String executor, Lateness latenessUs, long releases, long misses, long bursts,
+                     double cpuUsPerRelease, double allocBytesPerRelease) {
+        this(executor, latenessUs, releases, misses, bursts, cpuUsPerRelease, allocBytesPerRelease, List.of());
+    }
 
     /**
      * Lateness percentiles in microseconds.
@@ -25,5 +40,15 @@ public record RunResult(String executor, Lateness latenessUs, long releases, lon
      * @param max exact largest value
      */
     public record Lateness(double p50, double p99, double p999, double max) {
+    }
+
+    /**
+     * One round's measured segment of one executor.
+     *
+     * @param releases releases in the segment's window
+     * @param misses misses among them (late runs plus skipped releases)
+     * @param p999Us the segment's 99.9th percentile of lateness, microseconds
+     */
+    public record Round(long releases, long misses, double p999Us) {
     }
 }

@@ -22,7 +22,7 @@ class CompareReportTest {
     void jsonKeepsTheSchemaOfTheIssue() throws Exception {
         List<RunResult> runs = List.of(row("rtaware", 110, 0, 0), row("stpe", 120, 0, 24), row("park-loop", 100, 0, 0));
         CompareReport report = new CompareReport(CompareReport.SCHEMA, 8, 10, 1, 30, 2, 0, 0, "17", "G1",
-                runs, Goal.check(runs));
+                runs, Goal.check(runs), PairedRounds.check(runs));
         JsonNode json = new ObjectMapper().readTree(report.toJson());
         assertEquals("rtaware.bench-compare/1", json.get("schema").asText());
         assertEquals(8, json.get("tasks").asInt());
@@ -83,7 +83,7 @@ class CompareReportTest {
     void tablePrintsOneRowPerExecutorAndPassOrMissPerGoal() {
         List<RunResult> runs = List.of(row("rtaware", 110, 1, 0), row("park-loop", 100, 0, 0));
         String table = new CompareReport(CompareReport.SCHEMA, 2, 1, 0, 4, 2, 1, 200, "17", "ZGC", runs,
-                Goal.check(runs)).table();
+                Goal.check(runs), PairedRounds.check(runs)).table();
         assertTrue(table.contains("rtaware"));
         assertTrue(table.contains("park-loop"));
         assertTrue(table.contains("PASS goal: rtaware p99 / park-loop p99 <= 1.25: 1.10"));
@@ -112,6 +112,51 @@ class CompareReportTest {
         assertEquals(10.0, r.latenessUs().p50(), 0.2, "2 significant digits: buckets are 1 % wide");
         assertEquals(30.0, r.latenessUs().p99(), 0.5);
         assertEquals(5000.0, r.latenessUs().max());
+        assertEquals(List.of(), r.rounds(), "no round was closed");
+    }
+
+    @Test
+    void totalsKeepEachRoundOnItsOwn() {
+        ExecutorTotals totals = new ExecutorTotals("rtaware");
+        for (int round = 0; round < 2; round++) {
+            for (int task = 0; task < 2; task++) {
+                ReleaseStats s = new ReleaseStats(PERIOD);
+                for (int k = 0; k < 1000; k++) {
+                    // Round 0: every release 2 us late, none missed. Round 1: task 1 misses 10 of its
+                    // releases, and the slowest 0.1 % of the round's 2000 starts are 7 ms late.
+                    boolean late = round == 1 && task == 1 && k < 10;
+                    long start = k * PERIOD + (late ? 7_000_000 : 2_000);
+                    s.onRun(k * PERIOD, start, late ? start + 4_000_000 : start + 1_000);
+                }
+                totals.add(s);
+            }
+            totals.endRound();
+        }
+        RunResult r = totals.result();
+        assertEquals(List.of(new RunResult.Round(2000, 0, 2.0), new RunResult.Round(2000, 10, 7000.0)), r.rounds());
+        assertEquals(4000, r.releases());
+        assertEquals(10, r.misses());
+    }
+
+    @Test
+    void theMissRatioGoalCarriesItsIntervalOverTheRounds() {
+        List<RunResult.Round> floor = new java.util.ArrayList<>();
+        List<RunResult.Round> twice = new java.util.ArrayList<>();
+        for (int round = 0; round < 10; round++) {
+            floor.add(new RunResult.Round(1000, 5, 100));
+            twice.add(new RunResult.Round(1000, 10, 140));
+        }
+        List<RunResult> runs = List.of(
+                new RunResult("rtaware", new RunResult.Lateness(50, 100, 140, 900), 10_000, 100, 0, 1.5, 0, twice),
+                new RunResult("park-loop", new RunResult.Lateness(50, 100, 100, 900), 10_000, 50, 0, 1.0, 0, floor));
+        CompareReport report = new CompareReport(CompareReport.SCHEMA, 2, 10, 0, 20, 2, 0, 0, "17", "ZGC", runs,
+                Goal.check(runs), PairedRounds.check(runs));
+        String table = report.table();
+        assertTrue(table.contains("MISS goal: rtaware misses / park-loop misses <= 1.5: 2.00 (100 / 50;"
+                + " 95 % CI 2.00-2.00 over 10 rounds)"), table);
+        assertTrue(table.contains("paired: rtaware vs park-loop over 10 rounds: misses x2.00 (95 % CI 2.00-2.00),"
+                + " more in 10 rounds, fewer in 0, Wilcoxon p = 0.002; p99.9 x1.40 (median round), higher in 10,"
+                + " lower in 0, p = 0.002"), table);
     }
 
     @Test
