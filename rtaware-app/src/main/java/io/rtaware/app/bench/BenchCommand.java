@@ -9,6 +9,7 @@ import io.rtaware.app.bench.compare.PairedRounds;
 import io.rtaware.app.bench.compare.ReleaseStats;
 import io.rtaware.app.bench.compare.RunResult;
 import io.rtaware.app.bench.compare.TaskSweep;
+import io.rtaware.app.rt.ClockNanosleep;
 import io.rtaware.app.cli.CommandMonitor;
 import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.app.cli.MemoryBudget;
@@ -36,6 +37,7 @@ import io.rtaware.record.RecordingStats;
 import io.rtaware.record.RunRecorder;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.Durations;
+import io.rtaware.core.time.MonotonicSleeper;
 import io.rtaware.core.time.SystemClock;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -178,6 +180,13 @@ public final class BenchCommand implements Callable<Integer> {
                     + "(default: threaded for a run, both for --compare).")
     String executor;
 
+    @Option(names = "--sleep", paramLabel = "nanosleep|park",
+            description = "How the threaded executor's task threads sleep until their next release: "
+                    + "nanosleep (clock_nanosleep to the absolute release time, one system call; the default "
+                    + "where libc can be bound, else park) or park (LockSupport.parkNanos, as a plain Java "
+                    + "thread does). With --compare it applies to rtaware's row; the park-loop row always parks.")
+    String sleep = "nanosleep";
+
     @Option(names = "--workers", paramLabel = "N",
             description = "Worker threads of the pooled executors (default: the number of cores).")
     Integer workers;
@@ -264,6 +273,14 @@ public final class BenchCommand implements Callable<Integer> {
         if (workers != null && workers < 1) {
             throw new UserError("--workers must be at least 1, got " + workers);
         }
+        if (!sleep.equals("nanosleep") && !sleep.equals("park")) {
+            throw new UserError("--sleep must be nanosleep or park, got " + sleep);
+        }
+        sleeper = sleep.equals("park") ? null : ClockNanosleep.load().orElse(null);
+        if (sleep.equals("nanosleep") && sleeper == null) {
+            System.err.println("rtaware bench: clock_nanosleep cannot be bound here (not Linux, or no JNA); "
+                    + "task threads park");
+        }
         BusyWork work = BusyWork.calibrate();
         try (CpuLoad load = CpuLoad.start(loadThreads); GarbageLoad garbage = GarbageLoad.start(gcPressureMbps)) {
             if (sweepTasks != null) {
@@ -282,7 +299,7 @@ public final class BenchCommand implements Callable<Integer> {
         PrintStream out = System.out;
         List<Integer> counts = sweepTasks.stream().sorted().distinct().toList();
         TaskSweep sweep = new TaskSweep().run(counts, TaskSweep.comparison(n -> uniform(n), work, durationNs,
-                segmentNs, System.err, family(), workerCount()), System.err);
+                segmentNs, System.err, family(), workerCount(), sleeper), System.err);
         out.printf(Locale.ROOT, "sweep: period %s, work %s, %s measured per executor and count; %s, %s%n",
                 Durations.format(periodNs), Durations.format(workNs), Durations.format(durationNs),
                 System.getProperty("java.vm.version"), CompareRun.collectors());
@@ -296,7 +313,8 @@ public final class BenchCommand implements Callable<Integer> {
     private int compare(List<BenchSpec> specs, BusyWork work) throws IOException, InterruptedException {
         PrintStream out = System.out;
         CompareRun.Family family = family();
-        CompareRun run = new CompareRun(specs, work, durationNs, segmentNs, System.err, family, workerCount());
+        CompareRun run = new CompareRun(specs, work, durationNs, segmentNs, System.err, family, workerCount(),
+                sleeper);
         List<RunResult> runs = run.run();
         CompareReport report = new CompareReport(CompareReport.SCHEMA, specs.size(), specs.get(0).periodNs() / 1e6,
                 specs.get(0).workNs() / 1e6, run.measuredNs() / 1e9, segmentNs / 1e9, loadThreads, gcPressureMbps,
@@ -384,7 +402,7 @@ public final class BenchCommand implements Callable<Integer> {
 
     /** Adds the bench tasks to a builder, on the chosen executor, with adaptive periods if asked. */
     private Monitor.Builder tasks(Monitor.Builder builder, List<BenchSpec> specs, BusyWork work) {
-        builder.executor(executorKind());
+        builder.executor(executorKind()).sleeper(sleeper);
         if (adaptive) {
             builder.adaptivePeriods(AdaptivePolicy.defaults());
         }
@@ -416,6 +434,9 @@ public final class BenchCommand implements Callable<Integer> {
         warmUp.awaitTermination(java.time.Duration.ofNanos(warmUpNs));
         warmUp.stop();
     }
+
+    /** The sleeper {@code --sleep} chose (null: park), set when the command starts. */
+    private MonotonicSleeper sleeper;
 
     private int workerCount() {
         return workers != null ? workers : Runtime.getRuntime().availableProcessors();

@@ -28,6 +28,19 @@ interface ClockWaiter {
     void park(int party, long targetNs);
 
     /**
+     * Like {@link #park}, for a party that nobody {@link #wake wakes} (a task thread of the
+     * threaded executor, which only waits for its next release): the waiter may then use a sleep
+     * that an unpark cannot cut short and that costs the operating system less (see
+     * {@link io.rtaware.core.time.MonotonicSleeper}). By default, a park.
+     *
+     * @param party the caller's party number
+     * @param targetNs world time
+     */
+    default void sleep(int party, long targetNs) {
+        park(party, targetNs);
+    }
+
+    /**
      * Wakes party {@code party} for another thread (new work, an earlier deadline): the request is
      * recorded before the thread is unparked, so a waiter that tracks who is idle never takes a
      * party that is about to wake for an idle one.

@@ -11,6 +11,7 @@ import io.rtaware.core.task.Task;
 import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.ManualClock;
+import io.rtaware.core.time.MonotonicSleeper;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -47,6 +48,8 @@ public final class Monitor {
     private final List<Consumer<Report>> terminationHandlers = new CopyOnWriteArrayList<>();
     private final List<MonitorListener> listeners;
     private final ThreadSetup threadSetup;
+    /** How task threads of the threaded executor sleep on a real clock; null: they park. */
+    private final MonotonicSleeper sleeper;
     private final ExecutorKind executorKind;
     private final ListenerFanOut events;
     private final FrameworkFaults faults;
@@ -63,14 +66,15 @@ public final class Monitor {
     private volatile boolean tasksStopped;
 
     private Monitor(Clock clock, List<TaskRuntime> runtimes, DataGraph graph, List<MonitorListener> listeners,
-                    ThreadSetup threadSetup, ListenerFanOut events, FrameworkFaults faults, ExecutorKind executorKind,
-                    Map<String, ReactionConstraint> reactions) {
+                    ThreadSetup threadSetup, MonotonicSleeper sleeper, ListenerFanOut events, FrameworkFaults faults,
+                    ExecutorKind executorKind, Map<String, ReactionConstraint> reactions) {
         this.clock = clock;
         this.executorKind = executorKind;
         this.runtimes = runtimes;
         this.graph = graph;
         this.listeners = new ArrayList<>(listeners);
         this.threadSetup = threadSetup;
+        this.sleeper = sleeper;
         this.events = events;
         this.faults = faults;
         this.reactions = Map.copyOf(reactions);
@@ -257,7 +261,8 @@ public final class Monitor {
     }
 
     private ClockWaiter waiterFor(int parties) {
-        return clock instanceof ManualClock manual ? new ManualClockWaiter(manual, parties) : new ParkingClockWaiter(clock);
+        return clock instanceof ManualClock manual ? new ManualClockWaiter(manual, parties)
+                : new ParkingClockWaiter(clock, sleeper);
     }
 
     /** @return the executor once started, else null (tests on a manual clock step through it) */
@@ -447,6 +452,7 @@ public final class Monitor {
         private ErrorPolicy defaultPolicy = ErrorPolicy.CONTINUE;
         private AdaptivePolicy adaptivePolicy;
         private ThreadSetup threadSetup;
+        private MonotonicSleeper sleeper;
         private FrameworkErrorHandler errorHandler;
         private ExecutorKind executorKind = ExecutorKind.threaded();
 
@@ -502,6 +508,21 @@ public final class Monitor {
          */
         public Builder threadSetup(ThreadSetup setup) {
             this.threadSetup = setup;
+            return this;
+        }
+
+        /**
+         * How the threaded executor's task threads sleep until their next release on a real or
+         * scaled clock: with this sleeper (e.g. {@code clock_nanosleep}, one system call per
+         * release) instead of {@code LockSupport.parkNanos}. A stop is then noticed within 100 ms
+         * (a sleeping task thread cannot be unparked). The watchdog, pool workers and manual
+         * clocks are unaffected.
+         *
+         * @param sleeper the sleeper; null (the default) to park
+         * @return this builder
+         */
+        public Builder sleeper(MonotonicSleeper sleeper) {
+            this.sleeper = sleeper;
             return this;
         }
 
@@ -580,8 +601,8 @@ public final class Monitor {
                     reactions.put(declarations.spec.name(), declarations.reaction());
                 }
             }
-            return new Monitor(clock, List.copyOf(runtimes), graph, listeners, threadSetup, events, faults, executorKind,
-                    reactions);
+            return new Monitor(clock, List.copyOf(runtimes), graph, listeners, threadSetup, sleeper, events, faults,
+                    executorKind, reactions);
         }
     }
 }

@@ -1,11 +1,13 @@
 package io.rtaware.core.monitor;
 
 import io.rtaware.core.time.Clock;
+import io.rtaware.core.time.MonotonicSleeper;
 import java.util.concurrent.locks.LockSupport;
 
 /**
  * Waits on a real (or scaled) clock with {@link LockSupport#parkNanos}, for the wall time the
- * clock says is left (never {@code Thread.sleep}, which rounds to whole milliseconds on JDK 17).
+ * clock says is left (never {@code Thread.sleep}, which rounds to whole milliseconds on JDK 17);
+ * a party nobody wakes may instead sleep with a {@link MonotonicSleeper} ({@link #sleep}).
  * Thread-safe, allocation-free.
  */
 final class ParkingClockWaiter implements ClockWaiter {
@@ -14,9 +16,16 @@ final class ParkingClockWaiter implements ClockWaiter {
     private static final long MAX_PARK_NS = 100_000_000L;
 
     private final Clock clock;
+    /** Null: {@link #sleep} parks like {@link #park}. */
+    private final MonotonicSleeper sleeper;
 
-    ParkingClockWaiter(Clock clock) {
+    /**
+     * @param clock the world clock
+     * @param sleeper what {@link #sleep} uses, or null to park there too
+     */
+    ParkingClockWaiter(Clock clock, MonotonicSleeper sleeper) {
         this.clock = clock;
+        this.sleeper = sleeper;
     }
 
     @Override
@@ -33,6 +42,26 @@ final class ParkingClockWaiter implements ClockWaiter {
         long remainingNs = targetNs - clock.nanos();
         if (remainingNs > 0) {
             LockSupport.parkNanos(Math.max(1, clock.toWallNanos(remainingNs)));
+        }
+    }
+
+    /**
+     * Sleeps with the {@link MonotonicSleeper} until the wall instant the clock's target maps to,
+     * at most {@value #MAX_PARK_NS} ns at a time (an unpark cannot end this sleep, so a stop is
+     * seen at the next wake-up). The world time is read before the wall time, so the wall target
+     * is never before the world target and a sleep is not repeated for the few nanoseconds
+     * between the two reads.
+     */
+    @Override
+    public void sleep(int party, long targetNs) {
+        if (sleeper == null) {
+            park(party, targetNs);
+            return;
+        }
+        long remainingNs = targetNs == Long.MAX_VALUE ? Long.MAX_VALUE : targetNs - clock.nanos();
+        if (remainingNs > 0) {
+            long wallNs = Math.min(MAX_PARK_NS, Math.max(1, clock.toWallNanos(remainingNs)));
+            sleeper.sleepUntil(System.nanoTime() + wallNs);
         }
     }
 

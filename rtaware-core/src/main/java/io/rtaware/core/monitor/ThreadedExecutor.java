@@ -186,7 +186,8 @@ final class ThreadedExecutor implements Executor {
             if (clock.nanos() >= targetNs) {
                 return true;
             }
-            waiter.park(party, targetNs);
+            // Nothing wakes a task thread but its release: it may sleep without being unparkable.
+            waiter.sleep(party, targetNs);
         }
         return false;
     }

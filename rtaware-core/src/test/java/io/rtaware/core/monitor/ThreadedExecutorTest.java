@@ -198,4 +198,25 @@ class ThreadedExecutorTest {
         assertEquals(report.task("tick").releases(), report.task("tick").runs() + report.task("tick").skipped(),
                 "releases = runs + skipped");
     }
+
+    @Test
+    void withASleeperTheTaskThreadsSleepWithItAndNothingElseDoes() throws InterruptedException {
+        java.util.Set<String> sleepers = java.util.concurrent.ConcurrentHashMap.newKeySet();
+        AtomicInteger sleeps = new AtomicInteger();
+        CountDownLatch threeRuns = new CountDownLatch(3);
+        Monitor monitor = Monitor.builder(new SystemClock())
+                .sleeper(nanoTime -> {
+                    sleeps.incrementAndGet();
+                    sleepers.add(Thread.currentThread().getName());
+                    java.util.concurrent.locks.LockSupport.parkNanos(nanoTime - System.nanoTime());
+                })
+                .task("tick", Schedule.periodic(ms(10)), FnTask.of(now -> threeRuns.countDown())).build();
+        monitor.start();
+        assertTrue(threeRuns.await(10, TimeUnit.SECONDS), "three cycles ran");
+        Report report = monitor.stop();
+
+        assertTrue(sleeps.get() >= 2, "the task thread slept with the sleeper between its cycles: " + sleeps);
+        assertEquals(java.util.Set.of("rtaware-tick"), sleepers, "the watchdog still parks (a task wakes it)");
+        assertEquals(report.task("tick").releases(), report.task("tick").runs() + report.task("tick").skipped());
+    }
 }

@@ -3,6 +3,7 @@ package io.rtaware.app.bench.compare;
 import io.rtaware.app.bench.BenchSpec;
 import io.rtaware.app.bench.BusyWork;
 import io.rtaware.core.monitor.ExecutorKind;
+import io.rtaware.core.time.MonotonicSleeper;
 import java.io.PrintStream;
 import java.lang.management.GarbageCollectorMXBean;
 import java.lang.management.ManagementFactory;
@@ -37,6 +38,7 @@ public final class CompareRun {
     private final com.sun.management.ThreadMXBean threads;
     private final Family family;
     private final int workers;
+    private final MonotonicSleeper sleeper;
 
     /**
      * Most tasks per core for which the executors with a thread per task run. Beyond, their
@@ -70,24 +72,15 @@ public final class CompareRun {
      * @param measuredNs measured time wanted per executor; rounded up to whole segments
      * @param segmentNs length of one executor's turn
      * @param progress where to print one line per round
-     */
-    public CompareRun(List<BenchSpec> specs, BusyWork work, long measuredNs, long segmentNs, PrintStream progress) {
-        this(specs, work, measuredNs, segmentNs, progress, Family.ALL, Runtime.getRuntime().availableProcessors());
-    }
-
-    /**
-     * @param specs the tasks (the same set for every executor)
-     * @param work the calibrated busy loop
-     * @param measuredNs measured time wanted per executor; rounded up to whole segments
-     * @param segmentNs length of one executor's turn
-     * @param progress where to print one line per round
      * @param family which executors to compare (the park loop runs too: it is the floor; see {@link #THREAD_PER_TASK_LIMIT_PER_CORE})
      * @param workers threads of the pooled executors (rtaware's pool and the pooled STPE)
+     * @param sleeper how rtaware's threaded executor sleeps its task threads (null: they park)
      */
     public CompareRun(List<BenchSpec> specs, BusyWork work, long measuredNs, long segmentNs, PrintStream progress,
-                      Family family, int workers) {
+                      Family family, int workers, MonotonicSleeper sleeper) {
         this.family = family;
         this.workers = workers;
+        this.sleeper = sleeper;
         this.specs = List.copyOf(specs);
         this.work = work;
         this.segmentNs = segmentNs;
@@ -136,11 +129,11 @@ public final class CompareRun {
                     + "(rtaware, stpe, park-loop) are left out%n", specs.size(), THREAD_PER_TASK_LIMIT_PER_CORE);
         }
         if (family != Family.POOLED && threadPerTask) {
-            executors.put("rtaware", () -> new RtawareSegment(work, "rtaware", ExecutorKind.threaded()));
+            executors.put("rtaware", () -> new RtawareSegment(work, "rtaware", ExecutorKind.threaded(), sleeper));
         }
         if (family != Family.THREADED) {
             executors.put("rtaware-pooled", () -> new RtawareSegment(work, "rtaware-pooled",
-                    ExecutorKind.pooled(workers, ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST)));
+                    ExecutorKind.pooled(workers, ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST), sleeper));
         }
         if (family != Family.POOLED && threadPerTask) {
             executors.put("stpe", () -> new StpeSegment(work, 0));

@@ -8,6 +8,7 @@ import io.rtaware.core.monitor.ExecutorKind;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.MonitorListener;
 import io.rtaware.core.monitor.TaskInfo;
+import io.rtaware.core.time.MonotonicSleeper;
 import io.rtaware.core.time.SystemClock;
 import java.util.List;
 import java.util.stream.LongStream;
@@ -26,17 +27,20 @@ final class RtawareSegment implements SegmentExecutor {
     private final BusyWork work;
     private final String name;
     private final ExecutorKind kind;
+    private final MonotonicSleeper sleeper;
     private Monitor monitor;
 
     /**
      * @param work the calibrated busy loop
      * @param name the row's name
      * @param kind the executor
+     * @param sleeper how the threaded executor's task threads sleep (null: they park)
      */
-    RtawareSegment(BusyWork work, String name, ExecutorKind kind) {
+    RtawareSegment(BusyWork work, String name, ExecutorKind kind, MonotonicSleeper sleeper) {
         this.work = work;
         this.name = name;
         this.kind = kind;
+        this.sleeper = sleeper;
     }
 
     @Override
@@ -46,7 +50,7 @@ final class RtawareSegment implements SegmentExecutor {
 
     @Override
     public void prepare(List<BenchSpec> specs, List<ReleaseStats> stats) {
-        Monitor.Builder builder = Monitor.builder(new SystemClock()).executor(kind);
+        Monitor.Builder builder = Monitor.builder(new SystemClock()).executor(kind).sleeper(sleeper);
         for (BenchSpec s : specs) {
             builder.task(s.name(), s.schedule(), new BenchTask(s.name(), s.workNs(), null, work));
         }

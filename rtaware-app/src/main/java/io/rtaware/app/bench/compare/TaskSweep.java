@@ -2,6 +2,7 @@ package io.rtaware.app.bench.compare;
 
 import io.rtaware.app.bench.BenchSpec;
 import io.rtaware.app.bench.BusyWork;
+import io.rtaware.core.time.MonotonicSleeper;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
@@ -89,12 +90,14 @@ public final class TaskSweep {
      * @param progress progress lines
      * @param family the executors
      * @param workers pool size
+     * @param sleeper how rtaware's threaded executor sleeps its task threads (null: they park)
      * @return how each count's comparison is built
      */
     public static Comparison comparison(java.util.function.IntFunction<List<BenchSpec>> specsOf, BusyWork work,
                                         long measuredNs, long segmentNs, PrintStream progress,
-                                        CompareRun.Family family, int workers) {
-        return tasks -> new CompareRun(specsOf.apply(tasks), work, measuredNs, segmentNs, progress, family, workers);
+                                        CompareRun.Family family, int workers, MonotonicSleeper sleeper) {
+        return tasks -> new CompareRun(specsOf.apply(tasks), work, measuredNs, segmentNs, progress, family, workers,
+                sleeper);
     }
 
     /**
