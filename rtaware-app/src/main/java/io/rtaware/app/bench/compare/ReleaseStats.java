@@ -39,8 +39,12 @@ public final class ReleaseStats {
      * reach 2^31 unless a segment held 2^31 releases of one task (a 1 us period for 36 minutes).
      */
     private final AbstractHistogram latenessNs = newHistogram();
-    private long fromNs = Long.MIN_VALUE;
-    private long untilNs = Long.MAX_VALUE;
+    /**
+     * The window (all of time until the first {@link #reset}), written by the coordinator while
+     * the task's thread reads it.
+     */
+    private volatile long fromNs = Long.MIN_VALUE;
+    private volatile long untilNs = Long.MAX_VALUE;
     private long previousStartNs = NO_START;
     private long releases;
     private long misses;
@@ -57,21 +61,31 @@ public final class ReleaseStats {
     }
 
     /**
-     * Clears every count and sets the measurement window for the next segment.
-     *
-     * @param windowFromNs first intended release counted
-     * @param windowUntilNs releases at or after this are not counted
+     * Clears every count and closes the window (nothing is counted until {@link #openWindow});
+     * call before the segment's threads start.
      */
-    public void reset(long windowFromNs, long windowUntilNs) {
+    public void reset() {
         latenessNs.reset();
-        fromNs = windowFromNs;
-        untilNs = windowUntilNs;
+        fromNs = Long.MAX_VALUE;
+        untilNs = Long.MAX_VALUE;
         previousStartNs = NO_START;
         releases = 0;
         misses = 0;
         bursts = 0;
         maxLatenessNs = 0;
         threadId = 0;
+    }
+
+    /**
+     * Sets the measurement window while the segment's threads run; call before {@code
+     * windowFromNs} (a release before it is not counted whichever window its thread saw).
+     *
+     * @param windowFromNs first intended release counted
+     * @param windowUntilNs releases at or after this are not counted
+     */
+    public void openWindow(long windowFromNs, long windowUntilNs) {
+        untilNs = windowUntilNs;
+        fromNs = windowFromNs;
     }
 
     /**

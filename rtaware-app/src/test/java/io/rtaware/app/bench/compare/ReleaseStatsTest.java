@@ -68,7 +68,8 @@ class ReleaseStatsTest {
     @Test
     void onlyReleasesInsideTheWindowCountButBurstsSeeThePreviousRunOutsideIt() {
         ReleaseStats s = new ReleaseStats(PERIOD);
-        s.reset(PERIOD, 3 * PERIOD);
+        s.reset();
+        s.openWindow(PERIOD, 3 * PERIOD);
         s.onRun(0, 0, 15_000_000);
         s.onSkipped(1, 5_000_000);
         s.onRun(PERIOD, 15_000_000, 15_000_001);
@@ -85,7 +86,8 @@ class ReleaseStatsTest {
         ReleaseStats s = new ReleaseStats(PERIOD);
         s.onRun(0, 0, 2 * PERIOD);
         s.onRun(PERIOD, 2 * PERIOD, 2 * PERIOD);
-        s.reset(Long.MIN_VALUE, Long.MAX_VALUE);
+        s.reset();
+        s.openWindow(Long.MIN_VALUE, Long.MAX_VALUE);
         assertEquals(0, s.releases());
         assertEquals(0, s.misses());
         assertEquals(0, s.maxLatenessNs());
@@ -94,6 +96,19 @@ class ReleaseStatsTest {
         s.onRun(0, 1, 2);
         assertEquals(0, s.bursts(), "the previous start is forgotten");
         assertEquals(Thread.currentThread().getId(), s.threadId());
+    }
+
+    @Test
+    void afterAResetNothingCountsUntilTheWindowOpens() {
+        ReleaseStats s = new ReleaseStats(PERIOD);
+        s.reset();
+        s.onRun(0, 3_000_000, 25_000_000);
+        s.onSkipped(1, 25_000_000);
+        assertEquals(0, s.releases(), "a slow start-up before the window is not counted");
+        assertEquals(0, s.misses());
+        s.openWindow(3 * PERIOD, 5 * PERIOD);
+        s.onRun(3 * PERIOD, 3 * PERIOD + 1, 3 * PERIOD + 2);
+        assertEquals(1, s.releases());
     }
 
     @Test
