@@ -92,7 +92,7 @@ final class TaskRuntime implements TaskInfo {
     private final OutputHandle<?>[] outputs;
     private final Release release;
     private final long offsetNs;
-    private final CycleStatistics statistics = new CycleStatistics();
+    private final CycleStatistics statistics;
     private final CycleToken token = new CycleToken();
     private volatile ReleaseGrid grid;
     /** Null unless adaptive periods are enabled on the monitor and the schedule has a range. */
@@ -130,6 +130,7 @@ final class TaskRuntime implements TaskInfo {
                 OutputHandle<?>[] outputs) {
         this.spec = spec;
         this.index = index;
+        this.statistics = new CycleStatistics(index);
         this.clock = clock;
         this.events = events;
         this.inputs = inputs;

@@ -10,6 +10,7 @@ import org.HdrHistogram.Histogram;
 import org.HdrHistogram.IntCountsHistogram;
 import java.util.function.Function;
 import java.util.function.ObjLongConsumer;
+import java.util.function.ToLongFunction;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -36,7 +37,7 @@ class CycleStatisticsTest {
 
     /** One of the two series recorded in batches: how a value is noted, and how the report reads the series. */
     private record Series(String name, ObjLongConsumer<CycleStatistics> note,
-                          Function<CycleStatistics, Percentiles> report) {
+                          Function<CycleStatistics, Percentiles> report, ToLongFunction<CycleStatistics> waiting) {
         @Override
         public String toString() {
             return name;
@@ -44,37 +45,72 @@ class CycleStatisticsTest {
     }
 
     static Stream<Series> series() {
-        return Stream.of(new Series("lateness", CycleStatistics::released, CycleStatistics::latenessUs),
-                new Series("execution time", CycleStatistics::cycleEnded, CycleStatistics::execUs));
+        return Stream.of(new Series("lateness", CycleStatistics::released, CycleStatistics::latenessUs,
+                        CycleStatistics::latenessWaiting),
+                new Series("execution time", CycleStatistics::cycleEnded, CycleStatistics::execUs,
+                        CycleStatistics::execWaiting));
     }
 
     @ParameterizedTest
     @MethodSource("series")
     void valuesRecordedInBatchesReportEveryValueWhateverTheCountAndTwiceTheSame(Series series) {
-        for (int count : new int[] {1, CycleStatistics.RECORD_BATCH - 1, CycleStatistics.RECORD_BATCH,
-                3 * CycleStatistics.RECENT_EXEC_CYCLES + 7}) {
-            CycleStatistics statistics = new CycleStatistics();
-            Histogram reference = new Histogram(1, 3_600_000_000_000L, 2);
-            long maxNs = 0;
-            double sumNs = 0;
-            for (int i = 0; i < count; i++) {
-                long ns = 1_000 + 37L * i * i;
-                series.note().accept(statistics, ns);
-                reference.recordValue(ns);
-                maxNs = Math.max(maxNs, ns);
-                sumNs += ns;
+        for (int spread : new int[] {0, 1, CycleStatistics.RECORD_BATCH - 1, CycleStatistics.RECORD_BATCH + 3}) {
+            for (int count : new int[] {1, CycleStatistics.RECORD_BATCH - 1, CycleStatistics.RECORD_BATCH,
+                    3 * CycleStatistics.RECENT_EXEC_CYCLES + 7}) {
+                assertReportsEveryValue(series, new CycleStatistics(spread), count);
             }
-            Percentiles expected = Percentiles.ofNanos(reference, maxNs, sumNs);
-            assertEquals(expected, series.report().apply(statistics),
-                    series + ", " + count + " values: the ones still waiting in the ring are recorded before the report");
-            assertEquals(expected, series.report().apply(statistics),
-                    series + ", " + count + " values: a second report counts none twice");
-            series.note().accept(statistics, 2_000);
-            reference.recordValue(2_000);
-            assertEquals(Percentiles.ofNanos(reference, Math.max(maxNs, 2_000), sumNs + 2_000),
-                    series.report().apply(statistics),
-                    series + ", " + count + " values: a value noted after a report is recorded once");
         }
+    }
+
+    private static void assertReportsEveryValue(Series series, CycleStatistics statistics, int count) {
+        Histogram reference = new Histogram(1, 3_600_000_000_000L, 2);
+        long maxNs = 0;
+        double sumNs = 0;
+        for (int i = 0; i < count; i++) {
+            long ns = 1_000 + 37L * i * i;
+            series.note().accept(statistics, ns);
+            reference.recordValue(ns);
+            maxNs = Math.max(maxNs, ns);
+            sumNs += ns;
+        }
+        Percentiles expected = Percentiles.ofNanos(reference, maxNs, sumNs);
+        assertEquals(expected, series.report().apply(statistics),
+                series + ", " + count + " values: the ones still waiting in the ring are recorded before the report");
+        assertEquals(expected, series.report().apply(statistics),
+                series + ", " + count + " values: a second report counts none twice");
+        series.note().accept(statistics, 2_000);
+        reference.recordValue(2_000);
+        assertEquals(Percentiles.ofNanos(reference, Math.max(maxNs, 2_000), sumNs + 2_000),
+                series.report().apply(statistics),
+                series + ", " + count + " values: a value noted after a report is recorded once");
+    }
+
+    /**
+     * Tasks released together flush their batches in different cycles: task i records its waiting
+     * values when the count noted is i modulo the batch, so no cycle records every task's batch.
+     */
+    @ParameterizedTest
+    @MethodSource("series")
+    void eachTaskFlushesItsBatchAtItsOwnPhase(Series series) {
+        int batch = CycleStatistics.RECORD_BATCH;
+        CycleStatistics task3 = new CycleStatistics(3);
+        CycleStatistics task19 = new CycleStatistics(batch + 3);
+        CycleStatistics task0 = new CycleStatistics(0);
+        long[] waiting3 = new long[3 * batch + 1];
+        for (int count = 1; count <= 3 * batch; count++) {
+            for (CycleStatistics statistics : new CycleStatistics[] {task3, task19, task0}) {
+                series.note().accept(statistics, 1_000 + count);
+            }
+            waiting3[count] = series.waiting().applyAsLong(task3);
+            assertEquals(waiting3[count], series.waiting().applyAsLong(task19), "the phase is the index modulo the batch");
+            boolean flushed3 = waiting3[count] == 0;
+            boolean flushed0 = series.waiting().applyAsLong(task0) == 0;
+            assertEquals(count % batch == 3, flushed3, series + ": task 3 after " + count + " values");
+            assertEquals(count % batch == 0, flushed0, series + ": task 0 after " + count + " values");
+        }
+        assertEquals(2, waiting3[2], "before the first flush every value waits");
+        assertEquals(batch - 1, waiting3[batch + 2], "a full batch minus one waits just before the next flush");
+        assertEquals(1, waiting3[batch + 4]);
     }
 
     @Test
