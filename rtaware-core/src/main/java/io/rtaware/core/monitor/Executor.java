@@ -1,5 +1,7 @@
 package io.rtaware.core.monitor;
 
+import io.rtaware.core.time.Clock;
+
 /**
  * How task cycles get onto threads: the seam between the rules and the waiting.
  *
@@ -17,15 +19,36 @@ package io.rtaware.core.monitor;
  * zero-duration continuous cycles. A fault of its own around {@code runCycle} is reported to the
  * monitor's {@link FrameworkErrorHandler} and followed by {@link TaskRuntime#recoverAfterFault}.
  *
- * <p>The two executors today: {@link ThreadedExecutor} (one platform thread per task, parking on
- * the clock, plus a watchdog thread) and {@link StepExecutor} (one test thread advancing a
- * {@code ManualClock}, earliest due release first). A pooled executor (a few workers taking
- * periodic tasks from one timer structure in deadline order) fits the same loop: its timer
- * orders tasks by {@code nextReleaseNs()}, and a worker hands a task to the next with a
- * happens-before edge (the timer's lock or queue), since a runtime's cycle state is written by
- * whichever thread ran its previous cycle.
+ * <p>The executors: {@link ThreadedExecutor} (one platform thread per task, parking on the
+ * clock, plus a {@link Watchdog} thread), {@link PooledExecutor} (a few workers taking periodic
+ * tasks from one timer structure in deadline order, handing a task from one worker to the next
+ * through the timer's lock, since a runtime's cycle state is written by whichever thread ran its
+ * previous cycle; plus a watchdog) and {@link StepExecutor} (one test thread advancing a
+ * {@code ManualClock}, earliest due release first).
  */
 interface Executor {
+
+    /**
+     * Runs the release that is due, as every executor does: the task's and the listeners' faults
+     * are the runtime's to contain; a fault of the executor's own around the cycle (a framework
+     * bug) is reported to {@code faults} and the task is released again by the rules of a cycle
+     * that threw ({@link TaskRuntime#recoverAfterFault}). Only a {@link VirtualMachineError}
+     * escapes.
+     *
+     * @param runtime the task whose release is due
+     * @param clock world time
+     * @param faults where an executor fault goes
+     */
+    static void runCycle(TaskRuntime runtime, Clock clock, FrameworkFaults faults) {
+        try {
+            runtime.runCycle();
+        } catch (VirtualMachineError fatal) {
+            throw fatal;
+        } catch (Throwable fault) {
+            faults.report("executor, cycle of task '" + runtime.name() + "'", fault);
+            runtime.recoverAfterFault(clock.nanos());
+        }
+    }
 
     /**
      * Starts the tasks.

@@ -43,7 +43,6 @@ import java.util.concurrent.locks.LockSupport;
  */
 final class PooledExecutor implements Executor {
 
-    private static final long JOIN_TIMEOUT_MS = 5_000;
     /**
      * Most due releases a worker takes at once (its share of the ready ones, in order): one lock
      * hold for up to this many cycles instead of one per cycle, which is what lets two workers
@@ -63,7 +62,7 @@ final class PooledExecutor implements Executor {
     /** The tasks with a thread of their own; null if there are none. */
     private final ThreadedExecutor dedicated;
     private final int firstWorkerParty;
-    private final int watchdogParty;
+    private final Watchdog watchdog;
     private final Thread[] workers;
     /** What each worker runs now (null: nothing); the watchdog scans these. */
     private final AtomicReferenceArray<TaskRuntime> current;
@@ -92,8 +91,6 @@ final class PooledExecutor implements Executor {
      */
     private boolean releaseOrderIsRunOrder;
     private volatile boolean running;
-    private Thread watchdog;
-    private volatile long watchdogWakeNs = Long.MAX_VALUE;
 
     /**
      * @param clock world time
@@ -124,7 +121,8 @@ final class PooledExecutor implements Executor {
         this.dedicated = own.isEmpty() ? null
                 : new ThreadedExecutor(clock, waiter, own, stopAllRequest, threadSetup, faults, innerWatchdogParty);
         this.firstWorkerParty = innerWatchdogParty + 1;
-        this.watchdogParty = firstWorkerParty + workerCount;
+        this.watchdog = new Watchdog(clock, waiter, firstWorkerParty + workerCount, faults, "pool watchdog",
+                this::claimMissesAndNextDeadline);
         this.workers = new Thread[workerCount];
         this.current = new AtomicReferenceArray<>(workerCount);
         this.batchDeadlineNs = new AtomicLongArray(workerCount);
@@ -165,10 +163,7 @@ final class PooledExecutor implements Executor {
         if (dedicated == null) {
             waiter.done(firstWorkerParty - 1);
         }
-        watchdog = new Thread(this::watch, "rtaware-monitor");
-        watchdog.setDaemon(true);
-        watchdog.setPriority(Thread.MAX_PRIORITY);
-        waiter.register(watchdogParty, watchdog);
+        watchdog.prepare();
         CountDownLatch go = new CountDownLatch(1);
         for (int w = 0; w < workers.length; w++) {
             int worker = w;
@@ -186,7 +181,7 @@ final class PooledExecutor implements Executor {
             releaseOrderIsRunOrder = order == ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST && oneFixedDeadline();
             for (int slot = 0; slot < pooled.length; slot++) {
                 TaskRuntime runtime = pooled[slot];
-                runtime.onCycleStart(() -> wakeWatchdogFor(runtime));
+                runtime.onCycleStart(() -> watchdog.wakeFor(runtime.runningDeadlineNs()));
                 runtime.begin(startNs, stopAllRequest, waiter.zeroCycleSpacingNs());
                 waiting.push(slot, runtime.nextReleaseNs());
             }
@@ -311,58 +306,34 @@ final class PooledExecutor implements Executor {
     private void runCycle(int worker, TaskRuntime runtime) {
         current.set(worker, runtime);
         try {
-            runtime.runCycle();
-        } catch (VirtualMachineError fatal) {
-            throw fatal;
-        } catch (Throwable fault) {
-            faults.report("executor, cycle of task '" + runtime.name() + "'", fault);
-            runtime.recoverAfterFault(clock.nanos());
+            Executor.runCycle(runtime, clock, faults);
         } finally {
             // An ordered store: a watchdog that still sees the finished task finds its token done.
             current.setRelease(worker, null);
         }
     }
 
-    /** As on the threaded executor: wakes the watchdog if this cycle's deadline is earlier. */
-    private void wakeWatchdogFor(TaskRuntime runtime) {
-        if (runtime.runningDeadlineNs() < watchdogWakeNs) {
-            waiter.wake(watchdogParty, watchdog);
-        }
-    }
-
     /**
-     * Sleeps until the earliest deadline of the cycles the workers run now or will run next in
-     * their batches, then claims the misses of cycles still running past their deadline.
+     * The watchdog's scan: claims the misses of the cycles the workers run now, and names the
+     * earliest deadline of those and of the rest of the workers' batches.
      */
-    private void watch() {
-        try {
-            while (running) {
-                long earliest = Long.MAX_VALUE;
-                try {
-                    long now = clock.nanos();
-                    for (int w = 0; w < workers.length; w++) {
-                        TaskRuntime runtime = current.get(w);
-                        if (runtime != null) {
-                            runtime.checkDeadline(now);
-                            long deadline = runtime.runningDeadlineNs();
-                            if (deadline > now && deadline < earliest) {
-                                earliest = deadline;
-                            }
-                        }
-                        long batchDeadline = batchDeadlineNs.getAcquire(w);
-                        if (batchDeadline > now && batchDeadline < earliest) {
-                            earliest = batchDeadline;
-                        }
-                    }
-                } catch (Throwable fault) {
-                    faults.report("pool watchdog", fault);
+    private long claimMissesAndNextDeadline(long nowNs) {
+        long earliest = Long.MAX_VALUE;
+        for (int w = 0; w < workers.length; w++) {
+            TaskRuntime runtime = current.get(w);
+            if (runtime != null) {
+                runtime.checkDeadline(nowNs);
+                long deadline = runtime.runningDeadlineNs();
+                if (deadline > nowNs && deadline < earliest) {
+                    earliest = deadline;
                 }
-                watchdogWakeNs = earliest;
-                waiter.park(watchdogParty, earliest == Long.MAX_VALUE ? Long.MAX_VALUE : earliest + 1);
             }
-        } finally {
-            waiter.done(watchdogParty);
+            long batchDeadline = batchDeadlineNs.getAcquire(w);
+            if (batchDeadline > nowNs && batchDeadline < earliest) {
+                earliest = batchDeadline;
+            }
         }
+        return earliest;
     }
 
     @Override
@@ -373,33 +344,13 @@ final class PooledExecutor implements Executor {
                 LockSupport.unpark(worker);
             }
         }
-        if (watchdog != null) {
-            LockSupport.unpark(watchdog);
-        }
         if (dedicated != null) {
             dedicated.stopWithoutClosing();
         }
         for (Thread worker : workers) {
-            join(worker);
+            Watchdog.joinOrInterrupt(worker);
         }
-        join(watchdog);
+        watchdog.stopAndJoin();
         waiter.close();
-    }
-
-    private static void join(Thread thread) {
-        if (thread == null || thread == Thread.currentThread()) {
-            return;
-        }
-        try {
-            thread.join(JOIN_TIMEOUT_MS);
-            if (thread.isAlive()) {
-                System.err.println("rtaware: " + thread.getName() + " did not return within "
-                        + JOIN_TIMEOUT_MS + " ms of stop; interrupting it");
-                thread.interrupt();
-                thread.join(JOIN_TIMEOUT_MS);
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
     }
 }

@@ -141,12 +141,7 @@ public final class StepExecutor implements Executor {
         clock.advanceTo(runtime.nextReleaseNs());
         current = runtime;
         try {
-            runtime.runCycle();
-        } catch (VirtualMachineError fatal) {
-            throw fatal;
-        } catch (Throwable fault) {
-            faults.report("executor, cycle of task '" + runtime.name() + "'", fault);
-            runtime.recoverAfterFault(clock.nanos());
+            Executor.runCycle(runtime, clock, faults);
         } finally {
             current = null;
         }

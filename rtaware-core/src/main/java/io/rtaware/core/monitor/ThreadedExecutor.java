@@ -27,8 +27,6 @@ import java.util.concurrent.locks.LockSupport;
  */
 final class ThreadedExecutor implements Executor {
 
-    private static final long JOIN_TIMEOUT_MS = 5_000;
-
     private final Clock clock;
     private final ClockWaiter waiter;
     private final List<TaskRuntime> runtimes;
@@ -37,12 +35,9 @@ final class ThreadedExecutor implements Executor {
     private final Runnable stopAllRequest;
     private final ThreadSetup threadSetup;
     private final FrameworkFaults faults;
-    private final int watchdogParty;
+    private final Watchdog watchdog;
     private final List<Thread> threads = new ArrayList<>();
     private volatile boolean running;
-    private Thread watchdog;
-    /** The world time the watchdog sleeps until; task threads wake it for an earlier deadline. */
-    private volatile long watchdogWakeNs = Long.MAX_VALUE;
 
     ThreadedExecutor(Clock clock, ClockWaiter waiter, List<TaskRuntime> runtimes, Runnable stopAllRequest,
                      ThreadSetup threadSetup, FrameworkFaults faults) {
@@ -63,7 +58,7 @@ final class ThreadedExecutor implements Executor {
         this.stopAllRequest = stopAllRequest;
         this.threadSetup = threadSetup;
         this.faults = faults;
-        this.watchdogParty = watchdogParty;
+        this.watchdog = new Watchdog(clock, waiter, watchdogParty, faults, "watchdog", this::claimMissesAndNextDeadline);
     }
 
     /** @return the waiter its threads wait with (tests on a manual clock step through it) */
@@ -91,13 +86,10 @@ final class ThreadedExecutor implements Executor {
         running = true;
         CountDownLatch ready = new CountDownLatch(runtimes.size());
         CountDownLatch go = new CountDownLatch(1);
-        watchdog = new Thread(this::watch, "rtaware-monitor");
-        watchdog.setDaemon(true);
-        watchdog.setPriority(Thread.MAX_PRIORITY);
-        waiter.register(watchdogParty, watchdog);
+        watchdog.prepare();
         int[] ranks = rateMonotonicRanks(runtimes);
         for (TaskRuntime runtime : runtimes) {
-            runtime.onCycleStart(() -> wakeWatchdogFor(runtime));
+            runtime.onCycleStart(() -> watchdog.wakeFor(runtime.runningDeadlineNs()));
             int rank = ranks[runtime.index()];
             Thread thread = new Thread(() -> runTask(runtime, rank, ready, go), "rtaware-" + runtime.name());
             thread.setDaemon(true);
@@ -152,31 +144,13 @@ final class ThreadedExecutor implements Executor {
                 if (due == TaskRuntime.NEVER || !waitUntil(party, due)) {
                     return;
                 }
-                try {
-                    runtime.runCycle();
-                } catch (VirtualMachineError fatal) {
-                    throw fatal;
-                } catch (Throwable fault) {
-                    faults.report("executor, cycle of task '" + runtime.name() + "'", fault);
-                    runtime.recoverAfterFault(clock.nanos());
-                }
+                Executor.runCycle(runtime, clock, faults);
             }
         } catch (VirtualMachineError fatal) {
             faults.report("task '" + runtime.name() + "' (fatal VM error: stopping every task)", fatal);
             stopAllRequest.run();
         } finally {
             waiter.done(party);
-        }
-    }
-
-    /**
-     * Runs on the task thread after its cycle is marked running. The cycle must be visible to the
-     * watchdog before the wake time is read: then either the watchdog's re-check sees the cycle,
-     * or this thread sees the watchdog's new wake time and unparks it if its deadline is earlier.
-     */
-    private void wakeWatchdogFor(TaskRuntime runtime) {
-        if (runtime.runningDeadlineNs() < watchdogWakeNs) {
-            waiter.wake(watchdogParty, watchdog);
         }
     }
 
@@ -193,35 +167,22 @@ final class ThreadedExecutor implements Executor {
     }
 
     /**
-     * Sleeps until the earliest deadline any periodic task could miss (of a running cycle, or of
-     * the release an idle task waits for), then claims the misses of cycles still running past
-     * their deadline. Tasks released on time never wake it, so tasks sharing a period cost one
-     * scan per period, not one per cycle start.
+     * The watchdog's scan: claims the misses of cycles running past their deadline, and names the
+     * earliest deadline any periodic task could miss next (of a running cycle, or of the release
+     * an idle task waits for). Tasks released on time never wake the watchdog, so tasks sharing a
+     * period cost one scan per period, not one per cycle start.
      */
-    private void watch() {
-        try {
-            while (running) {
-                long earliest = Long.MAX_VALUE;
-                try {
-                    long now = clock.nanos();
-                    for (TaskRuntime runtime : watched) {
-                        runtime.checkDeadline(now);
-                        long deadline = runtime.watchDeadlineNs();
-                        // A deadline already past belongs to a task between cycles, about to publish its next.
-                        if (deadline > now && deadline < earliest) {
-                            earliest = deadline;
-                        }
-                    }
-                } catch (Throwable fault) {
-                    faults.report("watchdog", fault);
-                }
-                watchdogWakeNs = earliest;
-                // Wake just after the deadline: a miss is a cycle still running past it.
-                waiter.park(watchdogParty, earliest == Long.MAX_VALUE ? Long.MAX_VALUE : earliest + 1);
+    private long claimMissesAndNextDeadline(long nowNs) {
+        long earliest = Long.MAX_VALUE;
+        for (TaskRuntime runtime : watched) {
+            runtime.checkDeadline(nowNs);
+            long deadline = runtime.watchDeadlineNs();
+            // A deadline already past belongs to a task between cycles, about to publish its next.
+            if (deadline > nowNs && deadline < earliest) {
+                earliest = deadline;
             }
-        } finally {
-            waiter.done(watchdogParty);
         }
+        return earliest;
     }
 
     @Override
@@ -234,32 +195,9 @@ final class ThreadedExecutor implements Executor {
     void stopWithoutClosing() {
         running = false;
         threads.forEach(LockSupport::unpark);
-        if (watchdog != null) {
-            LockSupport.unpark(watchdog);
-        }
         for (Thread thread : threads) {
-            if (thread == Thread.currentThread()) {
-                continue;
-            }
-            try {
-                thread.join(JOIN_TIMEOUT_MS);
-                if (thread.isAlive()) {
-                    System.err.println("rtaware: " + thread.getName() + " did not return within "
-                            + JOIN_TIMEOUT_MS + " ms of stop; interrupting it");
-                    thread.interrupt();
-                    thread.join(JOIN_TIMEOUT_MS);
-                }
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                return;
-            }
+            Watchdog.joinOrInterrupt(thread);
         }
-        try {
-            if (watchdog != null) {
-                watchdog.join(JOIN_TIMEOUT_MS);
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        watchdog.stopAndJoin();
     }
 }

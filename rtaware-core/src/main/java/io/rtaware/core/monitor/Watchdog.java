@@ -1,0 +1,144 @@
+package io.rtaware.core.monitor;
+
+import io.rtaware.core.time.Clock;
+import java.util.concurrent.locks.LockSupport;
+
+/**
+ * The watchdog thread of the threaded and pooled executors, which reports misses at the
+ * deadline: it sleeps until the earliest deadline that could be missed, wakes just after it,
+ * lets its executor's {@link Scan} claim the misses of cycles still running past their deadline
+ * and name the next deadline, and sleeps again. Tasks released on time never wake it; a thread
+ * that starts a cycle whose deadline comes before the watchdog's wake time wakes it
+ * ({@link #wakeFor}).
+ *
+ * <p>No fault stops it: a scan that throws is reported to the {@link FrameworkFaults} and the
+ * watchdog scans again at its next wake. Thread-safe: prepared, started and stopped once, by its
+ * executor; {@link #wakeFor} from any thread.
+ */
+final class Watchdog {
+
+    /** The thread's name, which the bench's allocation and CPU counters look for. */
+    static final String THREAD_NAME = "rtaware-monitor";
+
+    /** What one wake-up of the watchdog looks at: its executor's running cycles. */
+    @FunctionalInterface
+    interface Scan {
+        /**
+         * Claims the misses of cycles running past their deadline at {@code nowNs}; allocation-free.
+         *
+         * @param nowNs world time
+         * @return the earliest deadline after {@code nowNs} that could still be missed, or
+         *     {@link Long#MAX_VALUE} if none is known (the watchdog then sleeps until woken)
+         */
+        long claimMissesAndNextDeadline(long nowNs);
+    }
+
+    private final Clock clock;
+    private final ClockWaiter waiter;
+    private final int party;
+    private final FrameworkFaults faults;
+    private final String faultSource;
+    private final Scan scan;
+    private volatile boolean running;
+    private Thread thread;
+    /** The world time it sleeps until; {@link #wakeFor} compares a new cycle's deadline with it. */
+    private volatile long wakeNs = Long.MAX_VALUE;
+
+    /**
+     * @param clock world time
+     * @param waiter how it sleeps
+     * @param party its party number in the waiter
+     * @param faults where a fault of its scan goes
+     * @param faultSource how such a fault names it
+     * @param scan what it does at each wake-up
+     */
+    Watchdog(Clock clock, ClockWaiter waiter, int party, FrameworkFaults faults, String faultSource, Scan scan) {
+        this.clock = clock;
+        this.waiter = waiter;
+        this.party = party;
+        this.faults = faults;
+        this.faultSource = faultSource;
+        this.scan = scan;
+    }
+
+    /** Creates the thread and registers it with the waiter; before any {@link #wakeFor}. */
+    void prepare() {
+        running = true;
+        thread = new Thread(this::watch, THREAD_NAME);
+        thread.setDaemon(true);
+        thread.setPriority(Thread.MAX_PRIORITY);
+        waiter.register(party, thread);
+    }
+
+    /** Starts the thread prepared by {@link #prepare()}. */
+    void start() {
+        thread.start();
+    }
+
+    /**
+     * Wakes the watchdog if a cycle's deadline comes before its wake time. Call after the cycle is
+     * marked running (a volatile write), so that either the watchdog's next scan sees the cycle or
+     * this call sees the wake time that scan set; allocation-free.
+     *
+     * @param deadlineNs the deadline of the cycle that starts now
+     */
+    void wakeFor(long deadlineNs) {
+        if (deadlineNs < wakeNs) {
+            waiter.wake(party, thread);
+        }
+    }
+
+    private void watch() {
+        try {
+            while (running) {
+                long earliest = Long.MAX_VALUE;
+                try {
+                    earliest = scan.claimMissesAndNextDeadline(clock.nanos());
+                } catch (Throwable fault) {
+                    faults.report(faultSource, fault);
+                }
+                wakeNs = earliest;
+                // Wake just after the deadline: a miss is a cycle still running past it.
+                waiter.park(party, earliest == Long.MAX_VALUE ? Long.MAX_VALUE : earliest + 1);
+            }
+        } finally {
+            waiter.done(party);
+        }
+    }
+
+    /** Stops the thread and waits for it (see {@link #joinOrInterrupt}); a no-op if never prepared. */
+    void stopAndJoin() {
+        running = false;
+        if (thread != null) {
+            LockSupport.unpark(thread);
+            joinOrInterrupt(thread);
+        }
+    }
+
+    /** How long a stop waits for one of the executors' threads before interrupting it, ms. */
+    static final long JOIN_TIMEOUT_MS = 5_000;
+
+    /**
+     * Waits for a thread the executor has asked to stop; after {@value #JOIN_TIMEOUT_MS} ms says
+     * so on stderr, interrupts it and waits as long again. Returns at once for the calling
+     * thread itself (a task that stops its own monitor) and keeps the caller's interrupt.
+     *
+     * @param thread the thread, or null
+     */
+    static void joinOrInterrupt(Thread thread) {
+        if (thread == null || thread == Thread.currentThread()) {
+            return;
+        }
+        try {
+            thread.join(JOIN_TIMEOUT_MS);
+            if (thread.isAlive()) {
+                System.err.println("rtaware: " + thread.getName() + " did not return within "
+                        + JOIN_TIMEOUT_MS + " ms of stop; interrupting it");
+                thread.interrupt();
+                thread.join(JOIN_TIMEOUT_MS);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}
