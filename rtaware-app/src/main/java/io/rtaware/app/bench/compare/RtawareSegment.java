@@ -2,12 +2,13 @@ package io.rtaware.app.bench.compare;
 
 import io.rtaware.app.bench.LiveThreads;
 import io.rtaware.app.bench.BenchSpec;
-import io.rtaware.app.bench.BenchTask;
 import io.rtaware.app.bench.BusyWork;
 import io.rtaware.core.monitor.ExecutorKind;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.MonitorListener;
 import io.rtaware.core.monitor.TaskInfo;
+import io.rtaware.core.task.Task;
+import io.rtaware.core.task.TaskSetup;
 import io.rtaware.core.time.MonotonicSleeper;
 import io.rtaware.core.time.SystemClock;
 import java.util.List;
@@ -15,7 +16,9 @@ import java.util.stream.LongStream;
 
 /**
  * rtaware on one of its executors (threaded: {@code rtaware}; pooled: {@code rtaware-pooled}): a
- * {@link Monitor} with one {@link BenchTask} per task. Lateness is the monitor's own measurement
+ * {@link Monitor} with one {@link BurnTask} per task, whose cycle is the body every other row
+ * runs (the calibrated busy loop, nothing else), so the rows differ only in how releases get
+ * onto threads and what is accounted around them. Lateness is the monitor's own measurement
  * (the release and start it reports in {@link MonitorListener#onCycle}), skipped releases are the
  * ones it reports. The monitor's watchdog and pool workers count as framework cost.
  */
@@ -52,7 +55,7 @@ final class RtawareSegment implements SegmentExecutor {
     public void prepare(List<BenchSpec> specs, List<ReleaseStats> stats) {
         Monitor.Builder builder = Monitor.builder(new SystemClock()).executor(kind).sleeper(sleeper);
         for (BenchSpec s : specs) {
-            builder.task(s.name(), s.schedule(), new BenchTask(s.name(), s.workNs(), null, work));
+            builder.task(s.name(), s.schedule(), new BurnTask(s.workNs(), work));
         }
         builder.listener(new StatsListener(stats.toArray(new ReleaseStats[0])));
         monitor = builder.build();
@@ -96,6 +99,33 @@ final class RtawareSegment implements SegmentExecutor {
         @Override
         public void onSkippedReleases(TaskInfo task, long skipped, long nowNs) {
             stats[task.index()].onSkipped(skipped, nowNs);
+        }
+    }
+
+    /**
+     * The compared task body: the busy loop and nothing else, as the park loop and
+     * {@code ScheduledThreadPoolExecutor} rows run it. It declares no data: the cost of a commit
+     * to the data store is measured on its own ({@code StoreBench}), and {@code rtaware bench}
+     * without {@code --compare} runs tasks that publish. (Until issue 16's last session this row
+     * ran those publishing tasks, a store commit per release that no other row made.)
+     */
+    private static final class BurnTask implements Task {
+        private final long workNs;
+        private final BusyWork work;
+
+        BurnTask(long workNs, BusyWork work) {
+            this.workNs = workNs;
+            this.work = work;
+        }
+
+        @Override
+        public void initialize(TaskSetup setup) {
+            // Declares no data.
+        }
+
+        @Override
+        public void execute(long nowNs) {
+            work.burn(workNs);
         }
     }
 }
