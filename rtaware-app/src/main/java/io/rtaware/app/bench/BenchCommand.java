@@ -29,6 +29,7 @@ import io.rtaware.ros2.export.MonitorExporter;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
 import io.rtaware.core.report.SummaryTable;
+import io.rtaware.app.rt.CpuLatencyRequest;
 import io.rtaware.app.rt.RealtimeThreads;
 import io.rtaware.core.monitor.AdaptivePolicy;
 import io.rtaware.core.trace.TraceRecorder;
@@ -163,7 +164,8 @@ public final class BenchCommand implements Callable<Integer> {
     boolean adaptive;
 
     @Option(names = "--realtime",
-            description = "SCHED_FIFO task threads in rate-monotonic order and 1 ns timer slack (Linux, root or CAP_SYS_NICE).")
+            description = "SCHED_FIFO task threads in rate-monotonic order, 1 ns timer slack, and the CPUs held out of "
+                    + "deep idle for the run through /dev/cpu_dma_latency, as cyclictest does (Linux, root or CAP_SYS_NICE).")
     boolean realtime;
 
     @Option(names = "--rt-priority", paramLabel = "P", defaultValue = "80",
@@ -354,6 +356,11 @@ public final class BenchCommand implements Callable<Integer> {
             builder.listener(histogram);
         }
         Monitor monitor = CommandMonitor.build(builder);
+        if (realtime) {
+            // Held until the monitor's termination, which every way out of the run passes.
+            CpuLatencyRequest.hold(CpuLatencyRequest.DEVICE, 0, System.err)
+                    .ifPresent(request -> monitor.onTermination(report -> request.close()));
+        }
         ConsoleReporter console = CommandMonitor.console(monitor, quiet, System.err);
         TraceRecorder recorder = trace.attach(monitor);
         RunRecorder recording = record.attach(monitor, new RecordingPlan().metadata("command", "bench")

@@ -19,6 +19,7 @@ import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.trace.TraceRecorder;
 import io.rtaware.record.RunRecorder;
+import io.rtaware.app.rt.CpuLatencyRequest;
 import io.rtaware.app.rt.RealtimeThreads;
 import io.rtaware.nav.NavConfig;
 import io.rtaware.nav.NavController;
@@ -219,6 +220,11 @@ public final class RobotRun {
             builder.threadSetup(RealtimeThreads.configure(RealtimeThreads.DEFAULT_TOP_PRIORITY, Map.of(), err));
         }
         Monitor monitor = CommandMonitor.build(builder);
+        if (options.realtime()) {
+            // Held until the monitor's termination, which every way out of the run passes.
+            CpuLatencyRequest.hold(CpuLatencyRequest.DEVICE, 0, err)
+                    .ifPresent(request -> monitor.onTermination(report -> request.close()));
+        }
         MonitorExporter exporter = export.map(e -> e.start(monitor, RunExports.keys(nav), err)).orElse(null);
         ConsoleReporter console = CommandMonitor.console(monitor, options.quiet(), err);
         TraceRecorder trace = options.trace().attach(monitor);

@@ -91,7 +91,9 @@ public final class RunCommand implements Callable<Integer> {
     RecordOptions record;
 
     @Option(names = "--realtime",
-            description = "SCHED_FIFO task threads in rate-monotonic order and 1 ns timer slack (Linux, root or CAP_SYS_NICE); one line and normal threads otherwise.")
+            description = "SCHED_FIFO task threads in rate-monotonic order, 1 ns timer slack, and the CPUs held out of "
+                    + "deep idle for the run through /dev/cpu_dma_latency (Linux, root or CAP_SYS_NICE); one line and "
+                    + "normal threads otherwise.")
     boolean realtime;
 
     @Mixin
