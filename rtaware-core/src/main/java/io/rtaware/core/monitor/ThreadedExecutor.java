@@ -61,6 +61,11 @@ final class ThreadedExecutor implements Executor {
         this.watchdog = new Watchdog(clock, waiter, watchdogParty, faults, "watchdog", this::claimMissesAndNextDeadline);
     }
 
+    /** @return its watchdog */
+    Watchdog watchdog() {
+        return watchdog;
+    }
+
     /** @return the waiter its threads wait with (tests on a manual clock step through it) */
     ClockWaiter waiter() {
         return waiter;

@@ -41,8 +41,15 @@ final class Watchdog {
     private final Scan scan;
     private volatile boolean running;
     private Thread thread;
-    /** The world time it sleeps until; {@link #wakeFor} compares a new cycle's deadline with it. */
-    private volatile long wakeNs = Long.MAX_VALUE;
+    /**
+     * The world time it sleeps until; {@link #wakeFor} compares a new cycle's deadline with it.
+     * {@link Long#MIN_VALUE} until the first scan: it is about to look anyway.
+     */
+    private volatile long wakeNs = Long.MIN_VALUE;
+    /** Set by {@link #wakeFor} before it wakes the thread; cleared by the thread before each scan. */
+    private volatile boolean wakeRequested;
+    /** Scans so far; written by the watchdog thread only. */
+    private long scans;
 
     /**
      * @param clock world time
@@ -84,13 +91,23 @@ final class Watchdog {
      */
     void wakeFor(long deadlineNs) {
         if (deadlineNs < wakeNs) {
+            wakeRequested = true;
             waiter.wake(party, thread);
         }
     }
 
+    /**
+     * Scans, then sleeps until just after the time the scan named (a miss is a cycle still
+     * running past its deadline) or until {@link #wakeFor} asks for an earlier look; a park that
+     * returns for any other reason (a spurious wake-up, a manual clock's advance) does not cost
+     * a scan.
+     */
     private void watch() {
         try {
             while (running) {
+                // Cleared before the scan: a request made from here on leads to another scan.
+                wakeRequested = false;
+                scans++;
                 long earliest = Long.MAX_VALUE;
                 try {
                     earliest = scan.claimMissesAndNextDeadline(clock.nanos());
@@ -98,12 +115,19 @@ final class Watchdog {
                     faults.report(faultSource, fault);
                 }
                 wakeNs = earliest;
-                // Wake just after the deadline: a miss is a cycle still running past it.
-                waiter.park(party, earliest == Long.MAX_VALUE ? Long.MAX_VALUE : earliest + 1);
+                long targetNs = earliest == Long.MAX_VALUE ? Long.MAX_VALUE : earliest + 1;
+                while (running && !wakeRequested && clock.nanos() < targetNs) {
+                    waiter.park(party, targetNs);
+                }
             }
         } finally {
             waiter.done(party);
         }
+    }
+
+    /** @return how many times it has scanned (how often it woke); exact once it has stopped */
+    long scans() {
+        return scans;
     }
 
     /** Stops the thread and waits for it (see {@link #joinOrInterrupt}); a no-op if never prepared. */

@@ -67,6 +67,31 @@ class ThreadedExecutorTest {
         assertTrue(rightThread.get(), "the task runs on its own thread named rtaware-<task>");
     }
 
+    /**
+     * With releases spread over the period, the watchdog sleeps until the earliest deadline that
+     * could be missed (the next task's, a period after its release) and looks once per period; a
+     * park that returns before its time (here: the manual clock's advance to every other task's
+     * release; on a real clock a spurious wake-up) does not cost a scan of every task.
+     */
+    @Test
+    void theWatchdogLooksOncePerPeriodWhenReleasesAreSpreadOverIt() {
+        int tasks = 100;
+        Monitor.Builder builder = Monitor.builder(clock);
+        for (int i = 0; i < tasks; i++) {
+            builder.task("t" + i, Schedule.periodic(Duration.ofMillis(10), Duration.ofNanos(i * ms(10) / tasks),
+                    Duration.ofMillis(10)), FnTask.of(now -> { }));
+        }
+        Monitor monitor = builder.build();
+        monitor.start();
+        new SteppedThreads(monitor, clock).runUntil(ms(500));
+        Watchdog watchdog = ((ThreadedExecutor) monitor.executor()).watchdog();
+        Report report = monitor.stop();
+
+        assertEquals(tasks * 50, report.tasks().stream().mapToLong(t -> t.releases()).sum());
+        assertEquals(50, watchdog.scans(), "once per 10 ms: not at each of the 100 releases of a"
+                + " period, which each advance the manual clock (5000 scans before)");
+    }
+
     @ParameterizedTest
     @EnumSource(Kind.class)
     void anOverrunSkipsToTheNextGridPointExactlyAsOnTheStepExecutor(Kind kind) {
