@@ -7,7 +7,8 @@ import java.util.Map;
  * {@code advice} section. Immutable.
  *
  * @param task the task the advice is for
- * @param rule which rule fired: {@code nyquist}, {@code mostly_stale} or {@code exec_near_period}
+ * @param rule which rule fired: {@code nyquist}, {@code mostly_stale}, {@code exec_near_period},
+ *     {@code reaction} or {@code released_together}
  * @param periodMs the task's period in the run, ms
  * @param suggestedPeriodMs the period the advice suggests, ms
  * @param evidence the numbers the advice rests on, by snake_case name with a unit suffix

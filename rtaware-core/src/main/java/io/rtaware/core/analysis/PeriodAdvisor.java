@@ -12,7 +12,8 @@ import java.util.Locale;
 import java.util.Map;
 
 /**
- * Derives period advice from a finished run. Four rules, applied to every periodic task:
+ * Derives period advice from a finished run. Four rules applied to every periodic task, and one
+ * to groups of them:
  * <ol>
  *   <li><b>nyquist</b>: a task that samples an input must run at least twice as fast as that
  *   input changes, so its period must be at most {@code 1 / (2 * rate)} of every key it
@@ -38,6 +39,13 @@ import java.util.Map;
  *   measured commit interval ({@code 1 / rate}). The advice always names the largest safe
  *   period {@code 1000 * (range - stopping) / speed - age p99} ms, and says whether the task's
  *   period is within it.</li>
+ *   <li><b>released_together</b>, once per group: at least {@value #MIN_TOGETHER} periodic tasks
+ *   of one period and one offset are released at the same instants, so each release of the
+ *   group is a burst that the cores (or a pool's workers) work off one task after the other.
+ *   When the group's lateness p99 (the median over its tasks) is at least
+ *   {@value #TOGETHER_LATENESS_PCT}% of the period, the advice names the task that starts latest
+ *   (highest p50 lateness) and says to spread the group's offsets over the period. Reports that
+ *   carry no offsets (written before the offset was reported) get no such advice.</li>
  * </ol>
  * Stateless and thread-safe.
  */
@@ -53,6 +61,10 @@ public final class PeriodAdvisor {
     public static final double EXEC_NEAR_PERIOD_PCT = 80.0;
     /** p99 execution time over the suggested period, percent. */
     public static final double TARGET_EXEC_PCT = 70.0;
+    /** Fewest tasks released at the same instants for the released_together rule. */
+    public static final int MIN_TOGETHER = 4;
+    /** Median over a group of its tasks' lateness p99, in percent of the period, from which released_together fires. */
+    public static final double TOGETHER_LATENESS_PCT = 10.0;
 
     private PeriodAdvisor() {
     }
@@ -81,6 +93,7 @@ public final class PeriodAdvisor {
             execNearPeriod(task, fastest, boundMs, items);
             reaction(task, report, items);
         }
+        releasedTogether(report, items);
         return items;
     }
 
@@ -223,6 +236,63 @@ public final class PeriodAdvisor {
                     num(floorTenth(boundMs)), period <= boundMs ? "the period is within it" : "shorten the period");
         }
         items.add(new AdviceItem(task.name(), "reaction", period, suggested, evidence, message));
+    }
+
+    private static void releasedTogether(Report report, List<AdviceItem> items) {
+        // Groups by period and by the phase of the first release within it, in microseconds.
+        Map<String, List<TaskReport>> groups = new LinkedHashMap<>();
+        for (TaskReport task : report.tasks()) {
+            if (task.periodMs() == null || task.periodMs() <= 0 || task.offsetMs() == null) {
+                continue;
+            }
+            long periodUs = Math.round(task.periodMs() * 1000);
+            long phaseUs = Math.floorMod(Math.round(task.offsetMs() * 1000), periodUs);
+            groups.computeIfAbsent(periodUs + "/" + phaseUs, k -> new ArrayList<>()).add(task);
+        }
+        for (List<TaskReport> group : groups.values()) {
+            if (group.size() < MIN_TOGETHER) {
+                continue;
+            }
+            double period = group.get(0).periodMs();
+            double[] p99s = group.stream().mapToDouble(t -> t.latenessUs().p99() / 1000.0).sorted().toArray();
+            double medianP99Ms = p99s.length % 2 == 1 ? p99s[p99s.length / 2]
+                    : (p99s[p99s.length / 2 - 1] + p99s[p99s.length / 2]) / 2;
+            double pct = 100.0 * medianP99Ms / period;
+            if (pct < TOGETHER_LATENESS_PCT) {
+                continue;
+            }
+            TaskReport latest = group.get(0);
+            TaskReport first = group.get(0);
+            for (TaskReport t : group) {
+                if (t.latenessUs().p50() > latest.latenessUs().p50()) {
+                    latest = t;
+                }
+                if (t.latenessUs().p50() < first.latenessUs().p50()) {
+                    first = t;
+                }
+            }
+            double offset = Math.floorMod(Math.round(group.get(0).offsetMs() * 1000), Math.round(period * 1000)) / 1000.0;
+            double stepMs = round3(period / group.size());
+            Map<String, Object> evidence = new LinkedHashMap<>();
+            evidence.put("tasks_released_together", group.size());
+            evidence.put("offset_ms", round3(offset));
+            evidence.put("lateness_p99_median_ms", round3(medianP99Ms));
+            evidence.put("lateness_p99_median_pct_of_period", round2(pct));
+            evidence.put("first_task", first.name());
+            evidence.put("first_lateness_p50_ms", round3(first.latenessUs().p50() / 1000.0));
+            evidence.put("latest_lateness_p50_ms", round3(latest.latenessUs().p50() / 1000.0));
+            evidence.put("suggested_offset_step_ms", stepMs);
+            items.add(new AdviceItem(latest.name(), "released_together", period, period, evidence,
+                    String.format(Locale.ROOT,
+                            "'%s' and %d other tasks of period %s ms are released at the same instant (offset %s ms) and"
+                                    + " wait for each other: lateness p99 %s ms (median over them, %.0f%% of the period),"
+                                    + " p50 from %s ms ('%s') to %s ms ('%s'); spread their offsets over the period"
+                                    + " (Schedule.periodic(period, offset, deadline)), e.g. %s ms apart",
+                            latest.name(), group.size() - 1, num(period), num(round3(offset)),
+                            num(round3(medianP99Ms)), pct, num(round3(first.latenessUs().p50() / 1000.0)),
+                            first.name(), num(round3(latest.latenessUs().p50() / 1000.0)), latest.name(),
+                            num(stepMs))));
+        }
     }
 
     static double floorTenth(double ms) {

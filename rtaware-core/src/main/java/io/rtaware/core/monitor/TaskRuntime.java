@@ -556,7 +556,8 @@ final class TaskRuntime implements TaskInfo {
         boolean periodic = release == Release.PERIODIC;
         Double period = periodic ? g.periodNs() / 1e6 : null;
         Double deadline = periodic ? g.deadlineNs() / 1e6 : null;
-        return new TaskReport(name(), spec.schedule().kind(), period, deadline, rel, statistics.runs(), miss,
+        Double offset = periodic ? offsetNs / 1e6 : null;
+        return new TaskReport(name(), spec.schedule().kind(), period, deadline, offset, rel, statistics.runs(), miss,
                 rel == 0 ? 0.0 : round2(100.0 * miss / rel), statistics.skippedReleases(), statistics.staleRuns(),
                 statistics.errors(), statistics.expiredReads(), statistics.execUs(), statistics.latenessUs(),
                 statistics.listenerErrors(), null);

@@ -10,6 +10,8 @@ import io.rtaware.core.task.ReactionConstraint;
  * @param schedule {@code periodic}, {@code continuous} or {@code once}
  * @param periodMs period in ms (null unless periodic)
  * @param deadlineMs relative deadline in ms (null unless periodic)
+ * @param offsetMs first release after the start in ms (null unless periodic; absent from reports
+ *     written before issue 16, which read as null)
  * @param releases grid points at which the task was due (periodic: runs plus skipped)
  * @param runs cycles executed
  * @param misses releases whose run did not finish by the deadline, plus every skipped release
@@ -26,13 +28,14 @@ import io.rtaware.core.task.ReactionConstraint;
  *     to JSON as {@code reaction} only when declared, so other tasks keep the schema's fields
  */
 public record TaskReport(String name, String schedule, Double periodMs, Double deadlineMs,
-                         long releases, long runs, long misses, double missPct, long skipped,
+                         @JsonInclude(JsonInclude.Include.NON_NULL) Double offsetMs, long releases, long runs, long misses, double missPct, long skipped,
                          long staleRuns, long errors, long expiredReads,
                          Percentiles execUs, Percentiles latenessUs, long listenerErrors,
                          @JsonInclude(JsonInclude.Include.NON_NULL) ReactionConstraint reaction) {
 
     /**
-     * A report without listener faults or a reaction (for reports built outside a monitor).
+     * A report without an offset, listener faults or a reaction (for reports built outside a
+     * monitor).
      *
      * @param name the task's name
      * @param schedule the schedule kind
@@ -52,8 +55,8 @@ public record TaskReport(String name, String schedule, Double periodMs, Double d
     public TaskReport(String name, String schedule, Double periodMs, Double deadlineMs, long releases, long runs,
                       long misses, double missPct, long skipped, long staleRuns, long errors, long expiredReads,
                       Percentiles execUs, Percentiles latenessUs) {
-        this(name, schedule, periodMs, deadlineMs, releases, runs, misses, missPct, skipped, staleRuns, errors,
-                expiredReads, execUs, latenessUs, 0, null);
+        this(name, schedule, periodMs, deadlineMs, null, releases, runs, misses, missPct, skipped, staleRuns,
+                errors, expiredReads, execUs, latenessUs, 0, null);
     }
 
     /**
@@ -61,7 +64,7 @@ public record TaskReport(String name, String schedule, Double periodMs, Double d
      * @return a copy carrying it
      */
     public TaskReport withReaction(ReactionConstraint constraint) {
-        return new TaskReport(name, schedule, periodMs, deadlineMs, releases, runs, misses, missPct, skipped,
-                staleRuns, errors, expiredReads, execUs, latenessUs, listenerErrors, constraint);
+        return new TaskReport(name, schedule, periodMs, deadlineMs, offsetMs, releases, runs, misses, missPct,
+                skipped, staleRuns, errors, expiredReads, execUs, latenessUs, listenerErrors, constraint);
     }
 }

@@ -75,4 +75,48 @@ class PeriodAdvisorTest {
         assertTrue(advice.get(0).message().contains("do less work: p99 <= 7 ms"), advice.get(0).message());
         assertTrue(AnalysisText.advice(advice).contains("exec_near_period"));
     }
+
+    /** Eight tasks of 10 ms released at once, lateness p99 3 ms (30 % of the period): one item for the group. */
+    @Test
+    void tasksReleasedTogetherAreToldToSpreadTheirOffsets() {
+        List<io.rtaware.core.report.TaskReport> tasks = new java.util.ArrayList<>();
+        for (int i = 0; i < 8; i++) {
+            tasks.add(Reports.released("t" + i, 10, 20, 100 + 400 * i, 3000));
+        }
+        tasks.add(Reports.released("alone", 10, 5, 50, 90));
+        List<AdviceItem> advice = PeriodAdvisor.advise(Reports.report(tasks, List.of()));
+        assertEquals(1, advice.size(), advice.toString());
+        AdviceItem item = advice.get(0);
+        assertEquals("released_together", item.rule());
+        assertEquals("t7", item.task(), "named after the task that starts latest");
+        assertEquals(10.0, item.suggestedPeriodMs(), "the period stays: the offsets change");
+        assertEquals(8, item.evidence().get("tasks_released_together"));
+        assertEquals(0.0, item.evidence().get("offset_ms"), "20 ms is the same instant in a 10 ms period as 0 ms");
+        assertEquals(3.0, item.evidence().get("lateness_p99_median_ms"));
+        assertEquals("t0", item.evidence().get("first_task"));
+        assertEquals(2.9, item.evidence().get("latest_lateness_p50_ms"));
+        assertEquals(1.25, item.evidence().get("suggested_offset_step_ms"), "10 ms over 8 tasks");
+        assertTrue(item.message().contains("'t7' and 7 other tasks of period 10 ms"), item.message());
+    }
+
+    @Test
+    void releasedTogetherNeedsFourTasksOfOnePhaseAndALatenessThatShows() {
+        List<io.rtaware.core.report.TaskReport> spread = new java.util.ArrayList<>();
+        List<io.rtaware.core.report.TaskReport> early = new java.util.ArrayList<>();
+        List<io.rtaware.core.report.TaskReport> three = new java.util.ArrayList<>();
+        List<io.rtaware.core.report.TaskReport> unknown = new java.util.ArrayList<>();
+        for (int i = 0; i < 8; i++) {
+            spread.add(Reports.released("s" + i, 10, i * 1.25, 100, 3000));
+            early.add(Reports.released("e" + i, 10, 0, 100, 999));
+            unknown.add(Reports.task("u" + i, 10, 100, 100, 100, 100, 0, 0));
+        }
+        for (int i = 0; i < 3; i++) {
+            three.add(Reports.released("h" + i, 10, 0, 100, 5000));
+        }
+        assertEquals(List.of(), PeriodAdvisor.advise(Reports.report(spread, List.of())), "each its own instant");
+        assertEquals(List.of(), PeriodAdvisor.advise(Reports.report(early, List.of())), "p99 under 10 % of the period");
+        assertEquals(List.of(), PeriodAdvisor.advise(Reports.report(three, List.of())), "fewer than four tasks");
+        assertEquals(List.of(), PeriodAdvisor.advise(Reports.report(unknown, List.of())),
+                "a report written before offsets were reported");
+    }
 }

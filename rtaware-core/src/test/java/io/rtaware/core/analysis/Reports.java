@@ -20,6 +20,13 @@ final class Reports {
                 new Percentiles(meanUs, p99Us, p99Us, maxUs, meanUs), Percentiles.EMPTY);
     }
 
+    /** A periodic task released at {@code offsetMs}, with the given lateness p50 and p99 (us). */
+    static TaskReport released(String name, double periodMs, double offsetMs, double lateP50Us, double lateP99Us) {
+        return new TaskReport(name, "periodic", periodMs, periodMs, offsetMs, 1000, 1000, 0, 0, 0, 0, 0, 0,
+                new Percentiles(1, 2, 3, 4, 1), new Percentiles(lateP50Us, lateP99Us, lateP99Us, lateP99Us, lateP50Us),
+                0, null);
+    }
+
     static DataReport key(String name, String producer, double rateHz, String... consumers) {
         return new DataReport(name, producer, List.of(consumers), 100, rateHz,
                 new DataReport.Interval(1000 / rateHz, 1000 / rateHz, 1000 / rateHz));
