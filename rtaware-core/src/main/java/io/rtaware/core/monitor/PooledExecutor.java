@@ -181,7 +181,7 @@ final class PooledExecutor implements Executor {
             releaseOrderIsRunOrder = order == ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST && oneFixedDeadline();
             for (int slot = 0; slot < pooled.length; slot++) {
                 TaskRuntime runtime = pooled[slot];
-                runtime.onCycleStart(() -> watchdog.wakeFor(runtime.runningDeadlineNs()));
+                runtime.watchedBy(watchdog);
                 runtime.begin(startNs, stopAllRequest, waiter.zeroCycleSpacingNs());
                 waiting.push(slot, runtime.nextReleaseNs());
             }

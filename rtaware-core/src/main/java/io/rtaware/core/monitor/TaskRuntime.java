@@ -107,8 +107,8 @@ final class TaskRuntime implements TaskInfo {
     private long startNs;
     private Runnable stopAllRequest;
     private long zeroCycleSpacingNs;
-    /** Called on the cycle's thread once a periodic cycle is marked running; null if none. */
-    private Runnable cycleStarted;
+    /** Told on the cycle's thread once a periodic cycle is marked running; null if none. */
+    private Watchdog watchdog;
 
     // The next release, written by the cycle's thread between cycles.
     private long nextIndex;
@@ -208,13 +208,16 @@ final class TaskRuntime implements TaskInfo {
     }
 
     /**
-     * Sets the hook run on the cycle's thread right after a periodic cycle is marked running (the
-     * threaded executor wakes its watchdog there). Call before {@link #begin}.
+     * Sets the watchdog told of each periodic cycle right after it is marked running, with the
+     * cycle's deadline ({@link Watchdog#wakeFor}: woken if that comes before its wake time). One
+     * watchdog shared by the executor's tasks, rather than a hook object per task: with
+     * thousands of tasks every object a cycle reaches is a cache miss of its own. Call before
+     * {@link #begin}.
      *
-     * @param hook must not allocate or block
+     * @param watchdog the executor's watchdog
      */
-    void onCycleStart(Runnable hook) {
-        this.cycleStarted = hook;
+    void watchedBy(Watchdog watchdog) {
+        this.watchdog = watchdog;
     }
 
     /**
@@ -331,8 +334,8 @@ final class TaskRuntime implements TaskInfo {
                 events.onDeadlineMiss(this, releaseNs, deadline, cycleStartNs, true);
             } else {
                 token.start(k);
-                if (cycleStarted != null) {
-                    cycleStarted.run();
+                if (watchdog != null) {
+                    watchdog.wakeFor(deadline);
                 }
             }
         }

@@ -94,7 +94,7 @@ final class ThreadedExecutor implements Executor {
         watchdog.prepare();
         int[] ranks = rateMonotonicRanks(runtimes);
         for (TaskRuntime runtime : runtimes) {
-            runtime.onCycleStart(() -> watchdog.wakeFor(runtime.runningDeadlineNs()));
+            runtime.watchedBy(watchdog);
             int rank = ranks[runtime.index()];
             Thread thread = new Thread(() -> runTask(runtime, rank, ready, go), "rtaware-" + runtime.name());
             thread.setDaemon(true);
