@@ -92,18 +92,21 @@ public final class NavController {
     }
 
     /**
-     * The avoider's reaction: what it sees at its safety range, minus the robot's radius (the
-     * laser sits at the centre; the body ends a radius ahead), must be stopped short of, at the
-     * robot's top speed, with its stopping distance, from scans as old as the laser's delay.
-     * Null when the zone does not reach beyond the body (nothing to declare).
+     * The avoider's reaction: what it sees at its safety range, minus the clearance that must
+     * remain (the robot's radius, since the laser sits at the centre and the body ends a radius
+     * ahead; or the laser's minimum range where that is larger, since anything closer is only
+     * seen at the minimum range), must be stopped short of, at the robot's top speed, with its
+     * stopping distance, from scans as old as the laser's delay. Null when the zone does not
+     * reach beyond that clearance (nothing to declare).
      */
     private static ReactionConstraint reaction(NavConfig config) {
-        double rangeM = config.avoider().rangeM() - config.robot().radiusM();
+        NavConfig.Robot robot = config.robot();
+        double rangeM = config.avoider().rangeM() - Math.max(robot.radiusM(), robot.laserMinRangeM());
         if (rangeM <= 0) {
             return null;
         }
-        return new ReactionConstraint(RobotKeys.LASER.name(), config.robot().topSpeedMps(),
-                config.robot().stoppingDistanceM(), rangeM, config.robot().laserDelayNs() / 1e6);
+        return new ReactionConstraint(RobotKeys.LASER.name(), robot.topSpeedMps(), robot.stoppingDistanceM(), rangeM,
+                robot.laserDelayNs() / 1e6);
     }
 
     private static TaskSpec spec(String name, long periodNs, io.rtaware.core.task.Task task) {

@@ -90,6 +90,7 @@ public final class ControllerMetadata {
                 .topSpeedMps(r.topSpeedMps())
                 .maxOmegaRadPerSec(r.maxOmegaRadPerSec())
                 .reactionLimits(r.stoppingDistanceM(), r.laserDelayNs())
+                .laserMinRangeM(r.laserMinRangeM())
                 .inflationMarginM(recorded.planner().inflationMarginM())
                 .unknownCostFactor(recorded.planner().unknownCostFactor())
                 .lookaheadM(f.lookaheadM())

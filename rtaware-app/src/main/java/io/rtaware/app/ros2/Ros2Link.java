@@ -105,7 +105,7 @@ public final class Ros2Link implements AutoCloseable {
         latencyMs.put("p99", Rounding.toDecimals(latencyMs(latency, 99), 3));
         return new Ros2Section(describe(), s.scans(), s.odometry(), s.commands(), rejected, s.malformed(),
                 s.oversized(), s.overflowed(), s.lastProblem(), task.fault(), latencyMs,
-                Rounding.toDecimals(cpuUsPerSample(s), 2));
+                Rounding.toDecimals(cpuUsPerSample(s), 2), s.droppedBeams());
     }
 
     /** @return a percentile of the scan source-to-commit latency, milliseconds */

@@ -19,8 +19,10 @@ import java.util.Map;
  * @param fault why the robot was halted (a topic sent only impossible samples), or null
  * @param scanLatencyMs a scan's source timestamp to its commit in the store, {@code p50} and {@code p99}
  * @param cpuUsPerSample the data task's CPU time per received sample, microseconds
+ * @param droppedBeams scan readings that said nothing (NaN, beyond the maximum range), dropped
+ *     from scans that were kept
  */
 public record Ros2Section(String robot, long scans, long odometry, long commands, Map<String, Long> rejectedSamples,
                           long malformed, long oversized, long overflowed, String lastProblem, String fault,
-                          Map<String, Double> scanLatencyMs, double cpuUsPerSample) {
+                          Map<String, Double> scanLatencyMs, double cpuUsPerSample, long droppedBeams) {
 }

@@ -463,6 +463,7 @@ public final class RobotRun {
                 .topSpeedMps(model.topSpeedMps())
                 .inflationMarginM(options.inflationMarginM())
                 .reactionLimits(model.stoppingDistanceM(model.topSpeedMps()), model.laserDelayNs(LaserConfig.URG_04LX))
+                .laserMinRangeM(LaserConfig.URG_04LX.minRangeM())
                 .periodsNs(options.periods().nanosByTask())
                 .goalToleranceM(scenario.goalToleranceM())
                 .waypoints(scenario.waypoints());

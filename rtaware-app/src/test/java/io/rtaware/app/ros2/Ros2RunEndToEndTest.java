@@ -128,7 +128,7 @@ class Ros2RunEndToEndTest {
         ByteArrayOutputStream stderr = new ByteArrayOutputStream();
         PrintStream savedErr = System.err;
         int status;
-        NanPoseRos2Robot robot = new NanPoseRos2Robot(endpoint, 500);
+        ScriptedRos2Robot robot = ScriptedRos2Robot.nanPosesAfter(endpoint, 500);
         try {
             System.setErr(new PrintStream(stderr, true, StandardCharsets.UTF_8));
             status = quietly("run", "--ros2", "--zenoh", endpoint, "--scenario", shortLeg().toString(),

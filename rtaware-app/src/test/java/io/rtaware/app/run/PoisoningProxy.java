@@ -16,7 +16,9 @@ import java.util.concurrent.atomic.AtomicLong;
 /**
  * A TCP proxy between a Player client and server on loopback that, once {@link #poison()} was
  * called, replaces the x of every position2d DATA STATE the server sends with NaN, as the
- * hostile proxy of issue 12 did. Client-to-server bytes pass unchanged. For tests.
+ * hostile proxy of issue 12 did; and, once {@link #blindLaser()} was called, every range of
+ * every laser DATA SCAN with 0 (a laser blinded by something against it, issue 24).
+ * Client-to-server bytes pass unchanged. For tests.
  */
 final class PoisoningProxy implements AutoCloseable {
 
@@ -25,12 +27,18 @@ final class PoisoningProxy implements AutoCloseable {
     private static final int POSITION2D = 4;
     private static final int DATA = 1;
     private static final int DATA_STATE = 1;
+    private static final int LASER = 6;
+    private static final int DATA_SCAN = 1;
+    /** Offset of the first range in a laser DATA SCAN body: four floats, the count, the XDR array length. */
+    private static final int FIRST_RANGE = 24;
 
     private final ServerSocket listener;
     private final int upstreamPort;
     private final List<Socket> sockets = new CopyOnWriteArrayList<>();
     private final AtomicLong poisoned = new AtomicLong();
     private volatile boolean poisoning;
+    private volatile boolean blinding;
+    private final AtomicLong blinded = new AtomicLong();
 
     PoisoningProxy(int upstreamPort) throws IOException {
         this.upstreamPort = upstreamPort;
@@ -47,6 +55,16 @@ final class PoisoningProxy implements AutoCloseable {
     /** From now on every position2d state carries x = NaN. */
     void poison() {
         poisoning = true;
+    }
+
+    /** From now on every laser range reads 0 m. */
+    void blindLaser() {
+        blinding = true;
+    }
+
+    /** @return laser scans blinded so far */
+    long blinded() {
+        return blinded.get();
     }
 
     /** @return position2d states poisoned so far */
@@ -113,6 +131,15 @@ final class PoisoningProxy implements AutoCloseable {
                     && size >= 8) {
                 ByteBuffer.wrap(body).putDouble(0, Double.NaN);
                 poisoned.incrementAndGet();
+            }
+            if (blinding && h.getInt(8) == LASER && h.getInt(16) == DATA && h.getInt(20) == DATA_SCAN
+                    && size >= FIRST_RANGE) {
+                ByteBuffer b = ByteBuffer.wrap(body);
+                int ranges = b.getInt(16);
+                for (int i = 0; i < ranges && FIRST_RANGE + 4 * i + 4 <= size; i++) {
+                    b.putFloat(FIRST_RANGE + 4 * i, 0f);
+                }
+                blinded.incrementAndGet();
             }
             out.write(header);
             out.write(body);

@@ -187,4 +187,36 @@ class RunRecoveryEndToEndTest {
         }
         assertTrue(playerErrors, "the halt is counted as an error of the player task");
     }
+
+    /**
+     * Issue 24, finding 1, over the Player protocol: a laser whose every range reads 0 (blinded by
+     * something against it) is an obstacle at the minimum range, which the controller turns away
+     * from without driving into it, not free space it drives through.
+     */
+    @Test
+    void aLaserReadingZeroEverywhereIsNeverDrivenInto() throws Exception {
+        PlayerSimServer sim = startSim(0);
+        Path out = dir.resolve("blind");
+        PrintStream savedOut = System.out;
+        int status;
+        double drivenM;
+        try (PoisoningProxy proxy = new PoisoningProxy(sim.port())) {
+            proxy.blindLaser();
+            System.setOut(new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8));
+            status = RtawareCli.execute("run", "--player", "127.0.0.1:" + proxy.port(), "--scenario",
+                    scenarioFile.toString(), "--time-scale", Double.toString(TIME_SCALE), "--stuck-after", "20", "--out",
+                    out.toString(), "--quiet", "--seed", Long.toString(SEED));
+            assertTrue(proxy.blinded() > 0, "scans were blinded");
+            drivenM = distanceFromStart(sim, scenario);
+        } finally {
+            System.setOut(savedOut);
+            sim.close();
+        }
+        assertEquals(0, status);
+        JsonNode report = new ObjectMapper().readTree(out.resolve("report.json").toFile());
+        assertEquals("stuck", report.path("run").path("outcome").asText(), report.path("run").toString());
+        assertTrue(drivenM < 0.05, "the robot turned in place instead of driving: " + drivenM + " m from the start");
+        assertEquals(0, report.path("player").path("devices").path("laser:0").path("rejected_samples").asLong(),
+                "zeros are readings, not impossible data: " + report.path("player"));
+    }
 }

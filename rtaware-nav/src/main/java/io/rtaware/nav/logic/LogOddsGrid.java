@@ -129,9 +129,10 @@ public final class LogOddsGrid {
     }
 
     /**
-     * Integrates one scan taken at a pose. Beams with a range that is not finite or not
-     * positive are skipped; beams at or beyond the scan's maximum range clear cells up to that
-     * range and mark no hit.
+     * Integrates one scan taken at a pose. Readings mean what {@link LaserScan} defines: one
+     * below the scan's minimum range ({@code -Inf} and 0 included) is a hit at the minimum range,
+     * a reading at or beyond the maximum range clears cells up to that range and marks no hit, and
+     * NaN (no reading) is skipped.
      *
      * @param scan the scan (bearings relative to the robot's heading)
      * @param xM robot x in metres
@@ -148,8 +149,8 @@ public final class LogOddsGrid {
         }
         double maxRange = scan.maxRangeM > 0 ? scan.maxRangeM : Double.MAX_VALUE;
         for (int i = 0; i < n; i++) {
-            double r = scan.rangesM[i];
-            if (!(r > 0) || !Double.isFinite(r)) {
+            double r = scan.obstacleRangeM(i);
+            if (Double.isNaN(r)) {
                 beamEndXM[i] = Double.NaN;
                 continue;
             }
@@ -163,7 +164,7 @@ public final class LogOddsGrid {
         }
         for (int i = 0; i < n; i++) {
             if (!Double.isNaN(beamEndXM[i])) {
-                traceFree(xM, yM, beamEndXM[i], beamEndYM[i], scan.rangesM[i] < maxRange);
+                traceFree(xM, yM, beamEndXM[i], beamEndYM[i], scan.obstacleRangeM(i) < maxRange);
             }
         }
         scansIntegrated++;

@@ -11,8 +11,10 @@ import io.rtaware.robot.msg.MotionRequest;
  * closer than {@code stopRangeM}) and turns at {@code turnRateRadPerSec} away from the nearer
  * side: an obstacle nearer on the left turns right. When both sides are equally near (within
  * 1 cm), it turns toward the side of the whole scan with the larger mean range. Otherwise it
- * requests nothing. Readings that are not finite, not positive, or at or beyond the scan's
- * maximum range are ignored.
+ * requests nothing. Readings mean what {@link LaserScan} defines: one below the scan's minimum
+ * range (0 and {@code -Inf} included) is an obstacle at the minimum range, so a sensor blinded
+ * by something against it stops the robot; one at or beyond the maximum range hit nothing; NaN
+ * is no reading and is ignored.
  *
  * <p>Immutable and thread-safe; allocates nothing.
  */
@@ -76,8 +78,8 @@ public final class ObstacleAvoider {
         int beamsRight = 0;
         for (int i = 0; i < n; i++) {
             double bearing = scan.bearingRad(i);
-            double r = scan.rangesM[i];
-            boolean valid = r > 0 && Double.isFinite(r);
+            double r = scan.obstacleRangeM(i);
+            boolean valid = !Double.isNaN(r);
             double seen = !valid ? 0 : Math.min(r, maxRange);
             if (bearing >= 0) {
                 sumLeft += seen;

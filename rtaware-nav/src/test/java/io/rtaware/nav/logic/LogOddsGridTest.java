@@ -81,6 +81,22 @@ class LogOddsGridTest {
     }
 
     @Test
+    void aReadingTooCloseToMeasureIsAHitAtTheMinimumRange() {
+        LaserScan scan = new LaserScan(2);
+        scan.setCount(2);
+        scan.minAngleRad = 0.0;
+        scan.maxAngleRad = Math.PI / 2;
+        scan.maxRangeM = 0.6;
+        scan.minRangeM = 0.3;
+        scan.rangesM[0] = Float.NEGATIVE_INFINITY; // along x: an obstacle at 0.3 m, cell 6
+        scan.rangesM[1] = 0f;                      // along y: the same
+        grid.integrate(scan, 0.025, 0.025, 0.0);
+        assertEquals(OccupancyGrid.OCCUPIED, grid.state(6, 0), "-Inf marks the cell at the minimum range");
+        assertEquals(OccupancyGrid.OCCUPIED, grid.state(0, 6), "0 m marks the cell at the minimum range");
+        assertEquals(OccupancyGrid.UNKNOWN, grid.state(7, 0), "nothing is known beyond it");
+    }
+
+    @Test
     void beamsLeavingTheGridAreClipped() {
         grid.integrateBeam(0.975, 0.025, 0.0, 3.0, true);
         assertEquals(OccupancyGrid.FREE, grid.state(19, 0));

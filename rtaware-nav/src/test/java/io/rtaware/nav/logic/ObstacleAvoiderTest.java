@@ -84,10 +84,33 @@ class ObstacleAvoiderTest {
         obstacle(s, 60, 0.1f); // outside the sector (0.6 rad = 34 degrees)
         obstacle(s, -80, 0.1f);
         obstacle(s, 0, 5.6f); // max range: no return
-        obstacle(s, 1, 0f); // invalid reading
-        obstacle(s, 2, Float.NaN);
+        obstacle(s, 1, Float.POSITIVE_INFINITY); // no return within range (REP 117)
+        obstacle(s, 2, Float.NaN); // no reading
         assertFalse(avoider.decide(s, out));
         assertFalse(out.active);
+    }
+
+    @Test
+    void aSensorThatSeesEverythingTooCloseToMeasureStopsTheRobot() {
+        for (float tooClose : new float[] {Float.NEGATIVE_INFINITY, 0f, 0.01f}) {
+            LaserScan s = openScan();
+            s.minRangeM = 0.02;
+            for (int i = 0; i < s.count(); i++) {
+                s.rangesM[i] = tooClose;
+            }
+            assertTrue(avoider.decide(s, out), "a blinded laser (" + tooClose + ") is an obstacle, not free space");
+            assertEquals(0.0, out.vxMps, "an obstacle at the 0.02 m minimum range is inside the 0.25 m stop range");
+            assertTrue(out.omegaRadPerSec != 0, "and the robot turns away");
+        }
+    }
+
+    @Test
+    void aReadingOfZeroIsAnObstacleAtZeroWhenTheSensorDeclaresNoMinimum() {
+        LaserScan s = openScan();
+        obstacle(s, 5, 0f);
+        assertTrue(avoider.decide(s, out));
+        assertEquals(0.0, out.vxMps);
+        assertEquals(-0.5, out.omegaRadPerSec, "left of the heading: turn right");
     }
 
     @Test

@@ -34,7 +34,9 @@ public final class LaserData {
     }
 
     /**
-     * Copies this scan into a data-store buffer.
+     * Copies this scan into a data-store buffer. Player's laser interface declares no minimum
+     * range, so the scan's is 0 (a reading of 0 is an obstacle at 0 m), and its resolution is
+     * not trusted to imply a beam count (Stage's differs), so the scan implies none.
      *
      * @param out the destination
      * @param serverTimeS the message's header timestamp
@@ -46,6 +48,8 @@ public final class LaserData {
         out.minAngleRad = minAngleRad;
         out.maxAngleRad = maxAngleRad;
         out.maxRangeM = maxRangeM;
+        out.minRangeM = 0;
+        out.impliedBeams = 0;
         out.serverTimeS = serverTimeS;
     }
 }

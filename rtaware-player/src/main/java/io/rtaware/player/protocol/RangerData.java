@@ -20,8 +20,9 @@ public final class RangerData {
     }
 
     /**
-     * Converts ranges into a scan, with the angles and maximum range from the ranger's
-     * configuration (the RANGE message carries neither).
+     * Converts ranges into a scan, with the angles and the minimum and maximum range from the
+     * ranger's configuration (the RANGE message carries none of them); the scan implies no beam
+     * count.
      *
      * @param out the destination
      * @param config the ranger's GET_CONFIG reply
@@ -36,6 +37,8 @@ public final class RangerData {
         out.minAngleRad = config.minAngleRad();
         out.maxAngleRad = config.maxAngleRad();
         out.maxRangeM = config.maxRangeM();
+        out.minRangeM = config.minRangeM();
+        out.impliedBeams = 0;
         out.serverTimeS = serverTimeS;
     }
 }

@@ -221,7 +221,7 @@ class PlayerDataTaskSafetyTest {
             }
             conn.send(odometry(0.1, 0.0));
             conn.send(scan(0.1, 1f, 2f, 3f));
-            conn.send(scan(0.2, 1f, -2f, 3f)); // a negative range, and no true scan after it
+            conn.send(scan(0.2)); // a scan of no beams, and no true scan after it
             while (true) {
                 byte[] msg;
                 try {
@@ -249,7 +249,7 @@ class PlayerDataTaskSafetyTest {
             assertNotNull(fault);
             assertTrue(fault.startsWith("laser:0 sent only impossible samples for 1.0 s of world time (1 rejected"),
                     fault);
-            assertTrue(fault.contains("range[1] = -2.0 m is outside [0, 8.0] m"), fault);
+            assertTrue(fault.contains("the scan has no beams"), fault);
             assertEquals(0, player.deviceSamples().get("position2d:0").rejectedSamples());
         }
     }
@@ -264,7 +264,7 @@ class PlayerDataTaskSafetyTest {
     }
 
     @Test
-    void scansWithNanInfiniteOrNegativeRangesAreRejectedCountedAndNeverCommitted() throws Exception {
+    void readingsAreKeptInTheirMeaningBeamsThatSayNothingDroppedAndImpossibleScansRejected() throws Exception {
         try (ScriptedServer server = new ScriptedServer(conn -> {
             conn.banner();
             for (int i = 0; i < 4; i++) {
@@ -272,12 +272,13 @@ class PlayerDataTaskSafetyTest {
             }
             conn.send(odometry(0.1, 0.0));
             conn.send(scan(0.1, 1f, 2f, 3f));
-            conn.send(scan(0.2, 1f, Float.NaN, 3f));
-            conn.send(scan(0.3, Float.POSITIVE_INFINITY, 2f, 3f));
-            conn.send(scan(0.4, 1f, 2f, Float.NEGATIVE_INFINITY));
-            conn.send(scan(0.5, 1f, -0.5f, 3f));
-            conn.send(scan(0.6, 1f, 2f, 12f)); // beyond the 8 m maximum the scan declares
-            conn.send(scan(0.05, 1f, 2f, 3f)); // earlier than the last true scan
+            conn.send(scan(0.2, 1f, Float.NaN, 3f)); // one beam says nothing: dropped, the scan kept
+            conn.send(scan(0.3, Float.POSITIVE_INFINITY, 2f, 3f)); // nothing hit: the maximum
+            conn.send(scan(0.4, 1f, 2f, Float.NEGATIVE_INFINITY)); // too close to measure: an obstacle at 0 m
+            conn.send(scan(0.5, 1f, -0.5f, 3f)); // below the minimum: an obstacle at 0 m
+            conn.send(scan(0.6, 1f, 2f, 12f)); // beyond the 8 m maximum the scan declares: dropped
+            conn.send(scan(0.65, Float.NaN, Float.NaN, Float.NaN)); // no usable beam: impossible
+            conn.send(scan(0.05, 1f, 2f, 3f)); // earlier than the last true scan: impossible
             conn.send(scan(0.7, 1f, 2f, 3f));
             while (true) { // acknowledges the unsubscriptions when the test stops the monitor
                 byte[] msg;
@@ -296,17 +297,17 @@ class PlayerDataTaskSafetyTest {
             Consumer consumer = new Consumer();
             Monitor monitor = monitor(clock, player, consumer);
             StepExecutor step = monitor.startStepped();
-            for (int i = 0; i < 5000 && player.deviceSamples().get("laser:0").samples() < 8; i++) {
+            for (int i = 0; i < 5000 && player.deviceSamples().get("laser:0").samples() < 9; i++) {
                 step.step();
             }
             step.runFor(100 * MS);
             DeviceSamples laser = player.deviceSamples().get("laser:0");
-            assertEquals(new DeviceSamples(8, 6, "timestamp = 0.05 s is earlier than the previous sample's 0.1 s"),
-                    laser);
+            assertEquals(new DeviceSamples(9, 2, "timestamp = 0.05 s is earlier than the previous sample's 0.6 s", 5),
+                    laser, "1 + 1 + 3 beams dropped");
             assertNull(player.fault(), "true scans came in between: no fault");
-            assertTrue(consumer.scans.get() >= 1 && consumer.scans.get() <= 2,
-                    "only the two true scans may be committed: " + consumer.scans.get());
-            assertEquals(6, player.stats().rejectedScans());
+            assertTrue(consumer.scans.get() >= 1 && consumer.scans.get() <= 7,
+                    "only the seven kept scans may be committed: " + consumer.scans.get());
+            assertEquals(2, player.stats().rejectedScans());
             assertEquals(0, monitor.counters("player").errors());
             monitor.stop();
         }

@@ -3,11 +3,20 @@ package io.rtaware.robot.msg;
 import io.rtaware.core.data.StateValue;
 
 /**
- * One planar range scan (Player laser DATA SCAN or ranger DATA RANGE). Beam {@code i} points
- * at {@link #bearingRad(int)}: beams are spread evenly from {@link #minAngleRad} to
- * {@link #maxAngleRad} inclusive, computed as (max - min) / (count - 1), not from the
- * server's resolution field (Stage's differs; PROTOCOL.md section 10.9). Fixed capacity,
- * mutable buffer for the data store; not thread-safe.
+ * One planar range scan (Player laser DATA SCAN or ranger DATA RANGE, ROS 2
+ * {@code sensor_msgs/msg/LaserScan}). Beam {@code i} points at {@link #bearingRad(int)}: beams are
+ * spread evenly from {@link #minAngleRad} to {@link #maxAngleRad} inclusive, computed as
+ * (max - min) / (count - 1), not from the server's resolution field (Stage's differs;
+ * PROTOCOL.md section 10.9).
+ *
+ * <p>What a reading means, for every consumer (REP 117 in the robot's terms):
+ * <ul>
+ *   <li>below {@link #minRangeM} (including 0 and {@code -Inf}): something is closer than the
+ *       sensor can measure: an obstacle <em>at</em> the minimum range ({@link #obstacleRangeM});</li>
+ *   <li>at or beyond {@link #maxRangeM} (including {@code +Inf}): nothing was hit within range;</li>
+ *   <li>NaN: no reading (erroneous, or dropped by the plausibility checks); it says nothing.</li>
+ * </ul>
+ * Fixed capacity, mutable buffer for the data store; not thread-safe.
  */
 public final class LaserScan implements StateValue<LaserScan> {
 
@@ -20,6 +29,16 @@ public final class LaserScan implements StateValue<LaserScan> {
     public double maxAngleRad;
     /** maximum range in metres; readings at or beyond it mean nothing was hit. */
     public double maxRangeM;
+    /**
+     * minimum range in metres (0 where the source does not say); readings below it mean
+     * something is closer than the sensor can measure.
+     */
+    public double minRangeM;
+    /**
+     * beams the source's own angles imply (from its declared angular increment), or 0 where the
+     * source does not declare one; a scan with fewer beams than that is impossible data.
+     */
+    public int impliedBeams;
     /** the robot server's timestamp in seconds. */
     public double serverTimeS;
     /** range of each beam in metres; only the first {@link #count} are valid. */
@@ -58,6 +77,19 @@ public final class LaserScan implements StateValue<LaserScan> {
     }
 
     /**
+     * The distance at which a reading places an obstacle, by the rules of this class.
+     *
+     * @param beam beam index
+     * @return the reading, raised to {@link #minRangeM} when it is below it (closer than the
+     *     sensor can measure); {@code +Inf} and readings at or beyond the maximum range come back
+     *     as they are (compare with {@link #maxRangeM}); NaN for no reading
+     */
+    public double obstacleRangeM(int beam) {
+        double r = rangesM[beam];
+        return r < minRangeM ? minRangeM : r;
+    }
+
+    /**
      * @param beam beam index
      * @return the beam's bearing in radians relative to the robot's heading
      */
@@ -70,6 +102,8 @@ public final class LaserScan implements StateValue<LaserScan> {
         minAngleRad = s.minAngleRad;
         maxAngleRad = s.maxAngleRad;
         maxRangeM = s.maxRangeM;
+        minRangeM = s.minRangeM;
+        impliedBeams = s.impliedBeams;
         serverTimeS = s.serverTimeS;
         setCount(s.count);
         System.arraycopy(s.rangesM, 0, rangesM, 0, s.count);

@@ -19,8 +19,14 @@ import java.util.Locale;
  *   <li>a scan's angles satisfy -2 pi &lt;= min &lt;= max &lt;= 2 pi with max - min &lt;= 2 pi;
  *       its declared maximum range is positive and at most
  *       {@link SampleLimits#maxSensorRangeM()};</li>
- *   <li>every range reading is &gt;= 0 and at most the declared maximum plus
- *       {@link SampleLimits#rangeTolerance()} of it (one bad beam rejects the whole scan);</li>
+ *   <li>a scan's declared minimum range is finite, &gt;= 0 and below its maximum; it has at least
+ *       one beam, and no fewer than its own angles imply ({@link LaserScan#impliedBeams}, one beam
+ *       of slack for drivers that count the end points differently);</li>
+ *   <li>a reading is one of what {@link LaserScan} defines: below the minimum range (including
+ *       {@code -Inf}: an obstacle at the minimum range), up to the declared maximum plus
+ *       {@link SampleLimits#rangeTolerance()} of it, or {@code +Inf} (nothing hit). A finite
+ *       reading beyond that tolerance, or NaN, says nothing: {@link #normalizeBeams} sets it
+ *       to NaN and counts it, and the scan is kept while at least one beam is usable;</li>
  *   <li>a timestamp is &gt;= 0 and never earlier than the previous accepted sample's of the
  *       same device (equal is allowed: a server may repeat data).</li>
  * </ul>
@@ -130,6 +136,39 @@ public final class SampleChecks {
     }
 
     /**
+     * Puts every reading into the form {@link LaserScan} defines, before {@link #scan}: a reading
+     * below the minimum range (including {@code -Inf}, "closer than the sensor can measure",
+     * REP 117) becomes the minimum range, an obstacle there; {@code +Inf} ("no return within
+     * range") becomes the maximum range; NaN and a finite reading beyond the declared maximum
+     * plus {@link SampleLimits#rangeTolerance()} of it say nothing (the
+     * {@code sensor_msgs/msg/LaserScan} definition says such values are to be discarded): they are
+     * set to NaN and counted. {@link #scan} then rejects a scan left without a usable beam.
+     *
+     * @param s a decoded scan; changed in place
+     * @param limits the bounds
+     * @return how many beams were dropped (set to NaN, or NaN already)
+     */
+    public static int normalizeBeams(LaserScan s, SampleLimits limits) {
+        double ceiling = s.maxRangeM * (1 + limits.rangeTolerance());
+        float min = (float) s.minRangeM;
+        float max = (float) s.maxRangeM;
+        float[] r = s.rangesM;
+        int dropped = 0;
+        for (int i = 0, n = s.count(); i < n; i++) {
+            float v = r[i];
+            if (v < min) {
+                r[i] = min;
+            } else if (v == Float.POSITIVE_INFINITY) {
+                r[i] = max;
+            } else if (!(v <= ceiling)) { // also true for NaN
+                r[i] = Float.NaN;
+                dropped++;
+            }
+        }
+        return dropped;
+    }
+
+    /**
      * @param o a position2d state with its timestamp
      * @param previousTimeS the previous accepted state's timestamp, or NaN
      * @param limits the bounds
@@ -142,7 +181,7 @@ public final class SampleChecks {
     }
 
     /**
-     * @param s a scan with its geometry and timestamp
+     * @param s a scan with its geometry and timestamp, after {@link #normalizeBeams}
      * @param previousTimeS the previous accepted scan's timestamp, or NaN
      * @param limits the bounds
      * @return why the scan cannot be true, or null
@@ -152,13 +191,27 @@ public final class SampleChecks {
         if (bad != null) {
             return bad;
         }
-        double ceiling = s.maxRangeM * (1 + limits.rangeTolerance());
+        if (!(s.minRangeM >= 0 && s.minRangeM < s.maxRangeM)) {
+            return String.format(Locale.ROOT, "min range = %s m is outside [0, %s) m", s.minRangeM, s.maxRangeM);
+        }
+        int n = s.count();
+        if (n == 0) {
+            return "the scan has no beams";
+        }
+        if (s.impliedBeams > 0 && n < s.impliedBeams - 1) {
+            return String.format(Locale.ROOT, "the scan has %d beams where its angles [%s, %s] rad imply %d", n,
+                    s.minAngleRad, s.maxAngleRad, s.impliedBeams);
+        }
         float[] r = s.rangesM;
-        for (int i = 0, n = s.count(); i < n; i++) {
-            float v = r[i];
-            if (!(v >= 0 && v <= ceiling)) { // also false for NaN
-                return String.format(Locale.ROOT, "range[%d] = %s m is outside [0, %s] m", i, v, s.maxRangeM);
+        int usable = 0;
+        for (int i = 0; i < n; i++) {
+            if (!Float.isNaN(r[i])) {
+                usable++;
             }
+        }
+        if (usable == 0) {
+            return String.format(Locale.ROOT, "none of the %d beams is a reading within [%s, %s] m (or an infinity)",
+                    n, s.minRangeM, s.maxRangeM);
         }
         return timestamp(s.serverTimeS, previousTimeS);
     }

@@ -17,6 +17,7 @@ public final class SampleValidator {
     private double lastTimeS = Double.NaN;
     private volatile long accepted;
     private volatile long rejected;
+    private volatile long droppedBeams;
     private volatile boolean lastRejected;
     private volatile String lastRejection;
 
@@ -38,10 +39,18 @@ public final class SampleValidator {
     }
 
     /**
-     * @param s a decoded scan with its geometry and timestamp
+     * Puts the scan's readings into the form {@link LaserScan} defines
+     * ({@link SampleChecks#normalizeBeams}: beams that say nothing are dropped and counted), then
+     * checks the scan as a whole.
+     *
+     * @param s a decoded scan with its geometry and timestamp; its readings are normalized in place
      * @return true if it may be committed; false if it was rejected (and counted)
      */
     public boolean acceptScan(LaserScan s) {
+        int dropped = SampleChecks.normalizeBeams(s, limits);
+        if (dropped > 0) {
+            droppedBeams += dropped;
+        }
         return record(SampleChecks.scan(s, lastTimeS, limits), s.serverTimeS);
     }
 
@@ -89,6 +98,11 @@ public final class SampleValidator {
     /** @return samples rejected */
     public long rejected() {
         return rejected;
+    }
+
+    /** @return beams dropped from accepted and rejected scans (NaN, or beyond the maximum range) */
+    public long droppedBeams() {
+        return droppedBeams;
     }
 
     /** @return true if the newest sample was rejected */

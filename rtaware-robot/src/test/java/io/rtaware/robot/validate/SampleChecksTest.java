@@ -78,13 +78,67 @@ class SampleChecksTest {
         assertTrue(SampleChecks.odometry(o, Double.NaN, LIMITS).contains("negative"));
     }
 
+    @Test
+    void readingsCloserThanTheSensorCanMeasureAreObstaclesAtTheMinimumRange() {
+        LaserScan s = scan();
+        s.minRangeM = 0.02;
+        s.rangesM[0] = Float.NEGATIVE_INFINITY; // REP 117: too close to measure
+        s.rangesM[1] = 0f;                       // a Player laser's "nothing measurable"
+        s.rangesM[2] = -0.5f;                    // below the minimum, whatever it means: not free space
+        s.rangesM[3] = Float.POSITIVE_INFINITY;  // REP 117: no return within range
+        assertEquals(0, SampleChecks.normalizeBeams(s, LIMITS), "none of these is dropped");
+        assertEquals(0.02f, s.rangesM[0], "-Inf is an obstacle at the minimum range");
+        assertEquals(0.02f, s.rangesM[1], "0 m is an obstacle at the minimum range");
+        assertEquals(0.02f, s.rangesM[2], "a negative reading is an obstacle at the minimum range");
+        assertEquals(8.0f, s.rangesM[3], "+Inf is nothing hit: the maximum range");
+        assertNull(SampleChecks.scan(s, Double.NaN, LIMITS));
+    }
+
     @ParameterizedTest
-    @ValueSource(floats = {Float.NaN, Float.POSITIVE_INFINITY, Float.NEGATIVE_INFINITY, -0.5f, 8.1f})
-    void oneImpossibleBeamRejectsTheScan(float bad) {
+    @ValueSource(floats = {Float.NaN, 8.1f, 1e9f})
+    void aReadingThatSaysNothingIsDroppedAndCountedNotTheScan(float bad) {
         LaserScan s = scan();
         s.rangesM[2] = bad;
-        String reason = SampleChecks.scan(s, Double.NaN, LIMITS);
-        assertEquals("range[2] = " + bad + " m is outside [0, 8.0] m", reason);
+        SampleValidator v = new SampleValidator("laser:0", LIMITS);
+        assertTrue(v.acceptScan(s), "the scan is kept: " + v.lastRejection());
+        assertTrue(Float.isNaN(s.rangesM[2]), "the beam says nothing now: " + s.rangesM[2]);
+        assertEquals(1, v.droppedBeams());
+        assertEquals(0, v.rejected());
+        assertEquals(2.0f, s.rangesM[1], "the other beams are untouched");
+    }
+
+    @Test
+    void aScanWithoutUsableBeamsIsImpossible() {
+        LaserScan s = scan();
+        for (int i = 0; i < s.count(); i++) {
+            s.rangesM[i] = i % 2 == 0 ? Float.NaN : 50f;
+        }
+        SampleValidator v = new SampleValidator("laser:0", LIMITS);
+        assertFalse(v.acceptScan(s));
+        assertEquals("none of the 5 beams is a reading within [0.0, 8.0] m (or an infinity)", v.lastRejection());
+        assertEquals(5, v.droppedBeams());
+    }
+
+    @Test
+    void aScanWithNoBeamsOrFewerThanItsAnglesImplyIsImpossible() {
+        LaserScan s = scan();
+        s.setCount(0);
+        assertEquals("the scan has no beams", SampleChecks.scan(s, Double.NaN, LIMITS));
+        s = scan();
+        s.impliedBeams = 181;
+        assertEquals("the scan has 5 beams where its angles [-1.5707963267948966, 1.5707963267948966] rad imply 181",
+                SampleChecks.scan(s, Double.NaN, LIMITS));
+        s.impliedBeams = 6;
+        assertNull(SampleChecks.scan(s, Double.NaN, LIMITS), "one beam of slack for drivers that count the ends apart");
+    }
+
+    @Test
+    void aMinimumRangeNotBelowTheMaximumIsImpossible() {
+        LaserScan s = scan();
+        s.minRangeM = 8.0;
+        assertEquals("min range = 8.0 m is outside [0, 8.0) m", SampleChecks.scan(s, Double.NaN, LIMITS));
+        s.minRangeM = Double.NaN;
+        assertEquals("min range = NaN m is outside [0, 8.0) m", SampleChecks.scan(s, Double.NaN, LIMITS));
     }
 
     @Test

@@ -228,7 +228,6 @@ public final class Ros2DataTask implements Task {
             return;
         }
         if (scan) {
-            applyRep117(scanScratch);
             if (scanValidator.acceptScan(scanScratch)) {
                 laserOut.value().copyFrom(scanScratch);
                 laserOut.publish();
@@ -245,25 +244,6 @@ public final class Ros2DataTask implements Task {
             odometry++;
         } else {
             lastProblem = "odom: " + odomValidator.lastRejection();
-        }
-    }
-
-    /**
-     * ROS 2's beam conventions (REP 117, and the {@code sensor_msgs/msg/LaserScan} definition) in
-     * the robot's terms, before the plausibility checks: {@code +Inf}, "no return within range",
-     * is a free beam to the maximum range; {@code -Inf}, "too close to measure", is an obstacle at
-     * 0 m, so the avoider reacts to it. NaN, "this measurement is erroneous", is left as it is: the
-     * checks reject the scan, since nothing says what is there.
-     */
-    private static void applyRep117(LaserScan s) {
-        float[] r = s.rangesM;
-        float max = (float) s.maxRangeM;
-        for (int i = 0; i < s.count(); i++) {
-            if (r[i] == Float.POSITIVE_INFINITY) {
-                r[i] = max;
-            } else if (r[i] == Float.NEGATIVE_INFINITY) {
-                r[i] = 0f;
-            }
         }
     }
 
@@ -355,7 +335,8 @@ public final class Ros2DataTask implements Task {
     /** @return a snapshot of the counters */
     public Ros2Stats stats() {
         return new Ros2Stats(scans, odometry, cmdVel == null ? 0 : cmdVel.published(), malformed, oversized,
-                scanValidator.rejected(), odomValidator.rejected(), overflowedSeen, lastProblem);
+                scanValidator.rejected(), odomValidator.rejected(), overflowedSeen, lastProblem,
+                scanValidator.droppedBeams());
     }
 
     /**

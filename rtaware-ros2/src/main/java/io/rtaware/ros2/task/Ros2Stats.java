@@ -13,9 +13,11 @@ package io.rtaware.ros2.task;
  * @param odomRejected decoded odometry samples dropped because their values cannot be true
  * @param overflowed samples dropped because the task fell behind
  * @param lastProblem the last reason a sample was dropped, or null
+ * @param droppedBeams readings that said nothing (NaN, beyond the maximum range) dropped from
+ *     scans, which were kept while they had a usable beam
  */
 public record Ros2Stats(long scans, long odometry, long commands, long malformed, long oversized, long scanRejected,
-                        long odomRejected, long overflowed, String lastProblem) {
+                        long odomRejected, long overflowed, String lastProblem, long droppedBeams) {
 
     /** @return decoded samples of either topic dropped because their values cannot be true */
     public long rejected() {

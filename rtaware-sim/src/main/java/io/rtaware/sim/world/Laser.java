@@ -90,7 +90,7 @@ public final class Laser {
     }
 
     /**
-     * Completes a scan's header: beam count, angles, maximum range and timestamp.
+     * Completes a scan's header: beam count, angles, minimum and maximum range and timestamp.
      *
      * @param timeS timestamp to put in the scan, seconds
      * @param out the scan
@@ -102,6 +102,8 @@ public final class Laser {
         out.minAngleRad = config.minAngleRad();
         out.maxAngleRad = config.maxAngleRad();
         out.maxRangeM = maxRange;
+        out.minRangeM = config.minRangeM();
+        out.impliedBeams = 0;
         out.serverTimeS = timeS;
     }
 }

@@ -24,12 +24,13 @@ import java.util.concurrent.TimeUnit;
 
 /**
  * A ROS 2 robot for tests, built on rtaware's own ROS 2 layer: a Zenoh peer listening on a
- * loopback endpoint with a node that publishes {@code /scan} (every beam 4 m) and {@code /odom}
- * (the pose integrated from the Twists it receives on {@code /cmd_vel}) every 20 ms of wall
- * time, and, once it has been driven for {@code poisonAfterMs} of wall time, odometry whose x is
- * NaN from then on. Its own thread publishes; {@link #close()} stops it.
+ * loopback endpoint with a node that publishes {@code /scan} (181 beams over a half turn, each
+ * reading what the test says, 4 m by default) and {@code /odom} (the pose integrated from the
+ * Twists it receives on {@code /cmd_vel}) every 20 ms of wall time; optionally, once it has been
+ * driven for a while, odometry whose x is NaN from then on. Its own thread publishes;
+ * {@link #close()} stops it.
  */
-final class NanPoseRos2Robot implements AutoCloseable {
+final class ScriptedRos2Robot implements AutoCloseable {
 
     private static final long TICK_NS = TimeUnit.MILLISECONDS.toNanos(20);
 
@@ -40,6 +41,8 @@ final class NanPoseRos2Robot implements AutoCloseable {
     private final long poisonAfterNs;
     private final Thread thread;
     private final LaserScan scan = new LaserScan(181);
+    private final long scanStampAheadNs;
+    private volatile float maxForwardMps;
     private final Odometry odom = new Odometry();
     private final VelocityCommand command = new VelocityCommand();
     private volatile boolean running = true;
@@ -48,24 +51,46 @@ final class NanPoseRos2Robot implements AutoCloseable {
     private volatile VelocityCommand lastTwist;
     private volatile Exception failure;
 
-    NanPoseRos2Robot(String listenEndpoint, long poisonAfterMs) throws ZenohException {
+    /**
+     * @param listenEndpoint where its Zenoh peer listens
+     * @param poisonAfterMs wall time of driving after which its odometry is NaN, or
+     *     {@link Long#MAX_VALUE} for never
+     * @param beams beams per scan, 0 to 181
+     * @param rangeM every beam's reading, metres (infinities as REP 117 uses them)
+     * @param scanStampAheadNs how far ahead of its clock the scans are stamped
+     */
+    private ScriptedRos2Robot(String listenEndpoint, long poisonAfterMs, int beams, float rangeM, long scanStampAheadNs)
+            throws ZenohException {
         context = Ros2Context.open(ZenohConfig.loopbackPeer().withListen(List.of(listenEndpoint)), 0);
-        Ros2Node node = context.createNode("/", "nan_pose_robot");
+        Ros2Node node = context.createNode("/", "scripted_robot");
         scanPub = node.createPublisher("/scan", Ros2Types.LASER_SCAN, QosProfile.sensorData(), 64 * 1024);
         odomPub = node.createPublisher("/odom", Ros2Types.ODOMETRY, QosProfile.defaults(), 64 * 1024);
         cmdVel = context.session().newMailbox(64);
         node.subscribe("/cmd_vel", Ros2Types.TWIST, QosProfile.defaults(), cmdVel, 0);
-        poisonAfterNs = TimeUnit.MILLISECONDS.toNanos(poisonAfterMs);
-        scan.setCount(181);
+        poisonAfterNs = poisonAfterMs == Long.MAX_VALUE ? Long.MAX_VALUE : TimeUnit.MILLISECONDS.toNanos(poisonAfterMs);
+        this.scanStampAheadNs = scanStampAheadNs;
+        scan.setCount(beams);
         scan.minAngleRad = -Math.PI / 2;
         scan.maxAngleRad = Math.PI / 2;
+        scan.minRangeM = 0.02;
         scan.maxRangeM = 8;
-        Arrays.fill(scan.rangesM, 0, 181, 4f);
+        Arrays.fill(scan.rangesM, 0, beams, rangeM);
         odom.xM = 0.8;
         odom.yM = 0.8;
-        thread = new Thread(this::loop, "nan-pose-robot");
+        thread = new Thread(this::loop, "scripted-ros2-robot");
         thread.setDaemon(true);
         thread.start();
+    }
+
+    /** A robot whose scans are true (every beam 4 m) and whose odometry turns NaN once driven for a while. */
+    static ScriptedRos2Robot nanPosesAfter(String listenEndpoint, long poisonAfterMs) throws ZenohException {
+        return new ScriptedRos2Robot(listenEndpoint, poisonAfterMs, 181, 4f, 0);
+    }
+
+    /** A robot with true odometry whose scans have {@code beams} beams, each reading {@code rangeM}. */
+    static ScriptedRos2Robot scanning(String listenEndpoint, int beams, float rangeM, long stampAheadNs)
+            throws ZenohException {
+        return new ScriptedRos2Robot(listenEndpoint, Long.MAX_VALUE, beams, rangeM, stampAheadNs);
     }
 
     private void loop() {
@@ -90,6 +115,7 @@ final class NanPoseRos2Robot implements AutoCloseable {
                     twistCodec.decode(reader.wrap(bytes, 0, bytes.length), header, v);
                     command.set(v.vxMps, v.omegaRadPerSec);
                     lastTwist = v;
+                    maxForwardMps = Math.max(maxForwardMps, (float) v.vxMps);
                     if (!v.isStop() && !drove) {
                         drove = true;
                         droveSinceNs = System.nanoTime();
@@ -108,8 +134,8 @@ final class NanPoseRos2Robot implements AutoCloseable {
                 odom.vxMps = command.vxMps;
                 odom.omegaRadPerSec = command.omegaRadPerSec;
                 long stampNs = nowNs - startNs;
-                scan.serverTimeS = stampNs / 1e9;
-                scanCodec.encode(header.set(stampNs, "laser"), scan, writer);
+                scan.serverTimeS = (stampNs + scanStampAheadNs) / 1e9;
+                scanCodec.encode(header.set(stampNs + scanStampAheadNs, "laser"), scan, writer);
                 scanPub.publish(writer.buffer(), writer.size(), System.currentTimeMillis() * 1_000_000L);
                 poisoned |= drove && nowNs - droveSinceNs >= poisonAfterNs;
                 double trueX = odom.xM;
@@ -128,6 +154,16 @@ final class NanPoseRos2Robot implements AutoCloseable {
     /** @return true once a non-zero Twist was received */
     boolean drove() {
         return drove;
+    }
+
+    /** @return the fastest forward speed it was ever commanded, m/s */
+    float maxForwardMps() {
+        return maxForwardMps;
+    }
+
+    /** @return the distance it drove from its start, metres (its odometry is exact) */
+    double distanceFromStartM() {
+        return Math.hypot(odom.xM - 0.8, odom.yM - 0.8);
     }
 
     /** @return true once it sends NaN poses */
