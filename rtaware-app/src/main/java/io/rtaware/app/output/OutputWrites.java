@@ -58,6 +58,22 @@ public final class OutputWrites {
         }
     }
 
+    /**
+     * Remembers a step of the command's output that failed for a reason other than a write (a
+     * bug in what computes an output), so that the command does not end with status 0: prints one
+     * line naming the step and the error, then the error's stack trace, which a maintainer needs.
+     *
+     * @param step what could not be done, e.g. {@code analyze the run}
+     * @param error why
+     */
+    public void failed(String step, Throwable error) {
+        String line = "could not " + step + ": " + error;
+        failures.add(line);
+        err.println("rtaware: " + line);
+        error.printStackTrace(err);
+        err.flush();
+    }
+
     /** @return the files written, in order */
     public List<Path> written() {
         return Collections.unmodifiableList(written);

@@ -245,28 +245,33 @@ public final class RobotRun {
         Referee.PoseSource truthSource = poseSource(host, port, clock, monitor);
         Referee.PoseSource truth = RunRecording.recordingGroundTruth(truthSource, recorder, clock);
         monitor.onTermination(report -> {
-            if (console != null) {
-                console.close();
+            try {
+                if (console != null) {
+                    console.close();
+                }
+                state.end(RunOutcome.INTERRUPTED, "interrupted (Ctrl-C or SIGTERM)");
+                Referee referee = state.referee();
+                if (referee != null) {
+                    referee.close(); // closes the pose source too
+                } else {
+                    closeQuietly(truth); // stopped before the start: no referee owns the source yet
+                }
+                artifacts.section("recording", RecordOptions.finish(recorder, out, err));
+                monitor.read(nav.keys().course(), course);
+                long collisions = server != null ? server.withWorld(World::contactCount) : state.stallEdges();
+                RunSection run = runSection(scenario, nav, course, referee, state.ending(),
+                        clock.nanos() - state.startNs(), collisions, server != null, List.copyOf(passes), model);
+                live.finish(report, run);
+                if (link != null) {
+                    artifacts.section("ros2", link.section());
+                }
+                artifacts.write(report, run, player == null ? null : playerSection(player, host, port, truthSource), referee,
+                        nav.finalMap().orElse(null), scenario.map().orElse(null));
+                options.trace().write(trace, out, artifacts.writes());
+            } catch (RuntimeException | Error e) {
+                // Whatever failed, the run must not end with status 0 as if its report were complete.
+                artifacts.writes().failed("finish the run's report", e);
             }
-            state.end(RunOutcome.INTERRUPTED, "interrupted (Ctrl-C or SIGTERM)");
-            Referee referee = state.referee();
-            if (referee != null) {
-                referee.close(); // closes the pose source too
-            } else {
-                closeQuietly(truth); // stopped before the start: no referee owns the source yet
-            }
-            artifacts.section("recording", RecordOptions.finish(recorder, out, err));
-            monitor.read(nav.keys().course(), course);
-            long collisions = server != null ? server.withWorld(World::contactCount) : state.stallEdges();
-            RunSection run = runSection(scenario, nav, course, referee, state.ending(),
-                    clock.nanos() - state.startNs(), collisions, server != null, List.copyOf(passes), model);
-            live.finish(report, run);
-            if (link != null) {
-                artifacts.section("ros2", link.section());
-            }
-            artifacts.write(report, run, player == null ? null : playerSection(player, host, port, truthSource), referee,
-                    nav.finalMap().orElse(null), scenario.map().orElse(null));
-            options.trace().write(trace, out, artifacts.writes());
         });
         Thread hook = monitor.installShutdownHook();
 

@@ -74,6 +74,16 @@ final class RunArtifacts {
         }
     }
 
+    /** The period advice and schedulability; a bug in them must not cost the report, written without. */
+    private String analysisText(ReportDocument doc) {
+        try {
+            return ReportSections.enrich(doc, Runtime.getRuntime().availableProcessors()).text();
+        } catch (RuntimeException e) {
+            writes.failed("analyze the run (period advice, schedulability)", e);
+            return "analysis: not available (" + e + ")\n";
+        }
+    }
+
     /**
      * @param player the {@code player} section, or null when the robot was not a Player server
      */
@@ -86,7 +96,7 @@ final class RunArtifacts {
             doc.section("player", player);
         }
         sections.forEach(doc::section);
-        String analysis = ReportSections.enrich(doc, Runtime.getRuntime().availableProcessors()).text();
+        String analysis = analysisText(doc);
         out.println();
         out.print(table);
         out.println();

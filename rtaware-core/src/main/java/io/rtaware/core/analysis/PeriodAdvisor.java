@@ -239,15 +239,18 @@ public final class PeriodAdvisor {
     }
 
     private static void releasedTogether(Report report, List<AdviceItem> items) {
-        // Groups by period and by the phase of the first release within it, in microseconds.
+        // Groups by period and by the phase of the first release within it, in nanoseconds (the
+        // unit periods are declared in: any period of at least 1 ns has a phase).
         Map<String, List<TaskReport>> groups = new LinkedHashMap<>();
         for (TaskReport task : report.tasks()) {
-            if (task.periodMs() == null || task.periodMs() <= 0 || task.offsetMs() == null) {
+            if (task.periodMs() == null || task.offsetMs() == null) {
                 continue;
             }
-            long periodUs = Math.round(task.periodMs() * 1000);
-            long phaseUs = Math.floorMod(Math.round(task.offsetMs() * 1000), periodUs);
-            groups.computeIfAbsent(periodUs + "/" + phaseUs, k -> new ArrayList<>()).add(task);
+            long periodNs = Math.round(task.periodMs() * 1e6);
+            if (periodNs <= 0) {
+                continue;
+            }
+            groups.computeIfAbsent(periodNs + "/" + phaseNs(task.offsetMs(), periodNs), k -> new ArrayList<>()).add(task);
         }
         for (List<TaskReport> group : groups.values()) {
             if (group.size() < MIN_TOGETHER) {
@@ -271,7 +274,7 @@ public final class PeriodAdvisor {
                     first = t;
                 }
             }
-            double offset = Math.floorMod(Math.round(group.get(0).offsetMs() * 1000), Math.round(period * 1000)) / 1000.0;
+            double offset = phaseNs(group.get(0).offsetMs(), Math.round(period * 1e6)) / 1e6;
             double stepMs = round3(period / group.size());
             Map<String, Object> evidence = new LinkedHashMap<>();
             evidence.put("tasks_released_together", group.size());
@@ -293,6 +296,11 @@ public final class PeriodAdvisor {
                             first.name(), num(round3(latest.latenessUs().p50() / 1000.0)), latest.name(),
                             num(stepMs))));
         }
+    }
+
+    /** @return where within a period of {@code periodNs} (at least 1) an offset falls, in ns */
+    private static long phaseNs(double offsetMs, long periodNs) {
+        return Math.floorMod(Math.round(offsetMs * 1e6), periodNs);
     }
 
     static double floorTenth(double ms) {

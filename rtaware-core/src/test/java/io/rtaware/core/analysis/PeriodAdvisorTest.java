@@ -119,4 +119,19 @@ class PeriodAdvisorTest {
         assertEquals(List.of(), PeriodAdvisor.advise(Reports.report(unknown, List.of())),
                 "a report written before offsets were reported");
     }
+
+    /** Issue 24: a period under 0.5 us rounded to 0 us and divided by zero, which cost the run its report. */
+    @Test
+    void periodsUnderAMicrosecondAreGroupedByTheNanosecond() {
+        List<io.rtaware.core.report.TaskReport> tasks = new java.util.ArrayList<>();
+        for (int i = 0; i < 4; i++) {
+            tasks.add(Reports.released("n" + i, 0.0001, 0.0002, 0.1, 0.5)); // 100 ns, offset 200 ns: phase 0
+        }
+        tasks.add(Reports.released("other", 0.0001, 0.00005, 0.1, 0.5)); // phase 50 ns: its own instant
+        List<AdviceItem> advice = PeriodAdvisor.advise(Reports.report(tasks, List.of()));
+        List<AdviceItem> together = advice.stream().filter(a -> a.rule().equals("released_together")).toList();
+        assertEquals(1, together.size(), advice.toString());
+        assertEquals(4, together.get(0).evidence().get("tasks_released_together"));
+        assertEquals(0.0, together.get(0).evidence().get("offset_ms"));
+    }
 }
