@@ -87,4 +87,25 @@ class AnalyzeCommandTest {
         assertEquals("2", missing[0]);
         assertEquals(1, missing[2].strip().lines().count(), missing[2]);
     }
+
+    /**
+     * Issue 24: tasks of 100 ns periods released together divided by zero in the advice; the
+     * saved report of such a run is analyzed with exit 0 and no stack trace.
+     */
+    @Test
+    void aReportOfSubMicrosecondPeriodsIsAnalyzed() throws Exception {
+        Percentiles exec = new Percentiles(50, 60, 70, 80, 55);
+        Percentiles late = new Percentiles(100, 500, 600, 700, 200);
+        List<TaskReport> tasks = new java.util.ArrayList<>();
+        for (int i = 0; i < 4; i++) {
+            tasks.add(new TaskReport("t" + i, "periodic", 0.0001, 0.0001, 0.0, 1000, 1000, 10, 1.0, 0, 0, 0, 0, exec,
+                    late, 0, null));
+        }
+        Path file = dir.resolve("report.json");
+        new ReportDocument(new Report(Report.SCHEMA, 1.0, 1.0, 0.0, tasks, List.of())).write(file);
+        String[] r = run("analyze", file.toString());
+        assertEquals("0", r[0], "stderr: " + r[2]);
+        assertEquals("", r[2], "no stack trace");
+        assertTrue(r[1].contains("released_together"), r[1]);
+    }
 }
