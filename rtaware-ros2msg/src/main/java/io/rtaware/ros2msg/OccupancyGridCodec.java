@@ -47,8 +47,10 @@ public final class OccupancyGridCodec implements Ros2Codec<OccupancyGrid> {
         if (width * height != cells) {
             throw new CdrException("OccupancyGrid of " + width + " x " + height + " cells carries " + cells);
         }
-        if (cells > into.cells.length) {
-            throw new CdrException("OccupancyGrid of " + cells + " cells exceeds the capacity of " + into.cells.length);
+        if (cells > into.cells.length || width > into.cells.length || height > into.cells.length) {
+            // A side longer than the capacity is refused even when the other side is 0 (found by fuzzing).
+            throw new CdrException("OccupancyGrid of " + width + " x " + height + " cells exceeds the capacity of "
+                    + into.cells.length);
         }
         in.readBytes(into.cells, 0, cells);
         into.setGeometry((int) width, (int) height, resolution, scratch.xM, scratch.yM);
