@@ -97,7 +97,7 @@ public final class ExperimentSets {
     public static List<PeriodSet> load(Path file) {
         JsonNode root;
         try {
-            root = new ObjectMapper(new YAMLFactory()).readTree(Files.readString(file));
+            root = new ObjectMapper(new YAMLFactory()).readTree(Utf8Text.read(file, "sets file"));
         } catch (NoSuchFileException e) {
             throw new ExperimentInputException("sets file " + file + " does not exist (use --sets paper, sweep-obstacle, sweep-all or a YAML file)");
         } catch (JacksonException e) {

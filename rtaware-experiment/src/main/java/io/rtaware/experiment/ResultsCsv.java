@@ -228,7 +228,7 @@ public final class ResultsCsv {
         if (!Files.exists(file)) {
             return java.util.Optional.empty();
         }
-        String text = Files.readString(file, StandardCharsets.UTF_8);
+        String text = Utf8Text.read(file, "results file");
         if (text.isEmpty() || text.endsWith("\n")) {
             return java.util.Optional.empty();
         }
@@ -248,7 +248,7 @@ public final class ResultsCsv {
      * @throws ExperimentInputException as {@link #read}
      */
     public static List<Row> readRows(Path file) throws IOException {
-        String text = Files.readString(file, StandardCharsets.UTF_8);
+        String text = Utf8Text.read(file, "results file");
         List<String> lines = new ArrayList<>(text.lines().toList());
         if (!text.isEmpty() && !text.endsWith("\n")) {
             lines.remove(lines.size() - 1);
