@@ -32,7 +32,7 @@ class CdrDecodersFuzzTest {
     private final PlanarPose pose = new PlanarPose();
     private final DiagnosticArray diagnostics = new DiagnosticArray(16, 16);
 
-    @FuzzTest(maxDuration = "30s")
+    @FuzzTest(maxDuration = "20s")
     void decodingThrowsNothingButCdrException(byte[] input) {
         if (input.length == 0) {
             return;

@@ -37,7 +37,7 @@ class ExperimentFilesFuzzTest {
         Files.delete(dir);
     }
 
-    @FuzzTest(maxDuration = "30s")
+    @FuzzTest(maxDuration = "20s")
     void readingAPlanAndResultsThrowsNothingButInputErrors(byte[] input) throws IOException {
         int split = 0;
         while (split < input.length && input[split] != 0) {

@@ -57,7 +57,7 @@ class PlayerStreamFuzzTest {
             PlayerCodec::readRangerGeometry,
             PlayerCodec::readSimulationPose2d);
 
-    @FuzzTest(maxDuration = "30s")
+    @FuzzTest(maxDuration = "20s")
     void decodingAStreamThrowsNothingButProtocolErrors(byte[] input) throws IOException {
         if (input.length == 0) {
             return;

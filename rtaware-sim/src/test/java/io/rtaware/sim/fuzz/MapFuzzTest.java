@@ -42,7 +42,7 @@ class MapFuzzTest {
         Files.writeString(dir.resolve("map.yaml"), SMALL_MAP_YAML);
     }
 
-    @FuzzTest(maxDuration = "30s")
+    @FuzzTest(maxDuration = "20s")
     void loadingAMapThrowsNothingButMapErrors(byte[] input) {
         int split = 0;
         while (split < input.length && input[split] != 0) {

@@ -39,7 +39,7 @@ class ScenarioFuzzTest {
         Files.delete(dir);
     }
 
-    @FuzzTest(maxDuration = "30s")
+    @FuzzTest(maxDuration = "20s")
     void loadingAScenarioThrowsNothingButScenarioErrors(byte[] input) throws IOException {
         Files.write(scenario, input);
         try {
