@@ -27,7 +27,7 @@ import picocli.CommandLine.Command;
                 "(plus -XX:+ZGenerational on JDK 21-23, and no guaranteed safepoint every",
                 "second on JDK 17.0.8+, 21 and 22). ZGC is the measured choice: G1",
                 "pauses of 15-28 ms under garbage load go straight into release lateness",
-                "(README, Performance: rtaware bench --compare --gc-pressure 200)."},
+                "(docs/performance.md, JVM choice: rtaware bench --compare --gc-pressure 200)."},
         subcommands = {RunCommand.class, SimCommand.class, WorldCommand.class, BenchCommand.class, AnalyzeCommand.class,
                 ExperimentCommand.class, ReportCommand.class, PlayerProbeCommand.class, InspectCommand.class, ReplayCommand.class,
                 CommandLine.HelpCommand.class})

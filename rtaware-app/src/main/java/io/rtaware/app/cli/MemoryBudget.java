@@ -51,8 +51,8 @@ public final class MemoryBudget {
         if (neededBytes > availableBytes()) {
             throw new UserError(String.format(Locale.ROOT,
                     "%s needs about %s of heap, but only %s of this JVM's %s maximum is available; "
-                            + "ask for less, or raise the heap (RTAWARE_JAVA_OPTS=\"-Xmx4g ...\", see README, "
-                            + "Troubleshooting and limits)",
+                            + "ask for less, or raise the heap (RTAWARE_JAVA_OPTS=\"-Xmx4g ...\", see "
+                            + "docs/troubleshooting.md)",
                     what, size(neededBytes), size(availableBytes()), size(maxHeapBytes)));
         }
     }

@@ -29,7 +29,7 @@ public final class TimeScaleConverter implements CommandLine.ITypeConverter<Doub
         }
         if (k < MIN || k > MAX) {
             throw new CommandLine.TypeConversionException("time scale '" + value + "' is out of range: it must be from "
-                    + MIN + " to " + (long) MAX + " world seconds per wall second (README, Troubleshooting and limits)");
+                    + MIN + " to " + (long) MAX + " world seconds per wall second (docs/troubleshooting.md)");
         }
         return k;
     }

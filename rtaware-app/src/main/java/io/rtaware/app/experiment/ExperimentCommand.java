@@ -59,8 +59,8 @@ public final class ExperimentCommand implements Callable<Integer> {
 
     @Option(names = "--sets", defaultValue = ExperimentSets.PAPER, paramLabel = "paper|sweep-obstacle|sweep-all|FILE",
             description = "'paper' (Table I: Sets 1-5), 'sweep-obstacle' (obstacle period 5 to 800 ms, the others 100 ms), "
-                    + "'sweep-all' (all four at 5 to 800 ms) or a YAML file of sets or of a sweep (see README) "
-                    + "(default: ${DEFAULT-VALUE}).")
+                    + "'sweep-all' (all four at 5 to 800 ms) or a YAML file of sets or of a sweep "
+                    + "(see docs/guide/experiment.md) (default: ${DEFAULT-VALUE}).")
     String sets;
 
     @Option(names = "--shard", paramLabel = "K/N", defaultValue = "1/1",
@@ -78,7 +78,8 @@ public final class ExperimentCommand implements Callable<Integer> {
 
     @Option(names = "--time-scale", converter = TimeScaleConverter.class, defaultValue = "10", paramLabel = "K",
             description = "World time runs K times faster than wall time, emulating a computer K times slower "
-                    + "(default: ${DEFAULT-VALUE}, the 'paper' profile with run's 0.05 m grid: see README; the report states it).")
+                    + "(default: ${DEFAULT-VALUE}, the 'paper' profile with run's 0.05 m grid: see docs/paper-experiment.md; "
+                    + "the report states it).")
     double timeScale;
 
     @Option(names = "--grid-resolution", paramLabel = "M",

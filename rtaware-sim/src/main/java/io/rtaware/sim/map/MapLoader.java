@@ -250,7 +250,7 @@ public final class MapLoader {
         if (pixels > maxPixels) {
             throw new MapException(String.format(Locale.ROOT, "%s: the image is %d x %d pixels (%d); this JVM's heap "
                     + "allows maps of at most %d pixels (%d bytes per pixel while loading, half the heap): use a smaller "
-                    + "image, or raise the heap (RTAWARE_JAVA_OPTS=\"-Xmx4g ...\", see README, Troubleshooting and limits)",
+                    + "image, or raise the heap (RTAWARE_JAVA_OPTS=\"-Xmx4g ...\", see docs/troubleshooting.md)",
                     name, width, height, pixels, maxPixels, PEAK_BYTES_PER_PIXEL));
         }
     }
