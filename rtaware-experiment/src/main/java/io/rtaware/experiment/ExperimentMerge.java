@@ -24,7 +24,8 @@ import java.util.TreeMap;
  * <p>Folders of different plans are refused: the scenario, time scale, seed and grid must be
  * equal; where two folders have a {@code plan.json}, their sets (names, periods, top speeds) and
  * runs per set must be equal; every row's set must be the set of that number in the plan; and no
- * run may be in two folders.
+ * run may be in two folders. Each folder must pass {@link FolderCheck} (not being written, no
+ * impossible value, every row a run of its own plan and shard).
  */
 public final class ExperimentMerge {
 
@@ -178,10 +179,7 @@ public final class ExperimentMerge {
 
         static Folder read(Path dir) throws IOException {
             Path csv = dir.resolve(ResultsCsv.FILE_NAME);
-            if (!Files.exists(csv)) {
-                throw new ExperimentInputException(dir + " has no " + ResultsCsv.FILE_NAME + " (not an experiment folder?)");
-            }
-            List<RunResult> rows = ResultsCsv.read(csv);
+            List<RunResult> rows = FolderCheck.rows(dir).stream().map(ResultsCsv.Row::result).toList();
             Optional<ExperimentPlan> plan = PlanFile.read(dir);
             RunConditions conditions = plan.map(ExperimentPlan::conditions)
                     .orElseGet(() -> rows.isEmpty() ? null : rows.get(0).conditions());

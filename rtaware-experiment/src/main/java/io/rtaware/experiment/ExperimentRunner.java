@@ -34,6 +34,14 @@ public final class ExperimentRunner {
     private static final int EXIT_SIGTERM = 143;
 
     private final ExperimentPlan plan;
+    /**
+     * The environment variable through which each run learns the pid of the experiment that
+     * started it: a run whose experiment is gone (killed, even with SIGKILL, which no shutdown
+     * hook sees) stops the robot, writes its report and exits, instead of writing into a folder
+     * that a resumed experiment may fill again beside it.
+     */
+    public static final String PARENT_PID_ENV = "RTAWARE_EXPERIMENT_PID";
+
     private final RunCommand command;
     private final Path outDir;
     private final ProgressBar progress;
@@ -150,7 +158,10 @@ public final class ExperimentRunner {
             arguments.addAll(List.of("--record", runDir.resolve(RECORDING_FILE).toString()));
         }
         List<String> cmd = command.commandLine(arguments);
-        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();
+        ProcessBuilder builder = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile());
+        // The run stops by itself when this process is gone, even killed with SIGKILL (issue 24).
+        builder.environment().put(PARENT_PID_ENV, Long.toString(ProcessHandle.current().pid()));
+        Process p = builder.start();
         current = p;
         int exit;
         try {

@@ -93,6 +93,40 @@ public final class FolderLock implements AutoCloseable {
     }
 
     /**
+     * Whether another live process holds the folder, without taking it: its lock file is locked,
+     * or names a live process other than this one.
+     *
+     * @param dir an experiment folder
+     * @return the holder's pid (or -1 when its lock file names none), if the folder is in use
+     * @throws IOException if the lock file exists but cannot be opened
+     */
+    public static OptionalLong inUse(Path dir) throws IOException {
+        Path file = dir.resolve(FILE_NAME);
+        if (!Files.exists(file)) {
+            return OptionalLong.empty();
+        }
+        OptionalLong recorded = readPid(file);
+        try (FileChannel channel = FileChannel.open(file, StandardOpenOption.READ, StandardOpenOption.WRITE)) {
+            FileLock lock;
+            try {
+                lock = channel.tryLock();
+            } catch (OverlappingFileLockException sameProcess) {
+                lock = null;
+            }
+            if (lock == null) {
+                return OptionalLong.of(recorded.orElse(-1));
+            }
+            lock.release();
+        }
+        long own = ProcessHandle.current().pid();
+        if (recorded.isPresent() && recorded.getAsLong() != own
+                && ProcessHandle.of(recorded.getAsLong()).map(ProcessHandle::isAlive).orElse(false)) {
+            return recorded;
+        }
+        return OptionalLong.empty();
+    }
+
+    /**
      * @param dir an experiment folder
      * @return the pid in its lock file, if there is a readable one
      */

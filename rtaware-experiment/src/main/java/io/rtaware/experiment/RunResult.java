@@ -50,6 +50,60 @@ public record RunResult(int set, int run, PeriodSet periods, RunConditions condi
         if (set < 1 || run < 1) {
             throw new IllegalArgumentException("set and run count from 1, got set " + set + " run " + run);
         }
+        String impossible = impossibleValue(runTimeS, distanceToFinishM, distanceTravelledM, collisions,
+                waypointsReached, waypointsTotal, tasks, mediatorCycles);
+        if (impossible != null) {
+            throw new IllegalArgumentException(impossible);
+        }
+    }
+
+    /**
+     * The values no run can give (a measure a run could not give is NaN or null, never out of its
+     * range): a negative time, distance or count, misses above releases, skipped releases above
+     * misses, a miss percentage outside 0..100, more waypoints reached than the course has.
+     *
+     * @return the first such value, named, or null
+     */
+    private static String impossibleValue(double runTimeS, double distanceToFinishM, double distanceTravelledM,
+                                          Integer collisions, Integer waypointsReached, Integer waypointsTotal,
+                                          Map<String, TaskResult> tasks, Map<String, Long> mediatorCycles) {
+        if (runTimeS < 0 || distanceToFinishM < 0 || distanceTravelledM < 0) {
+            return "a negative run time or distance (" + runTimeS + " s, " + distanceToFinishM + " m, "
+                    + distanceTravelledM + " m)";
+        }
+        if (collisions != null && collisions < 0 || waypointsReached != null && waypointsReached < 0
+                || waypointsTotal != null && waypointsTotal < 0) {
+            return "a negative count of collisions or waypoints";
+        }
+        if (waypointsReached != null && waypointsTotal != null && waypointsReached > waypointsTotal) {
+            return waypointsReached + " waypoints reached of " + waypointsTotal;
+        }
+        for (Map.Entry<String, TaskResult> e : tasks.entrySet()) {
+            TaskResult t = e.getValue();
+            String task = "task '" + e.getKey() + "': ";
+            if (t.releases() < 0 || t.misses() < 0 || t.staleRuns() < 0 || t.skipped() != null && t.skipped() < 0) {
+                return task + "a negative count (releases " + t.releases() + ", misses " + t.misses() + ", stale runs "
+                        + t.staleRuns() + ", skipped " + t.skipped() + ")";
+            }
+            if (t.misses() > t.releases()) {
+                return task + t.misses() + " misses of " + t.releases() + " releases";
+            }
+            if (t.skipped() != null && t.skipped() > t.misses()) {
+                return task + t.skipped() + " skipped releases of " + t.misses() + " misses (each skipped one is a miss)";
+            }
+            if (t.missPct() < 0 || t.missPct() > 100) {
+                return task + "a miss rate of " + t.missPct() + " %";
+            }
+            if (t.execP99Us() < 0) {
+                return task + "a negative execution time (" + t.execP99Us() + " us)";
+            }
+        }
+        for (Map.Entry<String, Long> e : mediatorCycles.entrySet()) {
+            if (e.getValue() == null || e.getValue() < 0) {
+                return "mediator cycles won by '" + e.getKey() + "': " + e.getValue();
+            }
+        }
+        return null;
     }
 
     /**

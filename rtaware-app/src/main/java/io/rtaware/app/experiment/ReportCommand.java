@@ -4,6 +4,7 @@ import io.rtaware.app.UserError;
 import io.rtaware.app.output.OutputFolder;
 import io.rtaware.experiment.ExperimentInputException;
 import io.rtaware.experiment.ExperimentMerge;
+import io.rtaware.experiment.FolderCheck;
 import io.rtaware.experiment.ExperimentProfile;
 import io.rtaware.experiment.ResultsCsv;
 import io.rtaware.experiment.report.ExperimentReport;
@@ -55,7 +56,9 @@ public final class ReportCommand implements Callable<Integer> {
         System.setProperty("java.awt.headless", "true");
         Path dir = out == null ? dirs.get(0) : out;
         try {
-            if (out != null) {
+            if (out == null) {
+                FolderCheck.rows(dir);
+            } else {
                 int runs = ExperimentMerge.merge(dirs, out).size();
                 System.out.println("merged " + runs + " run(s) from " + dirs.size() + " folder(s) into " + out);
             }

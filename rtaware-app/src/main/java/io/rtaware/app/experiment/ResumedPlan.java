@@ -13,7 +13,8 @@ import picocli.CommandLine.ParseResult;
 /**
  * The plan of {@code experiment --resume --out DIR}: the one stored in DIR ({@link PlanFile}).
  * Options left out take the folder's values; {@code --runs} may raise the runs per set (the
- * experiment grows); any other option given must agree with the folder, or the command is
+ * experiment grows) but never lower them (the folder's results of the runs beyond would be left
+ * outside its own plan); any other option given must agree with the folder, or the command is
  * refused with one line naming the option, its value and the folder's.
  */
 final class ResumedPlan {
@@ -48,6 +49,10 @@ final class ResumedPlan {
         check(given, "--grid-resolution", Objects.equals(s.gridResolutionM(), a.gridResolutionM()),
                 a.gridResolutionM(), s.gridResolutionM() == null ? "run's default" : s.gridResolutionM(), dir);
         check(given, "--shard", stored.shard().equals(asked.shard()), asked.shard(), stored.shard(), dir);
+        if (given.hasMatchedOption("--runs") && asked.runsPerSet() < stored.runsPerSet()) {
+            throw new UserError("--resume never lowers the plan of " + dir + ": --runs " + asked.runsPerSet()
+                    + " is fewer than its " + stored.runsPerSet() + " runs per set (leave --runs out, or use another --out)");
+        }
         int runs = given.hasMatchedOption("--runs") ? asked.runsPerSet() : stored.runsPerSet();
         return new ExperimentPlan(stored.sets(), runs, s, stored.shard());
     }

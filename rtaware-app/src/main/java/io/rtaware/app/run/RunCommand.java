@@ -9,6 +9,7 @@ import io.rtaware.app.live.LiveMixin;
 import io.rtaware.app.output.OutputFolder;
 import io.rtaware.app.ros2.ExportMixin;
 import io.rtaware.app.ros2.Ros2RunMixin;
+import io.rtaware.experiment.ExperimentRunner;
 import io.rtaware.sim.world.RobotModel;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -120,6 +121,7 @@ public final class RunCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException {
         RunOptions options = options();
+        ExperimentParentWatch.start(System.getenv(ExperimentRunner.PARENT_PID_ENV), System.err, System::exit);
         memory.get().require(trace.heapBytes(), trace.describe());
         return new RobotRun(options, ros2.options(), export.options(), System.out, System.err).recording(record).execute();
     }

@@ -13,6 +13,7 @@ import io.rtaware.experiment.PlanFile;
 import io.rtaware.experiment.ResultsCsv;
 import io.rtaware.experiment.RunConditions;
 import io.rtaware.experiment.RunResult;
+import io.rtaware.experiment.TaskResult;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -86,5 +87,64 @@ class ExperimentFolderTest {
                 "completed", 12.0, 0.2, 3.0, 0, 4, 4, Map.of()));
         CliRun.of("experiment", "--resume", "--out", dir.toString()).assertOneLineUserError("line 3: set 1 run 1 is already on line 2");
         CliRun.of("report", dir.toString()).assertOneLineUserError("line 3: set 1 run 1 is already on line 2");
+    }
+
+    /** A plan of 1 set x 2 runs, both finished, the second run's row as its text. */
+    private String twoRunExperiment() throws Exception {
+        PeriodSet set = ExperimentSets.paper().get(3);
+        ExperimentPlan plan = new ExperimentPlan(List.of(set), 2, new RunConditions("paper-room", 20, 5, null));
+        PlanFile.write(dir, plan);
+        ExperimentProfile.of(plan, "test machine").write(dir);
+        ResultsCsv.append(dir.resolve(ResultsCsv.FILE_NAME), new RunResult(1, 1, set, plan.conditions(), "completed",
+                12.0, 0.2, 3.0, 0, 4, 4, Map.of()));
+        RunResult second = new RunResult(1, 2, set, plan.conditions(), "completed", 12.345, 0.2, 3.0, 0, 4, 4,
+                Map.of("planner", new TaskResult(1111, 5, 0.45, 0, 100.0)));
+        ResultsCsv.append(dir.resolve(ResultsCsv.FILE_NAME), second);
+        return ResultsCsv.format(second);
+    }
+
+    /** Issue 24: --runs 1 on a folder of 2 runs per set lowered the stored plan and left run 2 outside it. */
+    @Test
+    void resumeNeverLowersThePlan() throws Exception {
+        twoRunExperiment();
+        CliRun.of("experiment", "--resume", "--out", dir.toString(), "--runs", "1")
+                .assertOneLineUserError("--resume never lowers the plan of " + dir + ": --runs 1 is fewer than its 2");
+        assertEquals(2, PlanFile.fromFolder(dir).runsPerSet(), "the stored plan is unchanged");
+    }
+
+    /** Issue 24: report merged rows of set 9, run 99, and impossible values (a miss rate of 110 964 %). */
+    @Test
+    void reportRefusesRowsOutsideThePlanAndImpossibleValuesNamingTheLine() throws Exception {
+        String row = twoRunExperiment();
+        Path csv = dir.resolve(ResultsCsv.FILE_NAME);
+        String good = Files.readString(csv);
+        Files.writeString(csv, good + row.replaceFirst("^1,", "9,").replace(",2,", ",1,") + "\n");
+        CliRun.of("report", dir.toString()).assertOneLineUserError("line 4: set 9 run 1 is outside the plan of " + dir
+                + " (1 sets x 2 runs)");
+        Files.writeString(csv, good + row.replace(",2,", ",99,") + "\n");
+        CliRun.of("report", dir.toString()).assertOneLineUserError("line 4: set 1 run 99 is outside the plan");
+        Files.writeString(csv, good.replace("1111,5,", "1111,2222,"));
+        CliRun.of("report", dir.toString()).assertOneLineUserError("line 3: task 'planner': 2222 misses of 1111 releases");
+        Files.writeString(csv, good.replace(",12.345,", ",-12.345,"));
+        CliRun.of("report", dir.toString()).assertOneLineUserError("line 3: a negative run time or distance");
+        Files.writeString(csv, good);
+        assertEquals(0, CliRun.of("report", dir.toString()).status(), "the folder as written is fine");
+    }
+
+    /** Issue 24: report merged a folder whose lock named a live process. */
+    @Test
+    void reportRefusesAFolderARunningExperimentIsWriting() throws Exception {
+        finishedExperiment(true);
+        Process owner = new ProcessBuilder("sleep", "60").start();
+        try {
+            Files.writeString(dir.resolve(FolderLock.FILE_NAME), owner.pid() + "\n");
+            CliRun.of("report", dir.toString())
+                    .assertOneLineUserError("is being written by a running rtaware experiment (pid " + owner.pid());
+            CliRun.of("report", dir.toString(), "--out", dir.resolveSibling(dir.getFileName() + "-merged").toString())
+                    .assertOneLineUserError("is being written by a running rtaware experiment (pid " + owner.pid());
+        } finally {
+            owner.destroyForcibly().waitFor();
+        }
+        assertEquals(0, CliRun.of("report", dir.toString()).status(), "reported once the writer is gone");
     }
 }
