@@ -4,7 +4,6 @@ import io.rtaware.app.UserError;
 import io.rtaware.record.RecordingPlan;
 import io.rtaware.record.TaskCycleMessage;
 import io.rtaware.record.mcap.McapChannel;
-import io.rtaware.record.mcap.McapFormatException;
 import io.rtaware.record.mcap.McapReader;
 import io.rtaware.record.mcap.McapSchema;
 import io.rtaware.record.mcap.McapSummary;
@@ -76,8 +75,8 @@ public final class InspectCommand implements Callable<Integer> {
         McapSummary summary;
         try {
             summary = reader.summary();
-        } catch (McapFormatException e) {
-            throw new UserError(e.getMessage());
+        } catch (IOException e) {
+            throw McapFiles.unreadable(file, e);
         }
         Map<Integer, String> schemaNames = new HashMap<>();
         for (McapSchema s : summary.schemas()) {
@@ -102,8 +101,10 @@ public final class InspectCommand implements Callable<Integer> {
                     }
                 }
             });
-        } catch (McapFormatException | CdrException e) {
-            throw new UserError(e.getMessage());
+        } catch (CdrException e) {
+            throw new UserError(file + ": a timing record is malformed: " + e.getMessage());
+        } catch (IOException e) {
+            throw McapFiles.unreadable(file, e);
         }
 
         double spanS = (summary.statistics().messageEndNs() - startNs) / 1e9;
