@@ -20,9 +20,11 @@ final class GroundTruthRing implements RecorderRing {
     private final double[] yaw;
     private final PlanarPose pose = new PlanarPose();
     private final SingleProducerSequence sequence;
+    private final long stampOffsetNs;
 
-    GroundTruthRing(int channel, Ros2Codec<PlanarPose> codec, int slots) {
+    GroundTruthRing(int channel, Ros2Codec<PlanarPose> codec, int slots, long stampOffsetNs) {
         this.channel = channel;
+        this.stampOffsetNs = stampOffsetNs;
         this.codec = codec;
         time = new long[slots];
         x = new double[slots];
@@ -54,7 +56,7 @@ final class GroundTruthRing implements RecorderRing {
         for (long i = t; i < h; i++) {
             int s = sequence.slot(i);
             pose.set(x[s], y[s], yaw[s]);
-            scratch.header.set(time[s], "map");
+            scratch.header.set(stampOffsetNs + time[s], "map");
             codec.encode(scratch.header, pose, scratch.cdr);
             sink.write(channel, i, time[s], time[s], scratch.cdr.buffer(), 0, scratch.cdr.size());
             sequence.consumedUpTo(i + 1);

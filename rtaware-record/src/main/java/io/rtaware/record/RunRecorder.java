@@ -23,11 +23,17 @@ import java.util.concurrent.atomic.AtomicLong;
  * is given into a slot of a ring allocated at construction and returns: no lock, no allocation,
  * no I/O. A full ring drops the record and counts it.
  *
- * <p>Channels: each recorded key on its topic ({@link RecordingPlan#topicOf}); for keys with a
- * ROS 2 type, the fields the ROS 2 message lacks on {@code /rtaware/state/<key>} as JSON (so a
- * value can be rebuilt exactly); one {@code /rtaware/timing/<task>} per task, one message per
- * cycle; {@code /rtaware/events}; {@code /ground_truth}. Log and publish time of every message
- * are the world time of its commit, cycle end or event.
+ * <p>The file follows the MCAP {@code ros2} profile ({@link Ros2Channels}): every channel CDR
+ * with a {@code ros2msg} schema, QoS and type hash per channel, and the {@code rosbag2}
+ * metadata record. Channels: each recorded key on its topic ({@link RecordingPlan#topicOf}) as
+ * its standard ROS 2 type, or else as an {@code rtaware_msgs/msg/StateJson}; for keys with a
+ * ROS 2 type, the fields the ROS 2 message lacks on {@code /rtaware/state/<key>} as a StateJson
+ * (so a value can be rebuilt exactly); one {@code /rtaware/timing/<task>} per task
+ * ({@code rtaware_msgs/msg/TaskCycle}), one message per cycle; {@code /rtaware/events}
+ * ({@code rtaware_msgs/msg/MonitorEvent}); {@code /ground_truth}. Log and publish time of every
+ * message are the world time of its commit, cycle end or event plus the plan's log-time offset
+ * (Unix-epoch ns), and messages are written in log-time order through a reorder window
+ * ({@link LogTimeOrderedSink}).
  *
  * <p>{@link #finish()} drains everything, writes the summary and the footer: call it on every exit
  * path (the run's termination handler). Thread-safety, as the rings' types say:
@@ -68,6 +74,12 @@ public final class RunRecorder {
     public static final String SEQUENCE_GENERATION = "generation";
     /** {@link #SEQUENCE} of timing channels. */
     public static final String SEQUENCE_CYCLE = "cycle";
+    /** The MCAP profile of recordings: every channel CDR with a {@code ros2msg} schema. */
+    public static final String PROFILE = "ros2";
+    /** Most messages the reorder window holds. */
+    private static final int REORDER_SLOTS = 1 << 16;
+    /** Most message bytes the reorder window holds. */
+    private static final long REORDER_BYTES = 64L << 20;
 
     private final Path file;
     private final McapWriter writer;
@@ -78,6 +90,8 @@ public final class RunRecorder {
     private final GroundTruthRing truth;
     private final AtomicLong dropped = new AtomicLong();
     private final RecorderWriterThread thread;
+    private final Ros2Channels layout;
+    private final LogTimeOrderedSink ordered;
     private boolean closed;
     private RecordingStats stats;
 
@@ -94,7 +108,7 @@ public final class RunRecorder {
      */
     public RunRecorder(Path file, List<String> taskNames, List<List<String>> taskInputs, List<Key<?>> keysByIndex,
                        RecordingPlan plan) throws IOException {
-        this(new McapWriter(file, plan.compression(), McapWriter.DEFAULT_CHUNK_BYTES, ""), file,
+        this(new McapWriter(file, plan.compression(), McapWriter.DEFAULT_CHUNK_BYTES, PROFILE), file,
                 taskNames, taskInputs, keysByIndex, plan);
     }
 
@@ -106,7 +120,7 @@ public final class RunRecorder {
      * @param taskNames task names by task index
      * @param taskInputs each task's input key names, in the order {@link #cycle} gives their generations
      * @param keysByIndex every key by key index; null entries are not recorded
-     * @param plan topics, metadata, ring sizes
+     * @param plan topics, metadata, ring sizes, log-time offset, reorder window
      * @throws IOException if the schemas and channels cannot be written
      */
     public RunRecorder(McapWriter writer, Path file, List<String> taskNames, List<List<String>> taskInputs,
@@ -119,42 +133,43 @@ public final class RunRecorder {
         }
         this.keyNames = names;
         List<RecorderRing> rings = new ArrayList<>();
+        layout = new Ros2Channels(writer);
         try {
             writer.addMetadata("rtaware.run", plan.metadata());
             keys = new CommitRing[keysByIndex.size()];
             for (int i = 0; i < keys.length; i++) {
                 Key<?> key = keysByIndex.get(i);
                 if (key != null) {
-                    keys[i] = new CommitRing(key, new KeyChannels(key, plan, writer), plan.valueSlots(),
+                    keys[i] = new CommitRing(key, new KeyChannels(key, plan, layout), plan.valueSlots(),
                             plan.valueBytesPerKey());
                     rings.add(keys[i]);
                 }
             }
-            int cycleSchema = writer.addSchema(TimingTypes.TASK_CYCLE.name(), "ros2msg",
-                    TimingTypes.TASK_CYCLE.schemaText());
             tasks = new CycleRing[taskNames.size()];
             for (int t = 0; t < tasks.length; t++) {
                 List<String> inputs = taskInputs.get(t);
-                int channel = writer.addChannel(cycleSchema, RecordingPlan.TIMING_PREFIX + taskNames.get(t), "cdr",
+                int channel = layout.add(RecordingPlan.TIMING_PREFIX + taskNames.get(t), TimingTypes.TASK_CYCLE.name(),
+                        TimingTypes.TASK_CYCLE.schemaText(), null, Ros2Channels.Qos.RELIABLE_VOLATILE,
                         Map.of("task", taskNames.get(t), "inputs", String.join(",", inputs), SEQUENCE, SEQUENCE_CYCLE));
                 tasks[t] = new CycleRing(channel, inputs.size(), plan.cycleSlots());
                 rings.add(tasks[t]);
             }
-            int eventSchema = writer.addSchema(TimingTypes.MONITOR_EVENT.name(), "ros2msg",
-                    TimingTypes.MONITOR_EVENT.schemaText());
-            events = new EventRing(writer.addChannel(eventSchema, RecordingPlan.EVENTS_TOPIC, "cdr", Map.of()),
+            events = new EventRing(layout.add(RecordingPlan.EVENTS_TOPIC, TimingTypes.MONITOR_EVENT.name(),
+                    TimingTypes.MONITOR_EVENT.schemaText(), null, Ros2Channels.Qos.RELIABLE_VOLATILE, Map.of()),
                     List.copyOf(taskNames), plan.eventSlots());
             rings.add(events);
             PoseStampedCodec poseCodec = new PoseStampedCodec();
-            int poseSchema = writer.addSchema(poseCodec.type().name(), "ros2msg", poseCodec.type().schemaText());
-            truth = new GroundTruthRing(writer.addChannel(poseSchema, RecordingPlan.GROUND_TRUTH_TOPIC, "cdr",
-                    Map.of("frame_id", "map")), poseCodec, plan.valueSlots() * 8);
+            truth = new GroundTruthRing(layout.add(RecordingPlan.GROUND_TRUTH_TOPIC, poseCodec.type().name(),
+                    poseCodec.type().schemaText(), poseCodec.type().typeHash(), Ros2Channels.Qos.RELIABLE_VOLATILE,
+                    Map.of("frame_id", "map")), poseCodec, plan.valueSlots() * 8, plan.logTimeOffsetNs());
             rings.add(truth);
         } catch (IOException | RuntimeException e) {
             writer.close();
             throw e;
         }
-        thread = new RecorderWriterThread(rings, writer::writeMessage);
+        ordered = new LogTimeOrderedSink(writer, plan.logTimeOffsetNs(), plan.reorderWindowNs(), REORDER_SLOTS,
+                REORDER_BYTES);
+        thread = new RecorderWriterThread(rings, ordered);
         thread.start();
     }
 
@@ -250,12 +265,17 @@ public final class RunRecorder {
         closed = true;
         String error = thread.stopAndJoin();
         try {
+            if (error == null) {
+                ordered.flush();
+                layout.writeBagMetadata(file.getFileName() == null ? file.toString() : file.getFileName().toString());
+            }
             writer.close();
         } catch (IOException e) {
             error = error == null ? (e.getMessage() == null ? e.toString() : e.getMessage()) : error;
         }
         long messages = error == null ? writer.messageCount() : writer.durableMessageCount();
-        stats = new RecordingStats(file.toString(), messages, writer.fileBytes(), dropped.get(), error);
+        stats = new RecordingStats(file.toString(), messages, writer.fileBytes(), dropped.get(), ordered.outOfOrder(),
+                error);
         return stats;
     }
 }

@@ -114,8 +114,9 @@ public final class RecordOptions {
                     stats.file()));
             return stats;
         }
-        out.printf(Locale.ROOT, "recording written to %s (%d messages, %d bytes, %d dropped; open it in Foxglove or "
-                + "rtaware inspect)%n", stats.file(), stats.messages(), stats.bytes(), stats.dropped());
+        out.printf(Locale.ROOT, "recording written to %s (%d messages, %d bytes, %d dropped%s; open it in Foxglove or "
+                + "rtaware inspect)%n", stats.file(), stats.messages(), stats.bytes(), stats.dropped(),
+                stats.outOfOrder() == 0 ? "" : ", " + stats.outOfOrder() + " written out of log-time order");
         return stats;
     }
 }

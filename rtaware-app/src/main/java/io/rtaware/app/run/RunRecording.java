@@ -39,6 +39,7 @@ final class RunRecording {
                 .topic(RobotKeys.ODOMETRY.name(), "/odom", "odom")
                 .topic(RobotKeys.MOTOR.name(), "/cmd_vel", RosCodecs.BASE_FRAME)
                 .topic(NavKeys.MAP, "/map", "map")
+                .latched(NavKeys.MAP)
                 .topic(NavKeys.PATH, "/plan", "map")
                 .metadata(COMMAND, "run")
                 .metadata("scenario", scenario.name())

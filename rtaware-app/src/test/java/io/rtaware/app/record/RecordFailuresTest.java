@@ -70,7 +70,16 @@ class RecordFailuresTest {
                     "how much it holds: " + line);
             assertTrue(line.contains("inspect --recover"), line);
         } finally {
-            new ProcessBuilder("umount", disk.toString()).start().waitFor(30, TimeUnit.SECONDS);
+            unmount(disk);
+        }
+    }
+
+    /** Unmounts the test's tmpfs; lazily if it is still busy, so the temporary folder can go. */
+    private static void unmount(Path disk) throws Exception {
+        Process umount = new ProcessBuilder("umount", disk.toString()).redirectErrorStream(true).start();
+        if (!umount.waitFor(30, TimeUnit.SECONDS) || umount.exitValue() != 0) {
+            Process lazy = new ProcessBuilder("umount", "-l", disk.toString()).redirectErrorStream(true).start();
+            assertTrue(lazy.waitFor(30, TimeUnit.SECONDS) && lazy.exitValue() == 0, "the test's tmpfs is unmounted");
         }
     }
 }

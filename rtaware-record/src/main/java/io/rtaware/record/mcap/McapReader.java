@@ -242,6 +242,38 @@ public final class McapReader {
     }
 
     /**
+     * Where a read of a possibly damaged or unfinished file ended.
+     *
+     * @param goodBytes bytes from the start of the file up to the first record that could not be
+     *     read (the file's size if every record was read)
+     * @param problem why that record could not be read, or null if the data section was whole
+     */
+    public record ReadEnd(long goodBytes, String problem) {
+    }
+
+    /**
+     * Like {@link #read}, for recovering what an unfinished or damaged file holds: hands every
+     * record to the visitor up to the first that cannot be read (a chunk is handed over only
+     * once its CRC is checked), without checking the data section's CRC first, and says where it
+     * stopped instead of throwing.
+     *
+     * @param visitor receives the records
+     * @return where reading ended and why
+     * @throws IOException if the file cannot be read at all
+     */
+    public ReadEnd readRecoverable(McapVisitor visitor) throws IOException {
+        try (FileChannel ch = FileChannel.open(path, StandardOpenOption.READ)) {
+            Pass pass = new Pass(ch, visitor);
+            try {
+                pass.run();
+                return new ReadEnd(size, null);
+            } catch (McapFormatException e) {
+                return new ReadEnd(pass.recordAt, e.getMessage());
+            }
+        }
+    }
+
+    /**
      * Checks the data section's CRC, recorded in the data-end record just before the summary (or
      * the footer), over the bytes as stored, so a damaged compressed chunk is named before a
      * decompressor sees it. Skipped when the data-end record is not where a writer puts it or
@@ -294,6 +326,8 @@ public final class McapReader {
         private byte[] stored = new byte[0];
         private byte[] records = new byte[0];
         private long position = Opcode.MAGIC.length;
+        /** Where the record being read starts. */
+        long recordAt = Opcode.MAGIC.length;
 
         Pass(FileChannel ch, McapVisitor visitor) {
             this.ch = ch;
@@ -312,7 +346,7 @@ public final class McapReader {
 
         void run() throws IOException {
             while (true) {
-                long recordAt = position;
+                recordAt = position;
                 if (size - position < RECORD_HEAD) {
                     throw error(recordAt, size == position ? "MCAP data section has no data-end record"
                             : "file ends inside a record's opcode and length");
@@ -596,7 +630,14 @@ public final class McapReader {
         return new McapSummary(profile, List.copyOf(schemas), List.copyOf(channels), statistics, chunkIndexes);
     }
 
-    /** The header record's profile, read from the start of the file. */
+    /**
+     * @return the header record's profile, read from the start of the file
+     * @throws IOException if the file has no readable header record
+     */
+    public String profile() throws IOException {
+        return readProfile();
+    }
+
     private String readProfile() throws IOException {
         try (FileChannel ch = FileChannel.open(path, StandardOpenOption.READ)) {
             byte[] head = new byte[RECORD_HEAD];

@@ -145,7 +145,7 @@ public final class McapWriter implements Closeable {
     /**
      * Adds a channel and writes its record.
      *
-     * @param schemaId a schema id from {@link #addSchema}
+     * @param schemaId a schema id from {@link #addSchema}, or 0 for none
      * @param topic e.g. {@code /scan}
      * @param messageEncoding e.g. {@code cdr}, {@code json}
      * @param metadata free key/value pairs
@@ -154,7 +154,7 @@ public final class McapWriter implements Closeable {
      */
     public int addChannel(int schemaId, String topic, String messageEncoding, Map<String, String> metadata)
             throws IOException {
-        if (schemaId < 1 || schemaId > schemaCount) {
+        if (schemaId < 0 || schemaId > schemaCount) {
             throw new IllegalArgumentException("unknown MCAP schema id " + schemaId);
         }
         int id = ++channelCount;
@@ -291,6 +291,24 @@ public final class McapWriter implements Closeable {
     /** @return messages handed to the writer so far (some may still be in the open chunk) */
     public long messageCount() {
         return messageCount;
+    }
+
+    /** @return the earliest log time written so far (meaningless before the first message) */
+    public long messageStartNs() {
+        return messageStartNs;
+    }
+
+    /** @return the latest log time written so far (meaningless before the first message) */
+    public long messageEndNs() {
+        return messageEndNs;
+    }
+
+    /**
+     * @param channelId a channel id from {@link #addChannel}
+     * @return messages written on it so far
+     */
+    public long channelMessageCount(int channelId) {
+        return channelMessages[channelId];
     }
 
     /**
