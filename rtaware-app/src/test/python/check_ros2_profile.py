@@ -9,7 +9,9 @@ Usage: check_ros2_profile.py FILE.mcap
   never go backwards in file order; chunks do not overlap in log time; log times are Unix-epoch
   nanoseconds (after 2020).
 - ``rosbags`` ``AnyReader`` (profile check, typestore from the definitions in the file)
-  deserializes every message of every channel.
+  deserializes every message of every channel; each ``topic_type_hash`` equals the RIHS01 hash
+  rosbags computes for the Jazzy type; where the file has transforms, ``/tf`` and ``/tf_static``
+  connect every header's frame to ``map`` (REP 105).
 
 Prints one line per check and exits 1 on the first failure. Needs: mcap, rosbags
 (see .ci/python-peers.txt).
@@ -20,6 +22,7 @@ from pathlib import Path
 
 from mcap.reader import make_reader
 from rosbags.highlevel import AnyReader
+from rosbags.typesys import Stores, get_typestore
 from ruamel.yaml import YAML  # rosbags' own YAML library
 
 EPOCH_2020_NS = 1_577_836_800 * 10**9
@@ -50,6 +53,16 @@ def main(path):
             check(isinstance(qos, list) and qos and "reliability" in qos[0], "%s offered_qos_profiles: %r"
                   % (channel.topic, channel.metadata.get("offered_qos_profiles")))
         print("ok: profile ros2, %d channels all cdr with ros2msg schemas and offered QoS" % len(summary.channels))
+        jazzy = get_typestore(Stores.ROS2_JAZZY)
+        hashed = 0
+        for channel in summary.channels.values():
+            declared = channel.metadata.get("topic_type_hash")
+            if declared:
+                name = summary.schemas[channel.schema_id].name
+                check(declared == jazzy.hash_rihs01(name), "%s: topic_type_hash %s, rosbags computes %s"
+                      % (channel.topic, declared, jazzy.hash_rihs01(name)))
+                hashed += 1
+        print("ok: %d topic_type_hash values equal rosbags' RIHS01 of the Jazzy types" % hashed)
 
         previous, counts, count = None, Counter(), 0
         for schema, channel, message in reader.iter_messages(log_time_order=False):
@@ -83,12 +96,31 @@ def main(path):
 
     with AnyReader([Path(path)]) as bag:
         decoded = Counter()
+        edges, frames = set(), set()
         for connection, timestamp, raw in bag.messages():
-            bag.deserialize(raw, connection.msgtype)
+            msg = bag.deserialize(raw, connection.msgtype)
             decoded[connection.topic] += 1
+            if connection.msgtype == "tf2_msgs/msg/TFMessage":
+                for t in msg.transforms:
+                    edges.add((t.header.frame_id, t.child_frame_id))
+            elif hasattr(msg, "header"):
+                frames.add(msg.header.frame_id)
+            if connection.msgtype == "nav_msgs/msg/Odometry":
+                frames.add(msg.child_frame_id)
         check(sum(decoded.values()) == count, "rosbags read %d of %d messages" % (sum(decoded.values()), count))
         types = sorted({c.msgtype for c in bag.connections})
     print("ok: rosbags AnyReader deserialized all %d messages on %d topics (%s)" % (count, len(decoded), ", ".join(types)))
+    if edges:
+        reached, todo = {"map"}, ["map"]
+        while todo:
+            parent = todo.pop()
+            for a, b in edges:
+                if a == parent and b not in reached:
+                    reached.add(b)
+                    todo.append(b)
+        check(frames <= reached, "frames not connected to map by /tf and /tf_static: %s" % sorted(frames - reached))
+        print("ok: /tf and /tf_static connect every header frame to map (%s)"
+              % ", ".join("%s->%s" % e for e in sorted(edges)))
 
 
 if __name__ == "__main__":

@@ -7,9 +7,13 @@ import java.io.IOException;
 
 /**
  * Ground-truth poses: filled by the one thread that samples them (the run's referee), written as
- * {@code geometry_msgs/msg/PoseStamped} in the {@code map} frame.
+ * {@code geometry_msgs/msg/PoseStamped} in the {@code map} frame and, in a recording with
+ * transforms, as the transform {@code map} to {@code ground_truth} on {@code /tf}.
  */
 final class GroundTruthRing implements RecorderRing {
+
+    /** The frame of the true pose, a child of {@code map} on {@code /tf} (when the recording has transforms). */
+    static final String GROUND_TRUTH_FRAME = "ground_truth";
 
     private final int channel;
     @SuppressWarnings("rawtypes")
@@ -21,9 +25,11 @@ final class GroundTruthRing implements RecorderRing {
     private final PlanarPose pose = new PlanarPose();
     private final SingleProducerSequence sequence;
     private final long stampOffsetNs;
+    private final int tfChannel;
 
-    GroundTruthRing(int channel, Ros2Codec<PlanarPose> codec, int slots, long stampOffsetNs) {
+    GroundTruthRing(int channel, int tfChannel, Ros2Codec<PlanarPose> codec, int slots, long stampOffsetNs) {
         this.channel = channel;
+        this.tfChannel = tfChannel;
         this.stampOffsetNs = stampOffsetNs;
         this.codec = codec;
         time = new long[slots];
@@ -59,6 +65,12 @@ final class GroundTruthRing implements RecorderRing {
             scratch.header.set(stampOffsetNs + time[s], "map");
             codec.encode(scratch.header, pose, scratch.cdr);
             sink.write(channel, i, time[s], time[s], scratch.cdr.buffer(), 0, scratch.cdr.size());
+            if (tfChannel != 0) {
+                TransformEncoder.begin(scratch.cdr, 1);
+                TransformEncoder.transform(scratch.cdr, stampOffsetNs + time[s], "map", GROUND_TRUTH_FRAME, x[s], y[s],
+                        yaw[s]);
+                sink.write(tfChannel, i, time[s], time[s], scratch.cdr.buffer(), 0, scratch.cdr.size());
+            }
             sequence.consumedUpTo(i + 1);
         }
         return (int) (h - t);

@@ -4,7 +4,9 @@ import io.rtaware.core.data.Key;
 import io.rtaware.core.data.StateValue;
 import io.rtaware.record.encode.JsonStateCodec;
 import io.rtaware.record.encode.TimingTypes;
+import io.rtaware.robot.msg.Odometry;
 import io.rtaware.ros2msg.Ros2Codec;
+import io.rtaware.ros2msg.Ros2Types;
 import java.io.IOException;
 import java.util.Map;
 
@@ -13,8 +15,9 @@ import java.util.Map;
  * with a standard ROS 2 type on its topic as that type, plus what the ROS 2 message lacks on
  * {@code /rtaware/state/<key>} as an {@code rtaware_msgs/msg/StateJson} (so a value can be
  * rebuilt exactly); any other key on its topic as a StateJson alone. A ROS 2 message's header is
- * stamped with the commit's log time (world time plus the plan's log-time offset). Encoding runs
- * on the writer thread.
+ * stamped with the commit's log time (world time plus the plan's log-time offset). An odometry
+ * key the plan names ({@link RecordingPlan#transformsFrom}) is written as a transform on
+ * {@code /tf} too. Encoding runs on the writer thread.
  */
 final class KeyChannels {
 
@@ -26,6 +29,10 @@ final class KeyChannels {
     private final long stampOffsetNs;
     private final int channel;
     private final int stateChannel;
+    /** The /tf channel an odometry key's commits are also written to, or 0. */
+    private final int tfChannel;
+    private final String tfParent;
+    private final String tfChild;
 
     KeyChannels(Key<?> key, RecordingPlan plan, Ros2Channels layout) throws IOException {
         keyName = key.name();
@@ -51,6 +58,17 @@ final class KeyChannels {
                             "json_schema", jsonCodec.jsonSchema()));
             stateChannel = 0;
         }
+        String[] tf = plan.transformsOf(key.name());
+        if (tf != null && key.type() == Odometry.class) {
+            tfParent = tf[0];
+            tfChild = tf[1];
+            tfChannel = layout.add(RecordingPlan.TF_TOPIC, Ros2Types.TF_MESSAGE.name(), Ros2Types.TF_MESSAGE.schemaText(),
+                    Ros2Types.TF_MESSAGE.typeHash(), Ros2Channels.Qos.TF, Map.of());
+        } else {
+            tfParent = null;
+            tfChild = null;
+            tfChannel = 0;
+        }
     }
 
     /** Writer thread: encodes one committed value on the key's channels. */
@@ -67,5 +85,12 @@ final class KeyChannels {
         StateJsonMessage.encode(scratch.cdr, keyName, scratch.json.array(), scratch.json.size());
         sink.write(ros != null ? stateChannel : channel, generation, timeNs, timeNs, scratch.cdr.buffer(), 0,
                 scratch.cdr.size());
+        if (tfChannel != 0) {
+            Odometry odometry = (Odometry) value;
+            TransformEncoder.begin(scratch.cdr, 1);
+            TransformEncoder.transform(scratch.cdr, stampOffsetNs + timeNs, tfParent, tfChild, odometry.xM,
+                    odometry.yM, odometry.yawRad);
+            sink.write(tfChannel, generation, timeNs, timeNs, scratch.cdr.buffer(), 0, scratch.cdr.size());
+        }
     }
 }

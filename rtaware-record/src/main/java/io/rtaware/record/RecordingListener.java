@@ -42,6 +42,7 @@ public final class RecordingListener implements MonitorListener {
         long wallStartNs = wallStart.getEpochSecond() * 1_000_000_000L + wallStart.getNano();
         plan.metadata(RecordingPlan.WALL_CLOCK_START_NS, Long.toString(wallStartNs))
                 .metadata(RecordingPlan.WORLD_START_NS, Long.toString(worldStartNs))
+                .worldStartNs(worldStartNs)
                 .logTimeOffsetNs(wallStartNs - worldStartNs);
         List<String> names = monitor.tasks().stream().map(TaskInfo::name).toList();
         List<List<String>> inputs = monitor.tasks().stream().map(TaskInfo::inputKeys).toList();

@@ -1,8 +1,10 @@
 package io.rtaware.record;
 
 import io.rtaware.record.mcap.Compression;
+import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
 
@@ -32,12 +34,19 @@ public final class RecordingPlan {
     public static final String WALL_CLOCK_START_NS = "wall_clock_start_unix_ns";
     /** {@code rtaware.run} metadata: the world time at the run's wall-clock start, ns. */
     public static final String WORLD_START_NS = "world_start_ns";
+    /** The transforms topic. */
+    public static final String TF_TOPIC = "/tf";
+    /** The static transforms topic. */
+    public static final String TF_STATIC_TOPIC = "/tf_static";
 
     private final Map<String, String> topics = new HashMap<>();
     private final Map<String, String> frames = new HashMap<>();
     private final Map<String, String> metadata = new HashMap<>();
     private final Set<String> latched = new HashSet<>();
     private long logTimeOffsetNs;
+    private long worldStartNs;
+    private final List<StaticTransform> staticTransforms = new ArrayList<>();
+    private final Map<String, String[]> transformsFrom = new HashMap<>();
     private long reorderWindowNs = 2_000_000_000L;
     private Compression compression = Compression.ZSTD;
     private int valueSlots = 8192;
@@ -75,6 +84,75 @@ public final class RecordingPlan {
      */
     public boolean isLatched(String key) {
         return latched.contains(key);
+    }
+
+    /**
+     * A transform that never changes, published once on {@code /tf_static}.
+     *
+     * @param parent the parent frame, e.g. {@code base_link}
+     * @param child the child frame, e.g. {@code laser}
+     * @param xM translation x in metres
+     * @param yM translation y in metres
+     * @param yawRad rotation about z in radians
+     */
+    public record StaticTransform(String parent, String child, double xM, double yM, double yawRad) {
+    }
+
+    /**
+     * Adds a transform to {@code /tf_static} (REP 105: e.g. {@code base_link} to {@code laser}).
+     *
+     * @param parent the parent frame
+     * @param child the child frame
+     * @param xM translation x in metres
+     * @param yM translation y in metres
+     * @param yawRad rotation about z in radians
+     * @return this plan
+     */
+    public RecordingPlan staticTransform(String parent, String child, double xM, double yM, double yawRad) {
+        staticTransforms.add(new StaticTransform(parent, child, xM, yM, yawRad));
+        return this;
+    }
+
+    /** @return the transforms of {@code /tf_static} */
+    public List<StaticTransform> staticTransforms() {
+        return List.copyOf(staticTransforms);
+    }
+
+    /**
+     * Publishes each commit of an odometry key as a transform on {@code /tf} as well (REP 105:
+     * {@code odom} to {@code base_link}), stamped as its message.
+     *
+     * @param key an odometry key's name
+     * @param parent the parent frame, e.g. {@code odom}
+     * @param child the child frame, e.g. {@code base_link}
+     * @return this plan
+     */
+    public RecordingPlan transformsFrom(String key, String parent, String child) {
+        transformsFrom.put(key, new String[] {parent, child});
+        return this;
+    }
+
+    /**
+     * @param key a key name
+     * @return the parent and child frame of the transforms its commits make, or null
+     */
+    public String[] transformsOf(String key) {
+        String[] frames = transformsFrom.get(key);
+        return frames == null ? null : frames.clone();
+    }
+
+    /**
+     * @param nowNs the world time at the recording's start (when {@code /tf_static} is written)
+     * @return this plan
+     */
+    public RecordingPlan worldStartNs(long nowNs) {
+        worldStartNs = nowNs;
+        return this;
+    }
+
+    /** @return the world time at the recording's start */
+    public long worldStartNs() {
+        return worldStartNs;
     }
 
     /**

@@ -31,7 +31,9 @@ final class Ros2Channels {
         /** Reliable, volatile, keep last 10: the rclcpp default. */
         RELIABLE_VOLATILE(10, 2),
         /** Reliable, transient local, keep last 1: a latched topic ({@code /map}, {@code /tf_static}). */
-        RELIABLE_TRANSIENT_LOCAL(1, 1);
+        RELIABLE_TRANSIENT_LOCAL(1, 1),
+        /** Reliable, volatile, keep last 100: {@code /tf}, as tf2's broadcaster offers it. */
+        TF(100, 2);
 
         private final int depth;
         private final int durability;
@@ -61,7 +63,7 @@ final class Ros2Channels {
     }
 
     /**
-     * Adds a channel.
+     * Adds a channel, or returns the one of the same topic and type added before.
      *
      * @param topic the topic
      * @param type the message type, e.g. {@code sensor_msgs/msg/LaserScan}
@@ -74,6 +76,11 @@ final class Ros2Channels {
      */
     int add(String topic, String type, String schemaText, String typeHash, Qos qos, Map<String, String> metadata)
             throws IOException {
+        for (Channel c : channels) {
+            if (c.topic().equals(topic) && c.type().equals(type)) {
+                return c.id(); // one channel per topic (e.g. /tf from odometry and from the ground truth)
+            }
+        }
         Integer schema = schemas.get(type);
         if (schema == null) {
             schema = writer.addSchema(type, "ros2msg", schemaText);

@@ -5,6 +5,8 @@ import io.rtaware.core.data.StateValue;
 import io.rtaware.record.encode.TimingTypes;
 import io.rtaware.record.mcap.McapWriter;
 import io.rtaware.ros2msg.PoseStampedCodec;
+import io.rtaware.ros2msg.Ros2Types;
+import io.rtaware.ros2msg.cdr.CdrWriter;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -159,9 +161,12 @@ public final class RunRecorder {
                     List.copyOf(taskNames), plan.eventSlots());
             rings.add(events);
             PoseStampedCodec poseCodec = new PoseStampedCodec();
+            boolean transforms = !plan.staticTransforms().isEmpty();
+            int truthTf = transforms ? layout.add(RecordingPlan.TF_TOPIC, Ros2Types.TF_MESSAGE.name(),
+                    Ros2Types.TF_MESSAGE.schemaText(), Ros2Types.TF_MESSAGE.typeHash(), Ros2Channels.Qos.TF, Map.of()) : 0;
             truth = new GroundTruthRing(layout.add(RecordingPlan.GROUND_TRUTH_TOPIC, poseCodec.type().name(),
                     poseCodec.type().schemaText(), poseCodec.type().typeHash(), Ros2Channels.Qos.RELIABLE_VOLATILE,
-                    Map.of("frame_id", "map")), poseCodec, plan.valueSlots() * 8, plan.logTimeOffsetNs());
+                    Map.of("frame_id", "map")), truthTf, poseCodec, plan.valueSlots() * 8, plan.logTimeOffsetNs());
             rings.add(truth);
         } catch (IOException | RuntimeException e) {
             writer.close();
@@ -169,8 +174,32 @@ public final class RunRecorder {
         }
         ordered = new LogTimeOrderedSink(writer, plan.logTimeOffsetNs(), plan.reorderWindowNs(), REORDER_SLOTS,
                 REORDER_BYTES);
+        try {
+            writeStaticTransforms(plan);
+        } catch (IOException | RuntimeException e) {
+            writer.close();
+            throw e;
+        }
         thread = new RecorderWriterThread(rings, ordered);
         thread.start();
+    }
+
+    /** Writes {@code /tf_static} once, at the recording's start (before the writer thread runs). */
+    private void writeStaticTransforms(RecordingPlan plan) throws IOException {
+        List<RecordingPlan.StaticTransform> all = plan.staticTransforms();
+        if (all.isEmpty()) {
+            return;
+        }
+        int channel = layout.add(RecordingPlan.TF_STATIC_TOPIC, Ros2Types.TF_MESSAGE.name(),
+                Ros2Types.TF_MESSAGE.schemaText(), Ros2Types.TF_MESSAGE.typeHash(),
+                Ros2Channels.Qos.RELIABLE_TRANSIENT_LOCAL, Map.of());
+        CdrWriter cdr = new CdrWriter(4096);
+        TransformEncoder.begin(cdr, all.size());
+        long stampNs = plan.logTimeOffsetNs() + plan.worldStartNs();
+        for (RecordingPlan.StaticTransform t : all) {
+            TransformEncoder.transform(cdr, stampNs, t.parent(), t.child(), t.xM(), t.yM(), t.yawRad());
+        }
+        ordered.write(channel, 0, plan.worldStartNs(), plan.worldStartNs(), cdr.buffer(), 0, cdr.size());
     }
 
     /** @return the file being written */
