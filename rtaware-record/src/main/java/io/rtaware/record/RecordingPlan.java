@@ -45,6 +45,7 @@ public final class RecordingPlan {
     private final Set<String> latched = new HashSet<>();
     private long logTimeOffsetNs;
     private long worldStartNs;
+    private boolean groundTruth;
     private final List<StaticTransform> staticTransforms = new ArrayList<>();
     private final Map<String, String[]> transformsFrom = new HashMap<>();
     private long reorderWindowNs = 2_000_000_000L;
@@ -84,6 +85,23 @@ public final class RecordingPlan {
      */
     public boolean isLatched(String key) {
         return latched.contains(key);
+    }
+
+    /**
+     * Declares that the run hands ground-truth poses to the recorder
+     * ({@link RunRecorder#groundTruth}): only then does the file have a {@code /ground_truth}
+     * channel (a bench has none, and declares no channel it never writes).
+     *
+     * @return this plan
+     */
+    public RecordingPlan withGroundTruth() {
+        groundTruth = true;
+        return this;
+    }
+
+    /** @return true if the recording has a {@code /ground_truth} channel */
+    public boolean hasGroundTruth() {
+        return groundTruth;
     }
 
     /**

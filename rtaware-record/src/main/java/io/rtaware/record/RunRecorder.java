@@ -32,10 +32,10 @@ import java.util.concurrent.atomic.AtomicLong;
  * ROS 2 type, the fields the ROS 2 message lacks on {@code /rtaware/state/<key>} as a StateJson
  * (so a value can be rebuilt exactly); one {@code /rtaware/timing/<task>} per task
  * ({@code rtaware_msgs/msg/TaskCycle}), one message per cycle; {@code /rtaware/events}
- * ({@code rtaware_msgs/msg/MonitorEvent}); {@code /ground_truth}. Log and publish time of every
- * message are the world time of its commit, cycle end or event plus the plan's log-time offset
- * (Unix-epoch ns), and messages are written in log-time order through a reorder window
- * ({@link LogTimeOrderedSink}).
+ * ({@code rtaware_msgs/msg/MonitorEvent}); {@code /ground_truth} if the plan declares it. Log
+ * and publish time of every message are the world time of its commit, cycle end or event plus
+ * the plan's log-time offset (Unix-epoch ns), and messages are written in log-time order through
+ * a reorder window ({@link LogTimeOrderedSink}).
  *
  * <p>{@link #finish()} drains everything, writes the summary and the footer: call it on every exit
  * path (the run's termination handler). Thread-safety, as the rings' types say:
@@ -160,14 +160,19 @@ public final class RunRecorder {
                     TimingTypes.MONITOR_EVENT.schemaText(), null, Ros2Channels.Qos.RELIABLE_VOLATILE, Map.of()),
                     List.copyOf(taskNames), plan.eventSlots());
             rings.add(events);
-            PoseStampedCodec poseCodec = new PoseStampedCodec();
-            boolean transforms = !plan.staticTransforms().isEmpty();
-            int truthTf = transforms ? layout.add(RecordingPlan.TF_TOPIC, Ros2Types.TF_MESSAGE.name(),
-                    Ros2Types.TF_MESSAGE.schemaText(), Ros2Types.TF_MESSAGE.typeHash(), Ros2Channels.Qos.TF, Map.of()) : 0;
-            truth = new GroundTruthRing(layout.add(RecordingPlan.GROUND_TRUTH_TOPIC, poseCodec.type().name(),
-                    poseCodec.type().schemaText(), poseCodec.type().typeHash(), Ros2Channels.Qos.RELIABLE_VOLATILE,
-                    Map.of("frame_id", "map")), truthTf, poseCodec, plan.valueSlots() * 8, plan.logTimeOffsetNs());
-            rings.add(truth);
+            if (plan.hasGroundTruth()) {
+                PoseStampedCodec poseCodec = new PoseStampedCodec();
+                boolean transforms = !plan.staticTransforms().isEmpty();
+                int truthTf = transforms ? layout.add(RecordingPlan.TF_TOPIC, Ros2Types.TF_MESSAGE.name(),
+                        Ros2Types.TF_MESSAGE.schemaText(), Ros2Types.TF_MESSAGE.typeHash(), Ros2Channels.Qos.TF,
+                        Map.of()) : 0;
+                truth = new GroundTruthRing(layout.add(RecordingPlan.GROUND_TRUTH_TOPIC, poseCodec.type().name(),
+                        poseCodec.type().schemaText(), poseCodec.type().typeHash(), Ros2Channels.Qos.RELIABLE_VOLATILE,
+                        Map.of("frame_id", "map")), truthTf, poseCodec, plan.valueSlots() * 8, plan.logTimeOffsetNs());
+                rings.add(truth);
+            } else {
+                truth = null;
+            }
         } catch (IOException | RuntimeException e) {
             writer.close();
             throw e;
@@ -267,7 +272,8 @@ public final class RunRecorder {
     }
 
     /**
-     * Hands a ground-truth pose to the recorder (one thread at a time: the sampler).
+     * Hands a ground-truth pose to the recorder (one thread at a time: the sampler); ignored
+     * unless the plan declared ground truth ({@link RecordingPlan#withGroundTruth}).
      *
      * @param timeNs world time of the sample
      * @param xM x in metres
@@ -275,7 +281,7 @@ public final class RunRecorder {
      * @param yawRad heading in radians
      */
     public void groundTruth(long timeNs, double xM, double yM, double yawRad) {
-        if (!truth.offer(timeNs, xM, yM, yawRad)) {
+        if (truth != null && !truth.offer(timeNs, xM, yM, yawRad)) {
             dropped.incrementAndGet();
         }
     }

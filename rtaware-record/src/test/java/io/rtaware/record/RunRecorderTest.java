@@ -43,7 +43,8 @@ class RunRecorderTest {
     @Test
     void recordsValuesCyclesEventsAndGroundTruth() throws IOException {
         Path file = dir.resolve("run.mcap");
-        RecordingPlan plan = new RecordingPlan().topic("laser", "/scan", "base_link").metadata("scenario", "test");
+        RecordingPlan plan = new RecordingPlan().topic("laser", "/scan", "base_link").metadata("scenario", "test")
+                .withGroundTruth();
         RunRecorder recorder = new RunRecorder(file, List.of("avoid", "laser-task"),
                 List.of(List.of("laser"), List.of()), List.of(LASER, MOTION, GOALS), plan);
         LaserScan scan = new LaserScan(8);

@@ -27,7 +27,8 @@ public final class RecordOptions {
             description = "Record the run to an MCAP file (open it in Foxglove; replay it with rtaware replay).")
     Path file;
 
-    @Option(names = "--overwrite", description = "Replace the --record file if it exists (without it, an existing file is refused).")
+    @Option(names = "--overwrite",
+            description = "Replace the --record file if it exists (without it, an existing file is refused).")
     boolean overwrite;
 
     /** @return true if {@code --record} was given */

@@ -45,6 +45,7 @@ final class RunRecording {
                 .topic(RobotKeys.MOTOR.name(), "/cmd_vel", RosCodecs.BASE_FRAME)
                 .topic(NavKeys.MAP, "/map", "map")
                 .latched(NavKeys.MAP)
+                .withGroundTruth()
                 // REP 105: the laser sits at the robot's centre (the simulator's and the paper's Pioneer's
                 // scans are measured from there); the controller's map is its odometry frame.
                 .staticTransform(RosCodecs.BASE_FRAME, LASER_FRAME, 0, 0, 0)

@@ -150,6 +150,13 @@ class RecordRunTest {
         assertTrue(output.contains("rosbags AnyReader deserialized all"), output);
     }
 
+    @Test
+    void foxglovesReadersDecodeEveryMessageIndexedAndStreamed() throws Exception {
+        String output = FoxgloveReadersCheck.run(recording);
+        assertTrue(output.contains("McapIndexedReader decoded all"), output);
+        assertTrue(output.contains("McapStreamReader decoded all"), output);
+    }
+
     /** Linux: bit 2 (SIGINT) of the SigIgn mask in /proc/self/status. */
     private static boolean sigintIgnoredHere() throws IOException {
         Path status = Path.of("/proc/self/status");
