@@ -4,8 +4,8 @@
 Usage: check_recording.py RUN.mcap RUN_DIR
 
 Opens the file with the ``mcap`` package (CRCs of chunks and data section validated), decodes
-every CDR message with ``mcap-ros2-support`` (from the ros2msg definitions in the file) and
-every JSON message with ``json``, then compares:
+every CDR message with ``mcap-ros2-support`` (from the ros2msg definitions in the file; the
+JSON inside ``rtaware_msgs/msg/StateJson`` messages with ``json``), then compares:
 
 - ``/ground_truth`` poses with the rows of RUN_DIR/trajectory.csv (same samples, same order);
 - ``/odom`` pose and twist with the run's own odometry values on ``/rtaware/state/odometry``
@@ -60,6 +60,8 @@ def main(mcap_path, run_dir):
         cdr_topics = [c.topic for c in summary.channels.values() if c.message_encoding == "cdr"]
         for schema, channel, message, value in reader.iter_decoded_messages(topics=cdr_topics, log_time_order=False):
             decoded += 1
+            if schema.name == "rtaware_msgs/msg/StateJson":
+                value = json.loads(value.json)
             by_topic.setdefault(channel.topic, []).append((message.log_time, value))
     check(count == summary.statistics.message_count, "summary says %d messages, read %d"
           % (summary.statistics.message_count, count))

@@ -9,6 +9,7 @@ import io.rtaware.core.monitor.TaskInfo;
 import io.rtaware.core.task.ErrorPolicy;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.time.Instant;
 import java.util.List;
 
 /**
@@ -26,6 +27,8 @@ public final class RecordingListener implements MonitorListener {
 
     /**
      * Creates the recording of a monitor's run (every key, every task) and adds it as a listener.
+     * Log times become Unix-epoch ns: the wall clock now plus the world time since now
+     * ({@link RecordingPlan#logTimeOffsetNs}), both kept in the metadata.
      *
      * @param monitor a monitor that has not started yet
      * @param file the MCAP file
@@ -34,6 +37,13 @@ public final class RecordingListener implements MonitorListener {
      * @throws IOException if the file cannot be written
      */
     public static RunRecorder attach(Monitor monitor, Path file, RecordingPlan plan) throws IOException {
+        Instant wallStart = Instant.now();
+        long worldStartNs = monitor.clock().nanos();
+        long wallStartNs = wallStart.getEpochSecond() * 1_000_000_000L + wallStart.getNano();
+        plan.metadata(RecordingPlan.WALL_CLOCK_START_NS, Long.toString(wallStartNs))
+                .metadata(RecordingPlan.WORLD_START_NS, Long.toString(worldStartNs))
+                .worldStartNs(worldStartNs)
+                .logTimeOffsetNs(wallStartNs - worldStartNs);
         List<String> names = monitor.tasks().stream().map(TaskInfo::name).toList();
         List<List<String>> inputs = monitor.tasks().stream().map(TaskInfo::inputKeys).toList();
         RunRecorder recorder = new RunRecorder(file, names, inputs, monitor.keys(), plan);

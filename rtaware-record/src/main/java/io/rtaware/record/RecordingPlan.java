@@ -1,8 +1,12 @@
 package io.rtaware.record;
 
 import io.rtaware.record.mcap.Compression;
+import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 /**
  * Where keys go in a recording: a topic per key name (keys without one are recorded on
@@ -21,10 +25,30 @@ public final class RecordingPlan {
     public static final String EVENTS_TOPIC = "/rtaware/events";
     /** The ground-truth topic. */
     public static final String GROUND_TRUTH_TOPIC = "/ground_truth";
+    /**
+     * {@code rtaware.run} metadata: what was added to world time to make log times (Unix-epoch
+     * ns of world time 0). Absent in recordings made before log times were epoch times (then 0).
+     */
+    public static final String LOG_TIME_OFFSET_NS = "log_time_offset_ns";
+    /** {@code rtaware.run} metadata: the run's wall-clock start, Unix-epoch ns. */
+    public static final String WALL_CLOCK_START_NS = "wall_clock_start_unix_ns";
+    /** {@code rtaware.run} metadata: the world time at the run's wall-clock start, ns. */
+    public static final String WORLD_START_NS = "world_start_ns";
+    /** The transforms topic. */
+    public static final String TF_TOPIC = "/tf";
+    /** The static transforms topic. */
+    public static final String TF_STATIC_TOPIC = "/tf_static";
 
     private final Map<String, String> topics = new HashMap<>();
     private final Map<String, String> frames = new HashMap<>();
     private final Map<String, String> metadata = new HashMap<>();
+    private final Set<String> latched = new HashSet<>();
+    private long logTimeOffsetNs;
+    private long worldStartNs;
+    private boolean groundTruth;
+    private final List<StaticTransform> staticTransforms = new ArrayList<>();
+    private final Map<String, String[]> transformsFrom = new HashMap<>();
+    private long reorderWindowNs = 2_000_000_000L;
     private Compression compression = Compression.ZSTD;
     private int valueSlots = 8192;
     private long valueBytesPerKey = 4L << 20;
@@ -41,6 +65,151 @@ public final class RecordingPlan {
         topics.put(key, topic);
         frames.put(key, frameId);
         return this;
+    }
+
+    /**
+     * Declares a key's topic latched: its publisher offers transient-local durability (a map),
+     * so playback gives its last message to late subscribers.
+     *
+     * @param key a key name
+     * @return this plan
+     */
+    public RecordingPlan latched(String key) {
+        latched.add(key);
+        return this;
+    }
+
+    /**
+     * @param key a key name
+     * @return true if its topic is latched
+     */
+    public boolean isLatched(String key) {
+        return latched.contains(key);
+    }
+
+    /**
+     * Declares that the run hands ground-truth poses to the recorder
+     * ({@link RunRecorder#groundTruth}): only then does the file have a {@code /ground_truth}
+     * channel (a bench has none, and declares no channel it never writes).
+     *
+     * @return this plan
+     */
+    public RecordingPlan withGroundTruth() {
+        groundTruth = true;
+        return this;
+    }
+
+    /** @return true if the recording has a {@code /ground_truth} channel */
+    public boolean hasGroundTruth() {
+        return groundTruth;
+    }
+
+    /**
+     * A transform that never changes, published once on {@code /tf_static}.
+     *
+     * @param parent the parent frame, e.g. {@code base_link}
+     * @param child the child frame, e.g. {@code laser}
+     * @param xM translation x in metres
+     * @param yM translation y in metres
+     * @param yawRad rotation about z in radians
+     */
+    public record StaticTransform(String parent, String child, double xM, double yM, double yawRad) {
+    }
+
+    /**
+     * Adds a transform to {@code /tf_static} (REP 105: e.g. {@code base_link} to {@code laser}).
+     *
+     * @param parent the parent frame
+     * @param child the child frame
+     * @param xM translation x in metres
+     * @param yM translation y in metres
+     * @param yawRad rotation about z in radians
+     * @return this plan
+     */
+    public RecordingPlan staticTransform(String parent, String child, double xM, double yM, double yawRad) {
+        staticTransforms.add(new StaticTransform(parent, child, xM, yM, yawRad));
+        return this;
+    }
+
+    /** @return the transforms of {@code /tf_static} */
+    public List<StaticTransform> staticTransforms() {
+        return List.copyOf(staticTransforms);
+    }
+
+    /**
+     * Publishes each commit of an odometry key as a transform on {@code /tf} as well (REP 105:
+     * {@code odom} to {@code base_link}), stamped as its message.
+     *
+     * @param key an odometry key's name
+     * @param parent the parent frame, e.g. {@code odom}
+     * @param child the child frame, e.g. {@code base_link}
+     * @return this plan
+     */
+    public RecordingPlan transformsFrom(String key, String parent, String child) {
+        transformsFrom.put(key, new String[] {parent, child});
+        return this;
+    }
+
+    /**
+     * @param key a key name
+     * @return the parent and child frame of the transforms its commits make, or null
+     */
+    public String[] transformsOf(String key) {
+        String[] frames = transformsFrom.get(key);
+        return frames == null ? null : frames.clone();
+    }
+
+    /**
+     * @param nowNs the world time at the recording's start (when {@code /tf_static} is written)
+     * @return this plan
+     */
+    public RecordingPlan worldStartNs(long nowNs) {
+        worldStartNs = nowNs;
+        return this;
+    }
+
+    /** @return the world time at the recording's start */
+    public long worldStartNs() {
+        return worldStartNs;
+    }
+
+    /**
+     * Sets what is added to every world time to make the file's log times: the Unix-epoch time
+     * in ns of world time 0 (the run's wall-clock start minus the world time at its start), so
+     * log times are the Unix-epoch nanoseconds {@code ros2 bag} writes. Kept in the
+     * {@code rtaware.run} metadata as {@value #LOG_TIME_OFFSET_NS}, so that readers recover world
+     * time exactly. Default 0 (log time = world time).
+     *
+     * @param offsetNs the offset in ns
+     * @return this plan
+     */
+    public RecordingPlan logTimeOffsetNs(long offsetNs) {
+        logTimeOffsetNs = offsetNs;
+        metadata.put(LOG_TIME_OFFSET_NS, Long.toString(offsetNs));
+        return this;
+    }
+
+    /** @return what is added to world time to make log time */
+    public long logTimeOffsetNs() {
+        return logTimeOffsetNs;
+    }
+
+    /**
+     * @param windowNs world time a message is held for earlier ones to arrive before it is
+     *     written in log-time order (what arrives later is counted as out of order)
+     * @return this plan
+     */
+    public RecordingPlan reorderWindowNs(long windowNs) {
+        if (windowNs < 0) {
+            throw new IllegalArgumentException("reorder window must not be negative, got " + windowNs);
+        }
+        reorderWindowNs = windowNs;
+        return this;
+    }
+
+    /** @return the reorder window in world ns */
+    public long reorderWindowNs() {
+        return reorderWindowNs;
     }
 
     /**

@@ -43,7 +43,8 @@ class RunRecorderTest {
     @Test
     void recordsValuesCyclesEventsAndGroundTruth() throws IOException {
         Path file = dir.resolve("run.mcap");
-        RecordingPlan plan = new RecordingPlan().topic("laser", "/scan", "base_link").metadata("scenario", "test");
+        RecordingPlan plan = new RecordingPlan().topic("laser", "/scan", "base_link").metadata("scenario", "test")
+                .withGroundTruth();
         RunRecorder recorder = new RunRecorder(file, List.of("avoid", "laser-task"),
                 List.of(List.of("laser"), List.of()), List.of(LASER, MOTION, GOALS), plan);
         LaserScan scan = new LaserScan(8);
@@ -84,7 +85,12 @@ class RunRecorderTest {
 
             @Override
             public void metadata(String name, Map<String, String> entries) {
-                metadata.add(entries);
+                if (name.equals("rtaware.run")) {
+                    metadata.add(entries);
+                } else {
+                    assertEquals("rosbag2", name, "the other metadata record");
+                    assertTrue(entries.get("serialized_metadata").contains("message_count: 9"), entries.toString());
+                }
             }
 
             @Override
@@ -94,6 +100,14 @@ class RunRecorderTest {
             }
         });
         assertEquals(List.of(Map.of("scenario", "test")), metadata);
+        for (int i = 1; i < messages.size(); i++) {
+            assertTrue(messages.get(i).logTimeNs() >= messages.get(i - 1).logTimeNs(),
+                    "log-time order, handed over out of order: " + messages.get(i - 1) + " then " + messages.get(i));
+        }
+        assertEquals(0, stats.outOfOrder(), "all within the reorder window");
+        assertEquals("ros2", reader.summary().profile());
+        assertTrue(channels.stream().allMatch(c -> c.messageEncoding().equals("cdr")
+                && c.metadata().containsKey("offered_qos_profiles")), "every channel CDR with its QoS: " + channels);
         Map<String, String> avoidTiming = channels.stream()
                 .filter(c -> c.topic().equals("/rtaware/timing/avoid")).findFirst().orElseThrow().metadata();
         assertEquals("laser", avoidTiming.get("inputs"));
@@ -109,13 +123,13 @@ class RunRecorderTest {
         assertEquals("base_link", header.frameId.toString());
 
         ObjectMapper json = new ObjectMapper();
-        JsonNode state = json.readTree(only(messages, "/rtaware/state/laser").data());
+        JsonNode state = json.readTree(jsonOf(only(messages, "/rtaware/state/laser")));
         assertEquals(12.5, state.get("serverTimeS").asDouble());
         assertTrue(state.get("rangesM") == null, "the state channel carries no arrays");
-        JsonNode m = json.readTree(new String(only(messages, "/rtaware/data/motion.avoid").data(), StandardCharsets.UTF_8));
+        JsonNode m = json.readTree(new String(jsonOf(only(messages, "/rtaware/data/motion.avoid")), StandardCharsets.UTF_8));
         assertEquals(0.25, m.get("vxMps").asDouble());
         assertEquals(true, m.get("active").asBoolean());
-        JsonNode g = json.readTree(only(messages, "/rtaware/data/goals").data());
+        JsonNode g = json.readTree(jsonOf(only(messages, "/rtaware/data/goals")));
         assertEquals(1, g.get("count").asInt());
         assertEquals(1, g.get("xM").size());
         assertEquals(7, g.get("id").get(0).asLong());
@@ -155,6 +169,10 @@ class RunRecorderTest {
         accepted = stats.messages();
         assertEquals(100_000, accepted + stats.dropped(), "every record is written or counted as dropped");
         assertTrue(stats.dropped() > 0, "a one-slot ring fed 100 000 commits in a loop drops some");
+    }
+
+    private static byte[] jsonOf(Msg m) {
+        return StateJsonMessage.json(m.data(), 0, m.data().length);
     }
 
     private static Msg only(List<Msg> messages, String topic) {

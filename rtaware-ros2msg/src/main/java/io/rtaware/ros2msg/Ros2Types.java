@@ -85,6 +85,21 @@ public final class Ros2Types {
             HEADER, DIAGNOSTIC_STATUS),
             "RIHS01_5a8a36efb05fb25070fa0fb3810290c0e6cd4862b54a8fb975a1ee8dc55a333e");
 
+    /** {@code geometry_msgs/msg/Transform}. */
+    public static final MessageDefinition TRANSFORM = new MessageDefinition("geometry_msgs/msg/Transform",
+            "geometry_msgs/Vector3 translation\ngeometry_msgs/Quaternion rotation\n", VECTOR3, QUATERNION);
+    /** {@code geometry_msgs/msg/TransformStamped}. */
+    public static final MessageDefinition TRANSFORM_STAMPED = new MessageDefinition(
+            "geometry_msgs/msg/TransformStamped",
+            "std_msgs/Header header\nstring child_frame_id\ngeometry_msgs/Transform transform\n", HEADER, TRANSFORM);
+    /**
+     * {@code tf2_msgs/msg/TFMessage}, what {@code /tf} and {@code /tf_static} carry (its hash as
+     * rosbags computes it for Jazzy; check_ros2_profile.py checks it against rosbags).
+     */
+    public static final Ros2MessageType TF_MESSAGE = new Ros2MessageType(new MessageDefinition(
+            "tf2_msgs/msg/TFMessage", "geometry_msgs/TransformStamped[] transforms\n", TRANSFORM_STAMPED),
+            "RIHS01_e369d0f05a23ae52508854b66f6aa0437f3449d652e8cbf22d5abe85d020f087");
+
     private Ros2Types() {
     }
 }

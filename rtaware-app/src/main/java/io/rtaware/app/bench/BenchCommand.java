@@ -232,6 +232,7 @@ public final class BenchCommand implements Callable<Integer> {
             OutputFile.of("--json", json);
         }
         trace.checkOutput();
+        record.checkOutput();
         // A comparison (and each count of a sweep) keeps a monitor and the comparison's own
         // per-task lateness histogram at once.
         boolean comparing = compare || sweepTasks != null;
@@ -471,11 +472,11 @@ public final class BenchCommand implements Callable<Integer> {
             out.print(history);
         }
         trace.write(recorder, out, writes);
-        RecordingStats stats = RecordOptions.finish(recording, out, System.err);
+        RecordingStats stats = RecordOptions.finish(recording, out, writes);
         if (stats != null) {
             doc.section("recording", stats);
         }
-        if (json != null && writes.write(json, () -> doc.write(json))) {
+        if (json != null && writes.writeFile(json, doc::write)) {
             out.println("report written to " + json);
         }
     }

@@ -1,6 +1,8 @@
 package io.rtaware.app.cli;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.output.OutputFile;
+import io.rtaware.app.output.OutputWrites;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.record.RecordingListener;
 import io.rtaware.record.RecordingPlan;
@@ -9,7 +11,9 @@ import io.rtaware.record.RunRecorder;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
+import java.util.Locale;
 import picocli.CommandLine.Option;
 
 /**
@@ -23,6 +27,10 @@ public final class RecordOptions {
             description = "Record the run to an MCAP file (open it in Foxglove; replay it with rtaware replay).")
     Path file;
 
+    @Option(names = "--overwrite",
+            description = "Replace the --record file if it exists (without it, an existing file is refused).")
+    boolean overwrite;
+
     /** @return true if {@code --record} was given */
     public boolean enabled() {
         return file != null;
@@ -34,6 +42,23 @@ public final class RecordOptions {
     }
 
     /**
+     * Checks {@code --record FILE} before the run starts: a name, not a folder, a folder that
+     * accepts the file, and no existing file unless {@code --overwrite} (a recording is never
+     * replaced silently).
+     *
+     * @throws UserError if the file cannot or must not be written
+     */
+    public void checkOutput() {
+        if (file == null) {
+            return;
+        }
+        OutputFile.of("--record", file);
+        if (Files.exists(file, LinkOption.NOFOLLOW_LINKS) && !overwrite) {
+            throw new UserError("--record: " + file + " exists; give --overwrite to replace it");
+        }
+    }
+
+    /**
      * Creates the recording and attaches it to the monitor, if {@code --record} was given.
      *
      * @param monitor a monitor that has not started
@@ -42,6 +67,7 @@ public final class RecordOptions {
      * @throws UserError if the file cannot be created
      */
     public RunRecorder attach(Monitor monitor, RecordingPlan plan) {
+        checkOutput();
         return file == null ? null : attach(monitor, file, plan);
     }
 
@@ -67,24 +93,31 @@ public final class RecordOptions {
     }
 
     /**
-     * Finishes the file (summary and footer) and says what it holds. Failures are reported, not
+     * Finishes the file (summary and footer) and says what it holds. A recording that could not
+     * be completed (a full disk) is not called written: one line says it is incomplete, why, and
+     * what it holds, and counts as a failed write (the command's exit status 1). Nothing is
      * thrown, so the rest of the termination goes on.
      *
      * @param recorder what {@link #attach} returned (null: nothing to do)
      * @param out where the confirmation goes
-     * @param err where a failure goes
+     * @param writes the command's writes, told of an incomplete recording
      * @return the recording's statistics, or null without a recorder
      */
-    public static RecordingStats finish(RunRecorder recorder, PrintStream out, PrintStream err) {
+    public static RecordingStats finish(RunRecorder recorder, PrintStream out, OutputWrites writes) {
         if (recorder == null) {
             return null;
         }
         RecordingStats stats = recorder.finish();
         if (stats.error() != null) {
-            err.println("rtaware: recording " + stats.file() + " incomplete: " + stats.error());
+            writes.failed(String.format(Locale.ROOT, "recording %s is incomplete: %s; it holds %d messages in whole "
+                    + "chunks (%d bytes written, %d records dropped); 'rtaware inspect --recover %s' writes them to a "
+                    + "valid file", stats.file(), stats.error(), stats.messages(), stats.bytes(), stats.dropped(),
+                    stats.file()));
+            return stats;
         }
-        out.printf("recording written to %s (%d messages, %d bytes, %d dropped; open it in Foxglove or "
-                + "rtaware inspect)%n", stats.file(), stats.messages(), stats.bytes(), stats.dropped());
+        out.printf(Locale.ROOT, "recording written to %s (%d messages, %d bytes, %d dropped%s; open it in Foxglove or "
+                + "rtaware inspect)%n", stats.file(), stats.messages(), stats.bytes(), stats.dropped(),
+                stats.outOfOrder() == 0 ? "" : ", " + stats.outOfOrder() + " written out of log-time order");
         return stats;
     }
 }

@@ -6,6 +6,7 @@ import io.rtaware.record.TaskCycleMessage;
 import io.rtaware.record.mcap.McapChannel;
 import io.rtaware.record.mcap.McapFormatException;
 import io.rtaware.record.mcap.McapReader;
+import io.rtaware.record.mcap.McapRecovery;
 import io.rtaware.record.mcap.McapSchema;
 import io.rtaware.record.mcap.McapSummary;
 import io.rtaware.record.mcap.McapVisitor;
@@ -14,6 +15,7 @@ import java.awt.BasicStroke;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -36,7 +38,8 @@ import picocli.CommandLine.Parameters;
 /**
  * {@code rtaware inspect FILE.mcap}: what a recording holds (channels with types, message
  * counts, rates, time span) and, from its {@code /rtaware/timing/<task>} channels, each task's
- * timing; {@code --plot PNG} draws each task's lateness over time.
+ * timing; {@code --plot PNG} draws each task's lateness over time; {@code --recover} writes
+ * what an unfinished recording holds to a valid file.
  */
 @Command(name = "inspect", mixinStandardHelpOptions = true,
         description = {"Summarize an MCAP recording: channels, counts, rates, time span, and each task's timing.",
@@ -50,6 +53,10 @@ public final class InspectCommand implements Callable<Integer> {
 
     @Option(names = "--plot", paramLabel = "PNG", description = "Write each task's lateness over time to this PNG.")
     Path plot;
+
+    @Option(names = "--recover", description = {"Recover an unfinished recording (a run killed, a full disk): write every",
+        "complete chunk to FILE.recovered.mcap and say what was lost."})
+    boolean recover;
 
     /** Per channel: messages and the log-time span. */
     private static final class ChannelStats {
@@ -72,12 +79,15 @@ public final class InspectCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException {
         PrintStream out = System.out;
+        if (recover) {
+            return recover(out);
+        }
         McapReader reader = open(file);
         McapSummary summary;
         try {
             summary = reader.summary();
-        } catch (McapFormatException e) {
-            throw new UserError(e.getMessage());
+        } catch (IOException e) {
+            throw McapFiles.unreadable(file, e);
         }
         Map<Integer, String> schemaNames = new HashMap<>();
         for (McapSchema s : summary.schemas()) {
@@ -85,9 +95,17 @@ public final class InspectCommand implements Callable<Integer> {
         }
         Map<Integer, ChannelStats> channels = new LinkedHashMap<>();
         Map<String, TaskTiming> tasks = new LinkedHashMap<>();
-        long startNs = summary.statistics().messageStartNs();
+        long[] offsetNs = {0};
+        long startLogNs = summary.statistics().messageStartNs();
         try {
             reader.read(new McapVisitor() {
+                @Override
+                public void metadata(String name, Map<String, String> entries) {
+                    if (name.equals("rtaware.run")) {
+                        offsetNs[0] = parseOffset(entries.get(RecordingPlan.LOG_TIME_OFFSET_NS));
+                    }
+                }
+
                 @Override
                 public void message(McapChannel channel, long sequence, long logTimeNs, long publishTimeNs,
                                     byte[] data, int offset, int length) {
@@ -98,19 +116,22 @@ public final class InspectCommand implements Callable<Integer> {
                     if (channel.topic().startsWith(RecordingPlan.TIMING_PREFIX)) {
                         String task = channel.topic().substring(RecordingPlan.TIMING_PREFIX.length());
                         timing(tasks.computeIfAbsent(task, t -> new TaskTiming()),
-                                TaskCycleMessage.decode(data, offset, length), startNs);
+                                TaskCycleMessage.decode(data, offset, length), startLogNs - offsetNs[0]);
                     }
                 }
             });
-        } catch (McapFormatException | CdrException e) {
-            throw new UserError(e.getMessage());
+        } catch (CdrException e) {
+            throw new UserError(file + ": a timing record is malformed: " + e.getMessage());
+        } catch (IOException e) {
+            throw McapFiles.unreadable(file, e);
         }
 
-        double spanS = (summary.statistics().messageEndNs() - startNs) / 1e9;
+        long startNs = startLogNs - offsetNs[0];
+        long endNs = summary.statistics().messageEndNs() - offsetNs[0];
+        double spanS = (endNs - startNs) / 1e9;
         out.printf(Locale.ROOT, "%s: %d bytes, %d messages in %d chunks, %d channels, %.3f s of world time "
                         + "(%.3f .. %.3f s)%n", file, reader.sizeBytes(), summary.statistics().messageCount(),
-                summary.statistics().chunkCount(), summary.channels().size(), spanS, startNs / 1e9,
-                summary.statistics().messageEndNs() / 1e9);
+                summary.statistics().chunkCount(), summary.channels().size(), spanS, startNs / 1e9, endNs / 1e9);
         out.println();
         out.printf(Locale.ROOT, "%-32s %-44s %9s %10s%n", "topic", "type", "messages", "rate");
         for (McapChannel ch : summary.channels()) {
@@ -145,11 +166,56 @@ public final class InspectCommand implements Callable<Integer> {
         return 0;
     }
 
+    /**
+     * @param file a recording
+     * @return where {@code --recover} writes what it holds: {@code NAME.recovered.mcap} beside it
+     */
+    static Path recoveredName(Path file) {
+        String name = file.getFileName().toString();
+        String base = name.toLowerCase(Locale.ROOT).endsWith(".mcap") ? name.substring(0, name.length() - 5) : name;
+        return file.resolveSibling(base + ".recovered.mcap");
+    }
+
+    private int recover(PrintStream out) throws IOException {
+        Path target = recoveredName(file);
+        if (Files.exists(target, LinkOption.NOFOLLOW_LINKS)) {
+            throw new UserError("--recover: " + target + " exists; move it away first");
+        }
+        McapRecovery.Result r;
+        try {
+            r = McapRecovery.recover(file, target);
+        } catch (McapFormatException | java.nio.file.NoSuchFileException e) {
+            Files.deleteIfExists(target);
+            throw McapFiles.unreadable(file, e);
+        } catch (IOException e) {
+            Files.deleteIfExists(target);
+            throw new UserError("--recover: cannot write " + target + ": " + e.getMessage());
+        }
+        out.printf(Locale.ROOT, "recovered %d messages in %d complete chunks (log times %d .. %d ns) from %s into %s%n",
+                r.messages(), r.chunks(), r.firstLogTimeNs(), r.lastLogTimeNs(), file, target);
+        if (r.problem() == null) {
+            out.println("lost: nothing (" + file + " was whole)");
+        } else {
+            out.printf(Locale.ROOT, "lost: the last %d of %d bytes, from byte %d: %s%n", r.lostBytes(), r.fileBytes(),
+                    r.goodBytes(), r.problem());
+        }
+        return 0;
+    }
+
     private static McapReader open(Path file) {
         try {
             return McapReader.open(file);
         } catch (IOException e) {
             throw McapFiles.unreadable(file, e);
+        }
+    }
+
+    /** The log-time offset of the metadata; a value that is not a number counts as none. */
+    private static long parseOffset(String value) {
+        try {
+            return value == null ? 0 : Long.parseLong(value);
+        } catch (NumberFormatException e) {
+            return 0;
         }
     }
 

@@ -2,6 +2,7 @@ package io.rtaware.app.replay;
 
 import io.rtaware.record.RecordingPlan;
 import io.rtaware.record.RunRecorder;
+import io.rtaware.record.StateJsonMessage;
 import io.rtaware.record.TaskCycleMessage;
 import io.rtaware.record.mcap.McapChannel;
 import io.rtaware.record.mcap.McapFormatException;
@@ -32,8 +33,17 @@ import java.util.Map;
  */
 public final class Recording {
 
-    /** One committed value. */
-    public record Commit(long timeNs, long generation, byte[] data, byte[] state) {
+    /**
+     * One committed value.
+     *
+     * @param timeNs world time of the commit
+     * @param generation its generation
+     * @param data its message as recorded
+     * @param state the JSON of what its ROS 2 message lacks, or null
+     * @param stampNs the stamp of its ROS 2 message's header: its log time (world time before
+     *     recordings had Unix-epoch log times)
+     */
+    public record Commit(long timeNs, long generation, byte[] data, byte[] state, long stampNs) {
     }
 
     /** One task's timing record with its number among the task's records (dropped ones included). */
@@ -97,12 +107,20 @@ public final class Recording {
         Map<Integer, ChannelBuilder> builders = new HashMap<>();
         Map<String, ChannelBuilder> stateOf = new HashMap<>();
         Map<String, TimelineBuilder> timelines = new LinkedHashMap<>();
+        long[] offsetNs = {0};
         try {
             reader.read(new McapVisitor() {
                 @Override
                 public void metadata(String name, Map<String, String> entries) {
                     if (name.equals("rtaware.run")) {
                         metadata.putAll(entries);
+                        // Log times are world time plus this (Unix-epoch ns of world time 0); absent in older files.
+                        try {
+                            offsetNs[0] = Long.parseLong(entries.getOrDefault(RecordingPlan.LOG_TIME_OFFSET_NS, "0"));
+                        } catch (NumberFormatException e) {
+                            throw new IllegalArgumentException("metadata " + RecordingPlan.LOG_TIME_OFFSET_NS
+                                    + " is not a number: " + e.getMessage());
+                        }
                     }
                 }
 
@@ -120,17 +138,21 @@ public final class Recording {
                     if (key == null) {
                         return;
                     }
-                    byte[] bytes = Arrays.copyOfRange(data, offset, offset + length);
+                    // Since the ros2 profile, JSON values travel inside an rtaware_msgs/msg/StateJson.
+                    byte[] bytes = StateJsonMessage.JSON.equals(channel.metadata().get(StateJsonMessage.VALUE_ENCODING))
+                            ? StateJsonMessage.json(data, offset, length) : Arrays.copyOfRange(data, offset, offset + length);
+                    long worldNs = logTimeNs - offsetNs[0];
                     if (topic.startsWith(RecordingPlan.STATE_PREFIX)) {
-                        stateOf.computeIfAbsent(key, k -> new ChannelBuilder(channel)).add(sequence, logTimeNs, bytes);
+                        stateOf.computeIfAbsent(key, k -> new ChannelBuilder(channel)).add(sequence, worldNs, bytes,
+                                logTimeNs);
                     } else {
                         builders.computeIfAbsent(channel.id(), id -> new ChannelBuilder(channel))
-                                .add(sequence, logTimeNs, bytes);
+                                .add(sequence, worldNs, bytes, logTimeNs);
                     }
                 }
             });
         } catch (CdrException | IllegalArgumentException e) {
-            throw new McapFormatException(file + ": a timing record is malformed: " + e.getMessage());
+            throw new McapFormatException(file + ": a record is malformed: " + e.getMessage());
         }
         Map<String, KeyChannel> keys = new LinkedHashMap<>();
         for (ChannelBuilder b : builders.values()) {
@@ -139,7 +161,7 @@ public final class Recording {
         Map<String, TaskTimeline> tasks = new LinkedHashMap<>();
         timelines.forEach((name, t) -> tasks.put(name, t.build(name)));
         return new Recording(file, Collections.unmodifiableMap(metadata), Collections.unmodifiableMap(keys),
-                Collections.unmodifiableMap(tasks), summary.statistics().messageEndNs());
+                Collections.unmodifiableMap(tasks), summary.statistics().messageEndNs() - offsetNs[0]);
     }
 
     /** @return the file */
@@ -178,14 +200,15 @@ public final class Recording {
 
         ChannelBuilder(McapChannel channel) {
             key = channel.metadata().get("key");
-            encoding = channel.messageEncoding();
+            encoding = StateJsonMessage.JSON.equals(channel.metadata().get(StateJsonMessage.VALUE_ENCODING))
+                    ? StateJsonMessage.JSON : channel.messageEncoding();
             frame = channel.metadata().getOrDefault("frame_id", "map");
             numbered = RunRecorder.SEQUENCE_GENERATION.equals(channel.metadata().get(RunRecorder.SEQUENCE));
         }
 
-        void add(long sequence, long timeNs, byte[] bytes) {
+        void add(long sequence, long timeNs, byte[] bytes, long logTimeNs) {
             long generation = numbered ? sequence : data.size() + 1;
-            stamps.add(new long[] {generation, timeNs});
+            stamps.add(new long[] {generation, timeNs, logTimeNs});
             data.add(bytes);
         }
 
@@ -203,7 +226,7 @@ public final class Recording {
                 if (state != null && s == null) {
                     continue; // the value without its state message cannot be rebuilt: as if dropped
                 }
-                commits.add(new Commit(stamps.get(i)[1], generation, data.get(i), s));
+                commits.add(new Commit(stamps.get(i)[1], generation, data.get(i), s, stamps.get(i)[2]));
             }
             commits.sort(Comparator.comparingLong(Commit::generation));
             long[] generations = new long[commits.size()];

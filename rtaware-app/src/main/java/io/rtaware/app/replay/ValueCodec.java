@@ -94,7 +94,7 @@ final class ValueCodec<T extends StateValue<T>> {
      */
     boolean sameAs(T value, Recording.Commit commit) throws IOException {
         if (ros != null) {
-            header.set(commit.timeNs(), frameId);
+            header.set(commit.stampNs(), frameId);
             ros.encode(header, value, cdr);
             if (!Arrays.equals(cdr.buffer(), 0, cdr.size(), commit.data(), 0, commit.data().length)) {
                 return false;
@@ -123,7 +123,7 @@ final class ValueCodec<T extends StateValue<T>> {
         byte[] data;
         byte[] state = null;
         if (ros != null) {
-            header.set(commit.timeNs(), frameId);
+            header.set(commit.stampNs(), frameId);
             ros.encode(header, value, cdr);
             data = Arrays.copyOf(cdr.buffer(), cdr.size());
             text.clear();
@@ -134,7 +134,7 @@ final class ValueCodec<T extends StateValue<T>> {
             json.encode(value, text);
             data = Arrays.copyOf(text.array(), text.size());
         }
-        decode(new Recording.Commit(commit.timeNs(), commit.generation(), data, state), replayed);
+        decode(new Recording.Commit(commit.timeNs(), commit.generation(), data, state, commit.stampNs()), replayed);
         Difference d = firstDifferentField(recorded, replayed, false);
         if (d != null) {
             return d;

@@ -256,7 +256,7 @@ public final class RobotRun {
                 } else {
                     closeQuietly(truth); // stopped before the start: no referee owns the source yet
                 }
-                artifacts.section("recording", RecordOptions.finish(recorder, out, err));
+                artifacts.section("recording", RecordOptions.finish(recorder, out, artifacts.writes()));
                 monitor.read(nav.keys().course(), course);
                 long collisions = server != null ? server.withWorld(World::contactCount) : state.stallEdges();
                 RunSection run = runSection(scenario, nav, course, referee, state.ending(),

@@ -108,21 +108,21 @@ final class RunArtifacts {
             return;
         }
         List<String> names = new ArrayList<>();
-        if (writes.write(dir.resolve("report.json"), () -> doc.write(dir.resolve("report.json")))) {
+        if (writes.writeFile(dir.resolve("report.json"), doc::write)) {
             names.add("report.json");
         }
-        if (writes.write(dir.resolve("report.md"), () -> Files.writeString(dir.resolve("report.md"),
+        if (writes.writeFile(dir.resolve("report.md"), target -> Files.writeString(target,
                 markdown(table, runText, analysis, worldMap != null)))) {
             names.add("report.md");
         }
         List<Referee.Sample> samples = referee == null ? List.of() : referee.samples();
-        if (writes.write(dir.resolve("trajectory.csv"), () -> writeTrajectoryCsv(dir.resolve("trajectory.csv"), samples))) {
+        if (writes.writeFile(dir.resolve("trajectory.csv"), target -> writeTrajectoryCsv(target, samples))) {
             names.add("trajectory.csv");
         }
         if (worldMap != null) {
             List<Pose2d> poses = samples.stream().map(Referee.Sample::pose).toList();
-            if (writes.write(dir.resolve("trajectory.png"), () -> new WorldRenderer().writePng(scenario, worldMap, poses,
-                    referee == null ? List.of() : referee.missMarkers(), dir.resolve("trajectory.png")))) {
+            if (writes.writeFile(dir.resolve("trajectory.png"), target -> new WorldRenderer().writePng(scenario, worldMap,
+                    poses, referee == null ? List.of() : referee.missMarkers(), target))) {
                 names.add("trajectory.png");
             }
         }

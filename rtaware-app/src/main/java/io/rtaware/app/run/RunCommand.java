@@ -166,6 +166,7 @@ public final class RunCommand implements Callable<Integer> {
                 : Path.of("runs", LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
         OutputFolder.of("--out", dir);
         trace.checkOutput();
+        record.checkOutput();
         return new RunOptions(scenario, taskPeriods, timeScale, host, port, seed, dir, quiet, stuckAfterS,
                 gridResolutionM, model, trace, realtime, live.options(), robot, topSpeedMps, inflationMarginM);
     }

@@ -15,10 +15,15 @@ import java.util.Locale;
 /**
  * What {@code run --record} records where: the robot's keys on the topics ROS 2 tools expect
  * ({@code /scan}, {@code /odom}, {@code /cmd_vel}, {@code /map}, {@code /plan}), the ground truth
- * on {@code /ground_truth}, and the run's settings as the file's {@code rtaware.run} metadata
+ * on {@code /ground_truth}, the REP 105 frames on {@code /tf_static} ({@code map} to {@code odom},
+ * {@code base_link} to {@code laser}) and {@code /tf} ({@code odom} to {@code base_link} from
+ * odometry, {@code map} to {@code ground_truth}), and the run's settings as the file's {@code rtaware.run} metadata
  * (what {@code rtaware replay} rebuilds the controller from).
  */
 final class RunRecording {
+
+    /** The laser's frame (REP 105), a child of {@code base_link} on {@code /tf_static}. */
+    static final String LASER_FRAME = "laser";
 
     /** Metadata: the command that recorded the file. */
     static final String COMMAND = "command";
@@ -35,10 +40,17 @@ final class RunRecording {
      */
     static RecordingPlan plan(Scenario scenario, RunOptions options, NavConfig navConfig, String modelName) {
         RecordingPlan plan = new RecordingPlan()
-                .topic(RobotKeys.LASER.name(), "/scan", RosCodecs.BASE_FRAME)
+                .topic(RobotKeys.LASER.name(), "/scan", LASER_FRAME)
                 .topic(RobotKeys.ODOMETRY.name(), "/odom", "odom")
                 .topic(RobotKeys.MOTOR.name(), "/cmd_vel", RosCodecs.BASE_FRAME)
                 .topic(NavKeys.MAP, "/map", "map")
+                .latched(NavKeys.MAP)
+                .withGroundTruth()
+                // REP 105: the laser sits at the robot's centre (the simulator's and the paper's Pioneer's
+                // scans are measured from there); the controller's map is its odometry frame.
+                .staticTransform(RosCodecs.BASE_FRAME, LASER_FRAME, 0, 0, 0)
+                .staticTransform("map", "odom", 0, 0, 0)
+                .transformsFrom(RobotKeys.ODOMETRY.name(), "odom", RosCodecs.BASE_FRAME)
                 .topic(NavKeys.PATH, "/plan", "map")
                 .metadata(COMMAND, "run")
                 .metadata("scenario", scenario.name())

@@ -81,7 +81,7 @@ class RecordRunTest {
                 counts.merge(channel.topic(), 1, Integer::sum);
                 if (channel.topic().equals("/scan")) {
                     codec.decode(cdr.wrap(data, offset, length), header, scan);
-                    assertEquals(logTimeNs, header.stampNs, "header stamp = log time = world time of the commit");
+                    assertEquals(logTimeNs, header.stampNs, "header stamp = log time (Unix-epoch ns of the commit)");
                     assertTrue(scan.count() > 100, "beams: " + scan.count());
                 }
             }
@@ -142,6 +142,19 @@ class RecordRunTest {
         assertTrue(p.waitFor(120, TimeUnit.SECONDS), "checker finished");
         assertEquals(0, p.exitValue(), output);
         assertTrue(output.contains("/scan messages"), output);
+    }
+
+    @Test
+    void rosToolsReadTheRecordingAsAnMcapRos2ProfileBagInLogTimeOrder() throws Exception {
+        String output = Ros2ProfileCheck.run(recording);
+        assertTrue(output.contains("rosbags AnyReader deserialized all"), output);
+    }
+
+    @Test
+    void foxglovesReadersDecodeEveryMessageIndexedAndStreamed() throws Exception {
+        String output = FoxgloveReadersCheck.run(recording);
+        assertTrue(output.contains("McapIndexedReader decoded all"), output);
+        assertTrue(output.contains("McapStreamReader decoded all"), output);
     }
 
     /** Linux: bit 2 (SIGINT) of the SigIgn mask in /proc/self/status. */

@@ -1,11 +1,17 @@
 package io.rtaware.record.encode;
 
 import io.rtaware.ros2msg.MessageDefinition;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
 
 /**
- * rtaware's own message types for timing, as ROS 2 message definitions (schema encoding
- * {@code ros2msg}, message encoding {@code cdr}), so that every MCAP ROS 2 reader, Foxglove
- * included, decodes them from the definition in the file with no plug-in.
+ * rtaware's own message types, the ROS 2 package {@code rtaware_msgs} (its {@code .msg} files
+ * are resources of this module, under {@code rtaware_msgs/}, with a package.xml and
+ * CMakeLists.txt so a ROS 2 workspace builds them): schema encoding {@code ros2msg}, message
+ * encoding {@code cdr}, so that every MCAP ROS 2 reader, Foxglove and rosbags included, decodes
+ * them from the definition in the file with no plug-in.
  */
 public final class TimingTypes {
 
@@ -21,41 +27,35 @@ public final class TimingTypes {
     public static final String ERROR = "error";
 
     /** One task cycle: {@code /rtaware/timing/<task>}. */
-    public static final MessageDefinition TASK_CYCLE = new MessageDefinition("rtaware_msgs/msg/TaskCycle",
-            "# One cycle of an rtaware task; times are world time in ns since the clock's epoch.\n"
-                    + "int64 release_ns\n"
-                    + "int64 start_ns\n"
-                    + "int64 end_ns\n"
-                    + "# start - release in milliseconds (0 if the cycle started on time)\n"
-                    + "float64 lateness\n"
-                    + "# end - start in milliseconds\n"
-                    + "float64 exec\n"
-                    + "# ok | miss | skipped | stale | error\n"
-                    + "string outcome\n"
-                    + "# releases skipped (outcome skipped only)\n"
-                    + "int64 skipped_releases\n"
-                    + "# generation of each input read, in the order of the channel's 'inputs' metadata (0: never written)\n"
-                    + "int64[] input_generations\n");
+    public static final MessageDefinition TASK_CYCLE = load("TaskCycle");
 
     /** One monitor event: {@code /rtaware/events}. */
-    public static final MessageDefinition MONITOR_EVENT = new MessageDefinition("rtaware_msgs/msg/MonitorEvent",
-            "# An event of the rtaware monitor; times are world time in ns.\n"
-                    + "# deadline_miss | expired_read | period_change | task_error\n"
-                    + "string kind\n"
-                    + "string task\n"
-                    + "# the input concerned (expired_read)\n"
-                    + "string key\n"
-                    + "int64 time_ns\n"
-                    + "int64 release_ns\n"
-                    + "int64 deadline_ns\n"
-                    + "# true if the miss was detected while the cycle was still running\n"
-                    + "bool still_running\n"
-                    + "int64 age_ns\n"
-                    + "int64 max_age_ns\n"
-                    + "int64 old_period_ns\n"
-                    + "int64 new_period_ns\n"
-                    + "# the error, or why the period changed\n"
-                    + "string detail\n");
+    public static final MessageDefinition MONITOR_EVENT = load("MonitorEvent");
+
+    /**
+     * One committed value as the JSON of its fields: {@code /rtaware/state/<key>} and
+     * {@code /rtaware/data/<key>}.
+     */
+    public static final MessageDefinition STATE_JSON = load("StateJson");
+
+    /** Where the {@code rtaware_msgs} ROS 2 package (package.xml, msg/) lies on the class path. */
+    public static final String PACKAGE_RESOURCE = "/rtaware_msgs/";
+
+    /**
+     * @param type a type of {@code rtaware_msgs}
+     * @return its definition, read from the package's {@code .msg} file shipped with the recorder
+     */
+    private static MessageDefinition load(String type) {
+        String resource = PACKAGE_RESOURCE + "msg/" + type + ".msg";
+        try (InputStream in = TimingTypes.class.getResourceAsStream(resource)) {
+            if (in == null) {
+                throw new IllegalStateException("the recorder's class path lacks " + resource);
+            }
+            return new MessageDefinition("rtaware_msgs/msg/" + type, new String(in.readAllBytes(), StandardCharsets.UTF_8));
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot read " + resource, e);
+        }
+    }
 
     private TimingTypes() {
     }

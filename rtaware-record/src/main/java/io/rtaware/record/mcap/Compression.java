@@ -5,7 +5,9 @@ public enum Compression {
     /** Uncompressed chunks. */
     NONE(""),
     /** Zstandard (the default of ROS 2 bags and Foxglove), through zstd-jni. */
-    ZSTD("zstd");
+    ZSTD("zstd"),
+    /** LZ4 frames (MCAP's other compression), through Apache Commons Compress. */
+    LZ4("lz4");
 
     private final String mcapName;
 

@@ -21,6 +21,16 @@ public interface McapVisitor {
     }
 
     /**
+     * A chunk, before its records (its CRC checked).
+     *
+     * @param fileOffset where the chunk record starts in the file
+     * @param startNs the chunk's earliest message log time, as recorded
+     * @param endNs its latest, as recorded
+     */
+    default void chunk(long fileOffset, long startNs, long endNs) {
+    }
+
+    /**
      * A message. The bytes are only valid during the call.
      *
      * @param channel its channel

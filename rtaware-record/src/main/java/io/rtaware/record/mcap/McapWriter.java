@@ -1,10 +1,12 @@
 package io.rtaware.record.mcap;
 
 import com.github.luben.zstd.Zstd;
+import java.io.ByteArrayOutputStream;
 import java.io.Closeable;
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.channels.FileChannel;
+import java.nio.channels.WritableByteChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
@@ -15,6 +17,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.zip.CRC32;
+import org.apache.commons.compress.compressors.lz4.FramedLZ4CompressorOutputStream;
 
 /**
  * Writes an MCAP file (spec version 0, https://mcap.dev/spec): magic, header, schema and
@@ -26,7 +29,7 @@ import java.util.zip.CRC32;
  * <p>Messages are appended to the open chunk in memory; a chunk is compressed and written when
  * it reaches the chunk size, and at {@link #close()}. Once the chunk buffers have grown to their
  * working size, {@link #writeMessage} allocates nothing; flushing a chunk allocates its index
- * entry. Not thread-safe: one writer thread.
+ * entry (and, with lz4, its compressed frame). Not thread-safe: one writer thread.
  */
 public final class McapWriter implements Closeable {
 
@@ -35,7 +38,7 @@ public final class McapWriter implements Closeable {
 
     private static final String LIBRARY = "rtaware";
 
-    private final FileChannel file;
+    private final WritableByteChannel file;
     private final Compression compression;
     private final int chunkBytes;
     private final CRC32 dataCrc = new CRC32();
@@ -61,6 +64,8 @@ public final class McapWriter implements Closeable {
     private int[] indexCount = new int[16];
 
     private long messageCount;
+    private long messagesInChunk;
+    private long durableMessages;
     private long messageStartNs = Long.MAX_VALUE;
     private long messageEndNs = Long.MIN_VALUE;
     private long chunkStartNs = Long.MAX_VALUE;
@@ -81,20 +86,41 @@ public final class McapWriter implements Closeable {
      * @throws IOException if the file cannot be created or written
      */
     public McapWriter(Path path, Compression compression, int chunkBytes, String profile) throws IOException {
+        this(FileChannel.open(path, StandardOpenOption.CREATE, StandardOpenOption.WRITE,
+                StandardOpenOption.TRUNCATE_EXISTING), compression, chunkBytes, profile);
+    }
+
+    /**
+     * Writes to a channel of the caller's (closed by {@link #close()}; forced to disk if it is a
+     * {@link FileChannel}), e.g. a test's channel that fails as a full disk does.
+     *
+     * @param channel where the bytes go
+     * @param compression chunk compression
+     * @param chunkBytes uncompressed chunk size at which a chunk is written, at least 1024
+     * @param profile the header's profile (empty for none, {@code ros2} if every channel is ROS 2)
+     * @throws IOException if the magic and header cannot be written
+     */
+    public McapWriter(WritableByteChannel channel, Compression compression, int chunkBytes, String profile)
+            throws IOException {
         if (chunkBytes < 1024) {
+            channel.close();
             throw new IllegalArgumentException("MCAP chunk size " + chunkBytes + " below 1024 bytes");
         }
         this.compression = compression;
         this.chunkBytes = chunkBytes;
         this.chunk = new ByteSink(chunkBytes + chunkBytes / 4);
-        this.file = FileChannel.open(path, StandardOpenOption.CREATE, StandardOpenOption.WRITE,
-                StandardOpenOption.TRUNCATE_EXISTING);
+        this.file = channel;
         record.bytes(Opcode.MAGIC, 0, Opcode.MAGIC.length);
         int c = record.beginRecord(Opcode.HEADER);
         record.string(profile);
         record.string(LIBRARY);
         record.endRecord(c);
-        emitData(record);
+        try {
+            emitData(record);
+        } catch (IOException e) {
+            channel.close();
+            throw e;
+        }
     }
 
     /**
@@ -119,7 +145,7 @@ public final class McapWriter implements Closeable {
     /**
      * Adds a channel and writes its record.
      *
-     * @param schemaId a schema id from {@link #addSchema}
+     * @param schemaId a schema id from {@link #addSchema}, or 0 for none
      * @param topic e.g. {@code /scan}
      * @param messageEncoding e.g. {@code cdr}, {@code json}
      * @param metadata free key/value pairs
@@ -128,7 +154,7 @@ public final class McapWriter implements Closeable {
      */
     public int addChannel(int schemaId, String topic, String messageEncoding, Map<String, String> metadata)
             throws IOException {
-        if (schemaId < 1 || schemaId > schemaCount) {
+        if (schemaId < 0 || schemaId > schemaCount) {
             throw new IllegalArgumentException("unknown MCAP schema id " + schemaId);
         }
         int id = ++channelCount;
@@ -252,6 +278,7 @@ public final class McapWriter implements Closeable {
         indexCount[channelId] = n + 1;
         channelMessages[channelId]++;
         messageCount++;
+        messagesInChunk++;
         chunkStartNs = Math.min(chunkStartNs, logTimeNs);
         chunkEndNs = Math.max(chunkEndNs, logTimeNs);
         messageStartNs = Math.min(messageStartNs, logTimeNs);
@@ -261,9 +288,35 @@ public final class McapWriter implements Closeable {
         }
     }
 
-    /** @return messages written so far */
+    /** @return messages handed to the writer so far (some may still be in the open chunk) */
     public long messageCount() {
         return messageCount;
+    }
+
+    /** @return the earliest log time written so far (meaningless before the first message) */
+    public long messageStartNs() {
+        return messageStartNs;
+    }
+
+    /** @return the latest log time written so far (meaningless before the first message) */
+    public long messageEndNs() {
+        return messageEndNs;
+    }
+
+    /**
+     * @param channelId a channel id from {@link #addChannel}
+     * @return messages written on it so far
+     */
+    public long channelMessageCount(int channelId) {
+        return channelMessages[channelId];
+    }
+
+    /**
+     * @return messages in chunks written whole to the file: what a reader (or
+     *     {@code inspect --recover}) finds there if the file is never finished
+     */
+    public long durableMessageCount() {
+        return durableMessages;
     }
 
     /** @return bytes in the file so far (chunk in memory not included) */
@@ -296,6 +349,13 @@ public final class McapWriter implements Closeable {
             }
             payload = compressed;
             payloadLength = (int) n;
+        } else if (compression == Compression.LZ4) {
+            ByteArrayOutputStream frame = new ByteArrayOutputStream(uncompressed / 2 + 64);
+            try (FramedLZ4CompressorOutputStream lz4 = new FramedLZ4CompressorOutputStream(frame)) {
+                lz4.write(chunk.array(), 0, uncompressed);
+            }
+            payload = frame.toByteArray();
+            payloadLength = payload.length;
         } else {
             payload = chunk.array();
             payloadLength = uncompressed;
@@ -338,6 +398,8 @@ public final class McapWriter implements Closeable {
         chunkIndexes.add(new ChunkIndex(chunkStartNs, chunkEndNs, chunkOffset, chunkLength, indexOffsets,
                 position - indexStart, payloadLength, uncompressed));
         chunk.clear();
+        durableMessages += messagesInChunk;
+        messagesInChunk = 0;
         chunkStartNs = Long.MAX_VALUE;
         chunkEndNs = Long.MIN_VALUE;
     }
@@ -440,7 +502,9 @@ public final class McapWriter implements Closeable {
             summary.u32(summaryCrc.getValue());
             summary.bytes(Opcode.MAGIC, 0, Opcode.MAGIC.length);
             write(summary.array(), 0, summary.size());
-            file.force(false);
+            if (file instanceof FileChannel fileChannel) {
+                fileChannel.force(false);
+            }
         } finally {
             file.close();
         }

@@ -1,0 +1,39 @@
+package io.rtaware.app.record;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import io.rtaware.app.CliRun;
+import io.rtaware.app.run.FoxgloveReadersCheck;
+import io.rtaware.app.run.Ros2ProfileCheck;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * Issue 28: {@code bench --record} writes the same kind of file as {@code run --record}: the MCAP
+ * {@code ros2} profile, Unix-epoch log times in order, read by rosbags, the Python mcap reader and
+ * Foxglove's TypeScript readers.
+ */
+class BenchRecordingTest {
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void aBenchRecordingIsARos2BagInLogTimeOrderThatRosbagsDecodes() throws Exception {
+        Path file = dir.resolve("bench.mcap");
+        CliRun run = CliRun.of("bench", "--tasks", "4", "--period", "1ms", "--work", "0", "--duration", "2s",
+                "--quiet", "--record", file.toString());
+        assertEquals(0, run.status(), run.err());
+        assertTrue(run.out().contains("recording written to " + file), run.out());
+        String checked = Ros2ProfileCheck.run(file);
+        assertTrue(checked.contains("rosbags AnyReader deserialized all"), checked);
+        String foxglove = FoxgloveReadersCheck.run(file);
+        assertTrue(foxglove.contains("McapStreamReader decoded all"), foxglove);
+        CliRun inspect = CliRun.of("inspect", file.toString());
+        assertEquals(0, inspect.status(), inspect.err());
+        assertTrue(inspect.out().contains("rtaware_msgs/msg/TaskCycle"), inspect.out());
+        assertTrue(!inspect.out().contains("/ground_truth"), "no channel a bench never writes: " + inspect.out());
+    }
+}

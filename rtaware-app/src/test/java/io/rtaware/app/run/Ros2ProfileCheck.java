@@ -1,0 +1,41 @@
+package io.rtaware.app.run;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * Runs src/test/python/check_ros2_profile.py (the Python {@code mcap} reader and
+ * {@code rosbags}' AnyReader) on a recording, with the Python of {@code RTAWARE_PEER_PYTHON};
+ * skips without one, except under {@code CI=true}.
+ */
+public final class Ros2ProfileCheck {
+
+    private Ros2ProfileCheck() {
+    }
+
+    /**
+     * @param recording the MCAP file
+     * @return what the checker printed (it passed)
+     * @throws Exception if it cannot be run
+     */
+    public static String run(Path recording) throws Exception {
+        String python = System.getenv("RTAWARE_PEER_PYTHON");
+        if (python == null || python.isBlank()) {
+            if ("true".equals(System.getenv("CI"))) {
+                throw new AssertionError("CI=true but RTAWARE_PEER_PYTHON is unset: .ci/run must set up the Python peers");
+            }
+            assumeTrue(false, "RTAWARE_PEER_PYTHON unset: skipping the check with rosbags and mcap");
+        }
+        Process p = new ProcessBuilder(python, "src/test/python/check_ros2_profile.py", recording.toString())
+                .redirectErrorStream(true).start();
+        String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(300, TimeUnit.SECONDS), "checker finished");
+        assertEquals(0, p.exitValue(), output);
+        return output;
+    }
+}
