@@ -12,6 +12,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 tests=("$@")
 if [ "${#tests[@]}" -eq 0 ]; then
   tests=(
+    rtaware-record:McapReaderFuzzTest
     rtaware-ros2msg:CdrDecodersFuzzTest
     rtaware-player:PlayerStreamFuzzTest
     rtaware-sim:ScenarioFuzzTest
