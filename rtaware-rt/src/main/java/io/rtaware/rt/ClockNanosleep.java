@@ -42,10 +42,14 @@ public final class ClockNanosleep implements MonotonicSleeper {
     }
 
     /**
-     * @return the sleeper, or empty where it is not available (not Linux, or libc cannot be bound
-     *     through JNA); the caller then parks as usual
+     * @return the sleeper, or empty where it is not available (no JNA on the class path, not
+     *     Linux, or libc cannot be bound through JNA); the caller then parks as usual
      */
     public static Optional<MonotonicSleeper> load() {
+        return Jna.missingReason().isPresent() ? Optional.empty() : loadWithJna();
+    }
+
+    private static Optional<MonotonicSleeper> loadWithJna() {
         if (!Platform.isLinux()) {
             return Optional.empty();
         }

@@ -18,6 +18,8 @@ public final class JnaLinuxSched implements LinuxSched {
 
         int sched_getscheduler(int pid);
 
+        int sched_getparam(int pid, int[] param);
+
         int sched_setaffinity(int pid, long cpusetsize, long[] mask);
 
         int prctl(int option, long arg2, long arg3, long arg4, long arg5);
@@ -53,6 +55,12 @@ public final class JnaLinuxSched implements LinuxSched {
     @Override
     public int scheduler() {
         return c.sched_getscheduler(0);
+    }
+
+    @Override
+    public int priority() {
+        int[] param = new int[1];
+        return c.sched_getparam(0, param) == 0 ? param[0] : -1;
     }
 
     @Override

@@ -21,6 +21,9 @@ public interface LinuxSched {
     /** @return the calling thread's policy ({@link #SCHED_FIFO}, ...), or -1 on error */
     int scheduler();
 
+    /** @return the calling thread's static priority (1..99 under SCHED_FIFO, 0 otherwise), or -1 on error */
+    int priority();
+
     /**
      * @param cpu a CPU number
      * @return 0, or the errno of {@code sched_setaffinity} to that CPU alone

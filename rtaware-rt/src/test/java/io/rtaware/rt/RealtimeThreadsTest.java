@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import io.rtaware.core.monitor.ExecutorKind;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.TaskInfo;
 import io.rtaware.core.task.Schedule;
@@ -15,8 +16,11 @@ import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.time.Duration;
+import java.util.Collections;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.junit.jupiter.api.Test;
 
@@ -35,6 +39,11 @@ class RealtimeThreadsTest {
         @Override
         public int scheduler() {
             return SCHED_OTHER;
+        }
+
+        @Override
+        public int priority() {
+            return 0;
         }
 
         @Override
@@ -84,6 +93,17 @@ class RealtimeThreadsTest {
         // Only the probe asked for FIFO; every thread still got 1 ns slack and its CPU.
         assertEquals(List.of("fifo 1", "slack 1", "pin 1", "slack 1", "pin 1"), sched.calls);
         assertEquals(0, rt.fifoThreads());
+    }
+
+    @Test
+    void poolWorkersGetTheFastestPooledTasksPriorityAndNoPin() {
+        DeniedSched sched = new DeniedSched();
+        RealtimeThreads rt = RealtimeThreads.configure(sched, 80, Map.of("a", 1),
+                new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8));
+        sched.calls.clear();
+        rt.onPoolWorkerStart(0, 2, 5);
+        // FIFO is denied here, so only the slack is set; a pool worker is never pinned.
+        assertEquals(List.of("slack 1"), sched.calls, "a denied pool worker only gets timer slack");
     }
 
     @Test
@@ -137,5 +157,58 @@ class RealtimeThreadsTest {
         assertEquals("", buffer.toString(StandardCharsets.UTF_8));
         // The test thread itself was never touched.
         assertEquals(LinuxSched.SCHED_OTHER, sched.scheduler());
+    }
+
+    /**
+     * Where the machine permits it (root here): with the pooled executor, the workers that run the
+     * periodic tasks are SCHED_FIFO at the priority of the fastest task (rank 0: the top priority).
+     * Before the pool's thread factory ran the thread setup, they stayed SCHED_OTHER.
+     */
+    @Test
+    void pooledWorkersRunAsSchedFifoAtTheTopPriorityWherePermitted() throws Exception {
+        LinuxSched sched;
+        try {
+            sched = JnaLinuxSched.load();
+        } catch (UnsupportedOperationException e) {
+            assumeTrue(false, "no native access: " + e.getMessage());
+            return;
+        }
+        ByteArrayOutputStream buffer = new ByteArrayOutputStream();
+        RealtimeThreads rt = RealtimeThreads.configure(sched, 70, Map.of(),
+                new PrintStream(buffer, true, StandardCharsets.UTF_8));
+        assumeTrue(rt.fifo(), "SCHED_FIFO not permitted here: " + buffer);
+
+        Set<String> seen = Collections.synchronizedSet(new TreeSet<>());
+        LinuxSched probe = sched;
+        Monitor.Builder builder = Monitor.builder(new SystemClock()).threadSetup(rt)
+                .executor(ExecutorKind.pooled(2, ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST));
+        for (int i = 0; i < 4; i++) {
+            builder.task("t" + i, Schedule.periodic(Duration.ofMillis(2 + i)), new Task() {
+                @Override
+                public void initialize(TaskSetup setup) {
+                }
+
+                @Override
+                public void execute(long nowNs) {
+                    seen.add(Thread.currentThread().getName() + " policy " + probe.scheduler()
+                            + " priority " + probe.priority());
+                }
+            });
+        }
+        Monitor monitor = builder.build();
+        monitor.start();
+        long deadline = System.nanoTime() + 5_000_000_000L;
+        while (seen.isEmpty() && System.nanoTime() < deadline) {
+            Thread.sleep(10);
+        }
+        Thread.sleep(100);
+        monitor.stop();
+        assertFalse(seen.isEmpty(), "the pooled tasks ran");
+        for (String thread : seen) {
+            assertTrue(thread.matches("rtaware-pool-[01] policy 1 priority 70"),
+                    "a cycle ran on a worker that is SCHED_FIFO (1) at the top priority: " + seen);
+        }
+        assertEquals(2, rt.fifoThreads(), "both workers, no task thread");
+        assertEquals("", buffer.toString(StandardCharsets.UTF_8));
     }
 }
