@@ -4,6 +4,7 @@ import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import io.rtaware.core.agent.AgentThread;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
@@ -22,12 +23,15 @@ import java.util.Objects;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.Supplier;
+import org.agrona.concurrent.Agent;
+import org.agrona.concurrent.AgentTerminationException;
+import org.agrona.concurrent.SleepingMillisIdleStrategy;
 
 /**
  * The live view of one monitor: a {@link LiveServer} plus a publisher thread that builds a
  * snapshot every {@value #PUBLISH_PERIOD_MS} ms of wall time and, for a robot run, a PNG of the
  * occupancy grid at most every {@value #GRID_PERIOD_MS} ms when it changed. The publisher is a
- * plain daemon thread, not a task: it reads counters and copies key values the way any observer
+ * background loop ({@link AgentThread}), not a task: it reads counters and copies key values the way any observer
  * may ({@link Monitor#read}), so the task threads never wait for a browser.
  *
  * <p>Use: {@link #start} after the monitor is built (before or after it starts), {@link #finish}
@@ -50,7 +54,8 @@ public final class LiveView implements AutoCloseable {
     private final PrintStream out;
     private final SnapshotBuilder builder;
     private final ObjectMapper mapper;
-    private final Thread publisher;
+    /** The publisher loop, started by {@link #start}; null when the view is off. */
+    private volatile AgentThread publisher;
     private final OccupancyGrid grid;
     private volatile Supplier<Pose2d> truePose;
     private volatile String truthKind = "odometry";
@@ -69,7 +74,6 @@ public final class LiveView implements AutoCloseable {
         this.builder = monitor == null ? null : new SnapshotBuilder(monitor, scene, monitor.clock().nanos());
         this.mapper = ReportDocument.mapper().disable(SerializationFeature.INDENT_OUTPUT);
         this.grid = scene == null || !monitor.hasKey(scene.keys().map().name()) ? null : scene.keys().map().newBuffer();
-        this.publisher = server == null ? null : new Thread(this::publishLoop, "rtaware-live-publisher");
     }
 
     /**
@@ -119,8 +123,10 @@ public final class LiveView implements AutoCloseable {
             server.putResource("/world.png", "image/png", MapImages.world(scene.world()));
         }
         view.publishOnce();
-        view.publisher.setDaemon(true);
-        view.publisher.start();
+        view.publisher = AgentThread.start(view.new Publisher(), new SleepingMillisIdleStrategy(PUBLISH_PERIOD_MS),
+                // A bug in the view must not end the run: say it once; the publisher has stopped.
+                error -> out.println("live view: stopped publishing: "
+                        + (error instanceof AgentTerminationException && error.getCause() != null ? error.getCause() : error)));
         String host = address.isAnyLocalAddress() ? LiveOptions.LOOPBACK : address.getHostAddress();
         if (host.contains(":")) {
             host = "[" + host + "]";
@@ -178,17 +184,24 @@ public final class LiveView implements AutoCloseable {
         }
     }
 
-    private void publishLoop() {
-        long periodNs = TimeUnit.MILLISECONDS.toNanos(PUBLISH_PERIOD_MS);
-        while (!closed && !finished) {
-            LockSupport.parkNanos(periodNs);
+    /**
+     * The publisher: a snapshot every {@value #PUBLISH_PERIOD_MS} ms until finished (then it idles
+     * until closed); a fault ends it.
+     */
+    private final class Publisher implements Agent {
+        @Override
+        public int doWork() {
             try {
                 publishOnce();
             } catch (RuntimeException e) {
-                // A bug in the view must not end the run: say it once and stop publishing.
-                out.println("live view: stopped publishing: " + e);
-                return;
+                throw new AgentTerminationException(e);
             }
+            return 0;
+        }
+
+        @Override
+        public String roleName() {
+            return "rtaware-live-publisher";
         }
     }
 
@@ -276,12 +289,7 @@ public final class LiveView implements AutoCloseable {
             }
         }
         closed = true;
-        LockSupport.unpark(publisher);
-        try {
-            publisher.join(1_000);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        publisher.close();
         server.close();
     }
 }
