@@ -15,7 +15,14 @@ public record LiveOptions(boolean enabled, String bindAddress, int port, long li
     /** The default bind address: this machine only. */
     public static final String LOOPBACK = "127.0.0.1";
 
-    /** Validates the fields. */
+    /**
+     * Validates the fields.
+     *
+     * @param enabled serve it at all
+     * @param bindAddress address to listen on ({@value #LOOPBACK} unless the user exposes it)
+     * @param port TCP port, 0 for a free one
+     * @param lingerNs wall time to keep serving the final page after the run has ended
+     */
     public LiveOptions {
         Objects.requireNonNull(bindAddress, "bindAddress");
         if (port < 0 || port > 65535) {

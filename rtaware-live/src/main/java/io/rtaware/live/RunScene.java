@@ -22,7 +22,17 @@ import java.util.function.Supplier;
 public record RunScene(String scenario, OccupancyGrid world, List<Point2d> waypoints, NavKeys keys,
                        Supplier<PositionMediatorTask.MediatorCounts> mediator, Supplier<String> outcome) {
 
-    /** Checks and copies. */
+    /**
+     * Checks and copies.
+     *
+     * @param scenario the scenario's name
+     * @param world the world's walls and obstacles ({@link OccupancyGrid#OCCUPIED} cells), or null if unknown
+     *     (external robot server); not modified after it is given here
+     * @param waypoints the course, in order
+     * @param keys the navigation keys whose values are drawn (map, path, course)
+     * @param mediator the mediator's win counts so far; must be safe to call from any thread
+     * @param outcome how the run ended so far, null while it runs; any thread
+     */
     public RunScene {
         Objects.requireNonNull(scenario, "scenario");
         waypoints = List.copyOf(waypoints);
