@@ -28,7 +28,14 @@ public record ExperimentPlan(List<PeriodSet> sets, int runsPerSet, RunConditions
         this(sets, runsPerSet, conditions, Shard.WHOLE);
     }
 
-    /** Validates the fields. */
+    /**
+     * Validates the fields.
+     *
+     * @param sets the sets compared, in order
+     * @param runsPerSet runs of each set
+     * @param conditions what all runs share
+     * @param shard the share of the runs this process makes ({@link Shard#WHOLE} for all)
+     */
     public ExperimentPlan {
         Objects.requireNonNull(shard, "shard");
         sets = List.copyOf(sets);

@@ -25,7 +25,14 @@ public record JvmRunCommand(String javaBin, List<String> jvmOptions, String clas
 
     private static final List<String> NOT_INHERITED = List.of("-agentlib", "-agentpath", "-javaagent", "-Xrunjdwp", "-Xdebug");
 
-    /** Validates and copies the fields. */
+    /**
+     * Validates and copies the fields.
+     *
+     * @param javaBin the java executable
+     * @param jvmOptions options placed before the main class
+     * @param classPath the class path
+     * @param mainClass a class whose {@code main} understands {@code run ARGS}
+     */
     public JvmRunCommand {
         Objects.requireNonNull(javaBin, "javaBin");
         jvmOptions = List.copyOf(jvmOptions);

@@ -13,7 +13,14 @@ import java.util.Objects;
  */
 public record RunConditions(String scenario, double timeScale, long seed, Double gridResolutionM) {
 
-    /** Validates the fields. */
+    /**
+     * Validates the fields.
+     *
+     * @param scenario {@code paper-room} or the path of a scenario file, as given to {@code run}
+     * @param timeScale world time runs this many times faster than wall time
+     * @param seed the seed of run 1; run j uses {@code seed + j - 1} in every set
+     * @param gridResolutionM occupancy grid cell size in metres, or null for {@code run}'s default
+     */
     public RunConditions {
         Objects.requireNonNull(scenario, "scenario");
         if (!(timeScale > 0) || Double.isInfinite(timeScale)) {

@@ -40,7 +40,24 @@ public record RunResult(int set, int run, PeriodSet periods, RunConditions condi
     /** Outcomes of runs that ended on the course and so measure the controller. */
     public static final Set<String> MEASURED_OUTCOMES = Set.of(COMPLETED, "timeout", "stuck");
 
-    /** Validates the fields. */
+    /**
+     * Validates the fields.
+     *
+     * @param set the set's number, from 1, in the order of the sets
+     * @param run the run's number within its set, from 1
+     * @param periods the set's name and periods
+     * @param conditions what all runs share
+     * @param outcome {@code completed}, {@code timeout}, {@code stuck}, {@code interrupted} or {@code error}
+     * @param runTimeS world seconds from start to the end of the run
+     * @param distanceToFinishM distance from the robot's final position to the finish, metres
+     * @param distanceTravelledM length of the path driven, metres
+     * @param collisions collisions with the world, or null if unknown
+     * @param waypointsReached waypoints reached, or null if unknown
+     * @param waypointsTotal waypoints in the course, or null if unknown
+     * @param tasks per behavior of {@link PeriodSet#TASKS}; empty when the run gave no report
+     * @param mediatorCycles cycles the position mediator gave to each of {@link #MEDIATOR_WINNERS}; empty when
+     *     unknown (a run report without them, or results that predate them)
+     */
     public RunResult {
         Objects.requireNonNull(periods, "periods");
         Objects.requireNonNull(conditions, "conditions");

@@ -16,7 +16,12 @@ public record Shard(int index, int count) {
     /** The whole plan in one shard. */
     public static final Shard WHOLE = new Shard(1, 1);
 
-    /** Validates the fields. */
+    /**
+     * Validates the fields.
+     *
+     * @param index this shard, from 1
+     * @param count the number of shards, at least 1
+     */
     public Shard {
         if (count < 1 || index < 1 || index > count) {
             throw new IllegalArgumentException("a shard is K/N with 1 <= K <= N, got " + index + "/" + count);

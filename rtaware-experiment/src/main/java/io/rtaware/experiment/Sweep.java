@@ -26,7 +26,16 @@ public record Sweep(List<String> tasks, List<Long> periodsMs, Map<String, Long> 
     /** The period of a task that is not swept, in ms: the laser's scan period, as the paper's Set 5. */
     public static final long BASE_PERIOD_MS = 100;
 
-    /** Validates and copies the fields. */
+    /**
+     * Validates and copies the fields.
+     *
+     * @param tasks the tasks whose period is swept, in the order of {@link PeriodSet#TASKS}; with no swept
+     *     periods, unused
+     * @param periodsMs the swept periods, in ms, in the order given; empty for a speed-only sweep
+     * @param basePeriodsMs the period of every task, in ms, where it is not swept
+     * @param topSpeedsMps the top speeds, in m/s; empty for {@code run}'s default; more than one makes a speed
+     *     sweep
+     */
     public Sweep {
         tasks = List.copyOf(tasks);
         periodsMs = List.copyOf(periodsMs);

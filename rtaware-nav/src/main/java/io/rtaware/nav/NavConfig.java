@@ -46,7 +46,18 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
         return List.copyOf(names);
     }
 
-    /** Validates that no group is missing; each group validates its own values. */
+    /**
+     * Validates that no group is missing; each group validates its own values.
+     *
+     * @param periods the tasks' periods
+     * @param grid the occupancy grid's extent and resolution
+     * @param planner the path planner's settings
+     * @param follower the waypoint planner's path following
+     * @param avoider the obstacle avoider's safety zone
+     * @param robot the robot's size, speed and reaction limits
+     * @param maxAges how old data may be before a task stops trusting it
+     * @param course the waypoints
+     */
     public NavConfig {
         Objects.requireNonNull(periods, "periods");
         Objects.requireNonNull(grid, "grid");
@@ -68,7 +79,11 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
      * @param mediatorNs the mediator's period in ns
      */
     public record Periods(Map<Behavior, Long> behaviorsNs, long mediatorNs) {
-        /** @throws IllegalArgumentException naming a missing or non-positive period */
+        /**
+         * @param behaviorsNs each behavior's period in ns
+         * @param mediatorNs the mediator's period in ns
+         * @throws IllegalArgumentException naming a missing or non-positive period
+         */
         public Periods {
             behaviorsNs = Map.copyOf(behaviorsNs);
             for (Behavior b : Behavior.values()) {
@@ -103,7 +118,14 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
      * @param heightM extent along y in metres (default 20)
      */
     public record Grid(double resolutionM, double originXM, double originYM, double widthM, double heightM) {
-        /** @throws IllegalArgumentException naming the bad value */
+        /**
+         * @param resolutionM cell edge in metres (default 0.05).
+         * @param originXM x of the lower-left corner in metres (default -10)
+         * @param originYM y of the lower-left corner in metres (default -10)
+         * @param widthM extent along x in metres (default 20)
+         * @param heightM extent along y in metres (default 20)
+         * @throws IllegalArgumentException naming the bad value
+         */
         public Grid {
             positive("gridResolutionM", resolutionM);
             finite("gridOriginXM", originXM);
@@ -141,7 +163,11 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
      * @param unknownCostFactor cost factor of driving through unknown cells, at least 1 (default 2)
      */
     public record Planner(double inflationMarginM, double unknownCostFactor) {
-        /** @throws IllegalArgumentException naming the bad value */
+        /**
+         * @param inflationMarginM clearance added to the robot radius in metres (default 0.05)
+         * @param unknownCostFactor cost factor of driving through unknown cells, at least 1 (default 2)
+         * @throws IllegalArgumentException naming the bad value
+         */
         public Planner {
             nonNegative("inflationMarginM", inflationMarginM);
             if (!(unknownCostFactor >= 1) || Double.isInfinite(unknownCostFactor)) {
@@ -158,7 +184,12 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
      * @param goalToleranceM how near a waypoint counts as reached, in metres (default 0.25)
      */
     public record Follower(double lookaheadM, double turnInPlaceRad, double goalToleranceM) {
-        /** @throws IllegalArgumentException naming the bad value */
+        /**
+         * @param lookaheadM pure-pursuit lookahead in metres (default 0.3)
+         * @param turnInPlaceRad heading error above which the robot turns in place (default 0.8 rad)
+         * @param goalToleranceM how near a waypoint counts as reached, in metres (default 0.25)
+         * @throws IllegalArgumentException naming the bad value
+         */
         public Follower {
             positive("lookaheadM", lookaheadM);
             if (!(turnInPlaceRad > 0 && turnInPlaceRad <= Math.PI)) {
@@ -177,7 +208,13 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
      * @param speedMps forward speed while avoiding in m/s (default 0.03)
      */
     public record Avoider(double rangeM, double halfAngleRad, double stopRangeM, double speedMps) {
-        /** @throws IllegalArgumentException naming the bad value */
+        /**
+         * @param rangeM depth of the safety zone in metres, from the laser (default 0.4)
+         * @param halfAngleRad half-width of the zone's sector in radians (default 0.6)
+         * @param stopRangeM nearer than this the avoider only turns, in metres (default 0.25)
+         * @param speedMps forward speed while avoiding in m/s (default 0.03)
+         * @throws IllegalArgumentException naming the bad value
+         */
         public Avoider {
             positive("avoidRangeM", rangeM);
             positive("avoidHalfAngleRad", halfAngleRad);
@@ -203,7 +240,17 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
      */
     public record Robot(double radiusM, double topSpeedMps, double maxOmegaRadPerSec, double stoppingDistanceM,
                         long laserDelayNs, double laserMinRangeM) {
-        /** @throws IllegalArgumentException naming the bad value */
+        /**
+         * @param radiusM the robot's radius in metres (default 0.2)
+         * @param topSpeedMps top forward speed in m/s (default 0.1)
+         * @param maxOmegaRadPerSec turn-rate limit in rad/s (default 0.5)
+         * @param stoppingDistanceM distance the robot covers from a stop command at top speed until it stands,
+         *     in metres (command latency plus braking; default 0.01, braking at 0.5 m/s^2)
+         * @param laserDelayNs age of a laser scan when it is delivered, ns (sweep and transfer; default 0, an
+         *     instantaneous laser)
+         * @param laserMinRangeM the laser's minimum range in metres (default 0)
+         * @throws IllegalArgumentException naming the bad value
+         */
         public Robot {
             nonNegative("robotRadiusM", radiusM);
             positive("topSpeedMps", topSpeedMps);
@@ -227,7 +274,15 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
      *     periods plus one mediator period)
      */
     public record MaxAges(long laserNs, long odometryNs, long avoidRequestNs, long waypointRequestNs) {
-        /** @throws IllegalArgumentException naming the bad value */
+        /**
+         * @param laserNs oldest laser scan the avoider and the mapper trust (default 500 ms)
+         * @param odometryNs oldest pose the mapper and the waypoint planner trust (default 500 ms)
+         * @param avoidRequestNs oldest avoider request the mediator trusts (default 2 obstacle periods plus one
+         *     mediator period)
+         * @param waypointRequestNs oldest waypoint request the mediator trusts (default 2 waypoint periods plus
+         *     one mediator period)
+         * @throws IllegalArgumentException naming the bad value
+         */
         public MaxAges {
             positive("laserMaxAgeNs", laserNs);
             positive("odometryMaxAgeNs", odometryNs);
@@ -244,7 +299,12 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
      *     through which another task replaces the course (some task must then produce it)
      */
     public record Course(List<Point2d> waypoints, boolean external) {
-        /** @throws IllegalArgumentException naming the bad value */
+        /**
+         * @param waypoints the course in order; the last is the finish; 1..{@value #MAX_WAYPOINTS}
+         * @param external true if the waypoint planner also consumes {@link NavKeys#WAYPOINTS_IN}, through
+         *     which another task replaces the course (some task must then produce it)
+         * @throws IllegalArgumentException naming the bad value
+         */
         public Course {
             Objects.requireNonNull(waypoints, "waypoints");
             if (waypoints.isEmpty() || waypoints.size() > MAX_WAYPOINTS) {
@@ -377,7 +437,13 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
             return this;
         }
 
-        /** @param ns period of the mediator task (0: the shorter of obstacle and waypoint) @return this */
+        /**
+
+         * @param ns period of the mediator task (0: the shorter of obstacle and waypoint)
+
+         * @return this
+
+         */
         public Builder mediatorPeriodNs(long ns) {
             mediatorPeriodNs = ns;
             return this;
@@ -400,37 +466,73 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
             return this;
         }
 
-        /** @param m cell edge in metres, keeping the extent @return this */
+        /**
+
+         * @param m cell edge in metres, keeping the extent
+
+         * @return this
+
+         */
         public Builder gridResolutionM(double m) {
             gridResolutionM = m;
             return this;
         }
 
-        /** @param m robot radius in metres @return this */
+        /**
+
+         * @param m robot radius in metres
+
+         * @return this
+
+         */
         public Builder robotRadiusM(double m) {
             robotRadiusM = m;
             return this;
         }
 
-        /** @param m clearance added to the radius in metres @return this */
+        /**
+
+         * @param m clearance added to the radius in metres
+
+         * @return this
+
+         */
         public Builder inflationMarginM(double m) {
             inflationMarginM = m;
             return this;
         }
 
-        /** @param factor cost factor of unknown cells @return this */
+        /**
+
+         * @param factor cost factor of unknown cells
+
+         * @return this
+
+         */
         public Builder unknownCostFactor(double factor) {
             unknownCostFactor = factor;
             return this;
         }
 
-        /** @param mps top speed in m/s @return this */
+        /**
+
+         * @param mps top speed in m/s
+
+         * @return this
+
+         */
         public Builder topSpeedMps(double mps) {
             topSpeedMps = mps;
             return this;
         }
 
-        /** @param radPerSec turn-rate limit in rad/s @return this */
+        /**
+
+         * @param radPerSec turn-rate limit in rad/s
+
+         * @return this
+
+         */
         public Builder maxOmegaRadPerSec(double radPerSec) {
             maxOmegaRadPerSec = radPerSec;
             return this;
@@ -447,25 +549,43 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
             return this;
         }
 
-        /** @param m the laser's minimum range in metres @return this */
+        /**
+         * @param m the laser's minimum range in metres
+         * @return this
+         */
         public Builder laserMinRangeM(double m) {
             laserMinRangeM = m;
             return this;
         }
 
-        /** @param m pure-pursuit lookahead in metres @return this */
+        /**
+         * @param m pure-pursuit lookahead in metres
+         * @return this
+         */
         public Builder lookaheadM(double m) {
             lookaheadM = m;
             return this;
         }
 
-        /** @param rad heading error that triggers turning in place @return this */
+        /**
+
+         * @param rad heading error that triggers turning in place
+
+         * @return this
+
+         */
         public Builder turnInPlaceRad(double rad) {
             turnInPlaceRad = rad;
             return this;
         }
 
-        /** @param m waypoint tolerance in metres @return this */
+        /**
+
+         * @param m waypoint tolerance in metres
+
+         * @return this
+
+         */
         public Builder goalToleranceM(double m) {
             goalToleranceM = m;
             return this;
@@ -486,37 +606,73 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
             return this;
         }
 
-        /** @param ns oldest laser scan trusted @return this */
+        /**
+
+         * @param ns oldest laser scan trusted
+
+         * @return this
+
+         */
         public Builder laserMaxAgeNs(long ns) {
             laserMaxAgeNs = ns;
             return this;
         }
 
-        /** @param ns oldest pose trusted @return this */
+        /**
+
+         * @param ns oldest pose trusted
+
+         * @return this
+
+         */
         public Builder odometryMaxAgeNs(long ns) {
             odometryMaxAgeNs = ns;
             return this;
         }
 
-        /** @param ns oldest avoider request the mediator trusts (0: derived) @return this */
+        /**
+
+         * @param ns oldest avoider request the mediator trusts (0: derived)
+
+         * @return this
+
+         */
         public Builder avoidMaxAgeNs(long ns) {
             avoidMaxAgeNs = ns;
             return this;
         }
 
-        /** @param ns oldest waypoint request the mediator trusts (0: derived) @return this */
+        /**
+
+         * @param ns oldest waypoint request the mediator trusts (0: derived)
+
+         * @return this
+
+         */
         public Builder waypointMaxAgeNs(long ns) {
             waypointMaxAgeNs = ns;
             return this;
         }
 
-        /** @param points the course in order, in the odometry frame @return this */
+        /**
+
+         * @param points the course in order, in the odometry frame
+
+         * @return this
+
+         */
         public Builder waypoints(List<Point2d> points) {
             waypoints = new ArrayList<>(Objects.requireNonNull(points, "waypoints"));
             return this;
         }
 
-        /** @param enabled whether the course can be replaced through {@link NavKeys#WAYPOINTS_IN} @return this */
+        /**
+
+         * @param enabled whether the course can be replaced through {@link NavKeys#WAYPOINTS_IN}
+
+         * @return this
+
+         */
         public Builder externalWaypoints(boolean enabled) {
             externalWaypoints = enabled;
             return this;

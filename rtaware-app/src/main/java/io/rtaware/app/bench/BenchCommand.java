@@ -9,14 +9,15 @@ import io.rtaware.app.bench.compare.PairedRounds;
 import io.rtaware.app.bench.compare.ReleaseStats;
 import io.rtaware.app.bench.compare.RunResult;
 import io.rtaware.app.bench.compare.TaskSweep;
-import io.rtaware.app.rt.ClockNanosleep;
+import io.rtaware.rt.ClockNanosleep;
 import io.rtaware.app.cli.CommandMonitor;
 import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.app.cli.MemoryBudget;
 import io.rtaware.app.cli.RecordOptions;
 import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.live.LiveMixin;
-import io.rtaware.app.live.LiveView;
+import io.rtaware.live.LiveAddressException;
+import io.rtaware.live.LiveView;
 import io.rtaware.app.output.OutputFile;
 import io.rtaware.app.output.OutputWrites;
 import io.rtaware.app.ros2.ExportMixin;
@@ -29,8 +30,8 @@ import io.rtaware.ros2.export.MonitorExporter;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
 import io.rtaware.core.report.SummaryTable;
-import io.rtaware.app.rt.CpuLatencyRequest;
-import io.rtaware.app.rt.RealtimeThreads;
+import io.rtaware.rt.CpuLatencyRequest;
+import io.rtaware.rt.RealtimeThreads;
 import io.rtaware.core.monitor.AdaptivePolicy;
 import io.rtaware.core.trace.TraceRecorder;
 import io.rtaware.record.RecordingPlan;
@@ -369,7 +370,12 @@ public final class BenchCommand implements Callable<Integer> {
                         + ":" + Durations.format(s.workNs())).toList())));
         out.printf("rtaware bench: %d task(s)%s for %s of world time (time scale x%s)%n", specs.size(),
                 chain ? " in a chain" : "", Durations.format(durationNs), timeScale);
-        LiveView liveView = LiveView.start(live.options(), monitor, out);
+        LiveView liveView;
+        try {
+            liveView = LiveView.start(live.options(), monitor, out);
+        } catch (LiveAddressException e) {
+            throw new UserError(e.getMessage());
+        }
         MonitorExporter exporter = export.options().map(e -> e.start(monitor, List.of(), System.err)).orElse(null);
         Thread hook = monitor.installShutdownHook();
         OutputWrites writes = new OutputWrites(System.err);

@@ -2,6 +2,7 @@ package io.rtaware.app.live;
 
 import io.rtaware.app.UserError;
 import io.rtaware.app.cli.DurationConverter;
+import io.rtaware.live.LiveOptions;
 import java.net.InetAddress;
 import java.net.UnknownHostException;
 import picocli.CommandLine.Option;

@@ -1,8 +1,6 @@
 /**
- * {@code --live}: a browser view of a running monitor. A publisher thread (never a task thread)
- * samples the monitor's live counters, feed statistics and key values at a bounded rate, builds
- * one JSON snapshot at a time and hands it to a loopback HTTP server (the JDK's built-in one)
- * that serves a static page, the latest snapshot and a Server-Sent Events stream with a
- * latest-value slot per browser.
+ * The {@code --live}, {@code --live-bind}, {@code --live-port} and {@code --live-linger} options
+ * of {@code run} and {@code bench}, turned into the {@code rtaware-live} module's
+ * {@link io.rtaware.live.LiveOptions}.
  */
 package io.rtaware.app.live;

@@ -1,9 +1,7 @@
 /**
- * {@code rtaware replay}: a recording ({@code run --record}) re-executed offline. Exact replay
- * ({@link io.rtaware.app.replay.ExactReplay}) feeds each task of the controller the input values
- * it read in every recorded cycle and compares what it commits with what it committed; what-if
- * replay ({@link io.rtaware.app.replay.WhatIfReplay}) runs the controller on the recorded sensor
- * stream with other periods, charging each cycle a recorded execution time. The recording is
- * loaded by {@link io.rtaware.app.replay.Recording}.
+ * {@code rtaware replay}: the command that loads a recording and runs the {@code rtaware-replay}
+ * module's exact or what-if replay of the navigation controller on it, and the run metadata
+ * ({@link io.rtaware.app.replay.ControllerMetadata}) that lets it rebuild the recorded
+ * controller.
  */
 package io.rtaware.app.replay;

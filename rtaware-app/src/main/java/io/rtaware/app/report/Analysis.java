@@ -13,7 +13,12 @@ import java.util.List;
  */
 public record Analysis(List<AdviceItem> advice, SchedulabilityReport schedulability) {
 
-    /** Copies the advice list. */
+    /**
+     * Copies the advice list.
+     *
+     * @param advice the period advice
+     * @param schedulability the schedulability analysis
+     */
     public Analysis {
         advice = List.copyOf(advice);
     }

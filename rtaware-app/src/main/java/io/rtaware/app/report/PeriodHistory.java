@@ -22,7 +22,16 @@ import java.util.Locale;
 public record PeriodHistory(String task, double minPeriodMs, double maxPeriodMs, double initialPeriodMs,
                             double finalPeriodMs, List<Change> changes) {
 
-    /** Copies the list. */
+    /**
+     * Copies the list.
+     *
+     * @param task the task
+     * @param minPeriodMs shortest allowed period, ms
+     * @param maxPeriodMs longest allowed period, ms
+     * @param initialPeriodMs period at start, ms
+     * @param finalPeriodMs period at the end, ms
+     * @param changes every change in order
+     */
     public PeriodHistory {
         changes = List.copyOf(changes);
     }

@@ -3,8 +3,9 @@ package io.rtaware.app.run;
 import io.rtaware.app.UserError;
 import io.rtaware.app.cli.CommandMonitor;
 import io.rtaware.app.cli.RecordOptions;
-import io.rtaware.app.live.LiveView;
-import io.rtaware.app.live.RunScene;
+import io.rtaware.live.LiveAddressException;
+import io.rtaware.live.LiveView;
+import io.rtaware.live.RunScene;
 import io.rtaware.app.ros2.ExportOptions;
 import io.rtaware.app.ros2.Ros2Link;
 import io.rtaware.app.ros2.Ros2Options;
@@ -19,8 +20,8 @@ import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.trace.TraceRecorder;
 import io.rtaware.record.RunRecorder;
-import io.rtaware.app.rt.CpuLatencyRequest;
-import io.rtaware.app.rt.RealtimeThreads;
+import io.rtaware.rt.CpuLatencyRequest;
+import io.rtaware.rt.RealtimeThreads;
 import io.rtaware.nav.NavConfig;
 import io.rtaware.nav.NavController;
 import io.rtaware.player.client.PlayerClient;
@@ -34,6 +35,7 @@ import io.rtaware.player.task.PlayerDataTask;
 import io.rtaware.robot.geometry.Point2d;
 import io.rtaware.robot.geometry.Pose2d;
 import io.rtaware.robot.msg.CourseStatus;
+import io.rtaware.robot.msg.OccupancyGrid;
 import io.rtaware.robot.msg.Odometry;
 import io.rtaware.robot.msg.RobotKeys;
 import io.rtaware.robot.msg.VelocityCommand;
@@ -239,8 +241,14 @@ public final class RobotRun {
         Supplier<Pose2d> truthNow = simulator != null ? () -> simulator.withWorld(World::pose)
                 : () -> state.referee() == null ? null : state.referee().latest();
         RunArtifacts artifacts = new RunArtifacts(options, scenario, navConfig, out, err);
-        LiveView live = LiveView.start(options.live(), monitor, new RunScene(scenario.name(), scenario.map().orElse(null),
-                scenario.waypoints(), nav.keys(), nav::mediatorCounts, () -> outcomeName(state)), out);
+        LiveView live;
+        try {
+            live = LiveView.start(options.live(), monitor, new RunScene(scenario.name(),
+                    scenario.map().map(RobotRun::worldGrid).orElse(null),
+                    scenario.waypoints(), nav.keys(), nav::mediatorCounts, () -> outcomeName(state)), out);
+        } catch (LiveAddressException e) {
+            throw new UserError(e.getMessage());
+        }
         // Connected before the start, so the first ground-truth sample is the pose at the start.
         Referee.PoseSource truthSource = poseSource(host, port, clock, monitor);
         Referee.PoseSource truth = RunRecording.recordingGroundTruth(truthSource, recorder, clock);
@@ -306,6 +314,21 @@ public final class RobotRun {
         } catch (Exception ignored) {
             // the run is over; a failing close of the observer's connection changes nothing
         }
+    }
+
+    /**
+     * @param map the scenario's map
+     * @return the same walls as an occupancy grid for the live view: obstacles occupied, the rest free
+     */
+    private static OccupancyGrid worldGrid(OccupancyMap map) {
+        OccupancyGrid grid = new OccupancyGrid(map.widthCells() * map.heightCells());
+        grid.setGeometry(map.widthCells(), map.heightCells(), map.resolutionM(), map.originXM(), map.originYM());
+        for (int row = 0; row < map.heightCells(); row++) {
+            for (int col = 0; col < map.widthCells(); col++) {
+                grid.cells[row * map.widthCells() + col] = map.isObstacle(col, row) ? OccupancyGrid.OCCUPIED : OccupancyGrid.FREE;
+            }
+        }
+        return grid;
     }
 
     private static String outcomeName(RunState state) {

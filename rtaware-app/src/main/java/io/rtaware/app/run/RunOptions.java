@@ -1,7 +1,7 @@
 package io.rtaware.app.run;
 
 import io.rtaware.app.cli.TraceOptions;
-import io.rtaware.app.live.LiveOptions;
+import io.rtaware.live.LiveOptions;
 import java.nio.file.Path;
 
 /**

@@ -29,7 +29,16 @@ package io.rtaware.core.monitor;
 public record AdaptivePolicy(int windowReleases, double stepFactor, double staleLongerPct,
                              double staleShorterPct, double headroomPct) {
 
-    /** Validates the parameters. */
+    /**
+     * Validates the parameters.
+     *
+     * @param windowReleases releases per evaluation window, at least 1
+     * @param stepFactor factor of one step, greater than 1
+     * @param staleLongerPct stale share (percent of runs) from which the period grows
+     * @param staleShorterPct stale share (percent of runs) up to which the period may shrink
+     * @param headroomPct longest execution time in the window, as percent of the shorter period, up to which
+     *     the period may shrink
+     */
     public AdaptivePolicy {
         if (windowReleases < 1 || !(stepFactor > 1) || !(staleShorterPct < staleLongerPct) || !(headroomPct > 0)) {
             throw new IllegalArgumentException("invalid adaptive policy: window " + windowReleases + ", step "

@@ -8,6 +8,7 @@ import java.util.List;
  */
 public final class ConfigurationException extends RuntimeException {
 
+    /** Every violation found, in the order found. */
     private final List<String> violations;
 
     /** @param violations every problem found, at least one */

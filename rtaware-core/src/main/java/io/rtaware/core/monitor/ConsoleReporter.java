@@ -1,5 +1,6 @@
 package io.rtaware.core.monitor;
 
+import io.rtaware.core.agent.AgentThread;
 import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.SystemClock;
@@ -9,6 +10,8 @@ import java.util.Locale;
 import java.util.Objects;
 import java.util.concurrent.atomic.AtomicLongArray;
 import java.util.concurrent.atomic.AtomicReferenceArray;
+import org.agrona.concurrent.Agent;
+import org.agrona.concurrent.SleepingMillisIdleStrategy;
 
 /**
  * Prints live deadline misses, stale runs, expired reads, task errors and adaptive period
@@ -42,8 +45,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
     private final AtomicReferenceArray<Throwable> lastError;
     private final AtomicReferenceArray<PeriodChange> lastPeriodChange;
     private final long[] lastLineWallNs;
-    private final Thread printer;
-    private volatile boolean closed;
+    private final AgentThread printer;
     /** World time when the first task started running: the origin of printed times. */
     private volatile long originNs = Long.MIN_VALUE;
 
@@ -79,11 +81,8 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         this.lastPeriodChange = new AtomicReferenceArray<>(n);
         this.lastLineWallNs = new long[n];
         java.util.Arrays.fill(lastLineWallNs, Long.MIN_VALUE / 2);
-        this.printer = printerThread ? new Thread(this::printLoop, "rtaware-console") : null;
-        if (printer != null) {
-            printer.setDaemon(true);
-            printer.start();
-        }
+        this.printer = printerThread ? AgentThread.start(new Printer(), new SleepingMillisIdleStrategy(POLL_MS),
+                error -> System.err.println("rtaware: console reporter: " + error)) : null;
     }
 
     @Override
@@ -130,14 +129,17 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         pending.incrementAndGet(task.index() * KINDS + PERIOD_CHANGES);
     }
 
-    private void printLoop() {
-        while (!closed) {
+    /** The printer's loop: a poll every {@value #POLL_MS} ms. */
+    private final class Printer implements Agent {
+        @Override
+        public int doWork() {
             poll();
-            try {
-                Thread.sleep(POLL_MS);
-            } catch (InterruptedException e) {
-                return;
-            }
+            return 0;
+        }
+
+        @Override
+        public String roleName() {
+            return "rtaware-console";
         }
     }
 
@@ -218,12 +220,11 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
                 changes > 1 ? " [" + changes + " changes since the last line]" : "");
     }
 
-    /** Stops the printer thread after printing what is left. */
+    /** Stops the printer thread, then prints what is left. */
     @Override
     public void close() {
-        closed = true;
         if (printer != null) {
-            printer.interrupt();
+            printer.close();
         }
         flush();
     }

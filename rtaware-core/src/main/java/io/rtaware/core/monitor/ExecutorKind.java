@@ -47,7 +47,12 @@ public sealed interface ExecutorKind permits ExecutorKind.Threaded, ExecutorKind
      */
     record Pooled(int workers, PoolOrder order) implements ExecutorKind {
 
-        /** Checks the values. */
+        /**
+         * Checks the values.
+         *
+         * @param workers worker threads, at least 1
+         * @param order which due release a free worker runs first
+         */
         public Pooled {
             if (workers < 1) {
                 throw new IllegalArgumentException("a pool needs at least 1 worker, got " + workers);

@@ -1,9 +1,9 @@
 package io.rtaware.core.monitor;
 
 import io.rtaware.core.time.ManualClock;
+import java.util.Arrays;
 import java.util.concurrent.atomic.AtomicLong;
-import java.util.concurrent.atomic.AtomicLongArray;
-import java.util.concurrent.atomic.AtomicReferenceArray;
+import java.util.concurrent.atomic.AtomicLongFieldUpdater;
 import java.util.concurrent.locks.LockSupport;
 
 /**
@@ -15,7 +15,7 @@ import java.util.concurrent.locks.LockSupport;
  *
  * <p>Idle is decided on one consistent view. Per party it keeps the time it waits for, the
  * number of wake requests made for it (an advance of the clock, another thread's
- * {@link #wake}) and the number it had seen when it announced its wait: a party whose requests
+ * {@link Party#wake}) and the number it had seen when it announced its wait: a party whose requests
  * outnumber what it has seen is about to wake, whatever its announced time says. Every change
  * of that state bumps one counter, and a view is taken only if the counter did not move while
  * it was read. A stale permit (an unpark of a thread that was running) only makes a thread wait
@@ -35,74 +35,103 @@ final class ManualClockWaiter implements ClockWaiter {
     private static final long IDLE_TIMEOUT_NS = 10_000_000_000L;
 
     private final ManualClock clock;
-    private final AtomicReferenceArray<Thread> threads;
-    /** Per party: the world time it waits for ({@link Long#MAX_VALUE}: until woken), {@link #BUSY} or {@link #DONE}. */
-    private final AtomicLongArray waitingUntil;
-    /** Per party: wake requests made for it so far. */
-    private final AtomicLongArray wakeRequests;
-    /** Per party: the wake requests it had seen when it announced its current wait. */
-    private final AtomicLongArray wakesSeen;
-    /** Bumped by every change of the three arrays above: a view read while it stood still is consistent. */
+    /**
+     * The registered parties, in registration order, in the first {@link #partyCount} slots; the
+     * array is replaced by one twice as long when full. Written before the count, so a reader
+     * that reads the count first finds every party it counts.
+     */
+    private volatile ManualParty[] parties = new ManualParty[8];
+    private volatile int partyCount;
+    /** Bumped by every change of a party's state: a view read while it stood still is consistent. */
     private final AtomicLong changes = new AtomicLong();
     private final Runnable unsubscribe;
 
     /**
      * @param clock the clock the threads wait on
-     * @param parties how many threads wait (tasks plus the watchdog)
      */
-    ManualClockWaiter(ManualClock clock, int parties) {
+    ManualClockWaiter(ManualClock clock) {
         this.clock = clock;
-        this.threads = new AtomicReferenceArray<>(parties);
-        this.waitingUntil = new AtomicLongArray(parties);
-        this.wakeRequests = new AtomicLongArray(parties);
-        this.wakesSeen = new AtomicLongArray(parties);
-        for (int i = 0; i < parties; i++) {
-            waitingUntil.set(i, BUSY);
-        }
         this.unsubscribe = clock.onAdvance((fromNs, toNs) -> {
-            for (int i = 0; i < threads.length(); i++) {
-                Thread t = threads.get(i);
-                if (t != null) {
-                    wake(i, t);
-                }
+            int count = partyCount;
+            ManualParty[] all = parties;
+            for (int i = 0; i < count; i++) {
+                all[i].wake();
             }
         });
     }
 
     @Override
-    public void register(int party, Thread thread) {
-        threads.set(party, thread);
-    }
-
-    @Override
-    public void park(int party, long targetNs) {
-        if (clock.nanos() >= targetNs) {
-            return;
+    public synchronized Party register(Thread thread) {
+        ManualParty party = new ManualParty(thread);
+        int count = partyCount;
+        if (count == parties.length) {
+            parties = Arrays.copyOf(parties, 2 * count);
         }
-        // Announced before the re-check: a wake requested after the announcement is seen by the
-        // re-check or unparks this thread, and an unpark before the park makes it return at once.
-        long seen = wakeRequests.get(party);
-        wakesSeen.set(party, seen);
-        waitingUntil.set(party, targetNs);
+        parties[count] = party;
+        partyCount = count + 1;
         changes.incrementAndGet();
-        if (clock.nanos() < targetNs && wakeRequests.get(party) == seen) {
-            LockSupport.park(this);
+        return party;
+    }
+
+    private static final AtomicLongFieldUpdater<ManualParty> WAKE_REQUESTS =
+            AtomicLongFieldUpdater.newUpdater(ManualParty.class, "wakeRequests");
+
+    /** One thread waiting on the manual clock. */
+    final class ManualParty implements Party {
+        private final Thread thread;
+        /** The world time it waits for ({@link Long#MAX_VALUE}: until woken), {@link #BUSY} or {@link #DONE}. */
+        private volatile long waitingUntil = BUSY;
+        /** Wake requests made for it so far; incremented through {@link #WAKE_REQUESTS}. */
+        private volatile long wakeRequests;
+        /** The wake requests it had seen when it announced its current wait. */
+        private volatile long wakesSeen;
+
+        ManualParty(Thread thread) {
+            this.thread = thread;
         }
-        waitingUntil.set(party, BUSY);
-        changes.incrementAndGet();
-    }
 
-    @Override
-    public void wake(int party, Thread thread) {
-        wakeRequests.incrementAndGet(party);
-        changes.incrementAndGet();
-        LockSupport.unpark(thread);
-    }
+        @Override
+        public void park(long targetNs) {
+            if (clock.nanos() >= targetNs) {
+                return;
+            }
+            // Announced before the re-check: a wake requested after the announcement is seen by
+            // the re-check or unparks this thread, and an unpark before the park makes it return
+            // at once.
+            long seen = wakeRequests;
+            wakesSeen = seen;
+            waitingUntil = targetNs;
+            changes.incrementAndGet();
+            if (clock.nanos() < targetNs && wakeRequests == seen) {
+                LockSupport.park(ManualClockWaiter.this);
+            }
+            waitingUntil = BUSY;
+            changes.incrementAndGet();
+        }
 
-    @Override
-    public void done(int party) {
-        waitingUntil.set(party, DONE);
-        changes.incrementAndGet();
+        @Override
+        public void wake() {
+            requestWake();
+            LockSupport.unpark(thread);
+        }
+
+        /** The first half of {@link #wake}: the request is recorded, the thread not yet unparked. */
+        void requestWake() {
+            WAKE_REQUESTS.incrementAndGet(this);
+            changes.incrementAndGet();
+        }
+
+        @Override
+        public void done() {
+            waitingUntil = DONE;
+            changes.incrementAndGet();
+        }
+
+        @Override
+        public String toString() {
+            return thread.getName() + ": waiting until " + waitingUntil + ", wake requests " + wakeRequests
+                    + ", seen " + wakesSeen;
+        }
     }
 
     @Override
@@ -131,8 +160,7 @@ final class ManualClockWaiter implements ClockWaiter {
             }
             if (System.nanoTime() - giveUpNs > 0) {
                 throw new IllegalStateException("the executor's threads did not become idle at t=" + clock.nanos()
-                        + " ns: waiting until " + waitingUntil + ", wake requests " + wakeRequests
-                        + ", seen " + wakesSeen);
+                        + " ns: " + Arrays.toString(Arrays.copyOf(parties, partyCount)));
             }
             Thread.yield();
         }
@@ -148,12 +176,15 @@ final class ManualClockWaiter implements ClockWaiter {
         long before = changes.get();
         long now = clock.nanos();
         long earliest = Long.MAX_VALUE;
-        for (int i = 0; i < waitingUntil.length(); i++) {
-            long until = waitingUntil.get(i);
+        int count = partyCount;
+        ManualParty[] all = parties;
+        for (int i = 0; i < count; i++) {
+            ManualParty party = all[i];
+            long until = party.waitingUntil;
             if (until == DONE) {
                 continue;
             }
-            if (until == BUSY || until <= now || wakeRequests.get(i) != wakesSeen.get(i)) {
+            if (until == BUSY || until <= now || party.wakeRequests != party.wakesSeen) {
                 return NOT_IDLE;
             }
             earliest = Math.min(earliest, until);

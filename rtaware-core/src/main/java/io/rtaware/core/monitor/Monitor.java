@@ -251,17 +251,15 @@ public final class Monitor {
      */
     public void start() {
         if (executorKind instanceof ExecutorKind.Pooled pool) {
-            ClockWaiter waiter = waiterFor(PooledExecutor.parties(runtimes.size(), pool.workers()));
-            begin(new PooledExecutor(clock, waiter, runtimes, pool.workers(), pool.order(), this::requestStopFromTask,
+            begin(new PooledExecutor(clock, newWaiter(), runtimes, pool.workers(), pool.order(), this::requestStopFromTask,
                     threadSetup, faults));
         } else {
-            ClockWaiter waiter = waiterFor(runtimes.size() + 1);
-            begin(new ThreadedExecutor(clock, waiter, runtimes, this::requestStopFromTask, threadSetup, faults));
+            begin(new ThreadedExecutor(clock, newWaiter(), runtimes, this::requestStopFromTask, threadSetup, faults));
         }
     }
 
-    private ClockWaiter waiterFor(int parties) {
-        return clock instanceof ManualClock manual ? new ManualClockWaiter(manual, parties)
+    private ClockWaiter newWaiter() {
+        return clock instanceof ManualClock manual ? new ManualClockWaiter(manual)
                 : new ParkingClockWaiter(clock, sleeper);
     }
 

@@ -4,6 +4,7 @@ import io.rtaware.core.time.Clock;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.atomic.AtomicLongArray;
 import java.util.concurrent.atomic.AtomicReferenceArray;
 import java.util.concurrent.locks.LockSupport;
@@ -33,10 +34,13 @@ import java.util.concurrent.locks.LockSupport;
  * looks at the cycles the workers run now and the rest of their batches (one slot each per
  * worker), not at every task.
  *
- * <p>Party numbers of the {@link ClockWaiter}: task {@code i} is party {@code i} (only tasks with
- * a thread of their own use theirs), then the inner executor's watchdog, the workers and the
- * pool's watchdog; {@link #parties(int, int)} counts them. The workers do not run the
- * {@link ThreadSetup} (it is per task); the tasks with their own thread do.
+ * <p>Each worker, the pool's watchdog and the inner executor's threads register with the one
+ * {@link ClockWaiter} and wait and are woken through the {@link ClockWaiter.Party} they get.
+ * Workers are made by a
+ * {@link ThreadFactory} that runs {@link ThreadSetup#onPoolWorkerStart} on each before its first
+ * release (with the rank of the shortest-period pooled task), and the start instant is taken
+ * once every worker has run it; the tasks with their own thread run
+ * {@link ThreadSetup#onTaskThreadStart}.
  *
  * <p>Steady state allocates nothing: heaps and slots are arrays sized at construction, the lock
  * is an object monitor. Thread-safe: started once, stopped once, by the monitor.
@@ -57,13 +61,15 @@ final class PooledExecutor implements Executor {
     private final ExecutorKind.PoolOrder order;
     private final Runnable stopAllRequest;
     private final FrameworkFaults faults;
+    private final ThreadSetup threadSetup;
     /** The periodic tasks that do not block, by pool slot. */
     private final TaskRuntime[] pooled;
     /** The tasks with a thread of their own; null if there are none. */
     private final ThreadedExecutor dedicated;
-    private final int firstWorkerParty;
     private final Watchdog watchdog;
     private final Thread[] workers;
+    /** Each worker's handle in the waiter; set before the workers start. */
+    private final ClockWaiter.Party[] workerParties;
     /** What each worker runs now (null: nothing); the watchdog scans these. */
     private final AtomicReferenceArray<TaskRuntime> current;
     /**
@@ -94,12 +100,12 @@ final class PooledExecutor implements Executor {
 
     /**
      * @param clock world time
-     * @param waiter how every thread waits; {@link #parties(int, int)} parties
+     * @param waiter how every thread waits
      * @param runtimes every task of the monitor, by index
      * @param workerCount worker threads
      * @param order which due release runs first
      * @param stopAllRequest how a cycle stops the monitor (STOP_ALL)
-     * @param threadSetup run on the dedicated task threads; null for none
+     * @param threadSetup run on the dedicated task threads and on the workers; null for none
      * @param faults where framework faults go
      */
     PooledExecutor(Clock clock, ClockWaiter waiter, List<TaskRuntime> runtimes, int workerCount,
@@ -111,19 +117,18 @@ final class PooledExecutor implements Executor {
         this.order = order;
         this.stopAllRequest = stopAllRequest;
         this.faults = faults;
+        this.threadSetup = threadSetup;
         List<TaskRuntime> inPool = new ArrayList<>();
         List<TaskRuntime> own = new ArrayList<>();
         for (TaskRuntime runtime : runtimes) {
             (isPooled(runtime) ? inPool : own).add(runtime);
         }
         this.pooled = inPool.toArray(new TaskRuntime[0]);
-        int innerWatchdogParty = runtimes.size();
         this.dedicated = own.isEmpty() ? null
-                : new ThreadedExecutor(clock, waiter, own, stopAllRequest, threadSetup, faults, innerWatchdogParty);
-        this.firstWorkerParty = innerWatchdogParty + 1;
-        this.watchdog = new Watchdog(clock, waiter, firstWorkerParty + workerCount, faults, "pool watchdog",
-                this::claimMissesAndNextDeadline);
+                : new ThreadedExecutor(clock, waiter, own, stopAllRequest, threadSetup, faults);
+        this.watchdog = new Watchdog(clock, waiter, faults, "pool watchdog", new WorkerSlots());
         this.workers = new Thread[workerCount];
+        this.workerParties = new ClockWaiter.Party[workerCount];
         this.current = new AtomicReferenceArray<>(workerCount);
         this.batchDeadlineNs = new AtomicLongArray(workerCount);
         for (int w = 0; w < workerCount; w++) {
@@ -139,15 +144,6 @@ final class PooledExecutor implements Executor {
         return runtime.isPeriodic() && !runtime.spec().task().blocks();
     }
 
-    /**
-     * @param taskCount tasks of the monitor
-     * @param workerCount worker threads
-     * @return how many parties the {@link ClockWaiter} of a pool needs
-     */
-    static int parties(int taskCount, int workerCount) {
-        return taskCount + 1 + workerCount + 1;
-    }
-
     /** @return the waiter its threads wait with (tests on a manual clock step through it) */
     ClockWaiter waiter() {
         return waiter;
@@ -156,26 +152,22 @@ final class PooledExecutor implements Executor {
     @Override
     public long start() {
         running = true;
-        // Parties nobody waits as: the pooled tasks' own numbers, and the inner watchdog's if unused.
-        for (TaskRuntime runtime : pooled) {
-            waiter.done(runtime.index());
-        }
-        if (dedicated == null) {
-            waiter.done(firstWorkerParty - 1);
-        }
         watchdog.prepare();
         CountDownLatch go = new CountDownLatch(1);
+        CountDownLatch ready = new CountDownLatch(workers.length);
+        ThreadFactory factory = new WorkerThreadFactory(fastestPooledRank(), ready);
         for (int w = 0; w < workers.length; w++) {
             int worker = w;
-            workers[w] = new Thread(() -> work(worker, go), "rtaware-pool-" + w);
-            workers[w].setDaemon(true);
-            workers[w].setPriority(Thread.MAX_PRIORITY - 1);
-            waiter.register(firstWorkerParty + w, workers[w]);
+            workers[w] = factory.newThread(() -> work(worker, go));
+            workerParties[w] = waiter.register(workers[w]);
             parkedUntil[w] = NOT_PARKED;
         }
         for (Thread worker : workers) {
             worker.start();
         }
+        // As on the threaded executor: the start instant is taken once every worker has run its
+        // thread setup, so the setup never makes release 0 late.
+        ThreadedExecutor.awaitUninterruptibly(ready);
         long startNs = dedicated != null ? dedicated.start() : clock.nanos();
         synchronized (lock) {
             releaseOrderIsRunOrder = order == ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST && oneFixedDeadline();
@@ -192,11 +184,11 @@ final class PooledExecutor implements Executor {
     }
 
     private void work(int worker, CountDownLatch go) {
-        int party = firstWorkerParty + worker;
+        ClockWaiter.Party party = workerParties[worker];
         try {
             go.await();
         } catch (InterruptedException e) {
-            waiter.done(party);
+            party.done();
             return;
         }
         int[] batch = new int[MAX_BATCH];
@@ -241,7 +233,7 @@ final class PooledExecutor implements Executor {
                     }
                 }
                 if (claimed == 0) {
-                    waiter.park(party, parkUntilNs);
+                    party.park(parkUntilNs);
                     continue;
                 }
                 long earliest = Long.MAX_VALUE;
@@ -259,7 +251,53 @@ final class PooledExecutor implements Executor {
             faults.report("pool worker " + worker + " (fatal VM error: stopping every task)", fatal);
             stopAllRequest.run();
         } finally {
-            waiter.done(party);
+            party.done();
+        }
+    }
+
+    /** @return the rate-monotonic rank among all tasks of the shortest-period pooled task (0 if none) */
+    private int fastestPooledRank() {
+        int[] ranks = ThreadedExecutor.rateMonotonicRanks(runtimes);
+        int fastest = Integer.MAX_VALUE;
+        for (TaskRuntime runtime : pooled) {
+            fastest = Math.min(fastest, ranks[runtime.index()]);
+        }
+        return pooled.length == 0 ? 0 : fastest;
+    }
+
+    /**
+     * Makes the workers, in order: named {@code rtaware-pool-<n>}, daemon, Java priority
+     * {@code MAX_PRIORITY - 1}; each runs the {@link ThreadSetup} on itself (a fault is reported,
+     * the worker runs on), counts down {@code ready}, then its loop. Used by {@link #start} only.
+     */
+    private final class WorkerThreadFactory implements ThreadFactory {
+        private final int rmRank;
+        private final CountDownLatch ready;
+        private int next;
+
+        WorkerThreadFactory(int rmRank, CountDownLatch ready) {
+            this.rmRank = rmRank;
+            this.ready = ready;
+        }
+
+        @Override
+        public Thread newThread(Runnable loop) {
+            int worker = next++;
+            Thread thread = new Thread(() -> {
+                try {
+                    if (threadSetup != null) {
+                        threadSetup.onPoolWorkerStart(worker, rmRank, runtimes.size());
+                    }
+                } catch (Throwable t) {
+                    faults.report("thread setup of pool worker " + worker, t);
+                } finally {
+                    ready.countDown();
+                }
+                loop.run();
+            }, "rtaware-pool-" + worker);
+            thread.setDaemon(true);
+            thread.setPriority(Thread.MAX_PRIORITY - 1);
+            return thread;
         }
     }
 
@@ -293,7 +331,7 @@ final class PooledExecutor implements Executor {
             long until = parkedUntil[w];
             if (until != NOT_PARKED && (dueNs == Long.MAX_VALUE || dueNs < until)) {
                 parkedUntil[w] = NOT_PARKED;
-                waiter.wake(firstWorkerParty + w, workers[w]);
+                workerParties[w].wake();
                 return;
             }
         }
@@ -314,26 +352,32 @@ final class PooledExecutor implements Executor {
     }
 
     /**
-     * The watchdog's scan: claims the misses of the cycles the workers run now, and names the
-     * earliest deadline of those and of the rest of the workers' batches.
+     * What the pool's watchdog looks at: a slot per worker, holding the cycle it runs now; the
+     * deadline to wake for is the earliest of that cycle's and of the rest of the worker's batch.
      */
-    private long claimMissesAndNextDeadline(long nowNs) {
-        long earliest = Long.MAX_VALUE;
-        for (int w = 0; w < workers.length; w++) {
-            TaskRuntime runtime = current.get(w);
-            if (runtime != null) {
-                runtime.checkDeadline(nowNs);
-                long deadline = runtime.runningDeadlineNs();
-                if (deadline > nowNs && deadline < earliest) {
+    private final class WorkerSlots implements Watchdog.Slots {
+        @Override
+        public int count() {
+            return workers.length;
+        }
+
+        @Override
+        public TaskRuntime taskAt(int worker) {
+            return current.get(worker);
+        }
+
+        @Override
+        public long nextDeadlineNs(int worker, TaskRuntime task, long nowNs) {
+            long earliest = Long.MAX_VALUE;
+            if (task != null) {
+                long deadline = task.runningDeadlineNs();
+                if (deadline > nowNs) {
                     earliest = deadline;
                 }
             }
-            long batchDeadline = batchDeadlineNs.getAcquire(w);
-            if (batchDeadline > nowNs && batchDeadline < earliest) {
-                earliest = batchDeadline;
-            }
+            long batchDeadline = batchDeadlineNs.getAcquire(worker);
+            return batchDeadline > nowNs && batchDeadline < earliest ? batchDeadline : earliest;
         }
-        return earliest;
     }
 
     @Override

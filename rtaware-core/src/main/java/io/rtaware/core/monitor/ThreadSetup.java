@@ -1,14 +1,14 @@
 package io.rtaware.core.monitor;
 
 /**
- * A hook called on each task thread of the threaded executor when it starts, before the task's
- * first release: the place to set a real-time scheduling policy, CPU affinity or timer slack
- * for that thread (see {@code io.rtaware.app.rt}). Not called by the step executor.
+ * A hook called on each thread that runs cycles when it starts, before the first release: each
+ * task thread of the threaded executor (and the pooled executor's tasks with a thread of their
+ * own), and each worker of the pooled executor. The place to set a real-time scheduling policy,
+ * CPU affinity or timer slack for that thread (see the {@code rtaware-rt} module's {@code io.rtaware.rt.RealtimeThreads}). Not called by the step executor.
  *
  * <p>Implementations are called concurrently from every task thread and must be thread-safe.
  * An exception is reported on stderr and the task runs on.
  */
-@FunctionalInterface
 public interface ThreadSetup {
 
     /**
@@ -18,4 +18,16 @@ public interface ThreadSetup {
      * @param taskCount the number of tasks
      */
     void onTaskThreadStart(TaskInfo task, int rmRank, int taskCount);
+
+    /**
+     * Called on each worker thread of the pooled executor (the calling thread) before it takes
+     * its first release. A worker runs releases of every pooled task, so it is given the rank of
+     * the most urgent of them.
+     *
+     * @param worker the worker's number, from 0
+     * @param rmRank the rate-monotonic rank (as in {@link #onTaskThreadStart}) of the
+     *     shortest-period task the pool runs
+     * @param taskCount the number of tasks
+     */
+    void onPoolWorkerStart(int worker, int rmRank, int taskCount);
 }

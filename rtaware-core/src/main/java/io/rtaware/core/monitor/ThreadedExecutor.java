@@ -37,20 +37,16 @@ final class ThreadedExecutor implements Executor {
     private final FrameworkFaults faults;
     private final Watchdog watchdog;
     private final List<Thread> threads = new ArrayList<>();
+    /** Each task thread's handle in the waiter, by the thread's slot in {@link #threads}; filled before they start. */
+    private final List<ClockWaiter.Party> parties = new ArrayList<>();
     private volatile boolean running;
-
-    ThreadedExecutor(Clock clock, ClockWaiter waiter, List<TaskRuntime> runtimes, Runnable stopAllRequest,
-                     ThreadSetup threadSetup, FrameworkFaults faults) {
-        this(clock, waiter, runtimes, stopAllRequest, threadSetup, faults, runtimes.size());
-    }
 
     /**
      * @param runtimes the tasks it runs: all of the monitor's, or (inside a pool) those that keep
-     *     a thread of their own; task i waits as party {@code runtime.index()}
-     * @param watchdogParty the watchdog's party number
+     *     a thread of their own
      */
     ThreadedExecutor(Clock clock, ClockWaiter waiter, List<TaskRuntime> runtimes, Runnable stopAllRequest,
-                     ThreadSetup threadSetup, FrameworkFaults faults, int watchdogParty) {
+                     ThreadSetup threadSetup, FrameworkFaults faults) {
         this.clock = clock;
         this.waiter = waiter;
         this.runtimes = runtimes;
@@ -58,7 +54,7 @@ final class ThreadedExecutor implements Executor {
         this.stopAllRequest = stopAllRequest;
         this.threadSetup = threadSetup;
         this.faults = faults;
-        this.watchdog = new Watchdog(clock, waiter, watchdogParty, faults, "watchdog", this::claimMissesAndNextDeadline);
+        this.watchdog = new Watchdog(clock, waiter, faults, "watchdog", new TaskSlots());
     }
 
     /** @return its watchdog */
@@ -96,11 +92,13 @@ final class ThreadedExecutor implements Executor {
         for (TaskRuntime runtime : runtimes) {
             runtime.watchedBy(watchdog);
             int rank = ranks[runtime.index()];
-            Thread thread = new Thread(() -> runTask(runtime, rank, ready, go), "rtaware-" + runtime.name());
+            int slot = threads.size();
+            Thread thread = new Thread(() -> runTask(runtime, parties.get(slot), rank, ready, go),
+                    "rtaware-" + runtime.name());
             thread.setDaemon(true);
             thread.setPriority(runtime.isPeriodic()
                     ? Math.max(Thread.NORM_PRIORITY, Thread.MAX_PRIORITY - 1 - rank) : Thread.NORM_PRIORITY);
-            waiter.register(runtime.index(), thread);
+            parties.add(waiter.register(thread));
             threads.add(thread);
         }
         threads.forEach(Thread::start);
@@ -116,7 +114,8 @@ final class ThreadedExecutor implements Executor {
         return startNs;
     }
 
-    private static void awaitUninterruptibly(CountDownLatch latch) {
+    /** Waits for the latch, keeping an interrupt for later. */
+    static void awaitUninterruptibly(CountDownLatch latch) {
         boolean interrupted = false;
         while (true) {
             try {
@@ -131,8 +130,8 @@ final class ThreadedExecutor implements Executor {
         }
     }
 
-    private void runTask(TaskRuntime runtime, int rank, CountDownLatch ready, CountDownLatch go) {
-        int party = runtime.index();
+    private void runTask(TaskRuntime runtime, ClockWaiter.Party party, int rank, CountDownLatch ready,
+                         CountDownLatch go) {
         try {
             if (threadSetup != null) {
                 threadSetup.onTaskThreadStart(runtime, rank, runtimes.size());
@@ -155,39 +154,44 @@ final class ThreadedExecutor implements Executor {
             faults.report("task '" + runtime.name() + "' (fatal VM error: stopping every task)", fatal);
             stopAllRequest.run();
         } finally {
-            waiter.done(party);
+            party.done();
         }
     }
 
     /** Waits until the world clock reaches {@code targetNs}; false if stopped meanwhile. */
-    private boolean waitUntil(int party, long targetNs) {
+    private boolean waitUntil(ClockWaiter.Party party, long targetNs) {
         while (running) {
             if (clock.nanos() >= targetNs) {
                 return true;
             }
             // Nothing wakes a task thread but its release: it may sleep without being unparkable.
-            waiter.sleep(party, targetNs);
+            party.sleep(targetNs);
         }
         return false;
     }
 
     /**
-     * The watchdog's scan: claims the misses of cycles running past their deadline, and names the
-     * earliest deadline any periodic task could miss next (of a running cycle, or of the release
-     * an idle task waits for). Tasks released on time never wake the watchdog, so tasks sharing a
-     * period cost one scan per period, not one per cycle start.
+     * What the watchdog looks at: a slot per task; the deadline to wake for is that of the
+     * running cycle or of the release an idle task waits for. Tasks released on time never wake
+     * the watchdog, so tasks sharing a period cost one scan per period, not one per cycle start.
      */
-    private long claimMissesAndNextDeadline(long nowNs) {
-        long earliest = Long.MAX_VALUE;
-        for (TaskRuntime runtime : watched) {
-            runtime.checkDeadline(nowNs);
-            long deadline = runtime.watchDeadlineNs();
-            // A deadline already past belongs to a task between cycles, about to publish its next.
-            if (deadline > nowNs && deadline < earliest) {
-                earliest = deadline;
-            }
+    private final class TaskSlots implements Watchdog.Slots {
+        @Override
+        public int count() {
+            return watched.length;
         }
-        return earliest;
+
+        @Override
+        public TaskRuntime taskAt(int slot) {
+            return watched[slot];
+        }
+
+        @Override
+        public long nextDeadlineNs(int slot, TaskRuntime task, long nowNs) {
+            long deadline = task.watchDeadlineNs();
+            // A deadline already past belongs to a task between cycles, about to publish its next.
+            return deadline > nowNs ? deadline : Long.MAX_VALUE;
+        }
     }
 
     @Override

@@ -6,8 +6,8 @@ import java.util.concurrent.locks.LockSupport;
 /**
  * The watchdog thread of the threaded and pooled executors, which reports misses at the
  * deadline: it sleeps until the earliest deadline that could be missed, wakes just after it,
- * lets its executor's {@link Scan} claim the misses of cycles still running past their deadline
- * and name the next deadline, and sleeps again. Tasks released on time never wake it; a thread
+ * claims the misses of cycles still running past their deadline in its executor's {@link Slots}
+ * and finds the next deadline, and sleeps again. Tasks released on time never wake it; a thread
  * that starts a cycle whose deadline comes before the watchdog's wake time wakes it
  * ({@link #wakeFor}).
  *
@@ -20,25 +20,38 @@ final class Watchdog {
     /** The thread's name, which the bench's allocation and CPU counters look for. */
     static final String THREAD_NAME = "rtaware-monitor";
 
-    /** What one wake-up of the watchdog looks at: its executor's running cycles. */
-    @FunctionalInterface
-    interface Scan {
+    /**
+     * What the watchdog looks at: its executor's slots (a task thread each on the threaded
+     * executor, a worker each on the pool), each of which may hold a cycle that can miss its
+     * deadline. Allocation-free; called on the watchdog's thread.
+     */
+    interface Slots {
+        /** @return how many slots there are; fixed */
+        int count();
+
         /**
-         * Claims the misses of cycles running past their deadline at {@code nowNs}; allocation-free.
-         *
-         * @param nowNs world time
-         * @return the earliest deadline after {@code nowNs} that could still be missed, or
-         *     {@link Long#MAX_VALUE} if none is known (the watchdog then sleeps until woken)
+         * @param slot a slot
+         * @return the task whose running cycle may be past its deadline in that slot now, or null
          */
-        long claimMissesAndNextDeadline(long nowNs);
+        TaskRuntime taskAt(int slot);
+
+        /**
+         * @param slot a slot
+         * @param task what {@link #taskAt} returned for it, after its misses were claimed
+         * @param nowNs the scan's world time
+         * @return the earliest deadline of that slot after {@code nowNs} that the watchdog must
+         *     wake for (a running cycle's, a waiting release's), or {@link Long#MAX_VALUE} if none
+         */
+        long nextDeadlineNs(int slot, TaskRuntime task, long nowNs);
     }
 
     private final Clock clock;
     private final ClockWaiter waiter;
-    private final int party;
     private final FrameworkFaults faults;
     private final String faultSource;
-    private final Scan scan;
+    private final Slots slots;
+    /** Its handle in the waiter; set by {@link #prepare()}, before the thread starts. */
+    private ClockWaiter.Party party;
     private volatile boolean running;
     private Thread thread;
     /**
@@ -54,18 +67,16 @@ final class Watchdog {
     /**
      * @param clock world time
      * @param waiter how it sleeps
-     * @param party its party number in the waiter
      * @param faults where a fault of its scan goes
      * @param faultSource how such a fault names it
-     * @param scan what it does at each wake-up
+     * @param slots what it looks at each wake-up
      */
-    Watchdog(Clock clock, ClockWaiter waiter, int party, FrameworkFaults faults, String faultSource, Scan scan) {
+    Watchdog(Clock clock, ClockWaiter waiter, FrameworkFaults faults, String faultSource, Slots slots) {
         this.clock = clock;
         this.waiter = waiter;
-        this.party = party;
         this.faults = faults;
         this.faultSource = faultSource;
-        this.scan = scan;
+        this.slots = slots;
     }
 
     /** Creates the thread and registers it with the waiter; before any {@link #wakeFor}. */
@@ -74,7 +85,7 @@ final class Watchdog {
         thread = new Thread(this::watch, THREAD_NAME);
         thread.setDaemon(true);
         thread.setPriority(Thread.MAX_PRIORITY);
-        waiter.register(party, thread);
+        party = waiter.register(thread);
     }
 
     /** Starts the thread prepared by {@link #prepare()}. */
@@ -92,7 +103,7 @@ final class Watchdog {
     void wakeFor(long deadlineNs) {
         if (deadlineNs < wakeNs) {
             wakeRequested = true;
-            waiter.wake(party, thread);
+            party.wake();
         }
     }
 
@@ -110,19 +121,36 @@ final class Watchdog {
                 scans++;
                 long earliest = Long.MAX_VALUE;
                 try {
-                    earliest = scan.claimMissesAndNextDeadline(clock.nanos());
+                    earliest = scan(clock.nanos());
                 } catch (Throwable fault) {
                     faults.report(faultSource, fault);
                 }
                 wakeNs = earliest;
                 long targetNs = earliest == Long.MAX_VALUE ? Long.MAX_VALUE : earliest + 1;
                 while (running && !wakeRequested && clock.nanos() < targetNs) {
-                    waiter.park(party, targetNs);
+                    party.park(targetNs);
                 }
             }
         } finally {
-            waiter.done(party);
+            party.done();
         }
+    }
+
+    /**
+     * The one scan of both executors: claims the misses of the cycles running past their
+     * deadline at {@code nowNs}, and names the earliest deadline after it that could still be
+     * missed ({@link Long#MAX_VALUE} if none: it then sleeps until woken). Allocation-free.
+     */
+    private long scan(long nowNs) {
+        long earliest = Long.MAX_VALUE;
+        for (int slot = 0, n = slots.count(); slot < n; slot++) {
+            TaskRuntime task = slots.taskAt(slot);
+            if (task != null) {
+                task.checkDeadline(nowNs);
+            }
+            earliest = Math.min(earliest, slots.nextDeadlineNs(slot, task, nowNs));
+        }
+        return earliest;
     }
 
     /** @return how many times it has scanned (how often it woke); exact once it has stopped */

@@ -19,7 +19,16 @@ import java.util.List;
 public record Report(String schema, double timeScale, double durationS, double missesTotalPct,
                      List<TaskReport> tasks, List<DataReport> data, long frameworkErrors) {
 
-    /** A report without framework faults (for reports built outside a monitor). */
+    /**
+     * A report without framework faults (for reports built outside a monitor).
+     *
+     * @param schema always {@link #SCHEMA}
+     * @param timeScale world seconds per wall second during the run
+     * @param durationS run length in world seconds
+     * @param missesTotalPct misses over all tasks' releases, percent
+     * @param tasks per-task timing, in registration order
+     * @param data per-key feed statistics, sorted by key name
+     */
     public Report(String schema, double timeScale, double durationS, double missesTotalPct,
                   List<TaskReport> tasks, List<DataReport> data) {
         this(schema, timeScale, durationS, missesTotalPct, tasks, data, 0);

@@ -25,7 +25,18 @@ import java.util.Objects;
 public record ReactionConstraint(String input, double speedMps, double stoppingDistanceM, double rangeM,
                                  double inputDelayMs) {
 
-    /** @throws IllegalArgumentException naming the field and the value if one is out of range */
+    /**
+     * @param input the key the reaction starts from (for example a laser scan)
+     * @param speedMps the top speed of the motion, m/s, positive
+     * @param stoppingDistanceM distance covered from the moment the task commands a stop until the motion has
+     *     stopped (actuator latency plus braking), metres, not negative
+     * @param rangeM distance at which the input first shows what must be reacted to, minus any clearance that
+     *     must remain (for a robot: sensing range minus the body's extent ahead of the sensor), metres,
+     *     positive
+     * @param inputDelayMs age of the input's data when it is committed (sensor acquisition and delivery),
+     *     milliseconds, not negative
+     * @throws IllegalArgumentException naming the field and the value if one is out of range
+     */
     public ReactionConstraint {
         Objects.requireNonNull(input, "input");
         if (!(speedMps > 0) || Double.isInfinite(speedMps)) {

@@ -12,7 +12,14 @@ import java.util.Objects;
  */
 public record TaskSpec(String name, Schedule schedule, ErrorPolicy errorPolicy, Task task) {
 
-    /** Checks for nulls; values are validated by the monitor, all at once. */
+    /**
+     * Checks for nulls; values are validated by the monitor, all at once.
+     *
+     * @param name unique name, used in every report line
+     * @param schedule when it runs
+     * @param errorPolicy what an exception in a cycle does
+     * @param task the behavior
+     */
     public TaskSpec {
         Objects.requireNonNull(name, "name");
         Objects.requireNonNull(schedule, "schedule");

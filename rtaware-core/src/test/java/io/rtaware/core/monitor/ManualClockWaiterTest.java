@@ -19,28 +19,29 @@ import org.junit.jupiter.api.Test;
 class ManualClockWaiterTest {
 
     private final ManualClock clock = new ManualClock();
-    private final ManualClockWaiter waiter = new ManualClockWaiter(clock, 2);
+    private final ManualClockWaiter waiter = new ManualClockWaiter(clock);
     private final AtomicBoolean stop = new AtomicBoolean();
     private Thread sleeper;
+    private ManualClockWaiter.ManualParty party;
 
-    /** Party 0 waits for 10 ms, again after every wake-up, until told to stop; party 1 never waits. */
+    /** The sleeper waits for 10 ms, again after every wake-up, until told to stop; a second party is done at once. */
     @BeforeEach
     void startSleeper() {
         sleeper = new Thread(() -> {
             while (!stop.get() && clock.nanos() < ms(10)) {
-                waiter.park(0, ms(10));
+                party.park(ms(10));
             }
-            waiter.done(0);
+            party.done();
         }, "sleeper");
-        waiter.register(0, sleeper);
-        waiter.done(1);
+        party = (ManualClockWaiter.ManualParty) waiter.register(sleeper);
+        waiter.register(Thread.currentThread()).done();
         sleeper.start();
     }
 
     @AfterEach
     void stopSleeper() throws InterruptedException {
         stop.set(true);
-        waiter.wake(0, sleeper);
+        party.wake();
         sleeper.join();
         waiter.close();
     }
@@ -53,12 +54,12 @@ class ManualClockWaiterTest {
     @Test
     void aWakeRequestedButNotYetSeenMakesTheViewNotIdle() {
         waiter.awaitIdleNextWakeNs();
-        // The request is recorded; the thread unparked is another one, so the sleeper has not seen it.
-        waiter.wake(0, new Thread(() -> { }));
+        // The request is recorded, the sleeper not yet unparked: it has not seen it.
+        party.requestWake();
         assertEquals(ManualClockWaiter.NOT_IDLE, waiter.idleNextWakeNs(),
                 "the sleeper still announces 10 ms, but a wake is pending: not idle");
         // Once the sleeper wakes and waits again, the view is idle with the same time.
-        waiter.wake(0, sleeper);
+        party.wake();
         assertEquals(ms(10), waiter.awaitIdleNextWakeNs());
     }
 

@@ -28,11 +28,12 @@ class ParkingClockWaiterTest {
 
     private final List<Long> wallTargets = new ArrayList<>();
     private final ParkingClockWaiter waiter = new ParkingClockWaiter(DOUBLE_SPEED, wallTargets::add);
+    private final ClockWaiter.Party party = waiter.register(Thread.currentThread());
 
     @Test
     void aSleepAsksTheSleeperForTheWallInstantTheWorldTargetMapsTo() {
         long before = System.nanoTime();
-        waiter.sleep(0, NOW + 8_000_000);
+        party.sleep(NOW + 8_000_000);
         long after = System.nanoTime();
         assertEquals(1, wallTargets.size());
         long target = wallTargets.get(0);
@@ -43,8 +44,8 @@ class ParkingClockWaiterTest {
     @Test
     void oneSleepLastsAtMostAHundredMillisecondsSoAStopIsSeen() {
         long before = System.nanoTime();
-        waiter.sleep(0, NOW + 60_000_000_000L);
-        waiter.sleep(0, Long.MAX_VALUE);
+        party.sleep(NOW + 60_000_000_000L);
+        party.sleep(Long.MAX_VALUE);
         long after = System.nanoTime();
         for (long target : wallTargets) {
             assertTrue(target >= before + 100_000_000 && target <= after + 100_000_000, "capped: " + (target - before));
@@ -54,14 +55,14 @@ class ParkingClockWaiterTest {
 
     @Test
     void aTargetReachedAlreadyDoesNotSleep() {
-        waiter.sleep(0, NOW);
-        waiter.sleep(0, NOW - 5);
+        party.sleep(NOW);
+        party.sleep(NOW - 5);
         assertEquals(List.of(), wallTargets);
     }
 
     @Test
     void parksNeverUseTheSleeperForAnUnparkMustEndThem() {
-        waiter.park(0, NOW + 1_000);
+        party.park(NOW + 1_000);
         assertEquals(List.of(), wallTargets);
     }
 }

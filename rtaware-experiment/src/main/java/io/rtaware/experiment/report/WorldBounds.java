@@ -10,7 +10,14 @@ package io.rtaware.experiment.report;
  */
 public record WorldBounds(double minXM, double minYM, double maxXM, double maxYM) {
 
-    /** Validates the fields. */
+    /**
+     * Validates the fields.
+     *
+     * @param minXM west edge
+     * @param minYM south edge
+     * @param maxXM east edge
+     * @param maxYM north edge
+     */
     public WorldBounds {
         if (!(maxXM > minXM) || !(maxYM > minYM)) {
             throw new IllegalArgumentException("empty bounds: x " + minXM + ".." + maxXM + ", y " + minYM + ".." + maxYM);

@@ -12,7 +12,14 @@ import java.util.List;
  */
 public record RangerGeometry(Pose3d pose, Bbox3d size, List<Pose3d> elementPoses, List<Bbox3d> elementSizes) {
 
-    /** Copies the lists so the record is immutable. */
+    /**
+     * Copies the lists so the record is immutable.
+     *
+     * @param pose pose of the sensor relative to the robot
+     * @param size the sensor's extent
+     * @param elementPoses pose of each element (may be empty)
+     * @param elementSizes size of each element (may be empty)
+     */
     public RangerGeometry {
         elementPoses = List.copyOf(elementPoses);
         elementSizes = List.copyOf(elementSizes);

@@ -33,8 +33,24 @@ public record PlayerConfig(String host, int port, DeviceAddress scanSource, int 
                            long keepAliveMs, int maxBodyBytes) {
 
     /**
+      * @param host Player server host
+      * @param port Player server port (Player's default is 6665)
+      * @param scanSource where scans come from: {@code laser:N} or {@code ranger:N}
+      * @param position2dIndex index of the position2d device (odometry and motors)
+      * @param dataMode PUSH (default, with a replace rule) or PULL
+      * @param connectTimeoutMs TCP connect and banner timeout
+      * @param requestTimeoutMs reply timeout of each request
+      * @param readTimeoutMs wall time without any message after which the connection counts as lost (measured
+      *     on the monitor's clock and converted to wall time, so a scaled world does not shorten it)
+      * @param pollWaitMs longest wall time one {@code execute} waits for data, so the executor can stop the
+      *     task
+      * @param reconnect whether to reconnect after a loss
+      * @param reconnectInitialBackoffMs first wait (world time) before reconnecting
+      * @param reconnectMaxBackoffMs longest wait; the wait doubles after each failed attempt
+      * @param keepAliveMs world time after which an unchanged motor command is sent again
+      * @param maxBodyBytes largest message body accepted
      * @throws IllegalArgumentException naming every invalid field
-     */
+      */
     public PlayerConfig {
         StringBuilder bad = new StringBuilder();
         if (host == null || host.isBlank()) {

@@ -12,7 +12,9 @@ public class PlayerProtocolException extends IOException {
 
     private static final long serialVersionUID = 1L;
 
+    /** Byte offset where the problem was found; -1 if unknown. */
     private final long offset;
+    /** The field being decoded, e.g. {@code laser.ranges}. */
     private final String field;
 
     /**

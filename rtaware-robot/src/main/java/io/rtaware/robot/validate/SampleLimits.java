@@ -21,9 +21,17 @@ public record SampleLimits(double maxAbsCoordinateM, double maxAbsYawRad, double
     public static final double FULL_TURN_RAD = 2 * Math.PI;
 
     /**
+      * @param maxAbsCoordinateM largest |x| or |y| of a pose in metres
+      * @param maxAbsYawRad largest |yaw| in radians (odometry of some drivers is not normalized, so this is a
+      *     garbage guard, not 2 pi)
+      * @param maxSpeedMps largest planar speed, hypot(vx, vy), in m/s
+      * @param maxTurnRateRadPerSec largest |turn rate| in rad/s
+      * @param maxSensorRangeM largest maximum range a range sensor may declare, in metres
+      * @param rangeTolerance fraction of the declared maximum range a reading may exceed it by (float rounding
+      *     of drivers that report "nothing hit" as the maximum)
      * @throws IllegalArgumentException if a bound is not positive and finite, or the tolerance
      *     is negative
-     */
+      */
     public SampleLimits {
         for (double v : new double[] {maxAbsCoordinateM, maxAbsYawRad, maxSpeedMps, maxTurnRateRadPerSec,
                 maxSensorRangeM}) {

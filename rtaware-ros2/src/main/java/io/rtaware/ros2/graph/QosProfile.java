@@ -19,8 +19,11 @@ public record QosProfile(boolean reliable, boolean transientLocal, int depth) {
     private static final int TRANSIENT_LOCAL = 1;
 
     /**
+      * @param reliable reliable (default) or best effort
+      * @param transientLocal transient-local durability instead of volatile
+      * @param depth the keep-last history depth
      * @throws IllegalArgumentException if the depth is not positive
-     */
+      */
     public QosProfile {
         if (depth <= 0) {
             throw new IllegalArgumentException("QoS history depth must be positive, got " + depth);

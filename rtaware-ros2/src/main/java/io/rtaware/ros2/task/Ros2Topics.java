@@ -16,8 +16,13 @@ import io.rtaware.ros2.graph.Ros2Names;
 public record Ros2Topics(int domain, String namespace, String scan, String odom, String cmdVel) {
 
     /**
+      * @param domain the ROS domain id
+      * @param namespace the robot's namespace ({@code /} for none)
+      * @param scan the LaserScan topic
+      * @param odom the Odometry topic
+      * @param cmdVel the Twist topic the robot obeys
      * @throws IllegalArgumentException naming the invalid name or domain
-     */
+      */
     public Ros2Topics {
         Ros2Context.checkDomain(domain);
         namespace = Ros2Names.namespace(namespace);

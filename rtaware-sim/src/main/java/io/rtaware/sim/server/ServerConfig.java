@@ -31,7 +31,20 @@ public record ServerConfig(String bindAddress, int port, String modelName, int q
     /** The default {@link #messageTimeoutNs}: 10 s. */
     public static final long DEFAULT_MESSAGE_TIMEOUT_NS = 10_000_000_000L;
 
-    /** @throws IllegalArgumentException naming the field and the value if one is out of range */
+    /**
+     * @param bindAddress the address to listen on; loopback ({@value #LOOPBACK}) by default
+     * @param port the TCP port, 0..65535 (0 = any free port)
+     * @param modelName the robot's model name for {@code simulation:0} requests, not blank
+     * @param queueLimit most data messages held per client before the oldest is dropped, 1..65536
+     * @param stepPeriodNs the world-time step the sim thread aims for, 1 us .. 1 s
+     * @param maxRequestBytes largest message body accepted from a client, 64..16 MiB
+     * @param maxClients most clients connected at once (each costs two threads), 1..{@value
+     *     #MAX_CLIENTS_LIMIT}; more are refused
+     * @param maxRulesPerClient most distinct replace rules per client, 1..65536; more are NACKed
+     * @param messageTimeoutNs how long a client's message may take from its first bytes to its last (wall
+     *     time), 1 ms .. 1 h; a client exceeding it is disconnected
+     * @throws IllegalArgumentException naming the field and the value if one is out of range
+     */
     public ServerConfig {
         if (bindAddress == null || bindAddress.isBlank()) {
             throw new IllegalArgumentException("bindAddress must not be blank, got '" + bindAddress + "'");

@@ -25,7 +25,17 @@ public record LaserConfig(int beams, double angleIncrementRad, double minRangeM,
     public static final LaserConfig URG_04LX =
             new LaserConfig(683, Math.toRadians(360.0 / 1024.0), 0.02, 4.0, 10.0, 0.01);
 
-    /** @throws IllegalArgumentException naming the field and the value if one is out of range */
+    /**
+     * @param beams number of beams, 1..4096
+     * @param angleIncrementRad angle between neighbouring beams in radians, positive; the field of view {@code
+     *     (beams - 1) * angleIncrementRad} must not exceed 2 pi
+     * @param minRangeM shortest reported range in metres, not negative
+     * @param maxRangeM longest range in metres, above {@code minRangeM}; beams that hit nothing report exactly
+     *     this
+     * @param rateHz scans per world-time second, positive
+     * @param noiseSigmaM standard deviation of the Gaussian range noise in metres, not negative
+     * @throws IllegalArgumentException naming the field and the value if one is out of range
+     */
     public LaserConfig {
         if (beams < 1 || beams > 4096) {
             throw new IllegalArgumentException("beams must be in 1..4096, got " + beams);

@@ -27,7 +27,11 @@ public record LaserTiming(boolean sweep, long deliveryDelayNs) {
      */
     public static final LaserTiming URG_04LX = new LaserTiming(true, 10_000_000L);
 
-    /** @throws IllegalArgumentException if the delay is negative */
+    /**
+     * @param sweep true to measure the beams over the turn of the mirror
+     * @param deliveryDelayNs from the last beam to delivery, world nanoseconds, not negative
+     * @throws IllegalArgumentException if the delay is negative
+     */
     public LaserTiming {
         if (deliveryDelayNs < 0) {
             throw new IllegalArgumentException("deliveryDelayNs must not be negative, got " + deliveryDelayNs);

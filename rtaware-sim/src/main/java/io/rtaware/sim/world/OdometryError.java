@@ -39,7 +39,17 @@ public record OdometryError(double distanceScaleError, double rotationScaleError
      */
     public static final OdometryError KOALA = new OdometryError(0.03, 0.08, 0.01, 0.01, 0.02);
 
-    /** @throws IllegalArgumentException naming the field and the value if one is out of range */
+    /**
+     * @param distanceScaleError bound of the per-run distance scale error, a fraction (0.03 = 3 %)
+     * @param rotationScaleError bound of the per-run rotation scale error, a fraction
+     * @param headingDriftRadPerM bound of the per-run heading drift per metre driven straight (unequal sides of
+     *     a skid-steer base), radians per metre
+     * @param distanceNoiseMPerSqrtM noise of the distance increments: standard deviation after one metre,
+     *     metres per square-root metre
+     * @param rotationNoiseRadPerSqrtRad noise of the rotation increments: standard deviation after one radian
+     *     turned, radians per square-root radian
+     * @throws IllegalArgumentException naming the field and the value if one is out of range
+     */
     public OdometryError {
         fraction("distanceScaleError", distanceScaleError);
         fraction("rotationScaleError", rotationScaleError);

@@ -21,7 +21,19 @@ public record RobotConfig(double radiusM, double maxSpeedMps, double maxTurnRate
     /** The paper's Koala: radius 0.2 m, 0.1 m/s, 0.5 rad/s, 0.5 m/s^2, 2 rad/s^2, 16 Hz, no noise. */
     public static final RobotConfig KOALA = new RobotConfig(0.2, 0.1, 0.5, 0.5, 2.0, 16.0, 0.0, 0.0);
 
-    /** @throws IllegalArgumentException naming the field and the value if one is out of range */
+    /**
+     * @param radiusM collision radius in metres, positive
+     * @param maxSpeedMps top forward/backward speed in m/s, positive
+     * @param maxTurnRateRadPerS top turn rate in rad/s, positive
+     * @param maxAccelMps2 linear acceleration limit in m/s^2, positive
+     * @param maxTurnAccelRadPerS2 angular acceleration limit in rad/s^2, positive
+     * @param odometryRateHz how often odometry is published, in world-time Hz, positive
+     * @param odometryNoiseM standard deviation of the Gaussian noise added to each reported x and y, in metres,
+     *     not negative (0 = exact)
+     * @param odometryNoiseRad standard deviation of the noise added to each reported heading, in radians, not
+     *     negative
+     * @throws IllegalArgumentException naming the field and the value if one is out of range
+     */
     public RobotConfig {
         positive("radiusM", radiusM);
         positive("maxSpeedMps", maxSpeedMps);

@@ -39,7 +39,19 @@ public record RobotModel(String name, RobotConfig body, double maxDecelMps2, lon
      */
     public static final double KOALA_MAX_SPEED_MPS = 0.6;
 
-    /** @throws IllegalArgumentException naming the field and the value if one is out of range */
+    /**
+     * @param name {@value #KOALA_NAME} or {@value #IDEAL_NAME}
+     * @param body the body, speed and acceleration limits of the hardware, odometry rate
+     * @param maxDecelMps2 linear deceleration limit in m/s^2 (the acceleration limit is in {@code body}),
+     *     positive
+     * @param commandLatencyNs world time from a velocity command to the wheels starting to follow it, not
+     *     negative
+     * @param odometry how the odometry drifts
+     * @param laserTiming when the laser's beams are measured and its scans delivered
+     * @param topSpeedMps the top speed the controller is configured with (the paper's 0.1 m/s by default),
+     *     positive, at most the body's {@code maxSpeedMps}
+     * @throws IllegalArgumentException naming the field and the value if one is out of range
+     */
     public RobotModel {
         Objects.requireNonNull(name, "name");
         Objects.requireNonNull(body, "body");

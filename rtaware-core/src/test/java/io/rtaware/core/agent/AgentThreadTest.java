@@ -1,0 +1,120 @@
+package io.rtaware.core.agent;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import org.agrona.concurrent.Agent;
+import org.agrona.concurrent.NoOpIdleStrategy;
+import org.agrona.concurrent.SleepingMillisIdleStrategy;
+import org.junit.jupiter.api.Test;
+
+/** The contract of a background loop, on real threads, ordered by latches (no timing). */
+class AgentThreadTest {
+
+    /** Records on which thread each step ran; throws in its second and third duty cycles. */
+    private static final class Recorder implements Agent {
+        final List<String> steps = new CopyOnWriteArrayList<>();
+        final CountDownLatch fiveCycles = new CountDownLatch(5);
+        int cycles;
+
+        @Override
+        public void onStart() {
+            steps.add("start on " + Thread.currentThread().getName());
+        }
+
+        @Override
+        public int doWork() {
+            cycles++;
+            fiveCycles.countDown();
+            if (cycles == 2 || cycles == 3) {
+                throw new IllegalStateException("cycle " + cycles);
+            }
+            return 0;
+        }
+
+        @Override
+        public void onClose() {
+            steps.add("close on " + Thread.currentThread().getName());
+        }
+
+        @Override
+        public String roleName() {
+            return "test-agent";
+        }
+    }
+
+    @Test
+    void errorsGoToOneHandlerAndACounterAndTheLoopGoesOnUntilClosedOnItsOwnThread() throws Exception {
+        Recorder agent = new Recorder();
+        List<String> handled = new CopyOnWriteArrayList<>();
+        AgentThread loop = AgentThread.start(agent, NoOpIdleStrategy.INSTANCE, e -> handled.add(e.getMessage()));
+        assertTrue(agent.fiveCycles.await(10, TimeUnit.SECONDS), "the loop went on after the errors");
+        loop.close();
+
+        assertTrue(loop.isClosed(), "close returns once the agent has closed");
+        assertEquals(List.of("cycle 2", "cycle 3"), handled, "every error to the one handler, in order");
+        assertEquals(2, loop.errors(), "and counted");
+        assertEquals(List.of("start on test-agent", "close on test-agent"), agent.steps,
+                "onStart and onClose on the agent's own thread, named for its role");
+        loop.close(); // a second close does nothing
+    }
+
+    @Test
+    void closeFromTheAgentsOwnThreadStopsTheLoopWithoutAnError() throws Exception {
+        CountDownLatch closed = new CountDownLatch(1);
+        AgentThread[] self = new AgentThread[1];
+        CountDownLatch started = new CountDownLatch(1);
+        Agent agent = new Agent() {
+            @Override
+            public int doWork() throws InterruptedException {
+                started.await();
+                self[0].close();
+                return 0;
+            }
+
+            @Override
+            public void onClose() {
+                closed.countDown();
+            }
+
+            @Override
+            public String roleName() {
+                return "self-closing";
+            }
+        };
+        self[0] = AgentThread.start(agent, new SleepingMillisIdleStrategy(1), e -> { });
+        started.countDown();
+        assertTrue(closed.await(10, TimeUnit.SECONDS), "the loop ended and closed the agent");
+        self[0].close();
+        assertEquals(0, self[0].errors(), "stopping is not an error");
+    }
+
+    @Test
+    void anAgentBlockedInItsWorkIsInterruptedByCloseAfterTheTimeoutAndStops() throws Exception {
+        CountDownLatch blocked = new CountDownLatch(1);
+        Throwable[] seen = new Throwable[1];
+        Agent agent = new Agent() {
+            @Override
+            public int doWork() throws InterruptedException {
+                blocked.countDown();
+                new CountDownLatch(1).await(); // blocks until interrupted
+                return 0;
+            }
+
+            @Override
+            public String roleName() {
+                return "blocked";
+            }
+        };
+        AgentThread loop = AgentThread.start(agent, NoOpIdleStrategy.INSTANCE, e -> seen[0] = e);
+        assertTrue(blocked.await(10, TimeUnit.SECONDS));
+        loop.close();
+        assertTrue(loop.isClosed(), "close waited for the agent, interrupted after the timeout");
+        assertEquals(null, seen[0], "an interrupt stops the loop, as in Agrona; it is not an error");
+        assertEquals(0, loop.errors());
+    }
+}

@@ -1,0 +1,214 @@
+package io.rtaware.rt;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import io.rtaware.core.monitor.ExecutorKind;
+import io.rtaware.core.monitor.Monitor;
+import io.rtaware.core.monitor.TaskInfo;
+import io.rtaware.core.task.Schedule;
+import io.rtaware.core.task.Task;
+import io.rtaware.core.task.TaskSetup;
+import io.rtaware.core.time.SystemClock;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.time.Duration;
+import java.util.Collections;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
+import java.util.concurrent.CopyOnWriteArrayList;
+import org.junit.jupiter.api.Test;
+
+class RealtimeThreadsTest {
+
+    /** A kernel that refuses SCHED_FIFO with EPERM and records every call. */
+    private static final class DeniedSched implements LinuxSched {
+        final List<String> calls = new CopyOnWriteArrayList<>();
+
+        @Override
+        public int setFifo(int priority) {
+            calls.add("fifo " + priority);
+            return 1;
+        }
+
+        @Override
+        public int scheduler() {
+            return SCHED_OTHER;
+        }
+
+        @Override
+        public int priority() {
+            return 0;
+        }
+
+        @Override
+        public int pinTo(int cpu) {
+            calls.add("pin " + cpu);
+            return 0;
+        }
+
+        @Override
+        public int timerSlack(long slackNs) {
+            calls.add("slack " + slackNs);
+            return 0;
+        }
+    }
+
+    private static final TaskInfo TASK = new TaskInfo() {
+        @Override
+        public String name() {
+            return "a";
+        }
+
+        @Override
+        public int index() {
+            return 0;
+        }
+
+        @Override
+        public Schedule schedule() {
+            return Schedule.periodic(Duration.ofMillis(10));
+        }
+    };
+
+    @Test
+    void whenFifoIsDeniedOneLineSaysSoAndThreadsStayNormal() {
+        DeniedSched sched = new DeniedSched();
+        ByteArrayOutputStream buffer = new ByteArrayOutputStream();
+        PrintStream err = new PrintStream(buffer, true, StandardCharsets.UTF_8);
+        RealtimeThreads rt = RealtimeThreads.configure(sched, 80, Map.of("a", 1), err);
+        rt.onTaskThreadStart(TASK, 0, 2);
+        rt.onTaskThreadStart(TASK, 1, 2);
+
+        assertFalse(rt.fifo());
+        String printed = buffer.toString(StandardCharsets.UTF_8);
+        assertEquals(1, printed.lines().count(), printed);
+        assertTrue(printed.contains("SCHED_FIFO not permitted (EPERM"), printed);
+        assertTrue(printed.contains("running with normal threads"), printed);
+        // Only the probe asked for FIFO; every thread still got 1 ns slack and its CPU.
+        assertEquals(List.of("fifo 1", "slack 1", "pin 1", "slack 1", "pin 1"), sched.calls);
+        assertEquals(0, rt.fifoThreads());
+    }
+
+    @Test
+    void poolWorkersGetTheFastestPooledTasksPriorityAndNoPin() {
+        DeniedSched sched = new DeniedSched();
+        RealtimeThreads rt = RealtimeThreads.configure(sched, 80, Map.of("a", 1),
+                new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8));
+        sched.calls.clear();
+        rt.onPoolWorkerStart(0, 2, 5);
+        // FIFO is denied here, so only the slack is set; a pool worker is never pinned.
+        assertEquals(List.of("slack 1"), sched.calls, "a denied pool worker only gets timer slack");
+    }
+
+    @Test
+    void prioritiesAreRateMonotonicFromTheTop() {
+        RealtimeThreads rt = RealtimeThreads.configure(new DeniedSched(), 80, Map.of(),
+                new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8));
+        assertEquals(80, rt.priorityOf(0));
+        assertEquals(79, rt.priorityOf(1));
+        assertEquals(1, rt.priorityOf(200));
+    }
+
+    /** Where the machine permits it (root here), task threads really are SCHED_FIFO. */
+    @Test
+    void taskThreadsRunAsSchedFifoWherePermitted() throws Exception {
+        LinuxSched sched;
+        try {
+            sched = JnaLinuxSched.load();
+        } catch (UnsupportedOperationException e) {
+            assumeTrue(false, "no native access: " + e.getMessage());
+            return;
+        }
+        ByteArrayOutputStream buffer = new ByteArrayOutputStream();
+        RealtimeThreads rt = RealtimeThreads.configure(sched, 80, Map.of(),
+                new PrintStream(buffer, true, StandardCharsets.UTF_8));
+        assumeTrue(rt.fifo(), "SCHED_FIFO not permitted here: " + buffer);
+
+        List<Integer> policies = new CopyOnWriteArrayList<>();
+        LinuxSched probe = sched;
+        Task task = new Task() {
+            @Override
+            public void initialize(TaskSetup setup) {
+            }
+
+            @Override
+            public void execute(long nowNs) {
+                if (policies.isEmpty()) {
+                    policies.add(probe.scheduler());
+                }
+            }
+        };
+        Monitor monitor = Monitor.builder(new SystemClock()).threadSetup(rt)
+                .task("rt", Schedule.periodic(Duration.ofMillis(5)), task).build();
+        monitor.start();
+        long deadline = System.nanoTime() + 5_000_000_000L;
+        while (policies.isEmpty() && System.nanoTime() < deadline) {
+            Thread.onSpinWait();
+        }
+        monitor.stop();
+        assertEquals(List.of(LinuxSched.SCHED_FIFO), policies);
+        assertEquals(1, rt.fifoThreads());
+        assertEquals("", buffer.toString(StandardCharsets.UTF_8));
+        // The test thread itself was never touched.
+        assertEquals(LinuxSched.SCHED_OTHER, sched.scheduler());
+    }
+
+    /**
+     * Where the machine permits it (root here): with the pooled executor, the workers that run the
+     * periodic tasks are SCHED_FIFO at the priority of the fastest task (rank 0: the top priority).
+     * Before the pool's thread factory ran the thread setup, they stayed SCHED_OTHER.
+     */
+    @Test
+    void pooledWorkersRunAsSchedFifoAtTheTopPriorityWherePermitted() throws Exception {
+        LinuxSched sched;
+        try {
+            sched = JnaLinuxSched.load();
+        } catch (UnsupportedOperationException e) {
+            assumeTrue(false, "no native access: " + e.getMessage());
+            return;
+        }
+        ByteArrayOutputStream buffer = new ByteArrayOutputStream();
+        RealtimeThreads rt = RealtimeThreads.configure(sched, 70, Map.of(),
+                new PrintStream(buffer, true, StandardCharsets.UTF_8));
+        assumeTrue(rt.fifo(), "SCHED_FIFO not permitted here: " + buffer);
+
+        Set<String> seen = Collections.synchronizedSet(new TreeSet<>());
+        LinuxSched probe = sched;
+        Monitor.Builder builder = Monitor.builder(new SystemClock()).threadSetup(rt)
+                .executor(ExecutorKind.pooled(2, ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST));
+        for (int i = 0; i < 4; i++) {
+            builder.task("t" + i, Schedule.periodic(Duration.ofMillis(2 + i)), new Task() {
+                @Override
+                public void initialize(TaskSetup setup) {
+                }
+
+                @Override
+                public void execute(long nowNs) {
+                    seen.add(Thread.currentThread().getName() + " policy " + probe.scheduler()
+                            + " priority " + probe.priority());
+                }
+            });
+        }
+        Monitor monitor = builder.build();
+        monitor.start();
+        long deadline = System.nanoTime() + 5_000_000_000L;
+        while (seen.isEmpty() && System.nanoTime() < deadline) {
+            Thread.sleep(10);
+        }
+        Thread.sleep(100);
+        monitor.stop();
+        assertFalse(seen.isEmpty(), "the pooled tasks ran");
+        for (String thread : seen) {
+            assertTrue(thread.matches("rtaware-pool-[01] policy 1 priority 70"),
+                    "a cycle ran on a worker that is SCHED_FIFO (1) at the top priority: " + seen);
+        }
+        assertEquals(2, rt.fifoThreads(), "both workers, no task thread");
+        assertEquals("", buffer.toString(StandardCharsets.UTF_8));
+    }
+}
