@@ -142,7 +142,8 @@ public final class RobotRun {
                 throw new UserError("scenario '" + scenario.name() + "' has no map; the built-in simulator needs one (or use --player HOST:PORT)");
             }
             simulatorLog = BuiltInSimulatorLog.install(err);
-            server = SimCommandSupport.start(scenario, model, clock, ServerConfig.defaults(0), options.seed());
+            server = SimCommandSupport.start(scenario, model, clock, ServerConfig.defaults(0), options.seed(),
+                    options.robotSeed());
             host = ServerConfig.LOOPBACK;
             port = server.port();
         } else if (!externalRos2) {
@@ -258,8 +259,9 @@ public final class RobotRun {
             artifacts.section("recording", RecordOptions.finish(recorder, out, err));
             monitor.read(nav.keys().course(), course);
             long collisions = server != null ? server.withWorld(World::contactCount) : state.stallEdges();
+            Map<String, Object> robotErrors = server != null ? server.withWorld(w -> w.odometryBias().parameters()) : null;
             RunSection run = runSection(scenario, nav, course, referee, state.ending(),
-                    clock.nanos() - state.startNs(), collisions, server != null, List.copyOf(passes), model);
+                    clock.nanos() - state.startNs(), collisions, server != null, List.copyOf(passes), model, robotErrors);
             live.finish(report, run);
             if (link != null) {
                 artifacts.section("ros2", link.section());
@@ -522,7 +524,8 @@ public final class RobotRun {
 
     private RunSection runSection(Scenario scenario, NavController nav, CourseStatus course,
                                   Referee referee, RunState.Ending ending, long elapsedNs, long collisions,
-                                  boolean simulator, List<RunSection.WaypointPass> passes, RobotModel model) {
+                                  boolean simulator, List<RunSection.WaypointPass> passes, RobotModel model,
+                                  Map<String, Object> robotErrors) {
         double runTimeS = elapsedNs / 1e9;
         List<GroundTruthGap> gaps = referee == null ? List.of() : referee.gaps(runTimeS);
         double uncoveredS = 0;
@@ -546,7 +549,8 @@ public final class RobotRun {
                 mediator, referee == null ? "odometry" : referee.kind(), simulator ? "simulator" : "stall",
                 options.timeScale(), options.seed(), options.gridResolutionM(), counts.staleStops(), ending.reason(),
                 gaps, round3(Math.max(0, runTimeS - uncoveredS)), RunSection.COMPLETED_MEANS, passes,
-                robotModelSection(model, simulator), options.inflationMarginM());
+                robotModelSection(model, simulator), options.inflationMarginM(),
+                simulator ? options.robotSeed() : null, robotErrors);
     }
 
     private static Map<String, Object> robotModelSection(RobotModel model, boolean simulator) {

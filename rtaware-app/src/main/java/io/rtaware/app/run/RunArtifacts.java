@@ -160,9 +160,10 @@ final class RunArtifacts {
             sb.append(String.format(Locale.ROOT, "     waypoint %d believed passed at %.1f s: %.2f m from it in truth (%.2f m by odometry)%n",
                     p.index() + 1, p.tS(), p.trueDistanceM(), p.believedDistanceM()));
         }
-        sb.append(String.format(Locale.ROOT, "     scenario %s, periods %s, time scale x%s, seed %d, grid %.2f m, robot %s at %s m/s%n",
+        sb.append(String.format(Locale.ROOT, "     scenario %s, periods %s, time scale x%s, seed %d, grid %.2f m, robot %s at %s m/s%s%n",
                 r.scenario(), options.periods(), r.timeScale(), r.seed(), navConfig.grid().resolutionM(),
-                r.robotModel().get("name"), r.robotModel().get("top_speed_mps")));
+                r.robotModel().get("name"), r.robotModel().get("top_speed_mps"),
+                r.robotSeed() == null ? "" : ", robot seed " + r.robotSeed()));
         return sb.toString();
     }
 

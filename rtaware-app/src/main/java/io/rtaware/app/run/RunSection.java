@@ -38,6 +38,10 @@ import java.util.Map;
  * @param robotModel the simulated robot model's name and parameters ({@code name}: koala or
  *     ideal); for an external Player server {@code name} is {@code external}
  * @param inflationMarginM the clearance the planner added to the robot's radius, metres
+ * @param robotSeed the seed of the simulated robot's systematic odometry errors ({@code --robot-seed});
+ *     null for an external robot
+ * @param robotErrors the systematic errors that robot seed drew ({@code distance_scale_error},
+ *     {@code rotation_scale_error}, {@code heading_drift_rad_per_m}); null for an external robot
  */
 public record RunSection(String scenario, Map<String, Double> periodsMs, String outcome, boolean completed,
                          double runTimeS, int waypointsReached, int waypointsTotal, Double distanceToFinishM,
@@ -46,7 +50,7 @@ public record RunSection(String scenario, Map<String, Double> periodsMs, String 
                          double gridResolutionM, long staleStops, String reason,
                          List<GroundTruthGap> groundTruthGaps, double groundTruthCoveredS, String completedMeans,
                          List<WaypointPass> waypointPasses, Map<String, Object> robotModel,
-                         double inflationMarginM) {
+                         double inflationMarginM, Long robotSeed, Map<String, Object> robotErrors) {
 
     /** What {@code completed} means, written into every report. */
     public static final String COMPLETED_MEANS = "the robot, by its own estimate (odometry), passed every waypoint "

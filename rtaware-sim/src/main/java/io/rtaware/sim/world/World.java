@@ -60,7 +60,8 @@ public final class World {
     private final long odometryPeriodNs;
     private final long laserPeriodNs;
     private final SplittableRandom driftNoise;
-    /** This run's systematic odometry errors, drawn once at creation. */
+    /** The robot's systematic odometry errors, drawn from the robot seed. */
+    private final OdometryBias bias;
     private final double distanceScale;
     private final double rotationScale;
     private final double headingDriftRadPerM;
@@ -117,10 +118,28 @@ public final class World {
      * @param start the robot's initial pose (also the odometry's starting estimate)
      * @param model the robot model
      * @param laserConfig the laser's parameters
-     * @param seed seed of all noise and of the run's systematic odometry errors
+     * @param seed seed of all noise and also of the robot's systematic odometry errors (a new robot per seed)
      * @throws IllegalArgumentException if a sweeping laser's scan and delivery do not fit in its period
      */
     public World(OccupancyMap map, Pose2d start, RobotModel model, LaserConfig laserConfig, long seed) {
+        this(map, start, model, laserConfig, seed, seed);
+    }
+
+    /**
+     * Creates the world at time zero with the robot at {@code start}, publishing a first
+     * odometry and scan.
+     *
+     * @param map the world map
+     * @param start the robot's initial pose (also the odometry's starting estimate)
+     * @param model the robot model
+     * @param laserConfig the laser's parameters
+     * @param seed seed of this run's noise (laser ranges, odometry increments)
+     * @param robotSeed seed of the robot's systematic odometry errors ({@link OdometryBias}): the
+     *     same robot seed is the same robot in every run
+     * @throws IllegalArgumentException if a sweeping laser's scan and delivery do not fit in its period
+     */
+    public World(OccupancyMap map, Pose2d start, RobotModel model, LaserConfig laserConfig, long seed,
+                 long robotSeed) {
         this.map = Objects.requireNonNull(map, "map");
         this.model = Objects.requireNonNull(model, "model");
         this.robot = model.body();
@@ -130,10 +149,10 @@ public final class World {
         this.laserNoise = new SplittableRandom(seed);
         this.odometryNoise = new SplittableRandom(seed ^ ODOMETRY_SEED_SALT);
         this.driftNoise = new SplittableRandom(seed ^ DRIFT_SEED_SALT);
-        OdometryError e = model.odometry();
-        this.distanceScale = 1.0 + uniform(e.distanceScaleError());
-        this.rotationScale = 1.0 + uniform(e.rotationScaleError());
-        this.headingDriftRadPerM = uniform(e.headingDriftRadPerM());
+        this.bias = OdometryBias.draw(model.odometry(), robotSeed);
+        this.distanceScale = bias.distanceScale();
+        this.rotationScale = bias.rotationScale();
+        this.headingDriftRadPerM = bias.headingDriftRadPerM();
         this.odometryPeriodNs = robot.odometryPeriodNs();
         this.laserPeriodNs = laserConfig.periodNs();
         this.beamIntervalNs = laserPeriodNs * laserConfig.angleIncrementRad() / (2 * Math.PI);
@@ -150,11 +169,6 @@ public final class World {
         publishScan();
         nextOdometryNs = odometryPeriodNs;
         nextScanNs = laserPeriodNs;
-    }
-
-    /** A draw from [-bound, bound], or exactly 0 for a bound of 0 (no draw). */
-    private double uniform(double bound) {
-        return bound == 0 ? 0.0 : bound * (2 * driftNoise.nextDouble() - 1);
     }
 
     /**
@@ -196,6 +210,11 @@ public final class World {
     /** @return the robot model */
     public RobotModel model() {
         return model;
+    }
+
+    /** @return the robot's systematic odometry errors (drawn from the robot seed) */
+    public OdometryBias odometryBias() {
+        return bias;
     }
 
     /** @return the forward speed the wheels are following now (after the latency), m/s */
