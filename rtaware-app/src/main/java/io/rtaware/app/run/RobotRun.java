@@ -274,7 +274,9 @@ public final class RobotRun {
 
         monitor.start();
         long startNs = clock.nanos();
-        Referee referee = new Referee(clock, startNs, SAMPLE_PERIOD_NS, truth, () -> totalMisses(monitor)).start();
+        Odometry believed = new Odometry();
+        Referee referee = new Referee(clock, startNs, SAMPLE_PERIOD_NS, truth, () -> totalMisses(monitor),
+                () -> monitor.read(RobotKeys.ODOMETRY, believed) == 0 ? null : believed.pose()).start();
         MonitorView view = new MonitorView(monitor, nav, referee, safetyFault);
         Supervisor supervisor = new Supervisor(view, clock, System::nanoTime,
                 startNs, scenario.timeLimitS(), options.stuckAfterS());
@@ -449,9 +451,12 @@ public final class RobotRun {
             TaskCounters c = monitor.counters(task.index());
             misses.append(misses.length() == 0 ? "" : " ").append(task.name()).append('=').append(c.misses());
         }
-        String line = String.format(Locale.ROOT, "t=%6.1fs  waypoint %d of %d  %5.2f m to go  %5.1f m driven  misses: %s",
+        // Both distances are the controller's own, straight lines from its odometry pose: the
+        // true distances are in the report (distance_to_finish_m, waypoint_passes[]).
+        String line = String.format(Locale.ROOT,
+                "t=%6.1fs  waypoint %d of %d %5.2f m away, finish %5.2f m (straight, by odometry)  %5.1f m driven  misses: %s",
                 elapsedS, Math.min(course.waypointsReached + 1, course.waypointsTotal), course.waypointsTotal,
-                course.distanceToFinishM, referee.travelledM(), misses);
+                course.distanceToGoalM, course.distanceToFinishM, referee.travelledM(), misses);
         if (tty) {
             err.print("\r" + line + "   ");
         } else {
@@ -555,7 +560,12 @@ public final class RobotRun {
 
     private static Map<String, Object> robotModelSection(RobotModel model, boolean simulator) {
         if (simulator) {
-            return model.parameters();
+            Map<String, Object> p = model.parameters();
+            p.putAll(LaserConfig.URG_04LX.parameters());
+            Map<String, String> sources = RobotModel.sources();
+            sources.putAll(LaserConfig.urg04lxSources());
+            p.put("sources", sources);
+            return p;
         }
         Map<String, Object> external = new LinkedHashMap<>();
         external.put("name", "external");

@@ -111,8 +111,11 @@ final class RunArtifacts {
         }
         if (worldMap != null) {
             List<Pose2d> poses = samples.stream().map(Referee.Sample::pose).toList();
+            // The believed path only beside a measured true one (with odometry as the referee's source they are the same).
+            List<Pose2d> believed = referee == null || !"ground_truth".equals(referee.kind()) ? List.of()
+                    : samples.stream().map(Referee.Sample::believed).filter(java.util.Objects::nonNull).toList();
             if (writes.write(dir.resolve("trajectory.png"), () -> new WorldRenderer().writePng(scenario, worldMap, poses,
-                    referee == null ? List.of() : referee.missMarkers(), dir.resolve("trajectory.png")))) {
+                    believed, referee == null ? List.of() : referee.missMarkers(), dir.resolve("trajectory.png")))) {
                 names.add("trajectory.png");
             }
         }
@@ -179,10 +182,13 @@ final class RunArtifacts {
     }
 
     private static void writeTrajectoryCsv(Path file, List<Referee.Sample> samples) throws IOException {
-        StringBuilder sb = new StringBuilder("t_s,x_m,y_m,yaw_rad\n");
+        StringBuilder sb = new StringBuilder("t_s,x_m,y_m,yaw_rad,odom_x_m,odom_y_m,odom_yaw_rad\n");
         for (Referee.Sample s : samples) {
-            sb.append(String.format(Locale.ROOT, "%.3f,%.4f,%.4f,%.4f%n", s.tS(), s.pose().xM(), s.pose().yM(),
+            sb.append(String.format(Locale.ROOT, "%.3f,%.4f,%.4f,%.4f", s.tS(), s.pose().xM(), s.pose().yM(),
                     s.pose().yawRad()));
+            Pose2d b = s.believed();
+            sb.append(b == null ? ",,," : String.format(Locale.ROOT, ",%.4f,%.4f,%.4f", b.xM(), b.yM(), b.yawRad()));
+            sb.append('\n');
         }
         Files.writeString(file, sb);
     }

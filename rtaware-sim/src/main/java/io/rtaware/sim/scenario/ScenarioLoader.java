@@ -8,6 +8,7 @@ import io.rtaware.robot.geometry.Pose2d;
 import io.rtaware.sim.map.MapException;
 import io.rtaware.sim.map.MapLoader;
 import io.rtaware.sim.map.OccupancyMap;
+import io.rtaware.sim.world.LaserTiming;
 import io.rtaware.sim.world.RobotModel;
 import java.io.FileNotFoundException;
 import java.io.IOException;
@@ -27,8 +28,8 @@ import java.util.Optional;
  * path to a YAML file with the fields {@code map} (optional, a map_server YAML relative to the
  * scenario file), {@code start: {x, y, yaw}}, {@code waypoints: [{x, y}, ...]},
  * {@code goal_tolerance_m}, {@code time_limit_s} and optionally {@code robot: {model: koala|ideal,
- * PARAMETER: VALUE, ...}} (the robot model and overrides of its numeric parameters, named as in
- * {@link RobotModel#with(String, double)}). Unknown top-level fields are ignored. Failures are a
+ * laser_link: usb|serial, PARAMETER: VALUE, ...}} (the robot model, its laser's link and overrides of its
+ * numeric parameters, named as in {@link RobotModel#with(String, double)}). Unknown top-level fields are ignored. Failures are a
  * {@link ScenarioException} with a one-line message naming the file, the field and the value.
  * Stateless and thread-safe.
  */
@@ -189,6 +190,14 @@ public final class ScenarioLoader {
         for (Iterator<Map.Entry<String, JsonNode>> it = node.fields(); it.hasNext(); ) {
             Map.Entry<String, JsonNode> f = it.next();
             if (f.getKey().equals("model")) {
+                continue;
+            }
+            if (f.getKey().equals("laser_link")) {
+                try {
+                    model = model.withLaserLink(LaserTiming.Link.parse(f.getValue().asText()));
+                } catch (IllegalArgumentException e) {
+                    throw new ScenarioException(source + ": field 'robot.laser_link': " + e.getMessage(), e);
+                }
                 continue;
             }
             double v = number(source, node, "robot." + f.getKey(), f.getKey());

@@ -119,7 +119,6 @@ public final class World {
      * @param model the robot model
      * @param laserConfig the laser's parameters
      * @param seed seed of all noise and also of the robot's systematic odometry errors (a new robot per seed)
-     * @throws IllegalArgumentException if a sweeping laser's scan and delivery do not fit in its period
      */
     public World(OccupancyMap map, Pose2d start, RobotModel model, LaserConfig laserConfig, long seed) {
         this(map, start, model, laserConfig, seed, seed);
@@ -136,7 +135,6 @@ public final class World {
      * @param seed seed of this run's noise (laser ranges, odometry increments)
      * @param robotSeed seed of the robot's systematic odometry errors ({@link OdometryBias}): the
      *     same robot seed is the same robot in every run
-     * @throws IllegalArgumentException if a sweeping laser's scan and delivery do not fit in its period
      */
     public World(OccupancyMap map, Pose2d start, RobotModel model, LaserConfig laserConfig, long seed,
                  long robotSeed) {
@@ -156,11 +154,6 @@ public final class World {
         this.odometryPeriodNs = robot.odometryPeriodNs();
         this.laserPeriodNs = laserConfig.periodNs();
         this.beamIntervalNs = laserPeriodNs * laserConfig.angleIncrementRad() / (2 * Math.PI);
-        if (model.laserTiming().sweep()
-                && beamIntervalNs * (laserConfig.beams() - 1) + model.laserTiming().deliveryDelayNs() >= laserPeriodNs) {
-            throw new IllegalArgumentException("a laser sweep plus its delivery delay of "
-                    + model.laserTiming().deliveryDelayNs() + " ns must fit in the scan period of " + laserPeriodNs + " ns");
-        }
         placeAt(start);
         odoXM = xM;
         odoYM = yM;
