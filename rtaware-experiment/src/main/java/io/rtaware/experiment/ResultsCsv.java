@@ -25,7 +25,9 @@ import java.util.Map;
  * T_releases, T_misses, T_miss_pct, T_stale_runs, T_exec_p99_us,
  * then (added later, so appended): top_speed_mps, T_skipped for each task,
  * mediator_obstacle_cycles, mediator_waypoint_cycles, mediator_stop_cycles,
- * T_max_safe_period_ms for each task, robot_seed (the run's), robots (the plan's count)
+ * T_max_safe_period_ms for each task, robot_seed (the run's), robots (the plan's count),
+ * min_clearance_m (the nearest the robot's body came to any obstacle), near_misses (approaches
+ * within the simulator's 0.05 m margin that did not touch)
  * </pre>
  *
  * RFC 4180 quoting; an empty field is a value the run did not give (an {@code error} row, or
@@ -72,7 +74,7 @@ public final class ResultsCsv {
         for (String task : PeriodSet.TASKS) {
             h.add(task + "_max_safe_period_ms");
         }
-        h.addAll(List.of("robot_seed", "robots"));
+        h.addAll(List.of("robot_seed", "robots", "min_clearance_m", "near_misses"));
         return List.copyOf(h);
     }
 
@@ -194,6 +196,8 @@ public final class ResultsCsv {
         }
         f.add(Long.toString(r.conditions().robotSeedOf(r.run())));
         f.add(Integer.toString(r.conditions().robots()));
+        f.add(r.minClearanceM() == null ? "" : number(r.minClearanceM()));
+        f.add(r.nearMisses() == null ? "" : r.nearMisses().toString());
         return String.join(",", f);
     }
 
@@ -336,7 +340,8 @@ public final class ResultsCsv {
         return new RunResult(Integer.parseInt(row.get("set")), run, set, conditions,
                 row.get("outcome"), decimal(row.get("run_time_s")), decimal(row.get("distance_to_finish_m")),
                 decimal(row.get("distance_travelled_m")), optionalInt(row.get("collisions")),
-                optionalInt(row.get("waypoints_reached")), optionalInt(row.get("waypoints_total")), tasks, mediator);
+                optionalInt(row.get("waypoints_reached")), optionalInt(row.get("waypoints_total")), tasks, mediator,
+                optionalDouble(row.get("min_clearance_m")), optionalLong(row.get("near_misses")));
     }
 
     private static String number(double v) {

@@ -260,8 +260,10 @@ public final class RobotRun {
             monitor.read(nav.keys().course(), course);
             long collisions = server != null ? server.withWorld(World::contactCount) : state.stallEdges();
             Map<String, Object> robotErrors = server != null ? server.withWorld(w -> w.odometryBias().parameters()) : null;
+            double[] safety = server != null ? server.withWorld(w -> new double[] {w.minClearanceM(), w.nearMisses()}) : null;
             RunSection run = runSection(scenario, nav, course, referee, state.ending(),
-                    clock.nanos() - state.startNs(), collisions, server != null, List.copyOf(passes), model, robotErrors);
+                    clock.nanos() - state.startNs(), collisions, server != null, List.copyOf(passes), model, robotErrors,
+                    safety);
             live.finish(report, run);
             if (link != null) {
                 artifacts.section("ros2", link.section());
@@ -530,7 +532,7 @@ public final class RobotRun {
     private RunSection runSection(Scenario scenario, NavController nav, CourseStatus course,
                                   Referee referee, RunState.Ending ending, long elapsedNs, long collisions,
                                   boolean simulator, List<RunSection.WaypointPass> passes, RobotModel model,
-                                  Map<String, Object> robotErrors) {
+                                  Map<String, Object> robotErrors, double[] safety) {
         double runTimeS = elapsedNs / 1e9;
         List<GroundTruthGap> gaps = referee == null ? List.of() : referee.gaps(runTimeS);
         double uncoveredS = 0;
@@ -555,7 +557,9 @@ public final class RobotRun {
                 options.timeScale(), options.seed(), options.gridResolutionM(), counts.staleStops(), ending.reason(),
                 gaps, round3(Math.max(0, runTimeS - uncoveredS)), RunSection.COMPLETED_MEANS, passes,
                 robotModelSection(model, simulator), options.inflationMarginM(),
-                simulator ? options.robotSeed() : null, robotErrors);
+                simulator ? options.robotSeed() : null, robotErrors, safety == null ? null : round3(safety[0]),
+                safety == null ? null : (long) safety[1], safety == null ? null : World.NEAR_MISS_MARGIN_M,
+                safety == null ? null : World.CLEARANCE_LIMIT_M);
     }
 
     private static Map<String, Object> robotModelSection(RobotModel model, boolean simulator) {

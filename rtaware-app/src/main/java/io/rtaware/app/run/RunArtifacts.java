@@ -136,6 +136,11 @@ final class RunArtifacts {
                 r.distanceToFinishM() == null ? "unknown (no ground truth at the end)"
                         : String.format(Locale.ROOT, "%.2f m", r.distanceToFinishM()),
                 r.distanceTravelledM(), r.collisions(), r.measuredOn().replace('_', ' ')));
+        if (r.minClearanceM() != null) {
+            sb.append(String.format(Locale.ROOT, "     nearest approach %s%.3f m to an obstacle, %d near miss(es) (within %.2f m without touching)%n",
+                    r.minClearanceM() >= r.clearanceLimitM() ? "at least " : "", r.minClearanceM(), r.nearMisses(),
+                    r.nearMissMarginM()));
+        }
         if (!r.groundTruthGaps().isEmpty()) {
             StringBuilder spans = new StringBuilder();
             for (GroundTruthGap g : r.groundTruthGaps()) {

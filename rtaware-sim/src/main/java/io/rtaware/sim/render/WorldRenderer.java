@@ -2,6 +2,8 @@ package io.rtaware.sim.render;
 
 import io.rtaware.robot.geometry.Point2d;
 import io.rtaware.robot.geometry.Pose2d;
+import io.rtaware.sim.actor.ActorShape;
+import io.rtaware.sim.actor.ActorSpec;
 import io.rtaware.sim.map.OccupancyMap;
 import io.rtaware.sim.scenario.Scenario;
 import java.awt.BasicStroke;
@@ -27,7 +29,9 @@ import javax.imageio.ImageIO;
  * tolerance circles numbered 1..n, the finish in red, and optionally a driven trajectory (a
  * dark blue polyline), the path the robot believed it drove (its odometry, a dashed purple
  * polyline) and markers (orange crosses, e.g. where deadlines were missed); a legend of what is
- * drawn (top right) and a 1 m scale bar (bottom left).
+ * drawn (top right) and a 1 m scale bar (bottom left). The scenario's actors are drawn where
+ * they start, bodies filled in orange with their paths dashed, doors and obstacles outlined with
+ * the time they close or appear.
  * Without a map, the picture spans the scenario's points with a margin. Immutable and
  * thread-safe (each call draws on its own image).
  */
@@ -42,6 +46,8 @@ public final class WorldRenderer {
     private static final Color PATH = new Color(0x10, 0x20, 0x70);
     private static final Color MARKER = new Color(0xF0, 0x80, 0x00);
     private static final Color BELIEVED = new Color(0xC0, 0x30, 0xB0);
+    private static final Color ACTOR = new Color(0xE0, 0x60, 0x10);
+    private static final Color ACTOR_PATH = new Color(0x90, 0x60, 0x30);
     private static final int LEGEND_FONT_PX = 13;
 
     private final double pixelsPerM;
@@ -149,10 +155,11 @@ public final class WorldRenderer {
             g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
             View v = new View(minX, maxY, pixelsPerM);
             drawCourse(g, v, scenario);
+            drawActors(g, v, scenario.actors());
             drawPath(g, v, believed, BELIEVED, true);
             drawPath(g, v, trajectory, PATH, false);
             drawMarkers(g, v, markers);
-            drawLegend(g, w, h, trajectory.size() >= 2, believed.size() >= 2, !markers.isEmpty());
+            drawLegend(g, w, h, trajectory.size() >= 2, believed.size() >= 2, !markers.isEmpty(), scenario.actors());
             drawScaleBar(g, h);
         } finally {
             g.dispose();
@@ -293,8 +300,73 @@ public final class WorldRenderer {
                 new float[] {6 * width, 4 * width}, 0f) : new BasicStroke(width);
     }
 
+    /**
+     * The actors where they start: a body filled, with its path (a thin line, an arrow head at
+     * the end of each pass), a door or an obstacle outlined with the time it closes or appears.
+     */
+    private void drawActors(Graphics2D g, View v, List<ActorSpec> actors) {
+        Font font = new Font(Font.SANS_SERIF, Font.PLAIN, LEGEND_FONT_PX - 1);
+        g.setFont(font);
+        for (ActorSpec a : actors) {
+            List<Point2d> path = a.path();
+            if (a.moves()) {
+                Path2D.Double line = new Path2D.Double();
+                line.moveTo(v.px(path.get(0).xM()), v.py(path.get(0).yM()));
+                for (int i = 1; i < path.size(); i++) {
+                    line.lineTo(v.px(path.get(i).xM()), v.py(path.get(i).yM()));
+                }
+                if (a.repeat() == ActorSpec.Repeat.LOOP) {
+                    line.closePath();
+                }
+                g.setColor(ACTOR_PATH);
+                g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f, new float[] {3f, 3f}, 0f));
+                g.draw(line);
+                Point2d from = path.get(path.size() - 2);
+                Point2d to = path.get(path.size() - 1);
+                double ang = Math.atan2(-(to.yM() - from.yM()), to.xM() - from.xM());
+                double tx = v.px(to.xM());
+                double ty = v.py(to.yM());
+                g.setStroke(new BasicStroke(1.5f));
+                g.draw(new Line2D.Double(tx, ty, tx - 8 * Math.cos(ang - 0.4), ty - 8 * Math.sin(ang - 0.4)));
+                g.draw(new Line2D.Double(tx, ty, tx - 8 * Math.cos(ang + 0.4), ty - 8 * Math.sin(ang + 0.4)));
+            }
+            Point2d at = path.get(0);
+            java.awt.Shape outline = outline(v, a.shape(), at);
+            String label = a.name() + switch (a.kind()) {
+                case BODY -> a.moves() ? String.format(java.util.Locale.ROOT, " %.1f m/s", a.speedMps()) : "";
+                case DOOR -> String.format(java.util.Locale.ROOT, " closes at %.0f s", a.appearAtS());
+                case OBSTACLE -> String.format(java.util.Locale.ROOT, " appears at %.0f s", a.appearAtS());
+            };
+            if (a.kind() == ActorSpec.Kind.BODY) {
+                g.setColor(ACTOR);
+                g.fill(outline);
+            } else {
+                g.setColor(ACTOR);
+                g.setStroke(new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f, new float[] {4f, 3f}, 0f));
+                g.draw(outline);
+            }
+            g.setColor(ACTOR.darker());
+            java.awt.Rectangle r = outline.getBounds();
+            g.drawString(label, r.x + r.width + 3, r.y + r.height / 2 + 4);
+        }
+    }
+
+    private static java.awt.Shape outline(View v, ActorShape shape, Point2d at) {
+        double cx = v.px(at.xM());
+        double cy = v.py(at.yM());
+        if (shape instanceof ActorShape.Circle c) {
+            double r = c.radiusM() * v.scale();
+            return new Ellipse2D.Double(cx - r, cy - r, 2 * r, 2 * r);
+        }
+        ActorShape.Box b = (ActorShape.Box) shape;
+        double w = b.widthM() * v.scale();
+        double h = b.heightM() * v.scale();
+        return new java.awt.geom.Rectangle2D.Double(cx - w / 2, cy - h / 2, w, h);
+    }
+
     /** The legend, top right: one line per kind of thing drawn. */
-    private void drawLegend(Graphics2D g, int w, int h, boolean truePath, boolean believedPath, boolean markers) {
+    private void drawLegend(Graphics2D g, int w, int h, boolean truePath, boolean believedPath, boolean markers,
+                            List<ActorSpec> actors) {
         List<String> labels = new ArrayList<>();
         List<Color> colours = new ArrayList<>();
         List<Integer> kinds = new ArrayList<>(); // 0 line, 1 dashed, 2 cross, 3 circle
@@ -312,6 +384,16 @@ public final class WorldRenderer {
             labels.add("deadline missed");
             colours.add(MARKER);
             kinds.add(2);
+        }
+        if (actors.stream().anyMatch(ActorSpec::moves)) {
+            labels.add("person or body at its start, its path");
+            colours.add(ACTOR);
+            kinds.add(4);
+        }
+        if (actors.stream().anyMatch(a -> a.kind() != ActorSpec.Kind.BODY)) {
+            labels.add("door or obstacle, from the time shown");
+            colours.add(ACTOR);
+            kinds.add(5);
         }
         labels.add("waypoint (tolerance)");
         colours.add(WAYPOINT);
@@ -347,6 +429,11 @@ public final class WorldRenderer {
                     g.setStroke(new BasicStroke(1.5f));
                     g.draw(new Line2D.Double(x0 + 13, cy - 5, x0 + 23, cy + 5));
                     g.draw(new Line2D.Double(x0 + 13, cy + 5, x0 + 23, cy - 5));
+                }
+                case 4 -> g.fill(new Ellipse2D.Double(x0 + 12, cy - 6, 12, 12));
+                case 5 -> {
+                    g.setStroke(new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f, new float[] {4f, 3f}, 0f));
+                    g.draw(new java.awt.geom.Rectangle2D.Double(x0 + 10, cy - 5, 16, 10));
                 }
                 default -> {
                     g.setStroke(new BasicStroke(1.5f));

@@ -75,7 +75,7 @@ public final class SimCommandSupport {
     }
 
     /**
-     * The world of a scenario, at time zero.
+     * The world of a scenario, with its actors, at time zero.
      *
      * @param scenario the scenario; it must have a map
      * @param model the robot model
@@ -87,7 +87,7 @@ public final class SimCommandSupport {
     public static World world(Scenario scenario, RobotModel model, long seed, long robotSeed) {
         OccupancyMap map = scenario.map().orElseThrow(() -> new IllegalArgumentException(
                 "scenario '" + scenario.name() + "' has no map: the simulator needs one"));
-        return new World(map, scenario.start(), model, LaserConfig.URG_04LX, seed, robotSeed);
+        return new World(map, scenario.start(), model, LaserConfig.URG_04LX, seed, robotSeed, scenario.actors());
     }
 
     /**
