@@ -198,9 +198,11 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
      *     it stands, in metres (command latency plus braking; default 0.01, braking at 0.5 m/s^2)
      * @param laserDelayNs age of a laser scan when it is delivered, ns (sweep and transfer;
      *     default 0, an instantaneous laser)
+     * @param obstacleSpeedMps how fast obstacles may move toward the robot, m/s (default 0: they
+     *     stand still); the avoider's reaction rule closes the gap at the sum of both speeds
      */
     public record Robot(double radiusM, double topSpeedMps, double maxOmegaRadPerSec, double stoppingDistanceM,
-                        long laserDelayNs) {
+                        long laserDelayNs, double obstacleSpeedMps) {
         /** @throws IllegalArgumentException naming the bad value */
         public Robot {
             nonNegative("robotRadiusM", radiusM);
@@ -210,6 +212,7 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
             if (laserDelayNs < 0) {
                 throw new IllegalArgumentException("laserDelayNs must be >= 0, got " + laserDelayNs);
             }
+            nonNegative("obstacleSpeedMps", obstacleSpeedMps);
         }
     }
 
@@ -321,6 +324,7 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
         private double maxOmegaRadPerSec = 0.5;
         private double stoppingDistanceM = 0.01;
         private long laserDelayNs;
+        private double obstacleSpeedMps;
         private double lookaheadM = 0.3;
         private double turnInPlaceRad = 0.8;
         private double goalToleranceM = 0.25;
@@ -443,6 +447,15 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
             return this;
         }
 
+        /**
+         * @param mps how fast obstacles may move toward the robot (a scenario's fastest actor), m/s
+         * @return this
+         */
+        public Builder obstacleSpeedMps(double mps) {
+            obstacleSpeedMps = mps;
+            return this;
+        }
+
         /** @param m pure-pursuit lookahead in metres @return this */
         public Builder lookaheadM(double m) {
             lookaheadM = m;
@@ -527,7 +540,8 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
                     new Planner(inflationMarginM, unknownCostFactor),
                     new Follower(lookaheadM, turnInPlaceRad, goalToleranceM),
                     new Avoider(avoidRangeM, avoidHalfAngleRad, avoidStopRangeM, avoidSpeedMps),
-                    new Robot(robotRadiusM, topSpeedMps, maxOmegaRadPerSec, stoppingDistanceM, laserDelayNs),
+                    new Robot(robotRadiusM, topSpeedMps, maxOmegaRadPerSec, stoppingDistanceM, laserDelayNs,
+                            obstacleSpeedMps),
                     new MaxAges(laserMaxAgeNs, odometryMaxAgeNs, avoidAge, waypointAge),
                     new Course(waypoints, externalWaypoints));
         }

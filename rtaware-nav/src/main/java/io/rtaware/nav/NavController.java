@@ -94,7 +94,8 @@ public final class NavController {
     /**
      * The avoider's reaction: what it sees at its safety range, minus the robot's radius (the
      * laser sits at the centre; the body ends a radius ahead), must be stopped short of, at the
-     * robot's top speed, with its stopping distance, from scans as old as the laser's delay.
+     * robot's top speed (plus the obstacles' own speed where the scenario says they move), with
+     * its stopping distance, from scans as old as the laser's delay.
      * Null when the zone does not reach beyond the body (nothing to declare).
      */
     private static ReactionConstraint reaction(NavConfig config) {
@@ -103,7 +104,8 @@ public final class NavController {
             return null;
         }
         return new ReactionConstraint(RobotKeys.LASER.name(), config.robot().topSpeedMps(),
-                config.robot().stoppingDistanceM(), rangeM, config.robot().laserDelayNs() / 1e6);
+                config.robot().stoppingDistanceM(), rangeM, config.robot().laserDelayNs() / 1e6,
+                config.robot().obstacleSpeedMps());
     }
 
     private static TaskSpec spec(String name, long periodNs, io.rtaware.core.task.Task task) {

@@ -472,6 +472,7 @@ public final class RobotRun {
                 .topSpeedMps(model.topSpeedMps())
                 .inflationMarginM(options.inflationMarginM())
                 .reactionLimits(model.stoppingDistanceM(model.topSpeedMps()), model.laserDelayNs(LaserConfig.URG_04LX))
+                .obstacleSpeedMps(scenario.fastestActorMps())
                 .periodsNs(options.periods().nanosByTask())
                 .goalToleranceM(scenario.goalToleranceM())
                 .waypoints(scenario.waypoints());
