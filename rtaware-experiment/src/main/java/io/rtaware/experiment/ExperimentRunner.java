@@ -220,11 +220,12 @@ public final class ExperimentRunner {
         RunConditions c = plan.conditions();
         RunConditions rc = r.conditions();
         if (!c.scenario().equals(rc.scenario()) || c.timeScale() != rc.timeScale() || c.seed() != rc.seed()
-                || !Objects.equals(c.gridResolutionM(), rc.gridResolutionM())) {
+                || !Objects.equals(c.gridResolutionM(), rc.gridResolutionM()) || c.robotSeedOf(r.run()) != rc.robotSeedOf(r.run())) {
             throw new ExperimentInputException(where + " was made with scenario " + rc.scenario() + ", time scale "
-                    + rc.timeScale() + ", seed " + rc.seed() + ", grid " + gridLabel(rc.gridResolutionM())
-                    + "; now scenario " + c.scenario() + ", time scale " + c.timeScale() + ", seed " + c.seed()
-                    + ", grid " + gridLabel(c.gridResolutionM()) + "; use the same options or another --out");
+                    + rc.timeScale() + ", seed " + rc.seed() + ", grid " + gridLabel(rc.gridResolutionM()) + ", robot seed "
+                    + rc.robotSeedOf(r.run()) + "; now scenario " + c.scenario() + ", time scale " + c.timeScale() + ", seed "
+                    + c.seed() + ", grid " + gridLabel(c.gridResolutionM()) + ", robot seed " + c.robotSeedOf(r.run())
+                    + "; use the same options or another --out");
         }
     }
 

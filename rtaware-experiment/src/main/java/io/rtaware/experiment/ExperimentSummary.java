@@ -64,12 +64,23 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
      *     on the period axis of the figures and claims)
      * @param mediatorCycles cycles the position mediator gave each winner, summed over the measured
      *     runs that report them; empty when none does
+     * @param minClearanceM the smallest clearance of the robot's body in each measured run that
+     *     reports it, metres
+     * @param nearMisses near misses summed over the measured runs that report them, or null when none does
+     * @param runsWithNearMisses measured runs with at least one near miss
      */
     public record SetSummary(int set, String name, Map<String, Long> periodsMs, int runs, int completed,
                              Map<String, Integer> outcomes, SampleStats runTimeS, SampleStats distanceToFinishM,
                              SampleStats distanceTravelledM, long collisions, Map<String, Misses> misses,
                              Double topSpeedMps, int measuredRuns, int runsWithCollisions, Long sweptPeriodMs,
-                             Map<String, Long> mediatorCycles) {
+                             Map<String, Long> mediatorCycles, SampleStats minClearanceM, Long nearMisses,
+                             int runsWithNearMisses) {
+
+        /** @return the share of measured runs with a near miss, 0 to 1, or null with no measured run */
+        @JsonProperty("near_miss_rate")
+        public Double nearMissRate() {
+            return measuredRuns == 0 ? null : (double) runsWithNearMisses / measuredRuns;
+        }
 
         /** @return the share of runs that completed the course, 0 to 1, or null with no runs */
         @JsonProperty("completion_rate")
@@ -137,7 +148,7 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
             }
             tests.put(quantity, pairs);
         }
-        PaperClaims.Verdicts verdicts = PaperClaims.evaluate(sets, tests);
+        PaperClaims.Verdicts verdicts = PaperClaims.evaluate(sets, tests, profile.scenario());
         return new ExperimentSummary(SCHEMA, profile, sets, tests, PaperReference.published(), swept,
                 verdicts.claims(), verdicts.notEvaluated());
     }
@@ -211,11 +222,16 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
                 mediator.put(winner, cycles);
             }
         }
+        double[] clearances = measured.stream().map(RunResult::minClearanceM).filter(java.util.Objects::nonNull)
+                .mapToDouble(Double::doubleValue).toArray();
+        Long nearMisses = sumOrNull(measured.stream().map(RunResult::nearMisses).toList());
+        int withNearMisses = (int) measured.stream().filter(r -> r.nearMisses() != null && r.nearMisses() > 0).count();
         return new SetSummary(set, first.periods().name(), first.periods().periodsMs(), runs.size(),
                 (int) runs.stream().filter(RunResult::completed).count(), outcomes,
                 SampleStats.of(sample(runs, "run_time_s")), SampleStats.of(sample(runs, "distance_to_finish_m")),
                 SampleStats.of(sample(runs, "distance_travelled_m")), collisions, misses, first.periods().topSpeedMps(),
-                measured.size(), withCollisions, sweptPeriodMs, mediator);
+                measured.size(), withCollisions, sweptPeriodMs, mediator, SampleStats.of(clearances), nearMisses,
+                withNearMisses);
     }
 
     private static Long sumOrNull(List<Long> values) {

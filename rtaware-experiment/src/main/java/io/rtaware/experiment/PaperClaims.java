@@ -95,6 +95,10 @@ public final class PaperClaims {
     public static final double SAME_DISTANCE = 0.15;
 
     static final String SLOW = "periods above 100 ms: the robot hits walls and obstacles";
+    static final String RULE = "the reaction rule: collisions begin near its largest safe period";
+    private static final String PAPER_COURSE = "paper-room";
+    /** The rule's bound counts as near when the first period with a collision is at most this many times it. */
+    public static final double RULE_NEAR = 2.0;
     static final String FAST = "periods of 5 ms or less: the system locks up";
     static final String MISSES_FALL = "misses fall as periods grow";
     static final String T_SET1 = "Table I t-tests: the run times of Sets 1 and 4, and of Sets 1 and 5, are statistically "
@@ -124,10 +128,24 @@ public final class PaperClaims {
      * @return the verdicts, in a fixed order of claims
      */
     public static Verdicts evaluate(List<SetSummary> sets, Map<String, List<PairTest>> tests) {
+        return evaluate(sets, tests, null);
+    }
+
+    /**
+     * @param sets the experiment's sets, summarized
+     * @param tests its Welch tests per quantity
+     * @param scenario the experiment's scenario, named in the claims that depend on the course
+     *     (the collision claim and the reaction rule's) unless it is the paper's room, or null
+     * @return the verdicts, in a fixed order of claims
+     */
+    public static Verdicts evaluate(List<SetSummary> sets, Map<String, List<PairTest>> tests, String scenario) {
         PaperClaims c = new PaperClaims(sets, tests);
         Map<String, List<SetSummary>> bySpeed = new LinkedHashMap<>();
         sets.forEach(s -> bySpeed.computeIfAbsent(speedLabel(s.topSpeedMps()), k -> new ArrayList<>()).add(s));
-        bySpeed.forEach((speed, group) -> c.slow(group, bySpeed.size() > 1 ? " (at " + speed + ")" : ""));
+        // The paper's claims keep their names on the paper's course; another course is named in them.
+        String on = scenario == null || PAPER_COURSE.equals(scenario) ? "" : " on " + scenario;
+        bySpeed.forEach((speed, group) -> c.slow(group, on + (bySpeed.size() > 1 ? " (at " + speed + ")" : "")));
+        bySpeed.forEach((speed, group) -> c.rule(group, on + (bySpeed.size() > 1 ? " (at " + speed + ")" : "")));
         bySpeed.forEach((speed, group) -> c.fast(group, bySpeed.size() > 1 ? " (at " + speed + ")" : ""));
         c.missesFall();
         Map<Integer, SetSummary> paper = c.paperSets();
@@ -159,7 +177,8 @@ public final class PaperClaims {
         List<String> parts = new ArrayList<>();
         for (SetSummary s : above) {
             parts.add(s.name() + " (" + s.sweptPeriodMs() + " ms): " + s.runsWithCollisions() + " of " + s.measuredRuns()
-                    + " runs collided (" + s.collisions() + " collisions), " + s.completed() + " of " + s.runs() + " completed");
+                    + " runs collided (" + s.collisions() + " collisions), " + s.completed() + " of " + s.runs() + " completed"
+                    + (s.nearMisses() == null ? "" : ", " + s.runsWithNearMisses() + " with a near miss"));
         }
         String evidence = String.join("; ", parts) + ". At or below " + SLOW_ABOVE_MS + " ms: "
                 + (belowRuns == 0 ? "no runs" : belowHits + " of " + belowRuns + " runs collided") + ". "
@@ -168,6 +187,51 @@ public final class PaperClaims {
                 + " ms has a collision in at least " + pct(MAJORITY) + " of its runs and the sets at or below "
                 + SLOW_ABOVE_MS + " ms (if any) in fewer than " + pct(MAJORITY) + "; not reproduced if no run above "
                 + SLOW_ABOVE_MS + " ms collided; mixed otherwise"));
+    }
+
+    /**
+     * The reaction rule judged by the runs: its largest safe period (mean of the runs' advice)
+     * against the shortest swept period at which a run collided.
+     */
+    private void rule(List<SetSummary> group, String suffix) {
+        String claim = RULE + suffix;
+        Double bound = ruleBound(group);
+        List<SetSummary> axis = onAxis(group).stream().filter(s -> s.measuredRuns() > 0).toList();
+        if (bound == null || axis.size() < 2) {
+            notEvaluated.add(new NotEvaluated(claim, bound == null ? "no run reports the reaction rule's largest safe period"
+                    : "fewer than two swept periods with runs on the course" + periodsHere(group)));
+            return;
+        }
+        var first = axis.stream().filter(s -> s.runsWithCollisions() > 0).min(Comparator.comparingLong(SetSummary::sweptPeriodMs));
+        long longest = axis.stream().mapToLong(SetSummary::sweptPeriodMs).max().orElseThrow();
+        Verdict v;
+        String evidence;
+        if (first.isEmpty()) {
+            v = longest > RULE_NEAR * bound ? Verdict.NOT_REPRODUCED : Verdict.MIXED;
+            evidence = "largest safe period " + num(bound, 1) + " ms; no run collided up to " + longest + " ms ("
+                    + num(longest / bound, 2) + " x the bound)";
+        } else {
+            double ratio = first.get().sweptPeriodMs() / bound;
+            v = ratio < 1 ? Verdict.NOT_REPRODUCED : ratio <= RULE_NEAR ? Verdict.REPRODUCED : Verdict.MIXED;
+            evidence = "largest safe period " + num(bound, 1) + " ms; the shortest period with a collision is "
+                    + first.get().sweptPeriodMs() + " ms (" + first.get().name() + ", " + first.get().runsWithCollisions()
+                    + " of " + first.get().measuredRuns() + " runs), " + num(ratio, 2) + " x the bound";
+        }
+        claims.add(new Claim(claim, v, evidence + ".", "reproduced if the shortest swept period at which a run collided "
+                + "lies between the bound and " + num(RULE_NEAR, 1) + " x the bound; not reproduced if runs collided below "
+                + "the bound (the rule is unsafe) or none collided up to beyond " + num(RULE_NEAR, 1) + " x it (the rule is "
+                + "far too cautious); mixed otherwise"));
+    }
+
+    private static Double ruleBound(List<SetSummary> group) {
+        for (String task : PeriodSet.TASKS) {
+            double[] bounds = group.stream().map(s -> s.misses().get(task).maxSafePeriodMsMean()).filter(Objects::nonNull)
+                    .mapToDouble(Double::doubleValue).toArray();
+            if (bounds.length > 0) {
+                return java.util.Arrays.stream(bounds).average().orElseThrow();
+            }
+        }
+        return null;
     }
 
     private static String firstCollision(List<SetSummary> group) {

@@ -23,8 +23,8 @@ import java.util.TreeMap;
  *
  * <pre>
  * {"schema": "rtaware.experiment-plan/1", "sets": [{"name": "Set 1", "periods_ms": {...}, "top_speed_mps": null}, ...],
- *  "runs_per_set": 10, "scenario": "paper-room", "time_scale": 10.0, "seed": 1, "grid_resolution_m": null,
- *  "shard": "1/2"}
+ *  "runs_per_set": 10, "scenario": "paper-room", "time_scale": 10.0, "seed": 1, "robot_seed": 1, "robots": 1,
+ *  "grid_resolution_m": null, "shard": "1/2"}
  * </pre>
  *
  * A folder made before this file existed gives its plan from {@code experiment.json} and the sets
@@ -63,6 +63,8 @@ public final class PlanFile {
         root.put("scenario", c.scenario());
         root.put("time_scale", c.timeScale());
         root.put("seed", c.seed());
+        root.put("robot_seed", c.robotSeed());
+        root.put("robots", c.robots());
         if (c.gridResolutionM() == null) {
             root.putNull("grid_resolution_m");
         } else {
@@ -100,9 +102,13 @@ public final class PlanFile {
                 sets.add(new PeriodSet(required(s, "name").asText(), periods, speed.isNumber() ? speed.asDouble() : null));
             }
             JsonNode grid = root.path("grid_resolution_m");
+            JsonNode robotSeed = root.path("robot_seed");
+            JsonNode robots = root.path("robots");
             RunConditions conditions = new RunConditions(required(root, "scenario").asText(),
                     required(root, "time_scale").asDouble(), required(root, "seed").asLong(),
-                    grid.isNumber() ? grid.asDouble() : null);
+                    grid.isNumber() ? grid.asDouble() : null,
+                    robotSeed.isNumber() ? robotSeed.asLong() : RunConditions.DEFAULT_ROBOT_SEED,
+                    robots.isNumber() ? robots.asInt() : 1);
             JsonNode shard = root.path("shard");
             return Optional.of(new ExperimentPlan(sets, required(root, "runs_per_set").asInt(), conditions,
                     shard.isTextual() ? Shard.parse(shard.asText()) : Shard.WHOLE));

@@ -25,7 +25,9 @@ import java.util.Map;
  * T_releases, T_misses, T_miss_pct, T_stale_runs, T_exec_p99_us,
  * then (added later, so appended): top_speed_mps, T_skipped for each task,
  * mediator_obstacle_cycles, mediator_waypoint_cycles, mediator_stop_cycles,
- * T_max_safe_period_ms for each task
+ * T_max_safe_period_ms for each task, robot_seed (the run's), robots (the plan's count),
+ * min_clearance_m (the nearest the robot's body came to any obstacle), near_misses (approaches
+ * within the simulator's 0.05 m margin that did not touch)
  * </pre>
  *
  * RFC 4180 quoting; an empty field is a value the run did not give (an {@code error} row, or
@@ -72,6 +74,7 @@ public final class ResultsCsv {
         for (String task : PeriodSet.TASKS) {
             h.add(task + "_max_safe_period_ms");
         }
+        h.addAll(List.of("robot_seed", "robots", "min_clearance_m", "near_misses"));
         return List.copyOf(h);
     }
 
@@ -191,6 +194,10 @@ public final class ResultsCsv {
             TaskResult t = r.tasks().get(task);
             f.add(t == null || t.maxSafePeriodMs() == null ? "" : number(t.maxSafePeriodMs()));
         }
+        f.add(Long.toString(r.conditions().robotSeedOf(r.run())));
+        f.add(Integer.toString(r.conditions().robots()));
+        f.add(r.minClearanceM() == null ? "" : number(r.minClearanceM()));
+        f.add(r.nearMisses() == null ? "" : r.nearMisses().toString());
         return String.join(",", f);
     }
 
@@ -304,8 +311,14 @@ public final class ResultsCsv {
         Map<String, Long> periods = new LinkedHashMap<>();
         PeriodSet.TASKS.forEach(t -> periods.put(t, Long.parseLong(row.get(t + "_period_ms"))));
         String grid = row.get("grid_resolution_m");
+        String robotSeed = row.get("robot_seed");
+        String robotsText = row.get("robots");
+        int robots = robotsText.isEmpty() ? 1 : Integer.parseInt(robotsText);
+        long firstRobotSeed = robotSeed.isEmpty() ? RunConditions.DEFAULT_ROBOT_SEED
+                : Long.parseLong(robotSeed) - (run - 1) % robots;
         RunConditions conditions = new RunConditions(row.get("scenario"), Double.parseDouble(row.get("time_scale")),
-                Long.parseLong(row.get("seed")) - run + 1, grid.isEmpty() ? null : Double.parseDouble(grid));
+                Long.parseLong(row.get("seed")) - run + 1, grid.isEmpty() ? null : Double.parseDouble(grid),
+                firstRobotSeed, robots);
         Map<String, TaskResult> tasks = new LinkedHashMap<>();
         for (String t : PeriodSet.TASKS) {
             if (!row.get(t + "_releases").isEmpty()) {
@@ -327,7 +340,8 @@ public final class ResultsCsv {
         return new RunResult(Integer.parseInt(row.get("set")), run, set, conditions,
                 row.get("outcome"), decimal(row.get("run_time_s")), decimal(row.get("distance_to_finish_m")),
                 decimal(row.get("distance_travelled_m")), optionalInt(row.get("collisions")),
-                optionalInt(row.get("waypoints_reached")), optionalInt(row.get("waypoints_total")), tasks, mediator);
+                optionalInt(row.get("waypoints_reached")), optionalInt(row.get("waypoints_total")), tasks, mediator,
+                optionalDouble(row.get("min_clearance_m")), optionalLong(row.get("near_misses")));
     }
 
     private static String number(double v) {

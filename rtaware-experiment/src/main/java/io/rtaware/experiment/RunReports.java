@@ -61,7 +61,9 @@ public final class RunReports {
         return new RunResult(set, run, periods, conditions, text(runNode, "outcome"),
                 number(runNode, "run_time_s"), number(runNode, "distance_to_finish_m"),
                 number(runNode, "distance_travelled_m"), integer(runNode, "collisions"),
-                integer(runNode, "waypoints_reached"), integer(runNode, "waypoints_total"), tasks, mediator);
+                integer(runNode, "waypoints_reached"), integer(runNode, "waypoints_total"), tasks, mediator,
+                runNode.path("min_clearance_m").isNumber() ? runNode.get("min_clearance_m").asDouble() : null,
+                runNode.path("near_misses").isIntegralNumber() ? runNode.get("near_misses").asLong() : null);
     }
 
     /**

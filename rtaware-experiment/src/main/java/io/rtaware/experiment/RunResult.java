@@ -24,11 +24,40 @@ import java.util.Set;
  * @param tasks per behavior of {@link PeriodSet#TASKS}; empty when the run gave no report
  * @param mediatorCycles cycles the position mediator gave to each of {@link #MEDIATOR_WINNERS};
  *     empty when unknown (a run report without them, or results that predate them)
+ * @param minClearanceM the smallest distance between the robot's body and any obstacle in the run,
+ *     metres, or null if unknown
+ * @param nearMisses approaches within the near-miss margin that did not touch, or null if unknown
  */
 public record RunResult(int set, int run, PeriodSet periods, RunConditions conditions, String outcome,
                         double runTimeS, double distanceToFinishM, double distanceTravelledM,
                         Integer collisions, Integer waypointsReached, Integer waypointsTotal,
-                        Map<String, TaskResult> tasks, Map<String, Long> mediatorCycles) {
+                        Map<String, TaskResult> tasks, Map<String, Long> mediatorCycles, Double minClearanceM,
+                        Long nearMisses) {
+
+    /**
+     * A result without clearance measures.
+     *
+     * @param set the set's number
+     * @param run the run's number
+     * @param periods the set
+     * @param conditions the shared conditions
+     * @param outcome how the run ended
+     * @param runTimeS run time, s
+     * @param distanceToFinishM distance to the finish, m
+     * @param distanceTravelledM path length, m
+     * @param collisions collisions, or null
+     * @param waypointsReached waypoints reached, or null
+     * @param waypointsTotal waypoints in the course, or null
+     * @param tasks per behavior
+     * @param mediatorCycles cycles per mediator winner
+     */
+    public RunResult(int set, int run, PeriodSet periods, RunConditions conditions, String outcome,
+                     double runTimeS, double distanceToFinishM, double distanceTravelledM,
+                     Integer collisions, Integer waypointsReached, Integer waypointsTotal,
+                     Map<String, TaskResult> tasks, Map<String, Long> mediatorCycles) {
+        this(set, run, periods, conditions, outcome, runTimeS, distanceToFinishM, distanceTravelledM, collisions,
+                waypointsReached, waypointsTotal, tasks, mediatorCycles, null, null);
+    }
 
     /** What the position mediator can choose in a cycle: the avoider's request, the waypoint planner's, or a stop. */
     public static final List<String> MEDIATOR_WINNERS = List.of("obstacle", "waypoint", "stop");

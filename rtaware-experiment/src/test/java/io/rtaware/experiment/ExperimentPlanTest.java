@@ -22,9 +22,31 @@ class ExperimentPlanTest {
         ExperimentPlan plan = new ExperimentPlan(List.of(fast, PeriodSet.of("default", 100, 20, 100, 100)), 2, CONDITIONS);
         List<PlannedRun> order = plan.order();
         assertEquals(List.of("--scenario", "paper-room", "--periods", "waypoint=100,obstacle=20,occupancy=100,planner=100",
-                "--time-scale", "10", "--seed", "41", "--top-speed", "0.35", "--out", "o", "--quiet"),
+                "--time-scale", "10", "--seed", "41", "--robot-seed", "1", "--top-speed", "0.35", "--out", "o", "--quiet"),
                 plan.runArguments(order.get(2), Path.of("o")));
         assertFalse(plan.runArguments(order.get(1), Path.of("o")).contains("--top-speed"));
+    }
+
+    @Test
+    void oneRobotDrivesEveryRunUnlessTheRunsAreSpreadOverSeveralRobots() {
+        PeriodSet set = PeriodSet.of("default", 100, 20, 100, 100);
+        ExperimentPlan one = new ExperimentPlan(List.of(set), 5, new RunConditions("paper-room", 10, 40, null, 7, 1));
+        ExperimentPlan three = new ExperimentPlan(List.of(set), 5, new RunConditions("paper-room", 10, 40, null, 7, 3));
+        List<String> seedsOfOne = new ArrayList<>();
+        List<String> seedsOfThree = new ArrayList<>();
+        List<String> runSeeds = new ArrayList<>();
+        for (PlannedRun p : one.order()) {
+            List<String> args = one.runArguments(p, Path.of("o"));
+            seedsOfOne.add(args.get(args.indexOf("--robot-seed") + 1));
+            runSeeds.add(args.get(args.indexOf("--seed") + 1));
+        }
+        for (PlannedRun p : three.order()) {
+            List<String> args = three.runArguments(p, Path.of("o"));
+            seedsOfThree.add(args.get(args.indexOf("--robot-seed") + 1));
+        }
+        assertEquals(List.of("7", "7", "7", "7", "7"), seedsOfOne, "one robot: the same robot seed in every run");
+        assertEquals(List.of("40", "41", "42", "43", "44"), runSeeds, "each run its own noise seed");
+        assertEquals(List.of("7", "8", "9", "7", "8"), seedsOfThree, "three robots in turn");
     }
 
     @Test

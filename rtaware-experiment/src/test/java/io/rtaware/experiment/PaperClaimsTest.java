@@ -111,6 +111,32 @@ class PaperClaimsTest {
     }
 
     @Test
+    void theReactionRuleIsJudgedByWhereCollisionsBeginAgainstItsBound() {
+        // every run's advice gives the obstacle task a largest safe period of 250 ms
+        List<PeriodSet> sweep = ExperimentSets.resolve("sweep-obstacle");
+        Claim near = claim(summary(rows(sweep, 2, (s, p, r) -> p >= 300
+                ? new Object[] {"stuck", 120.0, 3.0, 1} : completed(230), FALLING)), PaperClaims.RULE);
+        assertEquals(Verdict.REPRODUCED, near.verdict(), near.evidence());
+        // the sweep's periods above 200 ms: 400 ms is the first with collisions
+        assertTrue(near.evidence().contains("largest safe period 250.0 ms; the shortest period with a collision is 400 ms"
+                + " (obstacle 400 ms, 2 of 2 runs), 1.60 x the bound."), near.evidence());
+        Claim unsafe = claim(summary(rows(sweep, 2, (s, p, r) -> p >= 200
+                ? new Object[] {"stuck", 120.0, 3.0, 1} : completed(230), FALLING)), PaperClaims.RULE);
+        assertEquals(Verdict.NOT_REPRODUCED, unsafe.verdict(), "collisions below the bound: " + unsafe.evidence());
+        Claim cautious = claim(summary(rows(sweep, 2, (s, p, r) -> completed(230), FALLING)), PaperClaims.RULE);
+        assertEquals(Verdict.NOT_REPRODUCED, cautious.verdict(), "none up to 800 ms, 3.2 x the bound: " + cautious.evidence());
+        List<RunResult> corridor = rows(sweep, 2, (s, p, r) -> completed(230), FALLING).stream()
+                .map(r -> new RunResult(r.set(), r.run(), r.periods(), new RunConditions("corridor", 10, 1, null),
+                        r.outcome(), r.runTimeS(), r.distanceToFinishM(), r.distanceTravelledM(), r.collisions(),
+                        r.waypointsReached(), r.waypointsTotal(), r.tasks(), r.mediatorCycles(), 0.02, 1L)).toList();
+        ExperimentSummary onCorridor = summary(corridor);
+        assertTrue(onCorridor.claims().stream().anyMatch(c -> c.claim().equals(PaperClaims.SLOW + " on corridor")),
+                "another course is named in the claim: " + onCorridor.claims());
+        assertTrue(claim(onCorridor, PaperClaims.SLOW + " on corridor").evidence().contains("2 with a near miss"),
+                "near misses in the evidence");
+    }
+
+    @Test
     void fastPeriodsLockUpReproducedMixedAndNot() {
         List<PeriodSet> sweep = ExperimentSets.resolve("sweep-all");
         ExperimentSummary locked = summary(rows(sweep, 2, (s, p, r) -> p <= 5

@@ -237,9 +237,11 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
      *     default 0, an instantaneous laser)
      * @param laserMinRangeM the laser's minimum range in metres: something closer is seen at it
      *     (default 0); the reaction rule keeps at least this much clearance
+     * @param obstacleSpeedMps how fast obstacles may move toward the robot, m/s (default 0: they
+     *     stand still); the avoider's reaction rule closes the gap at the sum of both speeds
      */
     public record Robot(double radiusM, double topSpeedMps, double maxOmegaRadPerSec, double stoppingDistanceM,
-                        long laserDelayNs, double laserMinRangeM) {
+                        long laserDelayNs, double laserMinRangeM, double obstacleSpeedMps) {
         /**
          * @param radiusM the robot's radius in metres (default 0.2)
          * @param topSpeedMps top forward speed in m/s (default 0.1)
@@ -249,6 +251,7 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
          * @param laserDelayNs age of a laser scan when it is delivered, ns (sweep and transfer; default 0, an
          *     instantaneous laser)
          * @param laserMinRangeM the laser's minimum range in metres (default 0)
+         * @param obstacleSpeedMps how fast obstacles may move toward the robot, m/s (default 0)
          * @throws IllegalArgumentException naming the bad value
          */
         public Robot {
@@ -260,6 +263,7 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
                 throw new IllegalArgumentException("laserDelayNs must be >= 0, got " + laserDelayNs);
             }
             nonNegative("laserMinRangeM", laserMinRangeM);
+            nonNegative("obstacleSpeedMps", obstacleSpeedMps);
         }
     }
 
@@ -385,6 +389,7 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
         private double stoppingDistanceM = 0.01;
         private long laserDelayNs;
         private double laserMinRangeM;
+        private double obstacleSpeedMps;
         private double lookaheadM = 0.3;
         private double turnInPlaceRad = 0.8;
         private double goalToleranceM = 0.25;
@@ -559,6 +564,15 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
         }
 
         /**
+         * @param mps how fast obstacles may move toward the robot (a scenario's fastest actor), m/s
+         * @return this
+         */
+        public Builder obstacleSpeedMps(double mps) {
+            obstacleSpeedMps = mps;
+            return this;
+        }
+
+        /**
          * @param m pure-pursuit lookahead in metres
          * @return this
          */
@@ -694,7 +708,7 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
                     new Follower(lookaheadM, turnInPlaceRad, goalToleranceM),
                     new Avoider(avoidRangeM, avoidHalfAngleRad, avoidStopRangeM, avoidSpeedMps),
                     new Robot(robotRadiusM, topSpeedMps, maxOmegaRadPerSec, stoppingDistanceM, laserDelayNs,
-                            laserMinRangeM),
+                            laserMinRangeM, obstacleSpeedMps),
                     new MaxAges(laserMaxAgeNs, odometryMaxAgeNs, avoidAge, waypointAge),
                     new Course(waypoints, externalWaypoints));
         }

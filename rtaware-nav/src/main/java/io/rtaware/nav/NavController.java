@@ -95,9 +95,10 @@ public final class NavController {
      * The avoider's reaction: what it sees at its safety range, minus the clearance that must
      * remain (the robot's radius, since the laser sits at the centre and the body ends a radius
      * ahead; or the laser's minimum range where that is larger, since anything closer is only
-     * seen at the minimum range), must be stopped short of, at the robot's top speed, with its
-     * stopping distance, from scans as old as the laser's delay. Null when the zone does not
-     * reach beyond that clearance (nothing to declare).
+     * seen at the minimum range), must be stopped short of, at the robot's top speed (plus the
+     * obstacles' own speed where the scenario says they move), with its stopping distance, from
+     * scans as old as the laser's delay. Null when the zone does not reach beyond that clearance
+     * (nothing to declare).
      */
     private static ReactionConstraint reaction(NavConfig config) {
         NavConfig.Robot robot = config.robot();
@@ -106,7 +107,7 @@ public final class NavController {
             return null;
         }
         return new ReactionConstraint(RobotKeys.LASER.name(), robot.topSpeedMps(), robot.stoppingDistanceM(), rangeM,
-                robot.laserDelayNs() / 1e6);
+                robot.laserDelayNs() / 1e6, robot.obstacleSpeedMps());
     }
 
     private static TaskSpec spec(String name, long periodNs, io.rtaware.core.task.Task task) {

@@ -90,6 +90,14 @@ public final class ExperimentCommand implements Callable<Integer> {
             description = "Seed of run 1; run j of every set uses S + j - 1 (default: ${DEFAULT-VALUE}).")
     long seed;
 
+    @Option(names = "--robot-seed", defaultValue = "1", paramLabel = "S",
+            description = "Seed of the simulated robot's systematic odometry errors: every run drives this one robot, as the paper's trials used one Koala (default: ${DEFAULT-VALUE}).")
+    long robotSeed;
+
+    @Option(names = "--robots", defaultValue = "1", paramLabel = "N",
+            description = "Spread the runs over N robots (robot seeds S..S+N-1, run j on S + (j - 1) mod N) to include robot-to-robot variation (default: ${DEFAULT-VALUE}, one robot).")
+    int robots;
+
     @Option(names = "--out", paramLabel = "DIR", description = "Output folder (default: experiments/<timestamp>).")
     Path out;
 
@@ -134,9 +142,10 @@ public final class ExperimentCommand implements Callable<Integer> {
         ExperimentRunner runner = new ExperimentRunner(plan, JvmRunCommand.ofCurrentProcess(JvmRunCommand.RTAWARE_MAIN),
                 dir, progress).recordEachRun(record);
         int total = plan.order().size();
-        System.out.printf(Locale.ROOT, "rtaware experiment: %d set(s) x %d run(s) of %s at time scale x%s into %s%s%n",
+        System.out.printf(Locale.ROOT, "rtaware experiment: %d set(s) x %d run(s) of %s at time scale x%s into %s%s; %s%n",
                 plan.sets().size(), runs, scenario, timeScale, dir, plan.shard().whole() ? ""
-                        : " (shard " + plan.shard() + ": " + total + " of " + plan.fullOrder().size() + " runs)");
+                        : " (shard " + plan.shard() + ": " + total + " of " + plan.fullOrder().size() + " runs)",
+                plan.conditions().robotsInWords());
         CountDownLatch reported = new CountDownLatch(1);
         Thread hook = new Thread(() -> {
             runner.interrupt();
@@ -191,8 +200,11 @@ public final class ExperimentCommand implements Callable<Integer> {
         } catch (ExperimentInputException e) {
             throw new UserError(e.getMessage());
         }
-        ExperimentPlan plan = new ExperimentPlan(periodSets, runs, new RunConditions(scenario, timeScale, seed, gridResolutionM),
-                share);
+        if (robots < 1) {
+            throw new UserError("--robots must be at least 1, got " + robots);
+        }
+        ExperimentPlan plan = new ExperimentPlan(periodSets, runs, new RunConditions(scenario, timeScale, seed, gridResolutionM,
+                robotSeed, robots), share);
         if (plan.order().isEmpty()) {
             throw new UserError("--shard " + share + " has no runs: the plan has only " + plan.fullOrder().size()
                     + " run(s); use fewer shards");

@@ -34,6 +34,7 @@ final class ResumedPlan {
         ExperimentPlan stored = PlanFile.fromFolder(dir);
         boolean anyGiven = given.hasMatchedOption("--sets") || given.hasMatchedOption("--scenario")
                 || given.hasMatchedOption("--time-scale") || given.hasMatchedOption("--seed")
+                || given.hasMatchedOption("--robot-seed") || given.hasMatchedOption("--robots")
                 || given.hasMatchedOption("--grid-resolution") || given.hasMatchedOption("--runs")
                 || given.hasMatchedOption("--shard");
         if (!anyGiven) {
@@ -46,6 +47,8 @@ final class ResumedPlan {
         check(given, "--scenario", s.scenario().equals(a.scenario()), a.scenario(), s.scenario(), dir);
         check(given, "--time-scale", s.timeScale() == a.timeScale(), a.timeScale(), s.timeScale(), dir);
         check(given, "--seed", s.seed() == a.seed(), a.seed(), s.seed(), dir);
+        check(given, "--robot-seed", s.robotSeed() == a.robotSeed(), a.robotSeed(), s.robotSeed(), dir);
+        check(given, "--robots", s.robots() == a.robots(), a.robots(), s.robots(), dir);
         check(given, "--grid-resolution", Objects.equals(s.gridResolutionM(), a.gridResolutionM()),
                 a.gridResolutionM(), s.gridResolutionM() == null ? "run's default" : s.gridResolutionM(), dir);
         check(given, "--shard", stored.shard().equals(asked.shard()), asked.shard(), stored.shard(), dir);

@@ -91,6 +91,7 @@ public final class ControllerMetadata {
                 .maxOmegaRadPerSec(r.maxOmegaRadPerSec())
                 .reactionLimits(r.stoppingDistanceM(), r.laserDelayNs())
                 .laserMinRangeM(r.laserMinRangeM())
+                .obstacleSpeedMps(r.obstacleSpeedMps())
                 .inflationMarginM(recorded.planner().inflationMarginM())
                 .unknownCostFactor(recorded.planner().unknownCostFactor())
                 .lookaheadM(f.lookaheadM())

@@ -7,6 +7,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
 import java.util.function.LongSupplier;
+import java.util.function.Supplier;
 
 /**
  * Watches the robot from outside the controller, as the paper's ground-truth sensors did: samples
@@ -38,8 +39,9 @@ final class Referee implements AutoCloseable {
      *
      * @param tS world seconds since the run started
      * @param pose the pose
+     * @param believed the robot's own estimate of its pose then (its odometry), or null if unknown
      */
-    record Sample(double tS, Pose2d pose) {
+    record Sample(double tS, Pose2d pose, Pose2d believed) {
     }
 
     private final Clock clock;
@@ -47,6 +49,7 @@ final class Referee implements AutoCloseable {
     private final long samplePeriodNs;
     private final PoseSource source;
     private final LongSupplier misses;
+    private final Supplier<Pose2d> believed;
     private final List<Sample> samples = new ArrayList<>();
     private final List<Point2d> missMarkers = new ArrayList<>();
     private final List<GroundTruthGap> gaps = new ArrayList<>();
@@ -66,6 +69,21 @@ final class Referee implements AutoCloseable {
      * @param misses the total deadline misses so far; a marker is recorded where it grows
      */
     Referee(Clock clock, long startNs, long samplePeriodNs, PoseSource source, LongSupplier misses) {
+        this(clock, startNs, samplePeriodNs, source, misses, () -> null);
+    }
+
+    /**
+     * @param clock world clock
+     * @param startNs world time of the run's start
+     * @param samplePeriodNs world time between samples
+     * @param source the pose source; closed with the referee
+     * @param misses the total deadline misses so far; a marker is recorded where it grows
+     * @param believed the robot's own pose estimate now (its odometry), or null while unknown;
+     *     recorded beside each true pose
+     */
+    Referee(Clock clock, long startNs, long samplePeriodNs, PoseSource source, LongSupplier misses,
+            Supplier<Pose2d> believed) {
+        this.believed = Objects.requireNonNull(believed, "believed");
         this.clock = clock;
         this.startNs = startNs;
         this.samplePeriodNs = samplePeriodNs;
@@ -119,6 +137,7 @@ final class Referee implements AutoCloseable {
         }
         double tS = (clock.nanos() - startNs) / 1e9;
         long missesNow = misses.getAsLong();
+        Pose2d believedNow = believed.get();
         synchronized (this) {
             if (!samples.isEmpty()) {
                 Sample previous = samples.get(samples.size() - 1);
@@ -129,7 +148,7 @@ final class Referee implements AutoCloseable {
                 }
             }
             failing = false;
-            samples.add(new Sample(tS, pose));
+            samples.add(new Sample(tS, pose, believedNow));
             if (missesNow > lastMisses) {
                 missMarkers.add(pose.position());
                 lastMisses = missesNow;

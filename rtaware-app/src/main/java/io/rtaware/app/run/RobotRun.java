@@ -144,7 +144,8 @@ public final class RobotRun {
                 throw new UserError("scenario '" + scenario.name() + "' has no map; the built-in simulator needs one (or use --player HOST:PORT)");
             }
             simulatorLog = BuiltInSimulatorLog.install(err);
-            server = SimCommandSupport.start(scenario, model, clock, ServerConfig.defaults(0), options.seed());
+            server = SimCommandSupport.start(scenario, model, clock, ServerConfig.defaults(0), options.seed(),
+                    options.robotSeed());
             host = ServerConfig.LOOPBACK;
             port = server.port();
         } else if (!externalRos2) {
@@ -267,8 +268,13 @@ public final class RobotRun {
                 artifacts.section("recording", RecordOptions.finish(recorder, out, artifacts.writes()));
                 monitor.read(nav.keys().course(), course);
                 long collisions = server != null ? server.withWorld(World::contactCount) : state.stallEdges();
+                Map<String, Object> robotErrors = server != null ? server.withWorld(w -> w.odometryBias().parameters())
+                        : null;
+                double[] safety = server != null
+                        ? server.withWorld(w -> new double[] {w.minClearanceM(), w.nearMisses()}) : null;
                 RunSection run = runSection(scenario, nav, course, referee, state.ending(),
-                        clock.nanos() - state.startNs(), collisions, server != null, List.copyOf(passes), model);
+                        clock.nanos() - state.startNs(), collisions, server != null, List.copyOf(passes), model,
+                        robotErrors, safety);
                 live.finish(report, run);
                 if (link != null) {
                     artifacts.section("ros2", link.section());
@@ -285,7 +291,9 @@ public final class RobotRun {
 
         monitor.start();
         long startNs = clock.nanos();
-        Referee referee = new Referee(clock, startNs, SAMPLE_PERIOD_NS, truth, () -> totalMisses(monitor)).start();
+        Odometry believed = new Odometry();
+        Referee referee = new Referee(clock, startNs, SAMPLE_PERIOD_NS, truth, () -> totalMisses(monitor),
+                () -> monitor.read(RobotKeys.ODOMETRY, believed) == 0 ? null : believed.pose()).start();
         MonitorView view = new MonitorView(monitor, nav, referee, safetyFault);
         Supervisor supervisor = new Supervisor(view, clock, System::nanoTime,
                 startNs, scenario.timeLimitS(), options.stuckAfterS());
@@ -475,9 +483,12 @@ public final class RobotRun {
             TaskCounters c = monitor.counters(task.index());
             misses.append(misses.length() == 0 ? "" : " ").append(task.name()).append('=').append(c.misses());
         }
-        String line = String.format(Locale.ROOT, "t=%6.1fs  waypoint %d of %d  %5.2f m to go  %5.1f m driven  misses: %s",
+        // Both distances are the controller's own, straight lines from its odometry pose: the
+        // true distances are in the report (distance_to_finish_m, waypoint_passes[]).
+        String line = String.format(Locale.ROOT,
+                "t=%6.1fs  waypoint %d of %d %5.2f m away, finish %5.2f m (straight, by odometry)  %5.1f m driven  misses: %s",
                 elapsedS, Math.min(course.waypointsReached + 1, course.waypointsTotal), course.waypointsTotal,
-                course.distanceToFinishM, referee.travelledM(), misses);
+                course.distanceToGoalM, course.distanceToFinishM, referee.travelledM(), misses);
         if (tty) {
             err.print("\r" + line + "   ");
         } else {
@@ -492,6 +503,7 @@ public final class RobotRun {
                 .inflationMarginM(options.inflationMarginM())
                 .reactionLimits(model.stoppingDistanceM(model.topSpeedMps()), model.laserDelayNs(LaserConfig.URG_04LX))
                 .laserMinRangeM(LaserConfig.URG_04LX.minRangeM())
+                .obstacleSpeedMps(scenario.fastestActorMps())
                 .periodsNs(options.periods().nanosByTask())
                 .goalToleranceM(scenario.goalToleranceM())
                 .waypoints(scenario.waypoints());
@@ -551,7 +563,8 @@ public final class RobotRun {
 
     private RunSection runSection(Scenario scenario, NavController nav, CourseStatus course,
                                   Referee referee, RunState.Ending ending, long elapsedNs, long collisions,
-                                  boolean simulator, List<RunSection.WaypointPass> passes, RobotModel model) {
+                                  boolean simulator, List<RunSection.WaypointPass> passes, RobotModel model,
+                                  Map<String, Object> robotErrors, double[] safety) {
         double runTimeS = elapsedNs / 1e9;
         List<GroundTruthGap> gaps = referee == null ? List.of() : referee.gaps(runTimeS);
         double uncoveredS = 0;
@@ -575,12 +588,20 @@ public final class RobotRun {
                 mediator, referee == null ? "odometry" : referee.kind(), simulator ? "simulator" : "stall",
                 options.timeScale(), options.seed(), options.gridResolutionM(), counts.staleStops(), ending.reason(),
                 gaps, round3(Math.max(0, runTimeS - uncoveredS)), RunSection.COMPLETED_MEANS, passes,
-                robotModelSection(model, simulator), options.inflationMarginM());
+                robotModelSection(model, simulator), options.inflationMarginM(),
+                simulator ? options.robotSeed() : null, robotErrors, safety == null ? null : round3(safety[0]),
+                safety == null ? null : (long) safety[1], safety == null ? null : World.NEAR_MISS_MARGIN_M,
+                safety == null ? null : World.CLEARANCE_LIMIT_M);
     }
 
     private static Map<String, Object> robotModelSection(RobotModel model, boolean simulator) {
         if (simulator) {
-            return model.parameters();
+            Map<String, Object> p = model.parameters();
+            p.putAll(LaserConfig.URG_04LX.parameters());
+            Map<String, String> sources = RobotModel.sources();
+            sources.putAll(LaserConfig.urg04lxSources());
+            p.put("sources", sources);
+            return p;
         }
         Map<String, Object> external = new LinkedHashMap<>();
         external.put("name", "external");

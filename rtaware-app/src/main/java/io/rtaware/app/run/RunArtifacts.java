@@ -121,8 +121,11 @@ final class RunArtifacts {
         }
         if (worldMap != null) {
             List<Pose2d> poses = samples.stream().map(Referee.Sample::pose).toList();
+            // The believed path only beside a measured true one (with odometry as the referee's source they are the same).
+            List<Pose2d> believed = referee == null || !"ground_truth".equals(referee.kind()) ? List.of()
+                    : samples.stream().map(Referee.Sample::believed).filter(java.util.Objects::nonNull).toList();
             if (writes.writeFile(dir.resolve("trajectory.png"), target -> new WorldRenderer().writePng(scenario, worldMap,
-                    poses, referee == null ? List.of() : referee.missMarkers(), target))) {
+                    poses, believed, referee == null ? List.of() : referee.missMarkers(), target))) {
                 names.add("trajectory.png");
             }
         }
@@ -143,6 +146,11 @@ final class RunArtifacts {
                 r.distanceToFinishM() == null ? "unknown (no ground truth at the end)"
                         : String.format(Locale.ROOT, "%.2f m", r.distanceToFinishM()),
                 r.distanceTravelledM(), r.collisions(), r.measuredOn().replace('_', ' ')));
+        if (r.minClearanceM() != null) {
+            sb.append(String.format(Locale.ROOT, "     nearest approach %s%.3f m to an obstacle, %d near miss(es) (within %.2f m without touching)%n",
+                    r.minClearanceM() >= r.clearanceLimitM() ? "at least " : "", r.minClearanceM(), r.nearMisses(),
+                    r.nearMissMarginM()));
+        }
         if (!r.groundTruthGaps().isEmpty()) {
             StringBuilder spans = new StringBuilder();
             for (GroundTruthGap g : r.groundTruthGaps()) {
@@ -170,9 +178,10 @@ final class RunArtifacts {
             sb.append(String.format(Locale.ROOT, "     waypoint %d believed passed at %.1f s: %.2f m from it in truth (%.2f m by odometry)%n",
                     p.index() + 1, p.tS(), p.trueDistanceM(), p.believedDistanceM()));
         }
-        sb.append(String.format(Locale.ROOT, "     scenario %s, periods %s, time scale x%s, seed %d, grid %.2f m, robot %s at %s m/s%n",
+        sb.append(String.format(Locale.ROOT, "     scenario %s, periods %s, time scale x%s, seed %d, grid %.2f m, robot %s at %s m/s%s%n",
                 r.scenario(), options.periods(), r.timeScale(), r.seed(), navConfig.grid().resolutionM(),
-                r.robotModel().get("name"), r.robotModel().get("top_speed_mps")));
+                r.robotModel().get("name"), r.robotModel().get("top_speed_mps"),
+                r.robotSeed() == null ? "" : ", robot seed " + r.robotSeed()));
         return sb.toString();
     }
 
@@ -188,10 +197,13 @@ final class RunArtifacts {
     }
 
     private static void writeTrajectoryCsv(Path file, List<Referee.Sample> samples) throws IOException {
-        StringBuilder sb = new StringBuilder("t_s,x_m,y_m,yaw_rad\n");
+        StringBuilder sb = new StringBuilder("t_s,x_m,y_m,yaw_rad,odom_x_m,odom_y_m,odom_yaw_rad\n");
         for (Referee.Sample s : samples) {
-            sb.append(String.format(Locale.ROOT, "%.3f,%.4f,%.4f,%.4f%n", s.tS(), s.pose().xM(), s.pose().yM(),
+            sb.append(String.format(Locale.ROOT, "%.3f,%.4f,%.4f,%.4f", s.tS(), s.pose().xM(), s.pose().yM(),
                     s.pose().yawRad()));
+            Pose2d b = s.believed();
+            sb.append(b == null ? ",,," : String.format(Locale.ROOT, ",%.4f,%.4f,%.4f", b.xM(), b.yM(), b.yawRad()));
+            sb.append('\n');
         }
         Files.writeString(file, sb);
     }

@@ -50,8 +50,13 @@ public final class RunCommand implements Callable<Integer> {
             description = "Use this Player server instead of the built-in simulator.")
     String player;
 
-    @Option(names = "--seed", defaultValue = "1", description = "Seed of the simulator's sensor noise (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--seed", defaultValue = "1", description = "Seed of this run's noise: laser ranges, odometry increments (default: ${DEFAULT-VALUE}).")
     long seed;
+
+    @Option(names = "--robot-seed", defaultValue = "1", paramLabel = "S",
+            description = {"Seed of the simulated robot's systematic odometry errors (scale, heading, drift), drawn once per robot:",
+                    "the same robot seed is the same robot in every run, as the paper used one Koala (default: ${DEFAULT-VALUE})."})
+    long robotSeed;
 
     @Option(names = "--out", paramLabel = "DIR", description = "Output folder (default: runs/<timestamp>).")
     Path out;
@@ -168,6 +173,6 @@ public final class RunCommand implements Callable<Integer> {
         trace.checkOutput();
         record.checkOutput();
         return new RunOptions(scenario, taskPeriods, timeScale, host, port, seed, dir, quiet, stuckAfterS,
-                gridResolutionM, model, trace, realtime, live.options(), robot, topSpeedMps, inflationMarginM);
+                gridResolutionM, model, trace, realtime, live.options(), robot, topSpeedMps, inflationMarginM, robotSeed);
     }
 }

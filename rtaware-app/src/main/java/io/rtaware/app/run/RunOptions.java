@@ -24,11 +24,12 @@ import java.nio.file.Path;
  * @param robot {@code koala}, {@code ideal}, or null for the scenario's model (default koala)
  * @param topSpeedMps the controller's top speed in m/s, or null for the scenario's (default 0.1)
  * @param inflationMarginM clearance the planner adds to the robot's radius, metres
+ * @param robotSeed seed of the simulated robot's systematic odometry errors: one robot per seed
  */
 public record RunOptions(String scenario, TaskPeriods periods, double timeScale, String playerHost, int playerPort,
                          long seed, Path outDir, boolean quiet, double stuckAfterS, double gridResolutionM,
                          String modelName, TraceOptions trace, boolean realtime, LiveOptions live,
-                         String robot, Double topSpeedMps, double inflationMarginM) {
+                         String robot, Double topSpeedMps, double inflationMarginM, long robotSeed) {
 
     /** @return true when the robot is the built-in simulator */
     public boolean builtInSimulator() {

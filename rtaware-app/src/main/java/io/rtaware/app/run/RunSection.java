@@ -38,6 +38,17 @@ import java.util.Map;
  * @param robotModel the simulated robot model's name and parameters ({@code name}: koala or
  *     ideal); for an external Player server {@code name} is {@code external}
  * @param inflationMarginM the clearance the planner added to the robot's radius, metres
+ * @param robotSeed the seed of the simulated robot's systematic odometry errors ({@code --robot-seed});
+ *     null for an external robot
+ * @param robotErrors the systematic errors that robot seed drew ({@code distance_scale_error},
+ *     {@code rotation_scale_error}, {@code heading_drift_rad_per_m}); null for an external robot
+ * @param minClearanceM the smallest distance between the robot's body and any obstacle, the map's or
+ *     an actor's, over the run (measured by the simulator on every step; 0 in a collision; values of
+ *     {@code clearance_limit_m} mean at least that); null for an external robot
+ * @param nearMisses approaches within {@code nearMissMarginM} of an obstacle that did not touch it; null
+ *     for an external robot
+ * @param nearMissMarginM the margin of a near miss, metres
+ * @param clearanceLimitM clearances beyond this are not measured exactly, metres
  */
 public record RunSection(String scenario, Map<String, Double> periodsMs, String outcome, boolean completed,
                          double runTimeS, int waypointsReached, int waypointsTotal, Double distanceToFinishM,
@@ -46,7 +57,8 @@ public record RunSection(String scenario, Map<String, Double> periodsMs, String 
                          double gridResolutionM, long staleStops, String reason,
                          List<GroundTruthGap> groundTruthGaps, double groundTruthCoveredS, String completedMeans,
                          List<WaypointPass> waypointPasses, Map<String, Object> robotModel,
-                         double inflationMarginM) {
+                         double inflationMarginM, Long robotSeed, Map<String, Object> robotErrors,
+                         Double minClearanceM, Long nearMisses, Double nearMissMarginM, Double clearanceLimitM) {
 
     /** What {@code completed} means, written into every report. */
     public static final String COMPLETED_MEANS = "the robot, by its own estimate (odometry), passed every waypoint "

@@ -73,7 +73,7 @@ class RunEndToEndTest {
         for (String file : new String[] {"report.md", "trajectory.csv", "trajectory.png", "map.pgm", "map.yaml"}) {
             assertTrue(Files.size(out.resolve(file)) > 0, file + " written");
         }
-        assertTrue(Files.readString(out.resolve("trajectory.csv")).startsWith("t_s,x_m,y_m,yaw_rad\n"));
+        assertTrue(Files.readString(out.resolve("trajectory.csv")).startsWith("t_s,x_m,y_m,yaw_rad,odom_x_m,odom_y_m,odom_yaw_rad\n"));
     }
 
     @Test

@@ -42,7 +42,7 @@ class IdealTrajectoryTest {
     static final String RESOURCE = "/trajectories/paper-room-ideal-60s.csv";
 
     /** The simulator as a task: steps the world, publishes what it produced, applies the motor command. */
-    private static final class WorldTask implements Task {
+    static final class WorldTask implements Task {
         private final World world;
         private Input<VelocityCommand> motor;
         private Output<LaserScan> laser;

@@ -205,13 +205,16 @@ public final class PeriodAdvisor {
         double ageMs = inputAgeP99Ms(r, rate);
         double boundMs = r.maxPeriodMs(ageMs);
         double period = task.periodMs();
-        double needM = r.speedMps() * (period + ageMs) / 1000.0 + r.stoppingDistanceM();
+        double needM = r.closingSpeedMps() * (period + ageMs) / 1000.0 + r.stoppingDistanceM();
         Map<String, Object> evidence = new LinkedHashMap<>();
         evidence.put("input", r.input());
         evidence.put("input_rate_hz", rate);
         evidence.put("input_delay_ms", round3(r.inputDelayMs()));
         evidence.put("input_age_p99_ms", round3(ageMs));
         evidence.put("speed_mps", r.speedMps());
+        evidence.put("obstacle_speed_mps", r.obstacleSpeedMps());
+        evidence.put("closing_speed_mps", r.closingSpeedMps());
+        evidence.put("assumption", r.obstacleAssumption());
         evidence.put("stopping_distance_m", round3(r.stoppingDistanceM()));
         evidence.put("range_m", r.rangeM());
         evidence.put("needed_m", round3(needM));
@@ -223,17 +226,18 @@ public final class PeriodAdvisor {
             suggested = period;
             message = String.format(Locale.ROOT,
                     "'%s' cannot react in time at any period: at %s m/s the input's age (%s ms p99) and the stopping"
-                            + " distance (%s m) already use up the %s m range; lower the speed or extend the range",
-                    task.name(), num(r.speedMps()), num(round3(ageMs)), num(round3(r.stoppingDistanceM())),
-                    num(r.rangeM()));
+                            + " distance (%s m) already use up the %s m range; lower the speed or extend the range (%s)",
+                    task.name(), num(r.closingSpeedMps()), num(round3(ageMs)), num(round3(r.stoppingDistanceM())),
+                    num(r.rangeM()), r.obstacleAssumption());
         } else {
             suggested = Math.min(period, floorTenth(boundMs));
             message = String.format(Locale.ROOT,
                     "'%s' must react within %s m at %s m/s: %s m/s x (%s ms period + %s ms input age p99) + %s m stopping"
-                            + " = %s m; the largest safe period is %s ms (%s)",
-                    task.name(), num(r.rangeM()), num(r.speedMps()), num(r.speedMps()), num(period),
+                            + " = %s m; the largest safe period is %s ms (%s; %s)",
+                    task.name(), num(r.rangeM()), num(r.closingSpeedMps()), num(r.closingSpeedMps()), num(period),
                     num(round3(ageMs)), num(round3(r.stoppingDistanceM())), num(round3(needM)),
-                    num(floorTenth(boundMs)), period <= boundMs ? "the period is within it" : "shorten the period");
+                    num(floorTenth(boundMs)), period <= boundMs ? "the period is within it" : "shorten the period",
+                    r.obstacleAssumption());
         }
         items.add(new AdviceItem(task.name(), "reaction", period, suggested, evidence, message));
     }

@@ -7,7 +7,7 @@ import java.util.Objects;
  * thing it controls covers a given distance: whatever appears in {@code input} at
  * {@code rangeM} must be acted on, and the motion stopped, before it is reached. The core
  * knows nothing of robots; it only checks, after a run, that
- * {@code speedMps * (period + input age p99) + stoppingDistanceM <= rangeM}
+ * {@code closingSpeedMps * (period + input age p99) + stoppingDistanceM <= rangeM}
  * ({@link io.rtaware.core.analysis.PeriodAdvisor}'s {@code reaction} rule), where the input's
  * age at a read is {@code inputDelayMs} (how old the data already is when it is committed)
  * plus the time since its last commit (at most one input interval). Immutable and validated.
@@ -21,9 +21,26 @@ import java.util.Objects;
  *     the sensor), metres, positive
  * @param inputDelayMs age of the input's data when it is committed (sensor acquisition and
  *     delivery), milliseconds, not negative
+ * @param obstacleSpeedMps how fast what must be reacted to may itself move toward the motion,
+ *     m/s, not negative: 0 for things that stand still; above 0 the rule uses the closing speed
+ *     {@code speedMps + obstacleSpeedMps} instead of {@code speedMps}
  */
 public record ReactionConstraint(String input, double speedMps, double stoppingDistanceM, double rangeM,
-                                 double inputDelayMs) {
+                                 double inputDelayMs, double obstacleSpeedMps) {
+
+    /**
+     * A reaction to things that stand still.
+     *
+     * @param input the key the reaction starts from
+     * @param speedMps the top speed of the motion, m/s
+     * @param stoppingDistanceM stopping distance, metres
+     * @param rangeM reaction range, metres
+     * @param inputDelayMs the input's age when committed, ms
+     */
+    public ReactionConstraint(String input, double speedMps, double stoppingDistanceM, double rangeM,
+                              double inputDelayMs) {
+        this(input, speedMps, stoppingDistanceM, rangeM, inputDelayMs, 0.0);
+    }
 
     /**
      * @param input the key the reaction starts from (for example a laser scan)
@@ -51,16 +68,41 @@ public record ReactionConstraint(String input, double speedMps, double stoppingD
         if (!(inputDelayMs >= 0) || Double.isInfinite(inputDelayMs)) {
             throw new IllegalArgumentException("inputDelayMs must not be negative, got " + inputDelayMs);
         }
+        if (!(obstacleSpeedMps >= 0) || Double.isInfinite(obstacleSpeedMps)) {
+            throw new IllegalArgumentException("obstacleSpeedMps must not be negative, got " + obstacleSpeedMps);
+        }
+    }
+
+    /** @return the speed at which the gap closes: the motion's own plus the obstacle's, m/s */
+    public double closingSpeedMps() {
+        return speedMps + obstacleSpeedMps;
+    }
+
+    /**
+     * @return the assumption the rule makes about the obstacles, in words, for reports: that
+     *     they stand still, or that they close at up to {@link #obstacleSpeedMps()}
+     */
+    public String obstacleAssumption() {
+        if (obstacleSpeedMps == 0) {
+            return "assumes obstacles stand still: the gap closes at the robot's own speed";
+        }
+        return String.format(java.util.Locale.ROOT, "assumes obstacles move toward the robot at up to %s m/s: the gap "
+                + "closes at %s m/s, and the obstacle does not stop while the robot brakes", trim(obstacleSpeedMps),
+                trim(closingSpeedMps()));
+    }
+
+    private static String trim(double v) {
+        return java.math.BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
     }
 
     /**
      * The longest period that still reacts in time, given how old the input is when read.
      *
      * @param inputAgeP99Ms the input's age at a read (p99), milliseconds
-     * @return {@code 1000 * (rangeM - stoppingDistanceM) / speedMps - inputAgeP99Ms}; zero or
-     *     less when no period is fast enough
+     * @return {@code 1000 * (rangeM - stoppingDistanceM) / closingSpeedMps - inputAgeP99Ms}; zero
+     *     or less when no period is fast enough
      */
     public double maxPeriodMs(double inputAgeP99Ms) {
-        return 1000.0 * (rangeM - stoppingDistanceM) / speedMps - inputAgeP99Ms;
+        return 1000.0 * (rangeM - stoppingDistanceM) / closingSpeedMps() - inputAgeP99Ms;
     }
 }

@@ -3,6 +3,7 @@ package io.rtaware.core.analysis;
 import static io.rtaware.core.Ms.ms;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import io.rtaware.core.Counter;
@@ -48,8 +49,8 @@ class ReactionRuleTest {
         // needed = 0.2 * (50 + 175.6) / 1000 + 0.026 = 0.07112 m
         assertEquals(0.071, (double) item.evidence().get("needed_m"), 1e-12);
         assertEquals("'obstacle' must react within 0.2 m at 0.2 m/s: 0.2 m/s x (50 ms period + 175.6 ms input age p99)"
-                + " + 0.026 m stopping = 0.071 m; the largest safe period is 694.4 ms (the period is within it)",
-                item.message());
+                + " + 0.026 m stopping = 0.071 m; the largest safe period is 694.4 ms (the period is within it;"
+                + " assumes obstacles stand still: the gap closes at the robot's own speed)", item.message());
     }
 
     @Test
@@ -69,8 +70,24 @@ class ReactionRuleTest {
         assertEquals(10.0, item.suggestedPeriodMs());
         assertEquals(1000 * 0.002 / 0.6 - 175.6, (double) item.evidence().get("max_safe_period_ms"), 1e-3);
         assertEquals("'obstacle' cannot react in time at any period: at 0.6 m/s the input's age (175.6 ms p99) and"
-                + " the stopping distance (0.198 m) already use up the 0.2 m range; lower the speed or extend the range",
-                item.message());
+                + " the stopping distance (0.198 m) already use up the 0.2 m range; lower the speed or extend the range"
+                + " (assumes obstacles stand still: the gap closes at the robot's own speed)", item.message());
+    }
+
+    @Test
+    void anObstacleMovingTowardTheRobotClosesTheGapAtTheSumOfBothSpeeds() {
+        // a person at 1.0 m/s: closing 1.2 m/s; bound = 1000 * (0.2 - 0.026) / 1.2 - 175.6 = -30.6 ms: none is fast enough
+        ReactionConstraint person = new ReactionConstraint("laser", 0.2, 0.026, 0.2, 76.6, 1.0);
+        AdviceItem item = reactionItem(avoiderAt(50, person));
+        assertEquals(1.2, (double) item.evidence().get("closing_speed_mps"), 1e-12);
+        assertEquals(1000 * 0.174 / 1.2 - 175.6, (double) item.evidence().get("max_safe_period_ms"), 1e-3);
+        assertEquals(false, item.evidence().get("safe"));
+        assertTrue(item.message().contains("at 1.2 m/s") && item.message().contains(
+                "assumes obstacles move toward the robot at up to 1 m/s: the gap closes at 1.2 m/s"), item.message());
+        // a slow cart at 0.05 m/s: closing 0.25 m/s; bound = 1000 * 0.174 / 0.25 - 175.6 = 520.4 ms, below the 694.4 ms of still obstacles
+        AdviceItem cart = reactionItem(avoiderAt(50, new ReactionConstraint("laser", 0.2, 0.026, 0.2, 76.6, 0.05)));
+        assertEquals(520.4, (double) cart.evidence().get("max_safe_period_ms"), 1e-9);
+        assertEquals(0.05, (double) cart.evidence().get("obstacle_speed_mps"), 0.0);
     }
 
     @Test

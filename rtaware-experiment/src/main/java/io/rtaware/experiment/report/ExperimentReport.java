@@ -14,6 +14,7 @@ import io.rtaware.experiment.PaperReference;
 import io.rtaware.experiment.PaperReference.PaperSet;
 import io.rtaware.experiment.PeriodSet;
 import io.rtaware.experiment.ResultsCsv;
+import io.rtaware.experiment.RunConditions;
 import io.rtaware.experiment.RunResult;
 import io.rtaware.experiment.stats.SampleStats;
 import io.rtaware.experiment.stats.WelchTest;
@@ -86,7 +87,7 @@ public final class ExperimentReport {
         Figures.trajectories(summary, trajectories(dir, rows), background, dir);
         SweepFigures.write(summary, dir);
 
-        Blocks blocks = content(summary);
+        Blocks blocks = content(summary, rows.get(rows.size() - 1).conditions());
         Files.writeString(dir.resolve(MARKDOWN_FILE), blocks.markdown());
         Files.writeString(dir.resolve(HTML_FILE), blocks.html("rtaware experiment report", dir));
         return summary;
@@ -107,7 +108,7 @@ public final class ExperimentReport {
         return paths;
     }
 
-    private static Blocks content(ExperimentSummary s) {
+    private static Blocks content(ExperimentSummary s, RunConditions robots) {
         Blocks b = new Blocks();
         ExperimentProfile p = s.profile();
         b.heading(1, "rtaware experiment report");
@@ -117,6 +118,8 @@ public final class ExperimentReport {
                 + " times more against its period), grid resolution "
                 + (p.gridResolutionM() == null ? "`run`'s default" : plain(p.gridResolutionM()) + " m")
                 + ", seed " + p.seed() + " (run j uses seed + j - 1), " + p.runsPerSet() + " run(s) per set planned.");
+        b.text("Robot: " + robots.robotsInWords() + "; the systematic odometry errors come from the robot seed, "
+                + "each run's noise from its seed (results.csv: robot_seed, robots).");
         b.text("Machine: " + (p.machine() == null ? "not recorded (no experiment.json)" : p.machine())
                 + ". The paper's runs: " + s.paper().source() + ".");
         b.text("Which runs count: run time over the runs that completed the course; distance to the finish and missed "

@@ -131,8 +131,10 @@ public final class Figures {
     }
 
     /**
-     * Writes {@code trajectories.png/.svg}: every path, one colour per set, waypoints as black
-     * diamonds, over the background's picture when it has one (PNG only; the SVG has the paths).
+     * Writes {@code trajectories.png/.svg}: every path, one colour per set, true (solid) and
+     * believed by the robot's odometry (dashed) where the run recorded it, waypoints as black
+     * diamonds, over the background's picture when it has one (PNG only; the SVG has the paths),
+     * with a legend and (PNG) a 1 m scale bar.
      *
      * @param summary the experiment's summary (set names and order)
      * @param paths the runs' paths
@@ -186,14 +188,33 @@ public final class Figures {
         } else {
             chart.paint(g, WIDTH, height);
         }
+        drawScaleBar(g, chart, frame);
         g.dispose();
         ImageIO.write(out, "png", dir.resolve(TRAJECTORIES + ".png").toFile());
+    }
+
+    /** A 1 m scale bar in the plot's lower left corner, at the chart's own scale. */
+    private static void drawScaleBar(Graphics2D g, XYChart chart, WorldBounds frame) {
+        double x0 = chart.getScreenXFromChart(frame.minXM() + 0.02 * frame.widthM());
+        double x1 = chart.getScreenXFromChart(frame.minXM() + 0.02 * frame.widthM() + 1.0);
+        double y = chart.getScreenYFromChart(frame.minYM() + 0.04 * frame.heightM());
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setColor(new Color(255, 255, 255, 220));
+        g.fillRect((int) x0 - 4, (int) y - 22, (int) (x1 - x0) + 8, 30);
+        g.setColor(Color.BLACK);
+        g.setStroke(new BasicStroke(2f));
+        g.draw(new java.awt.geom.Line2D.Double(x0, y, x1, y));
+        g.draw(new java.awt.geom.Line2D.Double(x0, y - 5, x0, y + 3));
+        g.draw(new java.awt.geom.Line2D.Double(x1, y - 5, x1, y + 3));
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+        g.drawString("1 m", (float) ((x0 + x1) / 2 - 10), (float) y - 8);
     }
 
     private static XYChart trajectoryChart(ExperimentSummary summary, List<Trajectory> paths, MapBackground background,
                                            WorldBounds frame, int height) {
         XYChart chart = new XYChartBuilder().width(WIDTH).height(height)
-                .title("Paths driven (ground truth), one colour per set" + (background.image().isPresent() ? ", over the course" : ""))
+                .title("Paths driven: true (solid) and believed (dashed), one colour per set"
+                        + (background.image().isPresent() ? ", over the course" : ""))
                 .xAxisTitle("x (m)").yAxisTitle("y (m)").build();
         style(chart.getStyler());
         chart.getStyler().setXAxisMin(frame.minXM()).setXAxisMax(frame.maxXM());
@@ -209,9 +230,16 @@ public final class Figures {
                 if (t.set() != set.set() || t.xM().length == 0) {
                     continue;
                 }
-                XYSeries s = chart.addSeries(first ? set.name() : set.name() + " run " + t.run(), t.xM(), t.yM());
+                XYSeries s = chart.addSeries(first ? set.name() + " true" : set.name() + " run " + t.run(), t.xM(), t.yM());
                 s.setMarker(SeriesMarkers.NONE).setLineColor(colour(i)).setLineStyle(new BasicStroke(1.5f));
                 s.setShowInLegend(first);
+                if (t.believedXM().length > 1) {
+                    XYSeries b = chart.addSeries(first ? set.name() + " believed (odometry)"
+                            : set.name() + " run " + t.run() + " believed", t.believedXM(), t.believedYM());
+                    b.setMarker(SeriesMarkers.NONE).setLineColor(colour(i)).setLineStyle(new BasicStroke(1.0f,
+                            BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f, new float[] {6f, 4f}, 0f));
+                    b.setShowInLegend(first);
+                }
                 first = false;
             }
         }

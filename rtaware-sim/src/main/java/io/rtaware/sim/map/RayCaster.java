@@ -6,7 +6,7 @@ package io.rtaware.sim.map;
  * the exact distance at which the ray enters the first obstacle cell (or leaves the map).
  * Allocation-free. Immutable and thread-safe.
  */
-public final class RayCaster {
+public final class RayCaster implements BeamCaster {
 
     private static final double SQRT2 = Math.sqrt(2.0);
 
@@ -31,6 +31,7 @@ public final class RayCaster {
      * @return distance in metres to the first obstacle cell or the map edge; exactly
      *     {@code maxRangeM} if none is nearer
      */
+    @Override
     public double castM(double xM, double yM, double dirX, double dirY, double maxRangeM) {
         final double res = map.resolutionM();
         final double invRes = 1.0 / res;

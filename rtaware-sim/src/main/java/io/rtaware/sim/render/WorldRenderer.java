@@ -2,6 +2,8 @@ package io.rtaware.sim.render;
 
 import io.rtaware.robot.geometry.Point2d;
 import io.rtaware.robot.geometry.Pose2d;
+import io.rtaware.sim.actor.ActorShape;
+import io.rtaware.sim.actor.ActorSpec;
 import io.rtaware.sim.map.OccupancyMap;
 import io.rtaware.sim.scenario.Scenario;
 import java.awt.BasicStroke;
@@ -17,6 +19,7 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import javax.imageio.ImageIO;
 
@@ -24,7 +27,11 @@ import javax.imageio.ImageIO;
  * Draws a scenario to an image (headless java.awt): free space white, obstacles black, unknown
  * grey, the start as a green disc of the robot's size with a heading line, waypoints as blue
  * tolerance circles numbered 1..n, the finish in red, and optionally a driven trajectory (a
- * dark blue polyline) and markers (orange crosses, e.g. where deadlines were missed).
+ * dark blue polyline), the path the robot believed it drove (its odometry, a dashed purple
+ * polyline) and markers (orange crosses, e.g. where deadlines were missed); a legend of what is
+ * drawn (top right) and a 1 m scale bar (bottom left). The scenario's actors are drawn where
+ * they start, bodies filled in orange with their paths dashed, doors and obstacles outlined with
+ * the time they close or appear.
  * Without a map, the picture spans the scenario's points with a margin. Immutable and
  * thread-safe (each call draws on its own image).
  */
@@ -38,6 +45,10 @@ public final class WorldRenderer {
     private static final Color FINISH = new Color(0xD0, 0x20, 0x20);
     private static final Color PATH = new Color(0x10, 0x20, 0x70);
     private static final Color MARKER = new Color(0xF0, 0x80, 0x00);
+    private static final Color BELIEVED = new Color(0xC0, 0x30, 0xB0);
+    private static final Color ACTOR = new Color(0xE0, 0x60, 0x10);
+    private static final Color ACTOR_PATH = new Color(0x90, 0x60, 0x30);
+    private static final int LEGEND_FONT_PX = 13;
 
     private final double pixelsPerM;
     private final double robotRadiusM;
@@ -83,6 +94,22 @@ public final class WorldRenderer {
      * @return the image
      */
     public BufferedImage render(Scenario scenario, OccupancyMap map, List<Pose2d> trajectory, List<Point2d> markers) {
+        return render(scenario, map, trajectory, List.of(), markers);
+    }
+
+    /**
+     * Draws the scenario, the true path, the path the robot believed it drove (its odometry,
+     * dashed) and markers, with a legend of what is drawn and a 1 m scale bar.
+     *
+     * @param scenario start and waypoints
+     * @param map the map to draw, or null to draw a blank area around the points
+     * @param trajectory poses driven in truth, in order (may be empty)
+     * @param believed the robot's own pose estimates at the same moments (may be empty)
+     * @param markers points to mark (may be empty)
+     * @return the image
+     */
+    public BufferedImage render(Scenario scenario, OccupancyMap map, List<Pose2d> trajectory, List<Pose2d> believed,
+                                List<Point2d> markers) {
         double minX;
         double minY;
         double maxX;
@@ -103,7 +130,7 @@ public final class WorldRenderer {
                 minY = Math.min(minY, p.yM());
                 maxY = Math.max(maxY, p.yM());
             }
-            for (Pose2d p : trajectory) {
+            for (Pose2d p : concat(trajectory, believed)) {
                 minX = Math.min(minX, p.xM());
                 maxX = Math.max(maxX, p.xM());
                 minY = Math.min(minY, p.yM());
@@ -128,8 +155,12 @@ public final class WorldRenderer {
             g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
             View v = new View(minX, maxY, pixelsPerM);
             drawCourse(g, v, scenario);
-            drawTrajectory(g, v, trajectory);
+            drawActors(g, v, scenario.actors());
+            drawPath(g, v, believed, BELIEVED, true);
+            drawPath(g, v, trajectory, PATH, false);
             drawMarkers(g, v, markers);
+            drawLegend(g, w, h, trajectory.size() >= 2, believed.size() >= 2, !markers.isEmpty(), scenario.actors());
+            drawScaleBar(g, h);
         } finally {
             g.dispose();
         }
@@ -169,6 +200,27 @@ public final class WorldRenderer {
     public void writePng(Scenario scenario, OccupancyMap map, List<Pose2d> trajectory, List<Point2d> markers,
                          Path file) {
         writePng(render(scenario, map, trajectory, markers), file);
+    }
+
+    /**
+     * Draws and writes in one call, with the believed path beside the true one.
+     *
+     * @param scenario start and waypoints
+     * @param map the map, or null
+     * @param trajectory poses driven in truth (may be empty)
+     * @param believed the robot's own estimates (may be empty)
+     * @param markers points to mark (may be empty)
+     * @param file destination PNG
+     */
+    public void writePng(Scenario scenario, OccupancyMap map, List<Pose2d> trajectory, List<Pose2d> believed,
+                         List<Point2d> markers, Path file) {
+        writePng(render(scenario, map, trajectory, believed, markers), file);
+    }
+
+    private static List<Pose2d> concat(List<Pose2d> a, List<Pose2d> b) {
+        List<Pose2d> all = new ArrayList<>(a);
+        all.addAll(b);
+        return all;
     }
 
     private record View(double minX, double maxY, double scale) {
@@ -228,7 +280,7 @@ public final class WorldRenderer {
         g.drawString("start", (float) (v.px(st.xM()) + r + 2), (float) (v.py(st.yM()) + r));
     }
 
-    private void drawTrajectory(Graphics2D g, View v, List<Pose2d> trajectory) {
+    private void drawPath(Graphics2D g, View v, List<Pose2d> trajectory, Color colour, boolean dashed) {
         if (trajectory.size() < 2) {
             return;
         }
@@ -237,9 +289,176 @@ public final class WorldRenderer {
         for (int i = 1; i < trajectory.size(); i++) {
             path.lineTo(v.px(trajectory.get(i).xM()), v.py(trajectory.get(i).yM()));
         }
-        g.setColor(PATH);
-        g.setStroke(new BasicStroke((float) Math.max(1.0, pixelsPerM / 60)));
+        g.setColor(colour);
+        g.setStroke(stroke(dashed));
         g.draw(path);
+    }
+
+    private BasicStroke stroke(boolean dashed) {
+        float width = (float) Math.max(1.0, pixelsPerM / 60);
+        return dashed ? new BasicStroke(width, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f,
+                new float[] {6 * width, 4 * width}, 0f) : new BasicStroke(width);
+    }
+
+    /**
+     * The actors where they start: a body filled, with its path (a thin line, an arrow head at
+     * the end of each pass), a door or an obstacle outlined with the time it closes or appears.
+     */
+    private void drawActors(Graphics2D g, View v, List<ActorSpec> actors) {
+        Font font = new Font(Font.SANS_SERIF, Font.PLAIN, LEGEND_FONT_PX - 1);
+        g.setFont(font);
+        for (ActorSpec a : actors) {
+            List<Point2d> path = a.path();
+            if (a.moves()) {
+                Path2D.Double line = new Path2D.Double();
+                line.moveTo(v.px(path.get(0).xM()), v.py(path.get(0).yM()));
+                for (int i = 1; i < path.size(); i++) {
+                    line.lineTo(v.px(path.get(i).xM()), v.py(path.get(i).yM()));
+                }
+                if (a.repeat() == ActorSpec.Repeat.LOOP) {
+                    line.closePath();
+                }
+                g.setColor(ACTOR_PATH);
+                g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f, new float[] {3f, 3f}, 0f));
+                g.draw(line);
+                Point2d from = path.get(path.size() - 2);
+                Point2d to = path.get(path.size() - 1);
+                double ang = Math.atan2(-(to.yM() - from.yM()), to.xM() - from.xM());
+                double tx = v.px(to.xM());
+                double ty = v.py(to.yM());
+                g.setStroke(new BasicStroke(1.5f));
+                g.draw(new Line2D.Double(tx, ty, tx - 8 * Math.cos(ang - 0.4), ty - 8 * Math.sin(ang - 0.4)));
+                g.draw(new Line2D.Double(tx, ty, tx - 8 * Math.cos(ang + 0.4), ty - 8 * Math.sin(ang + 0.4)));
+            }
+            Point2d at = path.get(0);
+            java.awt.Shape outline = outline(v, a.shape(), at);
+            String label = a.name() + switch (a.kind()) {
+                case BODY -> a.moves() ? String.format(java.util.Locale.ROOT, " %.1f m/s", a.speedMps()) : "";
+                case DOOR -> String.format(java.util.Locale.ROOT, " closes at %.0f s", a.appearAtS());
+                case OBSTACLE -> String.format(java.util.Locale.ROOT, " appears at %.0f s", a.appearAtS());
+            };
+            if (a.kind() == ActorSpec.Kind.BODY) {
+                g.setColor(ACTOR);
+                g.fill(outline);
+            } else {
+                g.setColor(ACTOR);
+                g.setStroke(new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f, new float[] {4f, 3f}, 0f));
+                g.draw(outline);
+            }
+            g.setColor(ACTOR.darker());
+            java.awt.Rectangle r = outline.getBounds();
+            g.drawString(label, r.x + r.width + 3, r.y + r.height / 2 + 4);
+        }
+    }
+
+    private static java.awt.Shape outline(View v, ActorShape shape, Point2d at) {
+        double cx = v.px(at.xM());
+        double cy = v.py(at.yM());
+        if (shape instanceof ActorShape.Circle c) {
+            double r = c.radiusM() * v.scale();
+            return new Ellipse2D.Double(cx - r, cy - r, 2 * r, 2 * r);
+        }
+        ActorShape.Box b = (ActorShape.Box) shape;
+        double w = b.widthM() * v.scale();
+        double h = b.heightM() * v.scale();
+        return new java.awt.geom.Rectangle2D.Double(cx - w / 2, cy - h / 2, w, h);
+    }
+
+    /** The legend, top right: one line per kind of thing drawn. */
+    private void drawLegend(Graphics2D g, int w, int h, boolean truePath, boolean believedPath, boolean markers,
+                            List<ActorSpec> actors) {
+        List<String> labels = new ArrayList<>();
+        List<Color> colours = new ArrayList<>();
+        List<Integer> kinds = new ArrayList<>(); // 0 line, 1 dashed, 2 cross, 3 circle
+        if (truePath) {
+            labels.add("true path (ground truth)");
+            colours.add(PATH);
+            kinds.add(0);
+        }
+        if (believedPath) {
+            labels.add("believed path (odometry)");
+            colours.add(BELIEVED);
+            kinds.add(1);
+        }
+        if (markers) {
+            labels.add("deadline missed");
+            colours.add(MARKER);
+            kinds.add(2);
+        }
+        if (actors.stream().anyMatch(ActorSpec::moves)) {
+            labels.add("person or body at its start, its path");
+            colours.add(ACTOR);
+            kinds.add(4);
+        }
+        if (actors.stream().anyMatch(a -> a.kind() != ActorSpec.Kind.BODY)) {
+            labels.add("door or obstacle, from the time shown");
+            colours.add(ACTOR);
+            kinds.add(5);
+        }
+        labels.add("waypoint (tolerance)");
+        colours.add(WAYPOINT);
+        kinds.add(3);
+        labels.add("finish");
+        colours.add(FINISH);
+        kinds.add(3);
+        Font font = new Font(Font.SANS_SERIF, Font.PLAIN, LEGEND_FONT_PX);
+        g.setFont(font);
+        int line = LEGEND_FONT_PX + 4;
+        int textW = 0;
+        for (String l : labels) {
+            textW = Math.max(textW, g.getFontMetrics().stringWidth(l));
+        }
+        int boxW = textW + 40;
+        int boxH = labels.size() * line + 8;
+        int x0 = Math.max(0, w - boxW - 8);
+        int y0 = 8;
+        g.setColor(new Color(255, 255, 255, 220));
+        g.fillRect(x0, y0, boxW, boxH);
+        g.setColor(Color.GRAY);
+        g.setStroke(new BasicStroke(1f));
+        g.drawRect(x0, y0, boxW, boxH);
+        for (int i = 0; i < labels.size(); i++) {
+            int cy = y0 + 4 + i * line + line / 2;
+            g.setColor(colours.get(i));
+            switch (kinds.get(i)) {
+                case 0, 1 -> {
+                    g.setStroke(stroke(kinds.get(i) == 1));
+                    g.draw(new Line2D.Double(x0 + 6, cy, x0 + 30, cy));
+                }
+                case 2 -> {
+                    g.setStroke(new BasicStroke(1.5f));
+                    g.draw(new Line2D.Double(x0 + 13, cy - 5, x0 + 23, cy + 5));
+                    g.draw(new Line2D.Double(x0 + 13, cy + 5, x0 + 23, cy - 5));
+                }
+                case 4 -> g.fill(new Ellipse2D.Double(x0 + 12, cy - 6, 12, 12));
+                case 5 -> {
+                    g.setStroke(new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f, new float[] {4f, 3f}, 0f));
+                    g.draw(new java.awt.geom.Rectangle2D.Double(x0 + 10, cy - 5, 16, 10));
+                }
+                default -> {
+                    g.setStroke(new BasicStroke(1.5f));
+                    g.draw(new Ellipse2D.Double(x0 + 12, cy - 6, 12, 12));
+                }
+            }
+            g.setColor(Color.BLACK);
+            g.drawString(labels.get(i), x0 + 36, cy + LEGEND_FONT_PX / 2 - 1);
+        }
+    }
+
+    /** A 1 m scale bar, bottom left. */
+    private void drawScaleBar(Graphics2D g, int h) {
+        double len = pixelsPerM;
+        int x0 = 10;
+        int y = h - 12;
+        g.setColor(new Color(255, 255, 255, 220));
+        g.fillRect(x0 - 4, y - LEGEND_FONT_PX - 10, (int) len + 8, LEGEND_FONT_PX + 18);
+        g.setColor(Color.BLACK);
+        g.setStroke(new BasicStroke(2f));
+        g.draw(new Line2D.Double(x0, y, x0 + len, y));
+        g.draw(new Line2D.Double(x0, y - 5, x0, y + 3));
+        g.draw(new Line2D.Double(x0 + len, y - 5, x0 + len, y + 3));
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, LEGEND_FONT_PX));
+        g.drawString("1 m", (float) (x0 + len / 2 - 10), y - 7);
     }
 
     private void drawMarkers(Graphics2D g, View v, List<Point2d> markers) {

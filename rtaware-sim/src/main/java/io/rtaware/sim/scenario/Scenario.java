@@ -2,6 +2,7 @@ package io.rtaware.sim.scenario;
 
 import io.rtaware.robot.geometry.Point2d;
 import io.rtaware.robot.geometry.Pose2d;
+import io.rtaware.sim.actor.ActorSpec;
 import io.rtaware.sim.map.OccupancyMap;
 import io.rtaware.sim.world.RobotModel;
 import java.util.List;
@@ -21,9 +22,27 @@ import java.util.Optional;
  * @param timeLimitS the time limit in seconds
  * @param robot the robot model the scenario asks for (its {@code robot:} section); empty for
  *     the default (the Koala at the paper's top speed)
+ * @param actors what moves, closes or appears in the world (its {@code actors:} section); empty
+ *     for a world that stands still
  */
 public record Scenario(String name, Optional<OccupancyMap> map, Pose2d start, List<Point2d> waypoints,
-                       double goalToleranceM, double timeLimitS, Optional<RobotModel> robot) {
+                       double goalToleranceM, double timeLimitS, Optional<RobotModel> robot, List<ActorSpec> actors) {
+
+    /**
+     * A scenario without actors.
+     *
+     * @param name the scenario's name
+     * @param map the world map
+     * @param start the start pose
+     * @param waypoints the waypoints in order
+     * @param goalToleranceM waypoint tolerance in metres
+     * @param timeLimitS time limit in seconds
+     * @param robot the robot model it asks for, or empty
+     */
+    public Scenario(String name, Optional<OccupancyMap> map, Pose2d start, List<Point2d> waypoints,
+                    double goalToleranceM, double timeLimitS, Optional<RobotModel> robot) {
+        this(name, map, start, waypoints, goalToleranceM, timeLimitS, robot, List.of());
+    }
 
     /**
      * A scenario without a {@code robot:} section.
@@ -37,7 +56,7 @@ public record Scenario(String name, Optional<OccupancyMap> map, Pose2d start, Li
      */
     public Scenario(String name, Optional<OccupancyMap> map, Pose2d start, List<Point2d> waypoints,
                     double goalToleranceM, double timeLimitS) {
-        this(name, map, start, waypoints, goalToleranceM, timeLimitS, Optional.empty());
+        this(name, map, start, waypoints, goalToleranceM, timeLimitS, Optional.empty(), List.of());
     }
 
     /**
@@ -60,6 +79,7 @@ public record Scenario(String name, Optional<OccupancyMap> map, Pose2d start, Li
             throw new IllegalArgumentException("start must be finite, got " + start);
         }
         waypoints = List.copyOf(waypoints);
+        actors = List.copyOf(actors);
         if (waypoints.isEmpty()) {
             throw new IllegalArgumentException("waypoints must not be empty, got []");
         }
@@ -74,6 +94,14 @@ public record Scenario(String name, Optional<OccupancyMap> map, Pose2d start, Li
         if (!(timeLimitS > 0) || Double.isInfinite(timeLimitS)) {
             throw new IllegalArgumentException("time_limit_s must be positive, got " + timeLimitS);
         }
+    }
+
+    /**
+     * @return the fastest actor's speed, m/s (0 without moving actors): the speed an obstacle
+     *     may close on the robot at, besides the robot's own
+     */
+    public double fastestActorMps() {
+        return actors.stream().filter(ActorSpec::moves).mapToDouble(ActorSpec::speedMps).max().orElse(0.0);
     }
 
     /** @return the last waypoint */

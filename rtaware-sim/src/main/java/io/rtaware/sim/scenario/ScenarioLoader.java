@@ -5,9 +5,12 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.dataformat.yaml.YAMLFactory;
 import io.rtaware.robot.geometry.Point2d;
 import io.rtaware.robot.geometry.Pose2d;
+import io.rtaware.sim.actor.ActorShape;
+import io.rtaware.sim.actor.ActorSpec;
 import io.rtaware.sim.map.MapException;
 import io.rtaware.sim.map.MapLoader;
 import io.rtaware.sim.map.OccupancyMap;
+import io.rtaware.sim.world.LaserTiming;
 import io.rtaware.sim.world.RobotModel;
 import java.io.FileNotFoundException;
 import java.io.IOException;
@@ -17,18 +20,22 @@ import java.nio.file.InvalidPathException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.Set;
 import java.util.Iterator;
 import java.util.Map;
 import java.util.List;
 import java.util.Optional;
 
 /**
- * Loads scenarios: {@link #load(String)} takes a built-in name ({@value #PAPER_ROOM}) or a
+ * Loads scenarios: {@link #load(String)} takes a built-in name ({@value #PAPER_ROOM}, {@value #CORRIDOR},
+ * {@value #OFFICE}) or a
  * path to a YAML file with the fields {@code map} (optional, a map_server YAML relative to the
  * scenario file), {@code start: {x, y, yaw}}, {@code waypoints: [{x, y}, ...]},
  * {@code goal_tolerance_m}, {@code time_limit_s} and optionally {@code robot: {model: koala|ideal,
- * PARAMETER: VALUE, ...}} (the robot model and overrides of its numeric parameters, named as in
- * {@link RobotModel#with(String, double)}). Unknown top-level fields are ignored. Failures are a
+ * laser_link: usb|serial, PARAMETER: VALUE, ...}} (the robot model, its laser's link and overrides of its
+ * numeric parameters, named as in {@link RobotModel#with(String, double)}) and {@code actors: [...]}
+ * (what moves, closes or appears: {@link ActorSpec}; docs/moving-world.md gives the fields). Unknown top-level fields are ignored. Failures are a
  * {@link ScenarioException} with a one-line message naming the file, the field and the value.
  * Stateless and thread-safe.
  */
@@ -36,6 +43,12 @@ public final class ScenarioLoader {
 
     /** The built-in scenario: the paper's experiment room. */
     public static final String PAPER_ROOM = "paper-room";
+    /** The built-in corridor where people cross (issue 27). */
+    public static final String CORRIDOR = "corridor";
+    /** The built-in office: a person steps out from behind a corner, a door closes, a box appears (issue 27). */
+    public static final String OFFICE = "office";
+    /** Every built-in scenario's name. */
+    public static final List<String> BUILT_IN = List.of(PAPER_ROOM, CORRIDOR, OFFICE);
 
     private static final String RESOURCE_DIR = "/io/rtaware/sim/scenario/";
     private static final ObjectMapper YAML = new ObjectMapper(new YAMLFactory());
@@ -44,13 +57,13 @@ public final class ScenarioLoader {
     }
 
     /**
-     * @param nameOrPath {@value #PAPER_ROOM} or a path to a scenario YAML file
+     * @param nameOrPath a built-in name ({@link #BUILT_IN}) or a path to a scenario YAML file
      * @return the scenario, with its map loaded
      * @throws ScenarioException if the file is missing or malformed
      */
     public static Scenario load(String nameOrPath) {
-        if (PAPER_ROOM.equals(nameOrPath)) {
-            return builtIn(PAPER_ROOM);
+        if (BUILT_IN.contains(nameOrPath)) {
+            return builtIn(nameOrPath);
         }
         try {
             return load(Path.of(nameOrPath));
@@ -84,8 +97,8 @@ public final class ScenarioLoader {
      * @throws ScenarioException if there is no built-in scenario of that name
      */
     public static Scenario builtIn(String name) {
-        if (!PAPER_ROOM.equals(name)) {
-            throw new ScenarioException("built-in scenarios: " + PAPER_ROOM + "; got '" + name + "'");
+        if (!BUILT_IN.contains(name)) {
+            throw new ScenarioException("built-in scenarios: " + String.join(", ", BUILT_IN) + "; got '" + name + "'");
         }
         String resource = RESOURCE_DIR + name + ".scenario.yaml";
         try (InputStream in = open(resource)) {
@@ -168,7 +181,140 @@ public final class ScenarioLoader {
         if (!(limit > 0)) {
             throw new ScenarioException(source + ": field 'time_limit_s' must be positive, got " + limit);
         }
-        return new Scenario(name, map, start, waypoints, tolerance, limit, robot(source, root.get("robot")));
+        return new Scenario(name, map, start, waypoints, tolerance, limit, robot(source, root.get("robot")),
+                actors(source, root.get("actors")));
+    }
+
+    private static final Set<String> ACTOR_FIELDS = Set.of("name", "type", "shape", "radius_m", "size_m", "path", "at",
+            "speed_mps", "repeat", "start_at_s", "start_when_robot_within_m", "start_jitter_s", "close_at_s",
+            "appear_at_s");
+
+    private static List<ActorSpec> actors(String source, JsonNode node) {
+        if (node == null || node.isNull()) {
+            return List.of();
+        }
+        if (!node.isArray()) {
+            throw new ScenarioException(source + ": field 'actors' must be a list, got " + node);
+        }
+        List<ActorSpec> actors = new ArrayList<>();
+        Set<String> names = new HashSet<>();
+        for (int i = 0; i < node.size(); i++) {
+            JsonNode a = node.get(i);
+            String at = "actors[" + i + "]";
+            if (!a.isObject()) {
+                throw new ScenarioException(source + ": field '" + at + "' must be a mapping, got " + a);
+            }
+            for (Iterator<String> it = a.fieldNames(); it.hasNext(); ) {
+                String f = it.next();
+                if (!ACTOR_FIELDS.contains(f)) {
+                    throw new ScenarioException(source + ": field '" + at + "." + f + "' is not an actor field (known: "
+                            + String.join(", ", new java.util.TreeSet<>(ACTOR_FIELDS)) + ")");
+                }
+            }
+            ActorSpec.Kind kind = choice(source, a, at + ".type", "type", "body", ActorSpec.Kind.class);
+            String actorName = a.has("name") ? a.get("name").asText() : kind.yamlName() + "-" + (i + 1);
+            if (!names.add(actorName)) {
+                throw new ScenarioException(source + ": field '" + at + ".name' repeats the name '" + actorName + "'");
+            }
+            String shapeName = kind == ActorSpec.Kind.BODY ? "circle" : "box";
+            ActorShape shape;
+            try {
+                shape = switch (text(source, a, at + ".shape", "shape", shapeName)) {
+                    case "circle" -> new ActorShape.Circle(optional(source, a, at + ".radius_m", "radius_m", 0.25));
+                    case "box" -> box(source, a, at);
+                    default -> throw new ScenarioException(source + ": field '" + at + ".shape' must be circle or box, got "
+                            + a.get("shape"));
+                };
+            } catch (IllegalArgumentException e) {
+                throw new ScenarioException(source + ": " + at + ": " + e.getMessage(), e);
+            }
+            List<Point2d> path = new ArrayList<>();
+            JsonNode pathNode = a.get("path");
+            JsonNode atNode = a.get("at");
+            if (pathNode != null && atNode != null) {
+                throw new ScenarioException(source + ": field '" + at + "' has both 'path' and 'at'; give one");
+            }
+            if (atNode != null) {
+                path.add(new Point2d(number(source, atNode, at + ".at.x", "x"), number(source, atNode, at + ".at.y", "y")));
+            } else if (pathNode != null) {
+                if (!pathNode.isArray() || pathNode.isEmpty()) {
+                    throw new ScenarioException(source + ": field '" + at + ".path' must be a non-empty list of {x, y}, got "
+                            + pathNode);
+                }
+                for (int k = 0; k < pathNode.size(); k++) {
+                    String pf = at + ".path[" + k + "]";
+                    path.add(new Point2d(number(source, pathNode.get(k), pf + ".x", "x"),
+                            number(source, pathNode.get(k), pf + ".y", "y")));
+                }
+            } else {
+                throw new ScenarioException(source + ": field '" + at + ".path' (or '" + at + ".at') is missing");
+            }
+            double appear = switch (kind) {
+                case DOOR -> number(source, a, at + ".close_at_s", "close_at_s");
+                case OBSTACLE -> number(source, a, at + ".appear_at_s", "appear_at_s");
+                case BODY -> optional(source, a, at + ".appear_at_s", "appear_at_s", 0.0);
+            };
+            if (kind != ActorSpec.Kind.BODY && path.size() != 1) {
+                throw new ScenarioException(source + ": field '" + at + ".at' must be one point for a " + kind.yamlName()
+                        + ", got a path of " + path.size());
+            }
+            if (kind == ActorSpec.Kind.BODY && path.size() > 1 && !a.has("speed_mps")) {
+                throw new ScenarioException(source + ": field '" + at + ".speed_mps' is missing");
+            }
+            try {
+                actors.add(new ActorSpec(actorName, kind, shape, path,
+                        optional(source, a, at + ".speed_mps", "speed_mps", 0.0),
+                        choice(source, a, at + ".repeat", "repeat", "once", ActorSpec.Repeat.class),
+                        optional(source, a, at + ".start_at_s", "start_at_s", 0.0),
+                        optional(source, a, at + ".start_when_robot_within_m", "start_when_robot_within_m", 0.0),
+                        optional(source, a, at + ".start_jitter_s", "start_jitter_s", 0.0), appear));
+            } catch (IllegalArgumentException e) {
+                String m = e.getMessage();
+                int space = m.indexOf(' ');
+                throw new ScenarioException(source + ": field '" + at + "." + m.substring(0, space) + "'" + m.substring(space), e);
+            }
+        }
+        return actors;
+    }
+
+    private static ActorShape box(String source, JsonNode a, String at) {
+        JsonNode size = a.get("size_m");
+        if (size == null || !size.isArray() || size.size() != 2 || !size.get(0).isNumber() || !size.get(1).isNumber()) {
+            throw new ScenarioException(source + ": field '" + at + ".size_m' must be [width, height] in metres, got " + size);
+        }
+        return new ActorShape.Box(size.get(0).asDouble(), size.get(1).asDouble());
+    }
+
+    private static String text(String source, JsonNode parent, String path, String field, String orElse) {
+        JsonNode n = parent.get(field);
+        if (n == null || n.isNull()) {
+            return orElse;
+        }
+        if (!n.isTextual()) {
+            throw new ScenarioException(source + ": field '" + path + "' must be a word, got " + n);
+        }
+        return n.asText();
+    }
+
+    private static <E extends Enum<E>> E choice(String source, JsonNode parent, String path, String field, String orElse,
+                                                Class<E> type) {
+        String value = text(source, parent, path, field, orElse);
+        for (E e : type.getEnumConstants()) {
+            if (e.name().equalsIgnoreCase(value)) {
+                return e;
+            }
+        }
+        List<String> known = new ArrayList<>();
+        for (E e : type.getEnumConstants()) {
+            known.add(e.name().toLowerCase(java.util.Locale.ROOT));
+        }
+        throw new ScenarioException(source + ": field '" + path + "' must be " + String.join(" or ", known) + ", got '"
+                + value + "'");
+    }
+
+    private static double optional(String source, JsonNode parent, String path, String field, double orElse) {
+        JsonNode n = parent.get(field);
+        return n == null || n.isNull() ? orElse : number(source, parent, path, field);
     }
 
     private static Optional<RobotModel> robot(String source, JsonNode node) {
@@ -189,6 +335,14 @@ public final class ScenarioLoader {
         for (Iterator<Map.Entry<String, JsonNode>> it = node.fields(); it.hasNext(); ) {
             Map.Entry<String, JsonNode> f = it.next();
             if (f.getKey().equals("model")) {
+                continue;
+            }
+            if (f.getKey().equals("laser_link")) {
+                try {
+                    model = model.withLaserLink(LaserTiming.Link.parse(f.getValue().asText()));
+                } catch (IllegalArgumentException e) {
+                    throw new ScenarioException(source + ": field 'robot.laser_link': " + e.getMessage(), e);
+                }
                 continue;
             }
             double v = number(source, node, "robot." + f.getKey(), f.getKey());

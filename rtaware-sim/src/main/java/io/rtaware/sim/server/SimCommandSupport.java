@@ -53,10 +53,41 @@ public final class SimCommandSupport {
      */
     public static PlayerSimServer start(Scenario scenario, RobotModel model, Clock clock, ServerConfig config,
                                         long seed) throws IOException {
+        return start(scenario, model, clock, config, seed, seed);
+    }
+
+    /**
+     * Builds the world of a scenario with a given robot model and robot seed and serves it.
+     *
+     * @param scenario the scenario; it must have a map
+     * @param model the robot model
+     * @param clock world time
+     * @param config address, port and limits
+     * @param seed seed of this run's noise
+     * @param robotSeed seed of the robot's systematic odometry errors (one robot per seed)
+     * @return the running server; close it when done
+     * @throws IOException if the port cannot be bound
+     * @throws IllegalArgumentException if the scenario has no map
+     */
+    public static PlayerSimServer start(Scenario scenario, RobotModel model, Clock clock, ServerConfig config,
+                                        long seed, long robotSeed) throws IOException {
+        return PlayerSimServer.start(world(scenario, model, seed, robotSeed), clock, config);
+    }
+
+    /**
+     * The world of a scenario, with its actors, at time zero.
+     *
+     * @param scenario the scenario; it must have a map
+     * @param model the robot model
+     * @param seed seed of this run's noise
+     * @param robotSeed seed of the robot's systematic odometry errors
+     * @return the world
+     * @throws IllegalArgumentException if the scenario has no map
+     */
+    public static World world(Scenario scenario, RobotModel model, long seed, long robotSeed) {
         OccupancyMap map = scenario.map().orElseThrow(() -> new IllegalArgumentException(
                 "scenario '" + scenario.name() + "' has no map: the simulator needs one"));
-        World world = new World(map, scenario.start(), model, LaserConfig.URG_04LX, seed);
-        return PlayerSimServer.start(world, clock, config);
+        return new World(map, scenario.start(), model, LaserConfig.URG_04LX, seed, robotSeed, scenario.actors());
     }
 
     /**

@@ -8,11 +8,13 @@ import io.rtaware.player.protocol.Subtypes;
 import io.rtaware.player.xdr.PlayerProtocolException;
 import io.rtaware.player.xdr.XdrReader;
 import io.rtaware.robot.geometry.Pose2d;
+import io.rtaware.sim.actor.Actors;
 import io.rtaware.sim.world.World;
 
 /**
- * {@code simulation:0}: GET_POSE2D (ground truth) and SET_POSE2D of the one model the server
- * knows by name; other names and non-finite poses are NACKed. Thread-safe.
+ * {@code simulation:0}: GET_POSE2D (ground truth) and SET_POSE2D of the robot's model by name,
+ * GET_POSE2D of the scenario's actors by their names (as Stage answers for any model of its
+ * world; they cannot be moved); other names and non-finite poses are NACKed. Thread-safe.
  */
 final class SimulationDevice implements DeviceHandler {
 
@@ -24,6 +26,18 @@ final class SimulationDevice implements DeviceHandler {
         this.world = world;
         this.messages = messages;
         this.modelName = modelName;
+    }
+
+    /** An actor's pose (x, y, heading along its motion, 0 while it stands), or null for no such actor. */
+    private static double[] actorPose(World w, String name) {
+        Actors actors = w.actors();
+        int i = actors.indexOf(name);
+        if (i < 0) {
+            return null;
+        }
+        double vx = actors.vxMps(i);
+        double vy = actors.vyMps(i);
+        return new double[] {actors.xM(i), actors.yM(i), vx == 0 && vy == 0 ? 0.0 : Math.atan2(vy, vx)};
     }
 
     @Override
@@ -44,7 +58,13 @@ final class SimulationDevice implements DeviceHandler {
         }
         SimulationPose2d req = PlayerCodec.readSimulationPose2d(body);
         if (!modelName.equals(req.name())) {
-            client.reply(messages.nack(h));
+            double[] actor = h.subtype() == Subtypes.SIMULATION_REQ_GET_POSE2D ? world.read(w -> actorPose(w, req.name())) : null;
+            if (actor == null) {
+                client.reply(messages.nack(h));
+                return;
+            }
+            client.reply(messages.ack(h, w -> PlayerCodec.writeSimulationPose2d(w,
+                    new SimulationPose2d(req.name(), actor[0], actor[1], actor[2]))));
             return;
         }
         if (h.subtype() == Subtypes.SIMULATION_REQ_SET_POSE2D) {

@@ -1,7 +1,7 @@
 package io.rtaware.sim.world;
 
 import io.rtaware.robot.msg.LaserScan;
-import io.rtaware.sim.map.RayCaster;
+import io.rtaware.sim.map.BeamCaster;
 import java.util.random.RandomGenerator;
 
 /**
@@ -12,15 +12,15 @@ import java.util.random.RandomGenerator;
 public final class Laser {
 
     private final LaserConfig config;
-    private final RayCaster caster;
+    private final BeamCaster caster;
     private final double[] cosBearing;
     private final double[] sinBearing;
 
     /**
      * @param config the laser's parameters
-     * @param caster ray caster on the world map
+     * @param caster casts each beam (the world map's ray caster, with moving actors if any)
      */
-    public Laser(LaserConfig config, RayCaster caster) {
+    public Laser(LaserConfig config, BeamCaster caster) {
         this.config = config;
         this.caster = caster;
         this.cosBearing = new double[config.beams()];

@@ -1,5 +1,8 @@
 package io.rtaware.sim.world;
 
+import java.util.LinkedHashMap;
+import java.util.Map;
+
 /**
  * The simulated planar laser, mounted at the robot's centre looking forward. Beams are spread
  * evenly and symmetrically about the heading: beam {@code i} points at
@@ -75,6 +78,41 @@ public record LaserConfig(int beams, double angleIncrementRad, double minRangeM,
     /** @return bearing of the last beam in radians */
     public double maxAngleRad() {
         return fovRad() / 2;
+    }
+
+    /**
+     * @return the laser's parameters for reports ({@code run.robot_model}): {@code laser_beams},
+     *     {@code laser_angle_increment_rad}, {@code laser_min_range_m}, {@code laser_max_range_m},
+     *     {@code laser_rate_hz}, {@code laser_range_noise_m}
+     */
+    public Map<String, Object> parameters() {
+        Map<String, Object> p = new LinkedHashMap<>();
+        p.put("laser_beams", beams);
+        p.put("laser_angle_increment_rad", angleIncrementRad);
+        p.put("laser_min_range_m", minRangeM);
+        p.put("laser_max_range_m", maxRangeM);
+        p.put("laser_rate_hz", rateHz);
+        p.put("laser_range_noise_m", noiseSigmaM);
+        return p;
+    }
+
+    /**
+     * Where the {@link #URG_04LX} parameters come from, keyed as {@link #parameters()}; each text
+     * starts with {@code source:} or {@code estimate:}.
+     *
+     * @return a new map from parameter name to its source
+     */
+    public static Map<String, String> urg04lxSources() {
+        Map<String, String> s = new LinkedHashMap<>();
+        s.put("laser_beams", "source: SCIP 2.0, the URG-04LX's PP answer AMIN:44, AMAX:725: 683 steps");
+        s.put("laser_angle_increment_rad", "source: SCIP 2.0, ARES:1024 steps per turn, 0.3515625 degree");
+        s.put("laser_min_range_m", "source: SCIP 2.0 PP answer of the URG-04LX, DMIN:20 (mm)");
+        s.put("laser_max_range_m", "estimate: 4 m, the range the URG-04LX is commonly sold with; we found no stored "
+                + "copy of Hokuyo's data sheet for this model to cite, and its firmware may report readings beyond it");
+        s.put("laser_rate_hz", "source: the paper, 'the Hokuyo laser sends out its data at a rate of 10Hz' (600 rpm)");
+        s.put("laser_range_noise_m", "estimate: 1 cm standard deviation, the order of the URG-04LX's quoted accuracy "
+                + "at short range (about +-10 mm); not measured on the paper's unit");
+        return s;
     }
 
     /** @return the scan period in world nanoseconds */

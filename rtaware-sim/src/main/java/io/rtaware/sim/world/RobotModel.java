@@ -178,14 +178,28 @@ public record RobotModel(String name, RobotConfig body, double maxDecelMps2, lon
                     o.rotationScaleError(), o.headingDriftRadPerM(), value, o.rotationNoiseRadPerSqrtRad());
             case "odometry_rotation_noise_rad_per_sqrt_rad" -> o = new OdometryError(o.distanceScaleError(),
                     o.rotationScaleError(), o.headingDriftRadPerM(), o.distanceNoiseMPerSqrtM(), value);
-            case "laser_delivery_delay_ms" -> laser = new LaserTiming(laser.sweep(), Math.round(value * 1e6));
+            case "laser_delivery_delay_ms" -> laser = new LaserTiming(laser.sweep(), Math.round(value * 1e6),
+                    LaserTiming.Link.NONE);
             default -> throw new IllegalArgumentException("unknown robot parameter '" + key + "' (known: top_speed_mps, "
                     + "accel_mps2, decel_mps2, command_latency_ms, odometry_distance_scale_error, "
                     + "odometry_rotation_scale_error, odometry_heading_drift_rad_per_m, "
                     + "odometry_distance_noise_m_per_sqrt_m, odometry_rotation_noise_rad_per_sqrt_rad, "
-                    + "laser_delivery_delay_ms)");
+                    + "laser_delivery_delay_ms, laser_link)");
         }
         return new RobotModel(name, b, decel, latency, o, laser, topSpeedMps);
+    }
+
+    /**
+     * @param link the link the laser's scans travel over
+     * @return a copy whose sweeping laser delivers with that link's delay (the ideal model's
+     *     instantaneous laser is kept)
+     */
+    public RobotModel withLaserLink(LaserTiming.Link link) {
+        if (!laserTiming.sweep()) {
+            return this;
+        }
+        return new RobotModel(name, body, maxDecelMps2, commandLatencyNs, odometry, LaserTiming.urg04lx(link),
+                topSpeedMps);
     }
 
     /** @return true for a model without latency, odometry error or laser sweep */
@@ -245,9 +259,57 @@ public record RobotModel(String name, RobotConfig body, double maxDecelMps2, lon
         p.put("odometry_distance_noise_m_per_sqrt_m", odometry.distanceNoiseMPerSqrtM());
         p.put("odometry_rotation_noise_rad_per_sqrt_rad", odometry.rotationNoiseRadPerSqrtRad());
         p.put("laser_sweep", laserTiming.sweep());
+        p.put("laser_link", laserTiming.link().jsonName());
         p.put("laser_delivery_delay_ms", laserTiming.deliveryDelayNs() / 1e6);
         p.put("stopping_distance_m", stoppingDistanceM(topSpeedMps));
         return p;
+    }
+
+    /**
+     * Where each of the Koala's parameters comes from: every key of {@link #parameters()} but
+     * {@code name}, with a text that starts with {@code source:} (a document or the paper) or
+     * {@code estimate:} (our reasoning where no document gives the number). Reports carry it
+     * as {@code run.robot_model.sources}; docs/robot-model.md has the same table.
+     *
+     * @return a new map from parameter name to its source, in the order of {@link #parameters()}
+     */
+    public static Map<String, String> sources() {
+        Map<String, String> s = new LinkedHashMap<>();
+        s.put("top_speed_mps", "source: the paper, 'the top speed of the robot being 0.1 meters per second'");
+        s.put("max_speed_mps", "source: K-Team's Koala product description gives 0.6 m/s (vendor figure; no stored copy of "
+                + "the data sheet was found, so unverified here); the limit of --top-speed");
+        s.put("max_turn_rate_rad_per_s", "estimate: both sides at 0.3 m/s in opposite directions on a track of about "
+                + "0.3 m (the body is 32 x 30 cm) turn at 2 rad/s");
+        s.put("radius_m", "source: K-Team gives the Koala's body as about 32 x 30 cm; 0.2 m is the half diagonal rounded");
+        s.put("accel_mps2", "estimate: the Koala 2.5 manual says its speed command (PID every 10 ms) changes speed "
+                + "'as quick as possible', limited by the 6 W motors and 58.5:1 gearbox, and offers a ramp mode instead");
+        s.put("decel_mps2", "estimate: braking under the 10 ms PID loop is faster than speeding up: twice the acceleration");
+        s.put("turn_accel_rad_per_s2", "estimate: the linear acceleration at the wheels over half the track, reduced for "
+                + "the slip of skid steering");
+        s.put("command_latency_ms", "estimate: Player's position driver cycle, the serial command to the Koala, one or "
+                + "two 10 ms PID cycles of its controller");
+        s.put("odometry_rate_hz", "source: the paper, position information 'updates on average at 16Hz'");
+        s.put("odometry_distance_scale_error", "estimate: drawn once per robot in +-e; Stage's position model draws its "
+                + "x error in +-E/2 of odom_error (default 0.03, so +-0.015); the Koala 2.5 manual: the 82.5 mm wheel "
+                + "compresses to 80.5 mm under 3 kg, a 2.4 % distance error until recalibrated, so e = 0.03 covers it");
+        s.put("odometry_rotation_scale_error", "estimate: skid steering turns by slipping, so the encoders' rotation is "
+                + "off by the slip, several times the distance error (Mandow et al., IROS 2007, 'Experimental kinematics "
+                + "for wheeled skid-steer mobile robots'); Stage's heading odom_error default 0.05 is for a differential drive");
+        s.put("odometry_heading_drift_rad_per_m", "estimate: unequal sides of a skid-steer base bend a straight line; "
+                + "0.01 rad/m (0.6 degree per metre) is our guess of its size, no source gives one for the Koala");
+        s.put("odometry_distance_noise_m_per_sqrt_m", "estimate: 1 cm after 1 m of zero-mean random walk, a third of the "
+                + "systematic bound; no source measured the Koala's");
+        s.put("odometry_rotation_noise_rad_per_sqrt_rad", "estimate: 0.02 rad after 1 rad turned, twice the distance "
+                + "noise as skid steering slips more when turning; no source measured the Koala's");
+        s.put("laser_sweep", "source: SCIP 2.0 specification, the URG-04LX answers PP with SCAN:600 (600 rpm, 100 ms per "
+                + "turn), ARES:1024, AMIN:44, AMAX:725: its 683 steps take 66.6 ms, each measured where the robot is then");
+        s.put("laser_link", "assumption: usb. The paper says the Hokuyo 'sends out its data at a rate of 10Hz'; over "
+                + "RS-232 at 115.2 kbit/s a full scan (about 1 430 bytes) takes 124 ms and could not arrive at 10 Hz, so "
+                + "the paper's URG was on USB; serial is available as robot: {laser_link: serial}");
+        s.put("laser_delivery_delay_ms", "derived from laser_link: serial 124 ms (1 430 bytes at 11 520 bytes/s); usb "
+                + "10 ms, an estimate (the bus takes under 2 ms, plus the sensor's preparation and the driver's read)");
+        s.put("stopping_distance_m", "derived: top speed x command latency + top speed^2 / (2 x deceleration)");
+        return s;
     }
 
     /** @return a one-line description for logs */

@@ -4,8 +4,11 @@ import io.rtaware.robot.geometry.Angles;
 import io.rtaware.robot.geometry.Pose2d;
 import io.rtaware.robot.msg.LaserScan;
 import io.rtaware.robot.msg.Odometry;
+import io.rtaware.sim.actor.ActorSpec;
+import io.rtaware.sim.actor.Actors;
 import io.rtaware.sim.map.OccupancyMap;
 import io.rtaware.sim.map.RayCaster;
+import java.util.List;
 import java.util.Objects;
 import java.util.SplittableRandom;
 
@@ -42,6 +45,14 @@ public final class World {
     public static final double MAX_SUBSTEP_M = 0.005;
     /** Clearance beyond the radius, in metres, at which a contact is over. */
     public static final double CONTACT_RELEASE_M = 0.01;
+    /**
+     * A near miss: the robot's body came within this many metres of an obstacle (map or actor)
+     * without touching it; one per approach, over when the clearance is back above the margin
+     * plus {@value #CONTACT_RELEASE_M} m.
+     */
+    public static final double NEAR_MISS_MARGIN_M = 0.05;
+    /** Clearances beyond this many metres are not measured exactly ({@link #minClearanceM()} says "at least"). */
+    public static final double CLEARANCE_LIMIT_M = 0.5;
 
     private static final int BISECTION_STEPS = 12;
     private static final long ODOMETRY_SEED_SALT = 0x9E3779B97F4A7C15L;
@@ -50,6 +61,7 @@ public final class World {
     private static final int MAX_PENDING_COMMANDS = 256;
 
     private final OccupancyMap map;
+    private final Actors actors;
     private final RobotModel model;
     private final RobotConfig robot;
     private final Laser laser;
@@ -60,7 +72,8 @@ public final class World {
     private final long odometryPeriodNs;
     private final long laserPeriodNs;
     private final SplittableRandom driftNoise;
-    /** This run's systematic odometry errors, drawn once at creation. */
+    /** The robot's systematic odometry errors, drawn from the robot seed. */
+    private final OdometryBias bias;
     private final double distanceScale;
     private final double rotationScale;
     private final double headingDriftRadPerM;
@@ -90,6 +103,10 @@ public final class World {
     private boolean stalled;
     private boolean inContact;
     private long contactCount;
+    private double minClearanceM = CLEARANCE_LIMIT_M;
+    private boolean nearMissOpen;
+    private boolean nearMissTouched;
+    private long nearMisses;
     private boolean odometryFresh;
     private boolean scanFresh;
     private long nextOdometryNs;
@@ -117,32 +134,65 @@ public final class World {
      * @param start the robot's initial pose (also the odometry's starting estimate)
      * @param model the robot model
      * @param laserConfig the laser's parameters
-     * @param seed seed of all noise and of the run's systematic odometry errors
-     * @throws IllegalArgumentException if a sweeping laser's scan and delivery do not fit in its period
+     * @param seed seed of all noise and also of the robot's systematic odometry errors (a new robot per seed)
      */
     public World(OccupancyMap map, Pose2d start, RobotModel model, LaserConfig laserConfig, long seed) {
+        this(map, start, model, laserConfig, seed, seed);
+    }
+
+    /**
+     * Creates the world at time zero with the robot at {@code start}, publishing a first
+     * odometry and scan.
+     *
+     * @param map the world map
+     * @param start the robot's initial pose (also the odometry's starting estimate)
+     * @param model the robot model
+     * @param laserConfig the laser's parameters
+     * @param seed seed of this run's noise (laser ranges, odometry increments)
+     * @param robotSeed seed of the robot's systematic odometry errors ({@link OdometryBias}): the
+     *     same robot seed is the same robot in every run
+     */
+    public World(OccupancyMap map, Pose2d start, RobotModel model, LaserConfig laserConfig, long seed,
+                 long robotSeed) {
+        this(map, start, model, laserConfig, seed, robotSeed, List.of());
+    }
+
+    /**
+     * Creates the world at time zero with the robot at {@code start} and the scenario's actors,
+     * publishing a first odometry and scan.
+     *
+     * @param map the world map
+     * @param start the robot's initial pose (also the odometry's starting estimate)
+     * @param model the robot model
+     * @param laserConfig the laser's parameters
+     * @param seed seed of this run's noise and of the actors' start jitter
+     * @param robotSeed seed of the robot's systematic odometry errors
+     * @param actorSpecs the actors: in the ground truth, the laser, collisions and clearance
+     */
+    public World(OccupancyMap map, Pose2d start, RobotModel model, LaserConfig laserConfig, long seed,
+                 long robotSeed, List<ActorSpec> actorSpecs) {
         this.map = Objects.requireNonNull(map, "map");
         this.model = Objects.requireNonNull(model, "model");
         this.robot = model.body();
-        this.laser = new Laser(Objects.requireNonNull(laserConfig, "laserConfig"), new RayCaster(map));
+        this.actors = new Actors(actorSpecs, seed);
+        RayCaster walls = new RayCaster(map);
+        this.laser = new Laser(Objects.requireNonNull(laserConfig, "laserConfig"), actors.isEmpty() ? walls
+                : (x, y, dx, dy, max) -> actors.castM(x, y, dx, dy, walls.castM(x, y, dx, dy, max)));
         this.scan = new LaserScan(laserConfig.beams());
         this.sweepScan = new LaserScan(laserConfig.beams());
         this.laserNoise = new SplittableRandom(seed);
         this.odometryNoise = new SplittableRandom(seed ^ ODOMETRY_SEED_SALT);
         this.driftNoise = new SplittableRandom(seed ^ DRIFT_SEED_SALT);
-        OdometryError e = model.odometry();
-        this.distanceScale = 1.0 + uniform(e.distanceScaleError());
-        this.rotationScale = 1.0 + uniform(e.rotationScaleError());
-        this.headingDriftRadPerM = uniform(e.headingDriftRadPerM());
+        this.bias = OdometryBias.draw(model.odometry(), robotSeed);
+        this.distanceScale = bias.distanceScale();
+        this.rotationScale = bias.rotationScale();
+        this.headingDriftRadPerM = bias.headingDriftRadPerM();
         this.odometryPeriodNs = robot.odometryPeriodNs();
         this.laserPeriodNs = laserConfig.periodNs();
         this.beamIntervalNs = laserPeriodNs * laserConfig.angleIncrementRad() / (2 * Math.PI);
-        if (model.laserTiming().sweep()
-                && beamIntervalNs * (laserConfig.beams() - 1) + model.laserTiming().deliveryDelayNs() >= laserPeriodNs) {
-            throw new IllegalArgumentException("a laser sweep plus its delivery delay of "
-                    + model.laserTiming().deliveryDelayNs() + " ns must fit in the scan period of " + laserPeriodNs + " ns");
-        }
+        actors.update(0L, start.xM(), start.yM());
         placeAt(start);
+        measureClearance();
         odoXM = xM;
         odoYM = yM;
         odoYawRad = yawRad;
@@ -150,11 +200,6 @@ public final class World {
         publishScan();
         nextOdometryNs = odometryPeriodNs;
         nextScanNs = laserPeriodNs;
-    }
-
-    /** A draw from [-bound, bound], or exactly 0 for a bound of 0 (no draw). */
-    private double uniform(double bound) {
-        return bound == 0 ? 0.0 : bound * (2 * driftNoise.nextDouble() - 1);
     }
 
     /**
@@ -196,6 +241,11 @@ public final class World {
     /** @return the robot model */
     public RobotModel model() {
         return model;
+    }
+
+    /** @return the robot's systematic odometry errors (drawn from the robot seed) */
+    public OdometryBias odometryBias() {
+        return bias;
     }
 
     /** @return the forward speed the wheels are following now (after the latency), m/s */
@@ -256,8 +306,13 @@ public final class World {
         double h = dtS / substeps;
         boolean dead = !model.odometry().isNone();
         for (int i = 0; i < substeps && dtNs > 0; i++) {
+            long subNs = timeNs + (long) (i * (double) dtNs / substeps);
             if (pendingCount > 0) {
-                applyDueCommands(timeNs + (long) (i * (double) dtNs / substeps));
+                applyDueCommands(subNs);
+            }
+            if (!actors.isEmpty()) {
+                actors.update(subNs, xM, yM);
+                touchedByActor();
             }
             double targetV = motorsEnabled ? cmdVMps : 0.0;
             double targetW = motorsEnabled ? cmdOmegaRadPerS : 0.0;
@@ -274,10 +329,15 @@ public final class World {
                 integrate(h);
             }
         }
-        if (inContact && map.clearanceM(xM, yM, robot.radiusM() + 2 * CONTACT_RELEASE_M)
+        if (!actors.isEmpty()) {
+            actors.update(timeNs + dtNs, xM, yM);
+            touchedByActor();
+        }
+        if (inContact && clearanceM(xM, yM, robot.radiusM() + 2 * CONTACT_RELEASE_M)
                 > robot.radiusM() + CONTACT_RELEASE_M) {
             inContact = false;
         }
+        measureClearance();
         timeNs += dtNs;
         if (pendingCount > 0) {
             applyDueCommands(timeNs);
@@ -291,6 +351,42 @@ public final class World {
         } else if (timeNs >= nextScanNs) {
             publishScan();
             nextScanNs = nextDue(nextScanNs, laserPeriodNs);
+        }
+    }
+
+    /** The clearance of a point from the map's obstacles and the present actors. */
+    private double clearanceM(double x, double y, double limitM) {
+        double c = map.clearanceM(x, y, limitM);
+        return actors.isEmpty() ? c : Math.min(c, actors.clearanceM(x, y));
+    }
+
+    /** An actor that moved into the standing or slower robot is a contact too. */
+    private void touchedByActor() {
+        if (!inContact && actors.clearanceM(xM, yM) < robot.radiusM()) {
+            inContact = true;
+            contactCount++;
+        }
+    }
+
+    /** Keeps the smallest clearance of the robot's body and counts near misses (approaches within the margin that do not touch). */
+    private void measureClearance() {
+        double radius = robot.radiusM();
+        // Exact only as far as it matters (below the smallest so far, or the near-miss margin):
+        // the map's clearance is O(1) beyond its limit, so this costs little away from obstacles.
+        double needM = Math.max(minClearanceM, NEAR_MISS_MARGIN_M + 2 * CONTACT_RELEASE_M);
+        double gap = Math.max(0.0, clearanceM(xM, yM, radius + needM) - radius);
+        minClearanceM = Math.min(minClearanceM, gap);
+        if (gap < NEAR_MISS_MARGIN_M) {
+            if (!nearMissOpen) {
+                nearMissOpen = true;
+                nearMissTouched = false;
+            }
+            nearMissTouched |= inContact;
+        } else if (nearMissOpen && gap > NEAR_MISS_MARGIN_M + CONTACT_RELEASE_M) {
+            nearMissOpen = false;
+            if (!nearMissTouched) {
+                nearMisses++;
+            }
         }
     }
 
@@ -389,13 +485,13 @@ public final class World {
         }
         double radius = robot.radiusM();
         double limit = radius + MAX_SUBSTEP_M;
-        double clearNew = map.clearanceM(nx, ny, limit);
+        double clearNew = clearanceM(nx, ny, limit);
         if (clearNew >= radius) {
             xM = nx;
             yM = ny;
             return;
         }
-        double clearOld = map.clearanceM(xM, yM, limit);
+        double clearOld = clearanceM(xM, yM, limit);
         if (clearNew > clearOld) {
             xM = nx;
             yM = ny;
@@ -406,7 +502,7 @@ public final class World {
         double hi = 1.0;
         for (int k = 0; k < BISECTION_STEPS; k++) {
             double mid = 0.5 * (lo + hi);
-            double c = map.clearanceM(xM + (nx - xM) * mid, yM + (ny - yM) * mid, limit);
+            double c = clearanceM(xM + (nx - xM) * mid, yM + (ny - yM) * mid, limit);
             if (c >= radius || c > clearOld) {
                 lo = mid;
             } else {
@@ -431,7 +527,7 @@ public final class World {
         xM = pose.xM();
         yM = pose.yM();
         yawRad = Angles.normalize(pose.yawRad());
-        inContact = map.clearanceM(xM, yM, robot.radiusM() + 2 * CONTACT_RELEASE_M)
+        inContact = clearanceM(xM, yM, robot.radiusM() + 2 * CONTACT_RELEASE_M)
                 <= robot.radiusM() + CONTACT_RELEASE_M;
     }
 
@@ -536,6 +632,27 @@ public final class World {
     /** @return true if the robot's motion was blocked by an obstacle during the last step */
     public boolean stalled() {
         return stalled;
+    }
+
+    /** @return the scenario's actors, placed at the last step */
+    public Actors actors() {
+        return actors;
+    }
+
+    /**
+     * @return the smallest distance between the robot's body and any obstacle (map or actor)
+     *     at the end of any step so far, metres; {@value #CLEARANCE_LIMIT_M} means at least that
+     */
+    public double minClearanceM() {
+        return minClearanceM;
+    }
+
+    /**
+     * @return approaches within {@value #NEAR_MISS_MARGIN_M} m of an obstacle that did not touch
+     *     it, counting one still under way that has not touched
+     */
+    public long nearMisses() {
+        return nearMisses + (nearMissOpen && !nearMissTouched ? 1 : 0);
     }
 
     /** @return number of contact events so far (one per contact, however long it lasts) */
