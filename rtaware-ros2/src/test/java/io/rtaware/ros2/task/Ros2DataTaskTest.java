@@ -197,9 +197,10 @@ class Ros2DataTaskTest {
     }
 
     @Test
-    void infiniteBeamsMeanWhatRep117SaysAndNanStillRejectsTheScan() throws Exception {
+    void infiniteBeamsMeanWhatRep117SaysAndANanBeamIsDroppedNotTheScan() throws Exception {
         firstScan();
         long before = published(RobotKeys.LASER);
+        scan.minRangeM = 0.02;
         scan.rangesM[1] = Float.POSITIVE_INFINITY; // no return within range
         scan.rangesM[3] = Float.NEGATIVE_INFINITY; // too close to measure
         long stamp = 3_000_000_000L;
@@ -211,18 +212,22 @@ class Ros2DataTaskTest {
         }
         LaserScan got = harness.read(RobotKeys.LASER);
         assertEquals(4.0f, got.rangesM[1], "+Inf is a free beam to the maximum range");
-        assertEquals(0.0f, got.rangesM[3], "-Inf is an obstacle nearer than the sensor measures");
+        assertEquals(0.02f, got.rangesM[3], "-Inf is an obstacle at the minimum range (issue 24)");
         assertEquals(2.0f, got.rangesM[2]);
         assertEquals(0, task.stats().scanRejected());
 
-        scan.rangesM[2] = Float.NaN; // an erroneous beam: nothing says what is there
+        scan.rangesM[2] = Float.NaN; // an erroneous beam: it says nothing, the others still do
+        long committed = published(RobotKeys.LASER);
         deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (task.stats().scanRejected() == 0) {
-            assertTrue(System.nanoTime() < deadline, "the scan with a NaN beam was not rejected; " + task.stats());
+        while (published(RobotKeys.LASER) == committed) {
+            assertTrue(System.nanoTime() < deadline, "the scan with a NaN beam was not committed; " + task.stats());
             publishScan(stamp++);
             cycle();
         }
-        assertEquals(2.0f, harness.read(RobotKeys.LASER).rangesM[2], "the committed scan is still the last good one");
+        assertTrue(Float.isNaN(harness.read(RobotKeys.LASER).rangesM[2]), "the beam is dropped: no reading");
+        assertEquals(0.02f, harness.read(RobotKeys.LASER).rangesM[3], "the other beams are kept");
+        assertEquals(0, task.stats().scanRejected());
+        assertTrue(task.stats().droppedBeams() >= 1, task.stats().toString());
     }
 
     @Test
@@ -391,7 +396,9 @@ class Ros2DataTaskTest {
         firstScan();
         SampleBuffer sample = new SampleBuffer(1024, 64);
         assertEquals(0.2, drive(sample).vxMps, 1e-12);
-        scan.rangesM[2] = Float.NaN;
+        for (int i = 0; i < scan.count(); i++) {
+            scan.rangesM[i] = Float.NaN; // no usable beam: the robot cannot see (issue 24)
+        }
         long[] stampNs = {20_000_000_000L};
         Publish nanScan = () -> publishScan(stampNs[0] += CYCLE_NS);
         long streakStartNs = cyclesUntilRejected(true, nanScan);
@@ -400,7 +407,7 @@ class Ros2DataTaskTest {
         ImpossibleDataException e = cyclesUntilHalted(streakStartNs, nanScan);
         assertTrue(e.getMessage().startsWith("ROS 2 topic /robot1/scan sent only impossible samples for 1.0 s of world "
                 + "time"), e.getMessage());
-        assertTrue(e.getMessage().contains("range[2] = NaN"), e.getMessage());
+        assertTrue(e.getMessage().contains("none of the 5 beams is a reading"), e.getMessage());
         assertTrue(e.getMessage().endsWith("robot halted"), e.getMessage());
         assertTrue(lastTwistAfterDriving(sample).isStop(), "a zero Twist in the cycle that halted");
         onlyZeroVelocitiesFromNowOn(sample);
