@@ -14,6 +14,7 @@ import io.rtaware.ros2msg.value.PlanarPose;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.atomic.AtomicLong;
@@ -96,6 +97,7 @@ public final class RunRecorder {
     private volatile boolean stopping;
     private volatile String failure;
     private boolean closed;
+    private final Map<String, Map<String, String>> closingMetadata = new LinkedHashMap<>();
     private RecordingStats stats;
 
     /**
@@ -285,6 +287,17 @@ public final class RunRecorder {
     }
 
     /**
+     * Adds a metadata record written when the file is finished, for what is known only at the end
+     * of a run (its conditions, {@code rtaware.conditions}). Call before {@link #finish()}.
+     *
+     * @param name the record's name
+     * @param entries its entries
+     */
+    public synchronized void closingMetadata(String name, Map<String, String> entries) {
+        closingMetadata.put(name, Map.copyOf(entries));
+    }
+
+    /**
      * Stops the writer thread after it has written everything handed over, then finishes the
      * file (summary, footer). Idempotent.
      *
@@ -304,6 +317,9 @@ public final class RunRecorder {
         }
         String error = failure;
         try {
+            for (Map.Entry<String, Map<String, String>> m : closingMetadata.entrySet()) {
+                writer.addMetadata(m.getKey(), m.getValue());
+            }
             writer.close();
         } catch (IOException e) {
             error = error == null ? e.toString() : error;
