@@ -244,7 +244,7 @@ class PaperClaimsTest {
             ResultsCsv.append(out.resolve(ResultsCsv.FILE_NAME), r);
         }
         ExperimentSummary s = io.rtaware.experiment.report.ExperimentReport.render(out,
-                io.rtaware.experiment.report.MapBackground.none());
+                io.rtaware.experiment.report.MapBackground.none(), true);
         for (String name : List.of("sweep-rates", "sweep-runtime", "sweep-distance", "sweep-misses", "speed-rates",
                 "speed-runtime", "speed-distance", "speed-misses")) {
             assertTrue(java.nio.file.Files.size(out.resolve(name + ".png")) > 5000, name);

@@ -37,6 +37,9 @@ public final class ReportCommand implements Callable<Integer> {
             description = "Merge the folders into this new folder and write the report there (needed with several DIRs).")
     Path out;
 
+    @Option(names = "--include-busy", description = "Use every run, not only those made on a quiet machine.")
+    boolean includeBusy;
+
     @Override
     public Integer call() throws IOException {
         if (dirs.size() > 1 && out == null) {
@@ -63,7 +66,7 @@ public final class ReportCommand implements Callable<Integer> {
                     .orElseGet(() -> firstScenario(dir));
             ResultsCsv.tornLastLine(dir.resolve(ResultsCsv.FILE_NAME))
                     .ifPresent(note -> System.err.println("rtaware: note: " + note));
-            ExperimentReport.render(dir, CourseBackgrounds.forScenario(scenario));
+            ExperimentReport.render(dir, CourseBackgrounds.forScenario(scenario), includeBusy);
         } catch (ExperimentInputException e) {
             throw new UserError(e.getMessage());
         }
