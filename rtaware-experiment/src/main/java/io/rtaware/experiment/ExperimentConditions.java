@@ -105,7 +105,13 @@ public record ExperimentConditions(boolean includeBusy, String rule, int runs, M
         List<String> counts = new ArrayList<>();
         byMachine.forEach((k, n) -> counts.add(n + " " + k));
         String s = String.format(Locale.ROOT, "Machine during the runs: %d run(s): %s. ", runs, String.join(", ", counts));
-        s += includeBusy ? "This report uses all " + used + " of them (--include-busy): runs on a busy machine are mixed in."
+        int unrecorded = byMachine.getOrDefault(RunMachine.UNRECORDED, 0);
+        if (unrecorded > 0) {
+            s += unrecorded + " run(s) were made before rtaware recorded the machine's conditions: whether the machine "
+                    + "was quiet during them is not known. ";
+        }
+        s += includeBusy ? "This report uses all " + used + " of them (--include-busy): runs on a busy or unknown machine "
+                + "are mixed in."
                 : "This report (tables, t-tests, claims, figures) uses the " + used + " quiet run(s) only (" + RULE
                 + "); --include-busy uses all.";
         if (otherCpus.n() > 0) {

@@ -1,5 +1,6 @@
 package io.rtaware.experiment;
 
+import com.fasterxml.jackson.annotation.JsonProperty;
 import com.fasterxml.jackson.annotation.JsonValue;
 import io.rtaware.experiment.ExperimentSummary.Misses;
 import io.rtaware.experiment.ExperimentSummary.PairTest;
@@ -62,6 +63,12 @@ public final class PaperClaims {
      * @param rule how the verdict follows from the numbers
      */
     public record Claim(String claim, Verdict verdict, String evidence, String rule) {
+
+        /** @return the claim's stable id ({@link PaperClaims#id(String)}), as quoted in the docs */
+        @JsonProperty("id")
+        public String id() {
+            return PaperClaims.id(claim);
+        }
     }
 
     /**
@@ -71,6 +78,34 @@ public final class PaperClaims {
      * @param reason which data is missing
      */
     public record NotEvaluated(String claim, String reason) {
+
+        /** @return the claim's stable id ({@link PaperClaims#id(String)}) */
+        @JsonProperty("id")
+        public String id() {
+            return PaperClaims.id(claim);
+        }
+    }
+
+    /** Each claim's id, by its text without a top-speed suffix. */
+    private static final Map<String, String> IDS = new LinkedHashMap<>();
+
+    /**
+     * @param claim a claim's text, possibly with a top-speed suffix such as {@code " (at 0.5 m/s)"}
+     * @return its stable id, e.g. {@code table1-set1-faster} or {@code slow-hits@0.5mps}, by which
+     *     docs quote its verdict ({@code claim `FOLDER/ID`: VERDICT})
+     */
+    public static String id(String claim) {
+        for (Map.Entry<String, String> e : IDS.entrySet()) {
+            if (claim.equals(e.getKey())) {
+                return e.getValue();
+            }
+            if (claim.startsWith(e.getKey() + " (at ")) {
+                String speed = claim.substring(e.getKey().length() + 5, claim.length() - 1);
+                return e.getValue() + "@" + speed.replace(" m/s", "mps").replace("run's default top speed", "default")
+                        .replace(' ', '-');
+            }
+        }
+        throw new IllegalArgumentException("no id for claim: " + claim);
     }
 
     /**
@@ -126,6 +161,23 @@ public final class PaperClaims {
     public static final double SPREAD_RATIO_MIN = 1.5;
     /** Ratio below which it does not hold at all. */
     public static final double SPREAD_RATIO_NONE = 1.25;
+
+    static {
+        IDS.put(SLOW, "slow-hits");
+        IDS.put(FAST, "fast-locks-up");
+        IDS.put(MISSES_FALL, "misses-fall");
+        IDS.put(T_SET1, "table1-set1-faster");
+        IDS.put(T_VERGE, "table1-verge");
+        IDS.put(T_DISTANCE, "table2-no-difference");
+        IDS.put(SET3, "table1-set3-fastest-widest");
+        IDS.put(SAME, "tables-almost-identical");
+        IDS.put(FIG7, "fig7-planner-most");
+        IDS.put(SET1_MISSES, "fig8-set1-most-misses");
+        IDS.put(SPREAD, "table1-spread-twice");
+        IDS.put(CONCLUSION, "conclusion-timing-matters");
+        IDS.put(AVOIDER_FAST, "avoider-too-fast-hits");
+        IDS.put(SAMPLING, "sampling-rate-advice");
+    }
 
     private static final List<String> FIG7_ORDER = List.of("planner", "occupancy", "waypoint", "obstacle");
 
