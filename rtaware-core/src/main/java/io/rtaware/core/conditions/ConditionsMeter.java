@@ -76,8 +76,8 @@ public final class ConditionsMeter {
         public synchronized Conditions finish(double shortestPeriodMs) {
             if (finished == null) {
                 HostSample end = host.sample();
+                pauses.close(); // first: the JVM may deliver the last pauses while closing
                 MeasuredConditions measured = MeasuredConditions.between(start, end, pauses);
-                pauses.close();
                 finished = Conditions.of(setup, measured, MachineVerdict.of(measured, shortestPeriodMs));
             }
             return finished;

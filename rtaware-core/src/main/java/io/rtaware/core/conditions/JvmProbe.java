@@ -32,7 +32,10 @@ public interface JvmProbe {
      */
     PauseWatch watchPauses();
 
-    /** The JVM's pauses since {@link #watchPauses()}; closing it stops the counting. */
+    /**
+     * The JVM's pauses since {@link #watchPauses()}; closing it stops the counting, after which
+     * the figures stay readable.
+     */
     interface PauseWatch extends AutoCloseable {
 
         /** @return collections that stopped the application threads */
@@ -43,6 +46,9 @@ public interface JvmProbe {
 
         /** @return the longest of them, ms (0 if none) */
         double gcMaxPauseMs();
+
+        /** @return safepoints seen (each a stop of every application thread), or -1 where not measured */
+        long safepoints();
 
         /** @return the longest time to reach a safepoint, ms, or null where it is not measured */
         Double maxTimeToSafepointMs();

@@ -15,13 +15,14 @@ package io.rtaware.core.conditions;
  * @param gcCount collections that paused the application threads
  * @param gcTotalMs their summed duration, ms
  * @param gcMaxPauseMs the longest, ms
- * @param timeToSafepointMaxMs the longest time to reach a safepoint, ms, or null where not measured
+ * @param safepoints safepoints over the span (JFR's {@code jdk.SafepointBegin}), or -1 where not measured
+ * @param timeToSafepointMaxMs the longest time to reach one of them, ms (0 with none), or null where not measured
  * @param safepointNote null when the time to safepoint is measured, else why not
  * @param involuntarySwitches involuntary context switches of this process's threads over the span
  */
 public record MeasuredConditions(double durationS, double loadStart, double loadEnd, int machineCpus,
                                  double otherCpus, double stealPct, long gcCount, double gcTotalMs,
-                                 double gcMaxPauseMs, Double timeToSafepointMaxMs, String safepointNote,
+                                 double gcMaxPauseMs, long safepoints, Double timeToSafepointMaxMs, String safepointNote,
                                  long involuntarySwitches) {
 
     /**
@@ -53,7 +54,8 @@ public record MeasuredConditions(double durationS, double loadStart, double load
         long switches = known(start.involuntarySwitches(), end.involuntarySwitches());
         return new MeasuredConditions(durationS, start.load1(), end.load1(), cpus, other, stealPct,
                 pauses == null ? 0 : pauses.gcCount(), pauses == null ? 0 : pauses.gcTotalMs(),
-                pauses == null ? 0 : pauses.gcMaxPauseMs(), pauses == null ? null : pauses.maxTimeToSafepointMs(),
+                pauses == null ? 0 : pauses.gcMaxPauseMs(), pauses == null ? -1 : pauses.safepoints(),
+                pauses == null ? null : pauses.maxTimeToSafepointMs(),
                 pauses == null ? "not part of this span" : pauses.safepointNote(), switches);
     }
 

@@ -23,11 +23,14 @@ import jdk.jfr.consumer.RecordingStream;
  * {@code Cycles} or {@code Concurrent} counts concurrent work, not pauses, and is left out);
  * the time to safepoint from JFR event streaming ({@code jdk.SafepointBegin}, whose duration
  * is the time the threads took to stop), except on the Epsilon heap, where nothing is ever
- * collected and JFR's own allocations would fill it.
+ * collected and JFR's own allocations would fill it. JFR delivers events about once a second, so
+ * closing waits (at most 2.5 s) for the buffered ones.
  */
 public final class PlatformJvmProbe implements JvmProbe {
 
     private static final String SAFEPOINT_EVENT = "jdk.SafepointBegin";
+    /** The longest wait at the end for JFR to deliver the events still buffered (it flushes about once a second). */
+    private static final long FLUSH_WAIT_MS = 2500;
 
     @Override
     public String vendor() {
@@ -79,6 +82,8 @@ public final class PlatformJvmProbe implements JvmProbe {
         private final RecordingStream stream;
         private final String safepointNote;
         private boolean closed;
+        private long flushes;
+        private long safepointCount;
 
         PlatformPauseWatch(boolean epsilon) {
             for (GarbageCollectorMXBean bean : ManagementFactory.getGarbageCollectorMXBeans()) {
@@ -96,6 +101,7 @@ public final class PlatformJvmProbe implements JvmProbe {
                     started = new RecordingStream();
                     started.enable(SAFEPOINT_EVENT).withThreshold(Duration.ZERO);
                     started.onEvent(SAFEPOINT_EVENT, e -> safepoint(e.getDuration().toNanos() / 1e6));
+                    started.onFlush(this::flushed);
                     started.startAsync();
                 } catch (RuntimeException | Error e) {
                     if (started != null) {
@@ -109,7 +115,27 @@ public final class PlatformJvmProbe implements JvmProbe {
             safepointNote = note;
         }
 
+        /** Counts the stream's flushes: each delivered every event recorded before it. */
+        private synchronized void flushed() {
+            flushes++;
+            notifyAll();
+        }
+
+        /** Waits (at most {@link #FLUSH_WAIT_MS}) for two more flushes, so the last second's events are in. */
+        private synchronized void awaitFlushes() {
+            long target = flushes + 2;
+            long deadline = System.nanoTime() + FLUSH_WAIT_MS * 1_000_000L;
+            try {
+                while (flushes < target && System.nanoTime() < deadline) {
+                    wait(Math.max(1, (deadline - System.nanoTime()) / 1_000_000L));
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+
         private synchronized void safepoint(double ms) {
+            safepointCount++;
             if (ms > maxSafepointMs) {
                 maxSafepointMs = ms;
             }
@@ -148,6 +174,11 @@ public final class PlatformJvmProbe implements JvmProbe {
         }
 
         @Override
+        public synchronized long safepoints() {
+            return stream == null ? -1 : safepointCount;
+        }
+
+        @Override
         public Double maxTimeToSafepointMs() {
             return stream == null ? null : maxSafepointMs;
         }
@@ -171,6 +202,7 @@ public final class PlatformJvmProbe implements JvmProbe {
                 }
             }
             if (stream != null) {
+                awaitFlushes();
                 stream.close();
             }
         }

@@ -55,6 +55,11 @@ final class FakeJvm implements JvmProbe {
             }
 
             @Override
+            public long safepoints() {
+                return safepointMaxMs == null ? -1 : 1;
+            }
+
+            @Override
             public Double maxTimeToSafepointMs() {
                 return safepointMaxMs;
             }

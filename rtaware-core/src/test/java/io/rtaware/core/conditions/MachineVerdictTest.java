@@ -10,7 +10,7 @@ class MachineVerdictTest {
 
     private static MeasuredConditions measured(double otherCpus, double stealPct, double gcMaxMs, Double ttspMs) {
         return new MeasuredConditions(10, 0.5, 0.6, 2, otherCpus, stealPct, gcMaxMs > 0 ? 1 : 0, gcMaxMs, gcMaxMs,
-                ttspMs, null, 5);
+                ttspMs == null ? -1 : 1, ttspMs, null, 5);
     }
 
     @Test
