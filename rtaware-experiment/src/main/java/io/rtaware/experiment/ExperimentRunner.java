@@ -95,7 +95,7 @@ public final class ExperimentRunner {
             if (done.contains(planned.set() + "/" + planned.run())) {
                 continue;
             }
-            QuietGate.Passage passage = gate == null ? null : gate.await(progress);
+            QuietGate.Passage passage = gate == null ? null : gate.await(progress, () -> interrupted);
             if (interrupted) {
                 break;
             }

@@ -3,6 +3,7 @@ package io.rtaware.experiment;
 import io.rtaware.core.conditions.MachineVerdict;
 import java.util.Locale;
 import java.util.Objects;
+import java.util.function.BooleanSupplier;
 import java.util.function.LongSupplier;
 
 /**
@@ -63,12 +64,13 @@ public final class QuietGate {
 
     /**
      * @param progress where the waiting is shown
+     * @param stopped true once the experiment is interrupted (Ctrl-C): the wait ends at the next check
      * @return the verdict the run starts with, and how long it waited
      * @throws InterruptedException if interrupted while waiting
      */
-    public Passage await(ProgressBar progress) throws InterruptedException {
+    public Passage await(ProgressBar progress, BooleanSupplier stopped) throws InterruptedException {
         long start = nanoTime.getAsLong();
-        while (true) {
+        while (!stopped.getAsBoolean()) {
             MachineVerdict v = check.check();
             double waited = (nanoTime.getAsLong() - start) / 1e9;
             if (v.quiet() || MachineVerdict.UNKNOWN.equals(v.verdict())) {
@@ -86,5 +88,6 @@ public final class QuietGate {
                     waited, maxWaitS, v.text()));
             sleeper.sleep(Math.min(RETRY_S, Math.max(0, maxWaitS - waited)));
         }
+        return new Passage("interrupted", (nanoTime.getAsLong() - start) / 1e9, "interrupted while waiting");
     }
 }

@@ -33,7 +33,7 @@ class QuietGateTest {
     @Test
     void aBusyMachineIsWaitedForUntilItIsQuietAndTheReasonIsShown() throws Exception {
         Deque<MachineVerdict> checks = new ArrayDeque<>(List.of(BUSY, BUSY, QUIET));
-        QuietGate.Passage p = gate(checks, 300, false).await(bar);
+        QuietGate.Passage p = gate(checks, 300, false).await(bar, () -> false);
         assertEquals("quiet", p.beforeRun());
         assertEquals(2 * QuietGate.RETRY_S, p.waitedS(), 1e-9, "two waits of " + QuietGate.RETRY_S + " s");
         String out = shown.toString(StandardCharsets.UTF_8);
@@ -45,7 +45,7 @@ class QuietGateTest {
     @Test
     void theWaitIsBoundedAndTheRunIsThenLabelledBusy() throws Exception {
         Deque<MachineVerdict> checks = new ArrayDeque<>(List.of(BUSY, BUSY, BUSY, BUSY));
-        QuietGate.Passage p = gate(checks, 12, false).await(bar);
+        QuietGate.Passage p = gate(checks, 12, false).await(bar, () -> false);
         assertEquals("busy", p.beforeRun());
         assertEquals(12, p.waitedS(), 1e-9, "5 + 5 + the 2 s left");
         assertEquals(0, checks.size(), "checked at 0, 5, 10 and 12 s");
@@ -53,8 +53,17 @@ class QuietGateTest {
     }
 
     @Test
+    void anInterruptedExperimentStopsWaitingAtTheNextCheck() throws Exception {
+        Deque<MachineVerdict> checks = new ArrayDeque<>(List.of(BUSY, BUSY, BUSY));
+        int[] asked = {0};
+        QuietGate.Passage p = gate(checks, 300, false).await(bar, () -> asked[0]++ >= 2);
+        assertEquals("interrupted", p.beforeRun());
+        assertEquals(2 * QuietGate.RETRY_S, p.waitedS(), 1e-9);
+    }
+
+    @Test
     void allowBusyRunsAtOnceAndLabels() throws Exception {
-        QuietGate.Passage p = gate(new ArrayDeque<>(List.of(BUSY)), 300, true).await(bar);
+        QuietGate.Passage p = gate(new ArrayDeque<>(List.of(BUSY)), 300, true).await(bar, () -> false);
         assertEquals("busy", p.beforeRun());
         assertEquals(0, p.waitedS());
     }
