@@ -1,6 +1,8 @@
 package io.rtaware.experiment;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
+import io.rtaware.core.conditions.HostFiles;
+import io.rtaware.core.conditions.HostReader;
 import io.rtaware.core.report.ReportDocument;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -75,20 +77,19 @@ public record ExperimentProfile(String scenario, double timeScale, long seed, Do
         }
     }
 
-    /** @return this machine: CPU model, cores, operating system and Java version */
+    /**
+     * @return this machine: CPU model, CPUs (and those this process may use), kernel, hypervisor
+     *     where the kernel names it, clock source and Java version, read by the core's
+     *     {@link HostReader}
+     */
     public static String describeThisMachine() {
-        String cpu = "unknown CPU";
-        try {
-            Path info = Path.of("/proc/cpuinfo");
-            if (Files.isReadable(info)) {
-                cpu = Files.readAllLines(info).stream().filter(l -> l.startsWith("model name"))
-                        .map(l -> l.substring(l.indexOf(':') + 1).strip()).findFirst().orElse(cpu);
-            }
-        } catch (IOException e) {
-            cpu = "unknown CPU (" + e.getMessage() + ")";
-        }
-        return String.format(Locale.ROOT, "%s, %d cores, %s %s %s, Java %s", cpu,
-                Runtime.getRuntime().availableProcessors(), System.getProperty("os.name"),
-                System.getProperty("os.version"), System.getProperty("os.arch"), System.getProperty("java.version"));
+        HostReader host = new HostReader(HostFiles.system(), System::nanoTime);
+        String hypervisor = host.hypervisor();
+        Boolean virtual = host.virtualized();
+        return String.format(Locale.ROOT, "%s, %d CPUs (%s usable), Linux %s, %s, clock %s, Java %s (%s)", host.cpuModel(),
+                host.logicalCpus(), new java.math.BigDecimal(host.usableCpus()).stripTrailingZeros().toPlainString(),
+                host.kernel(), virtual == null ? "virtualization unknown" : virtual ? "virtual machine"
+                        + (hypervisor == null ? "" : " (" + hypervisor + ")") : "not virtualized", host.clockSource(),
+                System.getProperty("java.vm.version"), System.getProperty("java.vm.vendor"));
     }
 }

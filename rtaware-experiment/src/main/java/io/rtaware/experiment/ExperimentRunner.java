@@ -13,7 +13,8 @@ import java.util.concurrent.TimeUnit;
 /**
  * Makes the runs of a plan one at a time, each in its own process, in interleaved order, and
  * appends each finished run to {@code results.csv} at once. Runs already in the file are skipped,
- * so re-running into the same folder resumes. {@link #interrupt()} (from a shutdown hook) stops
+ * so re-running into the same folder resumes. With a {@link QuietGate}, each run waits for a quiet
+ * machine first and its row records the check. {@link #interrupt()} (from a shutdown hook) stops
  * the run under way and ends the loop; the folder stays valid.
  *
  * <p>Layout of the output folder: {@code results.csv}, {@code plan.json} (the plan and shard,
@@ -48,6 +49,7 @@ public final class ExperimentRunner {
     private volatile boolean interrupted;
     private volatile Process current;
     private boolean record;
+    private QuietGate gate;
 
     /**
      * @param plan the runs to make
@@ -101,10 +103,17 @@ public final class ExperimentRunner {
             if (done.contains(planned.set() + "/" + planned.run())) {
                 continue;
             }
+            QuietGate.Passage passage = gate == null ? null : gate.await(progress, () -> interrupted);
+            if (interrupted) {
+                break;
+            }
             progress.started(planned, finished, total);
             RunResult result = runOne(planned);
             if (result == null) {
                 break;
+            }
+            if (passage != null) {
+                result = result.withMachine(result.machine().withCheck(passage.beforeRun(), passage.waitedS()));
             }
             ResultsCsv.append(csv, result);
             finished++;
@@ -137,6 +146,15 @@ public final class ExperimentRunner {
     /** @return true once {@link #interrupt()} was called or a run reported it was interrupted */
     public boolean interrupted() {
         return interrupted;
+    }
+
+    /**
+     * @param quietGate checks the machine before each run and waits for it to be quiet (null: no check)
+     * @return this runner
+     */
+    public ExperimentRunner quietGate(QuietGate quietGate) {
+        this.gate = quietGate;
+        return this;
     }
 
     /**

@@ -29,11 +29,12 @@ import java.util.TreeMap;
  *     {@link SetSummary#sweptPeriodMs()})
  * @param claims the paper's claims with a verdict computed from these results ({@link PaperClaims})
  * @param claimsNotEvaluated the paper's claims these results cannot decide, with the reason
+ * @param conditions the machine during the runs: how many were quiet, busy or disturbed, which are used, and the spread
  */
 public record ExperimentSummary(String schema, ExperimentProfile profile, List<SetSummary> sets,
                                 Map<String, List<PairTest>> tTests, PaperReference.Published paper,
                                 List<String> sweptTasks, List<PaperClaims.Claim> claims,
-                                List<PaperClaims.NotEvaluated> claimsNotEvaluated) {
+                                List<PaperClaims.NotEvaluated> claimsNotEvaluated, ExperimentConditions conditions) {
 
     /** The schema identifier of {@code summary.json}. */
     public static final String SCHEMA = "rtaware.experiment/1";
@@ -128,6 +129,16 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
      * @return the summary
      */
     public static ExperimentSummary of(List<RunResult> rows, ExperimentProfile profile) {
+        return of(rows, profile, ExperimentConditions.of(rows, true));
+    }
+
+    /**
+     * @param rows the runs to summarize (the quiet ones, unless busy runs are included)
+     * @param profile the experiment's profile
+     * @param conditions the machine over all runs, and which are used
+     * @return the summary of those runs
+     */
+    public static ExperimentSummary of(List<RunResult> rows, ExperimentProfile profile, ExperimentConditions conditions) {
         Map<Integer, List<RunResult>> bySet = new TreeMap<>();
         rows.forEach(r -> bySet.computeIfAbsent(r.set(), k -> new ArrayList<>()).add(r));
         List<PeriodSet> periodSets = bySet.values().stream().map(r -> r.get(0).periods()).toList();
@@ -150,7 +161,7 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
         }
         PaperClaims.Verdicts verdicts = PaperClaims.evaluate(sets, tests, profile.scenario());
         return new ExperimentSummary(SCHEMA, profile, sets, tests, PaperReference.published(), swept,
-                verdicts.claims(), verdicts.notEvaluated());
+                verdicts.claims(), verdicts.notEvaluated(), conditions);
     }
 
     /**

@@ -1,5 +1,6 @@
 package io.rtaware.experiment;
 
+import com.fasterxml.jackson.annotation.JsonProperty;
 import com.fasterxml.jackson.annotation.JsonValue;
 import io.rtaware.experiment.ExperimentSummary.Misses;
 import io.rtaware.experiment.ExperimentSummary.PairTest;
@@ -37,9 +38,16 @@ public final class PaperClaims {
         /** The results do not show it. */
         NOT_REPRODUCED,
         /** The results show it in part. */
-        MIXED;
+        MIXED,
+        /** The results show no difference, but the test could not have detected the paper's difference. */
+        INCONCLUSIVE,
+        /** The setup cannot reproduce the claim's mechanism (the evidence says why). */
+        NOT_COMPARABLE;
 
-        /** @return the name in {@code summary.json}: {@code reproduced}, {@code not_reproduced} or {@code mixed} */
+        /**
+         * @return the name in {@code summary.json}: {@code reproduced}, {@code not_reproduced},
+         *     {@code mixed}, {@code inconclusive} or {@code not_comparable}
+         */
         @JsonValue
         public String json() {
             return name().toLowerCase(Locale.ROOT);
@@ -55,6 +63,12 @@ public final class PaperClaims {
      * @param rule how the verdict follows from the numbers
      */
     public record Claim(String claim, Verdict verdict, String evidence, String rule) {
+
+        /** @return the claim's stable id ({@link PaperClaims#id(String)}), as quoted in the docs */
+        @JsonProperty("id")
+        public String id() {
+            return PaperClaims.id(claim);
+        }
     }
 
     /**
@@ -64,6 +78,34 @@ public final class PaperClaims {
      * @param reason which data is missing
      */
     public record NotEvaluated(String claim, String reason) {
+
+        /** @return the claim's stable id ({@link PaperClaims#id(String)}) */
+        @JsonProperty("id")
+        public String id() {
+            return PaperClaims.id(claim);
+        }
+    }
+
+    /** Each claim's id, by its text without a top-speed suffix. */
+    private static final Map<String, String> IDS = new LinkedHashMap<>();
+
+    /**
+     * @param claim a claim's text, possibly with a top-speed suffix such as {@code " (at 0.5 m/s)"}
+     * @return its stable id, e.g. {@code table1-set1-faster} or {@code slow-hits@0.5mps}, by which
+     *     docs quote its verdict ({@code claim `FOLDER/ID`: VERDICT})
+     */
+    public static String id(String claim) {
+        for (Map.Entry<String, String> e : IDS.entrySet()) {
+            if (claim.equals(e.getKey())) {
+                return e.getValue();
+            }
+            if (claim.startsWith(e.getKey() + " (at ")) {
+                String speed = claim.substring(e.getKey().length() + 5, claim.length() - 1);
+                return e.getValue() + "@" + speed.replace(" m/s", "mps").replace("run's default top speed", "default")
+                        .replace(' ', '-');
+            }
+        }
+        throw new IllegalArgumentException("no id for claim: " + claim);
     }
 
     /**
@@ -110,6 +152,37 @@ public final class PaperClaims {
     static final String SAME = "Tables I and II: run times and distances to the finish are almost identical across sets";
     static final String FIG7 = "Fig. 7: in Sets 1, 4 and 5 the planner misses most, then occupancy, waypoint and obstacle";
 
+    static final String LOCK_UP_MECHANISM = "The paper's lock-up came from a 1.66 GHz machine starved by the "
+            + "controller and the Player server sharing it; here the simulator is light and rtaware skips the releases "
+            + "it cannot make, so the mechanism cannot be reproduced and no lock-up says nothing against the paper.";
+    static final String SET1_MISSES = "Fig. 8: Set 1 (all tasks at 10 ms) has the highest share of missed deadlines";
+    static final String SPREAD = "Table I: Sets 2 and 3 have about twice the run-time spread (standard deviation) of "
+            + "Sets 1, 4 and 5";
+    static final String CONCLUSION = "Conclusion: the timing of the tasks affects the overall performance of the system";
+    static final String AVOIDER_FAST = "An obstacle avoider run too fast hits obstacles";
+    static final String SAMPLING = "Advice: sample an input at least twice as fast as it changes (sampling-rate advice)";
+    /** Ratio of the mean SD of Sets 2 and 3 to that of Sets 1, 4, 5 from which the spread claim holds. */
+    public static final double SPREAD_RATIO_MIN = 1.5;
+    /** Ratio below which it does not hold at all. */
+    public static final double SPREAD_RATIO_NONE = 1.25;
+
+    static {
+        IDS.put(SLOW, "slow-hits");
+        IDS.put(FAST, "fast-locks-up");
+        IDS.put(MISSES_FALL, "misses-fall");
+        IDS.put(T_SET1, "table1-set1-faster");
+        IDS.put(T_VERGE, "table1-verge");
+        IDS.put(T_DISTANCE, "table2-no-difference");
+        IDS.put(SET3, "table1-set3-fastest-widest");
+        IDS.put(SAME, "tables-almost-identical");
+        IDS.put(FIG7, "fig7-planner-most");
+        IDS.put(SET1_MISSES, "fig8-set1-most-misses");
+        IDS.put(SPREAD, "table1-spread-twice");
+        IDS.put(CONCLUSION, "conclusion-timing-matters");
+        IDS.put(AVOIDER_FAST, "avoider-too-fast-hits");
+        IDS.put(SAMPLING, "sampling-rate-advice");
+    }
+
     private static final List<String> FIG7_ORDER = List.of("planner", "occupancy", "waypoint", "obstacle");
 
     private final List<SetSummary> sets;
@@ -155,6 +228,15 @@ public final class PaperClaims {
         c.setThree(paper);
         c.almostIdentical(paper);
         c.fig7(paper);
+        c.setOneMisses(paper);
+        c.spreadTwice(paper);
+        c.notEvaluated.add(new NotEvaluated(CONCLUSION, "a conclusion drawn from the claims above, not a measurement of "
+                + "its own: read it from the t-tests of Table I and II and the miss claims"));
+        c.notEvaluated.add(new NotEvaluated(AVOIDER_FAST, "the paper sets change every period at once; an avoider-only "
+                + "period sweep with collisions counted per period is the claim 'periods above 100 ms' and the sweep-obstacle "
+                + "folder, and a too-fast avoider has no rule here"));
+        c.notEvaluated.add(new NotEvaluated(SAMPLING, "advice, not a measurement: every run's report.json applies it as "
+                + "the period advice's nyquist rule"));
         return new Verdicts(List.copyOf(c.claims), List.copyOf(c.notEvaluated));
     }
 
@@ -279,17 +361,18 @@ public final class PaperClaims {
         }
         boolean allMost = fastSets.stream().allMatch(s -> errors(s) >= MAJORITY * s.runs());
         boolean none = fastSets.stream().allMatch(s -> errors(s) == 0);
-        Verdict v = allMost ? Verdict.REPRODUCED : none ? Verdict.NOT_REPRODUCED : Verdict.MIXED;
+        Verdict v = allMost ? Verdict.REPRODUCED : none ? Verdict.NOT_COMPARABLE : Verdict.MIXED;
         List<String> parts = new ArrayList<>();
         for (SetSummary s : fastSets) {
             parts.add(robot(s));
         }
         onAxis(group).stream().filter(s -> s.sweptPeriodMs() == SLOW_ABOVE_MS).findFirst()
                 .ifPresent(s -> parts.add("for comparison, " + robot(s)));
-        claims.add(new Claim(claim, v, String.join("; ", parts) + ".", "a run 'locks up' when its process fails or "
-                + "leaves no report (outcome error); reproduced if at least " + pct(MAJORITY) + " of the runs of every set at "
-                + FAST_AT_MOST_MS + " ms or less lock up; not reproduced if none does (the controller keeps running, "
-                + "skips the releases it cannot make and reports them); mixed otherwise"));
+        claims.add(new Claim(claim, v, String.join("; ", parts) + "." + (v == Verdict.NOT_COMPARABLE ? " " + LOCK_UP_MECHANISM
+                : ""), "a run 'locks up' when its process fails or leaves no report (outcome error); reproduced if at least "
+                + pct(MAJORITY) + " of the runs of every set at " + FAST_AT_MOST_MS + " ms or less lock up; not comparable "
+                + "if none does (the paper's lock-up came from a starved machine that this setup does not have); mixed "
+                + "otherwise"));
     }
 
     private static String robot(SetSummary s) {
@@ -442,13 +525,34 @@ public final class PaperClaims {
             return;
         }
         Verdict v = different == 0 ? Verdict.REPRODUCED : different * 2 >= tested ? Verdict.NOT_REPRODUCED : Verdict.MIXED;
+        List<String> blind = new ArrayList<>();
+        if (v == Verdict.REPRODUCED) {
+            for (int i = 0; i < numbers.size(); i++) {
+                for (int j = i + 1; j < numbers.size(); j++) {
+                    WelchTest t = test(paper, numbers.get(i), numbers.get(j), "distance_to_finish_m");
+                    double paperDiff = Math.abs(PaperReference.published().sets().get(numbers.get(i) - 1).distanceMeanM()
+                            - PaperReference.published().sets().get(numbers.get(j) - 1).distanceMeanM());
+                    if (t != null && t.applicable() && t.detectableDifference() > paperDiff) {
+                        blind.add("Set " + numbers.get(i) + " vs Set " + numbers.get(j) + " detects " + num(
+                                t.detectableDifference(), 3) + " m, the paper's difference is " + num(paperDiff, 3) + " m");
+                    }
+                }
+            }
+            if (!blind.isEmpty()) {
+                v = Verdict.INCONCLUSIVE;
+            }
+        }
         String evidence = different + " of " + tested + " pairs of the paper's sets (" + names(paper, numbers)
                 + ") differ with p < " + ALPHA + (parts.isEmpty() ? "" : ": " + String.join("; ", parts))
-                + (skipped.isEmpty() ? "" : "; not testable: " + String.join(", ", skipped)) + ".";
+                + (skipped.isEmpty() ? "" : "; not testable: " + String.join(", ", skipped))
+                + (blind.isEmpty() ? "" : "; too weak to see the paper's differences: " + String.join("; ", blind)) + ".";
         claims.add(new Claim(T_DISTANCE, v, evidence, "Welch's two-sided t-test between every pair of the paper's sets "
                 + "present, on every run that ended on the course; reproduced if no pair has p < " + ALPHA
-                + ", not reproduced if at least half the pairs do, mixed otherwise (no correction for multiple tests, "
-                + "like the paper)"));
+                + " and every test could have detected the paper's difference of the two sets' means (the smallest difference "
+                + "detectable at alpha " + WelchTest.ALPHA + " with " + pct(WelchTest.POWER) + " power, from the observed "
+                + "spread and n, is at most the paper's); inconclusive if no pair differs but a test could not have; not "
+                + "reproduced if at least half the pairs differ, mixed otherwise (no correction for multiple tests, like the "
+                + "paper)"));
     }
 
     private void setThree(Map<Integer, SetSummary> paper) {
@@ -514,6 +618,49 @@ public final class PaperClaims {
         claims.add(new Claim(FIG7, verdict(agree, judged), String.join("; ", parts) + ".",
                 "a set agrees if its miss % is strictly ordered planner > occupancy > waypoint > obstacle; reproduced if "
                         + "every one of Sets 1, 4 and 5 present agrees, not reproduced if none does, mixed otherwise"));
+    }
+
+    private void setOneMisses(Map<Integer, SetSummary> paper) {
+        List<SetSummary> withMisses = paper.values().stream()
+                .filter(s -> s.misses().get(ExperimentSummary.ALL_TASKS).missPct() != null).toList();
+        if (!paper.containsKey(1) || withMisses.size() < 2 || !withMisses.contains(paper.get(1))) {
+            notEvaluated.add(new NotEvaluated(SET1_MISSES, "needs the paper's Set 1 and another paper set with misses "
+                    + "counted; have " + (paper.isEmpty() ? "none" : names(paper, new ArrayList<>(paper.keySet())))));
+            return;
+        }
+        int highest = argBest(paper.entrySet().stream().filter(e -> withMisses.contains(e.getValue()))
+                .collect(java.util.stream.Collectors.toMap(Map.Entry::getKey, Map.Entry::getValue, (a, b) -> a,
+                        TreeMap::new)), s -> s.misses().get(ExperimentSummary.ALL_TASKS).missPct());
+        List<String> parts = new ArrayList<>();
+        paper.forEach((n, s) -> parts.add("Set " + n + " " + num(s.misses().get(ExperimentSummary.ALL_TASKS).missPct(), 2)
+                + "%"));
+        claims.add(new Claim(SET1_MISSES, highest == 1 ? Verdict.REPRODUCED : Verdict.NOT_REPRODUCED,
+                "misses of all four tasks' releases: " + String.join(", ", parts) + "; highest: Set " + highest + ".",
+                "reproduced if Set 1 has the highest miss % of the paper's sets present, not reproduced otherwise"));
+    }
+
+    private void spreadTwice(Map<Integer, SetSummary> paper) {
+        List<Integer> wide = List.of(2, 3);
+        List<Integer> narrow = List.of(1, 4, 5);
+        boolean all = java.util.stream.Stream.concat(wide.stream(), narrow.stream())
+                .allMatch(n -> paper.containsKey(n) && paper.get(n).runTimeS().sd() != null);
+        if (!all) {
+            notEvaluated.add(new NotEvaluated(SPREAD, "needs all five paper sets with at least two completed runs each; have "
+                    + (paper.isEmpty() ? "none" : names(paper, new ArrayList<>(paper.keySet())))));
+            return;
+        }
+        double wideSd = wide.stream().mapToDouble(n -> paper.get(n).runTimeS().sd()).average().orElseThrow();
+        double narrowSd = narrow.stream().mapToDouble(n -> paper.get(n).runTimeS().sd()).average().orElseThrow();
+        double ratio = wideSd / narrowSd;
+        Verdict v = ratio >= SPREAD_RATIO_MIN ? Verdict.REPRODUCED : ratio < SPREAD_RATIO_NONE ? Verdict.NOT_REPRODUCED
+                : Verdict.MIXED;
+        List<PaperReference.PaperSet> published = PaperReference.published().sets();
+        double paperWide = wide.stream().mapToDouble(n -> published.get(n - 1).runTimeSdS()).average().orElseThrow();
+        double paperNarrow = narrow.stream().mapToDouble(n -> published.get(n - 1).runTimeSdS()).average().orElseThrow();
+        claims.add(new Claim(SPREAD, v, "mean SD of the run time: Sets 2 and 3 " + num(wideSd, 2) + " s, Sets 1, 4 and 5 "
+                + num(narrowSd, 2) + " s, ratio " + num(ratio, 2) + " (paper: " + num(paperWide, 2) + " s and "
+                + num(paperNarrow, 2) + " s, ratio " + num(paperWide / paperNarrow, 2) + ").", "ratio = mean SD of Sets 2 and 3 over mean SD of Sets 1, 4 and 5; reproduced if at "
+                + "least " + SPREAD_RATIO_MIN + ", not reproduced if below " + SPREAD_RATIO_NONE + ", mixed between"));
     }
 
     private static Verdict verdict(int agree, int of) {

@@ -24,8 +24,12 @@ import java.util.TreeMap;
  * <pre>
  * {"schema": "rtaware.experiment-plan/1", "sets": [{"name": "Set 1", "periods_ms": {...}, "top_speed_mps": null}, ...],
  *  "runs_per_set": 10, "scenario": "paper-room", "time_scale": 10.0, "seed": 1, "robot_seed": 1, "robots": 1,
- *  "grid_resolution_m": null, "shard": "1/2"}
+ *  "grid_resolution_m": null, "shard": "1/2", "order": ["set1-run1", "set2-run1", ...]}
  * </pre>
+ *
+ * {@code order} is the order in which this folder's runs are made (sets interleaved over time,
+ * {@link ExperimentPlan#fullOrder()}); it is written for the reader and not read back, since it
+ * follows from the rest.
  *
  * A folder made before this file existed gives its plan from {@code experiment.json} and the sets
  * named in {@code results.csv} ({@link #fromFolder}). Stateless.
@@ -71,6 +75,8 @@ public final class PlanFile {
             root.put("grid_resolution_m", c.gridResolutionM());
         }
         root.put("shard", plan.shard().toString());
+        var order = root.putArray("order");
+        plan.order().forEach(p -> order.add(p.folderName()));
         Files.writeString(dir.resolve(FILE_NAME), MAPPER.writerWithDefaultPrettyPrinter().writeValueAsString(root) + "\n");
     }
 

@@ -60,6 +60,15 @@ public final class ProgressBar {
     }
 
     /**
+     * Shows why the next run waits, on the progress line (in place on a terminal).
+     *
+     * @param reason one line, e.g. {@code waiting for a quiet machine (...)}
+     */
+    public void waiting(String reason) {
+        draw("[waiting] " + reason);
+    }
+
+    /**
      * Prints a message on its own line (a failed run, an interruption).
      *
      * @param message one line

@@ -27,7 +27,10 @@ import java.util.Map;
  * mediator_obstacle_cycles, mediator_waypoint_cycles, mediator_stop_cycles,
  * T_max_safe_period_ms for each task, robot_seed (the run's), robots (the plan's count),
  * min_clearance_m (the nearest the robot's body came to any obstacle), near_misses (approaches
- * within the simulator's 0.05 m margin that did not touch)
+ * within the simulator's 0.05 m margin that did not touch),
+ * machine, machine_reasons, other_cpus, steal_pct, load_start, load_end, gc_max_pause_ms,
+ * time_to_safepoint_max_ms, machine_before_run, waited_for_quiet_s (the run's conditions:
+ * {@link RunMachine}; {@code machine} is empty in rows that predate them)
  * </pre>
  *
  * RFC 4180 quoting; an empty field is a value the run did not give (an {@code error} row, or
@@ -42,6 +45,10 @@ public final class ResultsCsv {
     public static final String FILE_NAME = "results.csv";
 
     private static final List<String> TASK_COLUMNS = List.of("releases", "misses", "miss_pct", "stale_runs", "exec_p99_us");
+
+    private static final List<String> MACHINE_COLUMNS = List.of("machine", "machine_reasons", "other_cpus", "steal_pct",
+            "load_start", "load_end", "gc_max_pause_ms", "time_to_safepoint_max_ms", "machine_before_run",
+            "waited_for_quiet_s");
 
     /** The header row's column names. */
     public static final List<String> HEADER = header();
@@ -75,6 +82,7 @@ public final class ResultsCsv {
             h.add(task + "_max_safe_period_ms");
         }
         h.addAll(List.of("robot_seed", "robots", "min_clearance_m", "near_misses"));
+        h.addAll(MACHINE_COLUMNS);
         return List.copyOf(h);
     }
 
@@ -198,6 +206,18 @@ public final class ResultsCsv {
         f.add(Integer.toString(r.conditions().robots()));
         f.add(r.minClearanceM() == null ? "" : number(r.minClearanceM()));
         f.add(r.nearMisses() == null ? "" : r.nearMisses().toString());
+        RunMachine m = r.machine();
+        boolean recorded = !RunMachine.UNRECORDED.equals(m.machine());
+        f.add(recorded ? quote(m.machine()) : "");
+        f.add(quote(m.reasons()));
+        f.add(number(m.otherCpus()));
+        f.add(number(m.stealPct()));
+        f.add(number(m.loadStart()));
+        f.add(number(m.loadEnd()));
+        f.add(number(m.gcMaxPauseMs()));
+        f.add(number(m.timeToSafepointMaxMs()));
+        f.add(quote(m.beforeRun()));
+        f.add(recorded ? number(m.waitedS()) : "");
         return String.join(",", f);
     }
 
@@ -337,11 +357,17 @@ public final class ResultsCsv {
         }
         String speed = row.get("top_speed_mps");
         PeriodSet set = new PeriodSet(row.get("set_name"), periods, speed.isEmpty() ? null : Double.valueOf(speed));
+        RunMachine machine = row.get("machine").isEmpty() ? RunMachine.NOT_RECORDED
+                : new RunMachine(row.get("machine"), row.get("machine_reasons"), decimal(row.get("other_cpus")),
+                        decimal(row.get("steal_pct")), decimal(row.get("load_start")), decimal(row.get("load_end")),
+                        decimal(row.get("gc_max_pause_ms")), decimal(row.get("time_to_safepoint_max_ms")),
+                        row.get("machine_before_run"), row.get("waited_for_quiet_s").isEmpty() ? 0
+                        : Double.parseDouble(row.get("waited_for_quiet_s")));
         return new RunResult(Integer.parseInt(row.get("set")), run, set, conditions,
                 row.get("outcome"), decimal(row.get("run_time_s")), decimal(row.get("distance_to_finish_m")),
                 decimal(row.get("distance_travelled_m")), optionalInt(row.get("collisions")),
                 optionalInt(row.get("waypoints_reached")), optionalInt(row.get("waypoints_total")), tasks, mediator,
-                optionalDouble(row.get("min_clearance_m")), optionalLong(row.get("near_misses")));
+                optionalDouble(row.get("min_clearance_m")), optionalLong(row.get("near_misses")), machine);
     }
 
     private static String number(double v) {

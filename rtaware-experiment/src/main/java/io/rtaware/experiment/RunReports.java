@@ -63,7 +63,24 @@ public final class RunReports {
                 number(runNode, "distance_travelled_m"), integer(runNode, "collisions"),
                 integer(runNode, "waypoints_reached"), integer(runNode, "waypoints_total"), tasks, mediator,
                 runNode.path("min_clearance_m").isNumber() ? runNode.get("min_clearance_m").asDouble() : null,
-                runNode.path("near_misses").isIntegralNumber() ? runNode.get("near_misses").asLong() : null);
+                runNode.path("near_misses").isIntegralNumber() ? runNode.get("near_misses").asLong() : null,
+                machine(doc.sections().get("conditions")));
+    }
+
+    /**
+     * @param section the report's {@code conditions} section, or null
+     * @return the machine during the run, {@link RunMachine#NOT_RECORDED} without the section
+     */
+    static RunMachine machine(Object section) {
+        if (!(section instanceof JsonNode c) || !c.isObject() || !c.path("machine").isTextual()) {
+            return RunMachine.NOT_RECORDED;
+        }
+        java.util.List<String> reasons = new java.util.ArrayList<>();
+        c.path("machine_reasons").forEach(r -> reasons.add(r.asText()));
+        JsonNode m = c.path("measured");
+        return new RunMachine(c.path("machine").asText(), String.join("; ", reasons), number(m, "other_cpus"),
+                number(m, "steal_pct"), number(m, "load_start"), number(m, "load_end"), number(m, "gc_max_pause_ms"),
+                number(m, "time_to_safepoint_max_ms"), "", 0);
     }
 
     /**

@@ -27,15 +27,16 @@ import java.util.Set;
  * @param minClearanceM the smallest distance between the robot's body and any obstacle in the run,
  *     metres, or null if unknown
  * @param nearMisses approaches within the near-miss margin that did not touch, or null if unknown
+ * @param machine the machine during the run ({@link RunMachine#NOT_RECORDED} for results that predate it)
  */
 public record RunResult(int set, int run, PeriodSet periods, RunConditions conditions, String outcome,
                         double runTimeS, double distanceToFinishM, double distanceTravelledM,
                         Integer collisions, Integer waypointsReached, Integer waypointsTotal,
                         Map<String, TaskResult> tasks, Map<String, Long> mediatorCycles, Double minClearanceM,
-                        Long nearMisses) {
+                        Long nearMisses, RunMachine machine) {
 
     /**
-     * A result without clearance measures.
+     * A result without clearance measures and without recorded machine conditions.
      *
      * @param set the set's number
      * @param run the run's number
@@ -56,7 +57,71 @@ public record RunResult(int set, int run, PeriodSet periods, RunConditions condi
                      Integer collisions, Integer waypointsReached, Integer waypointsTotal,
                      Map<String, TaskResult> tasks, Map<String, Long> mediatorCycles) {
         this(set, run, periods, conditions, outcome, runTimeS, distanceToFinishM, distanceTravelledM, collisions,
-                waypointsReached, waypointsTotal, tasks, mediatorCycles, null, null);
+                waypointsReached, waypointsTotal, tasks, mediatorCycles, null, null, RunMachine.NOT_RECORDED);
+    }
+
+    /**
+     * A result without recorded machine conditions.
+     *
+     * @param set the set's number
+     * @param run the run's number
+     * @param periods the set
+     * @param conditions the shared conditions
+     * @param outcome how the run ended
+     * @param runTimeS run time, s
+     * @param distanceToFinishM distance to the finish, m
+     * @param distanceTravelledM path length, m
+     * @param collisions collisions, or null
+     * @param waypointsReached waypoints reached, or null
+     * @param waypointsTotal waypoints in the course, or null
+     * @param tasks per behavior
+     * @param mediatorCycles cycles per mediator winner
+     * @param minClearanceM the smallest clearance, m, or null
+     * @param nearMisses near misses, or null
+     */
+    public RunResult(int set, int run, PeriodSet periods, RunConditions conditions, String outcome,
+                     double runTimeS, double distanceToFinishM, double distanceTravelledM,
+                     Integer collisions, Integer waypointsReached, Integer waypointsTotal,
+                     Map<String, TaskResult> tasks, Map<String, Long> mediatorCycles, Double minClearanceM,
+                     Long nearMisses) {
+        this(set, run, periods, conditions, outcome, runTimeS, distanceToFinishM, distanceTravelledM, collisions,
+                waypointsReached, waypointsTotal, tasks, mediatorCycles, minClearanceM, nearMisses,
+                RunMachine.NOT_RECORDED);
+    }
+
+    /**
+     * A result without clearance measures.
+     *
+     * @param set the set's number
+     * @param run the run's number
+     * @param periods the set
+     * @param conditions the shared conditions
+     * @param outcome how the run ended
+     * @param runTimeS run time, s
+     * @param distanceToFinishM distance to the finish, m
+     * @param distanceTravelledM path length, m
+     * @param collisions collisions, or null
+     * @param waypointsReached waypoints reached, or null
+     * @param waypointsTotal waypoints in the course, or null
+     * @param tasks per behavior
+     * @param mediatorCycles cycles per mediator winner
+     * @param machine the machine during the run
+     */
+    public RunResult(int set, int run, PeriodSet periods, RunConditions conditions, String outcome,
+                     double runTimeS, double distanceToFinishM, double distanceTravelledM,
+                     Integer collisions, Integer waypointsReached, Integer waypointsTotal,
+                     Map<String, TaskResult> tasks, Map<String, Long> mediatorCycles, RunMachine machine) {
+        this(set, run, periods, conditions, outcome, runTimeS, distanceToFinishM, distanceTravelledM, collisions,
+                waypointsReached, waypointsTotal, tasks, mediatorCycles, null, null, machine);
+    }
+
+    /**
+     * @param m the machine during the run
+     * @return this result with it
+     */
+    public RunResult withMachine(RunMachine m) {
+        return new RunResult(set, run, periods, conditions, outcome, runTimeS, distanceToFinishM, distanceTravelledM,
+                collisions, waypointsReached, waypointsTotal, tasks, mediatorCycles, minClearanceM, nearMisses, m);
     }
 
     /** What the position mediator can choose in a cycle: the avoider's request, the waypoint planner's, or a stop. */
@@ -86,11 +151,15 @@ public record RunResult(int set, int run, PeriodSet periods, RunConditions condi
      * @param tasks per behavior of {@link PeriodSet#TASKS}; empty when the run gave no report
      * @param mediatorCycles cycles the position mediator gave to each of {@link #MEDIATOR_WINNERS}; empty when
      *     unknown (a run report without them, or results that predate them)
+     * @param minClearanceM the smallest clearance to any obstacle in the run, metres, or null if unknown
+     * @param nearMisses approaches within the near-miss margin that did not touch, or null if unknown
+     * @param machine the machine during the run
      */
     public RunResult {
         Objects.requireNonNull(periods, "periods");
         Objects.requireNonNull(conditions, "conditions");
         Objects.requireNonNull(outcome, "outcome");
+        Objects.requireNonNull(machine, "machine");
         tasks = Map.copyOf(tasks);
         mediatorCycles = Map.copyOf(mediatorCycles);
         if (set < 1 || run < 1) {

@@ -15,7 +15,8 @@ import java.util.Map;
  * A stand-in for {@code rtaware run} started in a child JVM by the runner tests: it writes a
  * report.json and a trajectory.csv whose numbers follow from the periods and the seed. Scenario
  * {@code reject} exits 2 with one line; {@code crash} exits 1 without a report; {@code slow}
- * sleeps a minute (to be interrupted).
+ * sleeps a minute (to be interrupted); {@code busy-seed-N} reports the run of seed N as made on
+ * a busy machine, the others quiet.
  */
 public final class FakeRun {
 
@@ -74,8 +75,16 @@ public final class FakeRun {
         List<Map<String, Object>> advice = List.of(Map.of("task", "obstacle", "rule", "reaction",
                 "evidence", Map.of("max_safe_period_ms", 600.0 + seed)), Map.of("task", "planner", "rule", "nyquist",
                 "evidence", Map.of("max_safe_period_ms", 1.0)));
+        // Scenario 'busy-seed-N': the run with seed N was made beside another process.
+        boolean busy = scenario != null && scenario.equals("busy-seed-" + seed);
+        Map<String, Object> conditions = new LinkedHashMap<>();
+        conditions.put("machine", busy ? "busy" : "quiet");
+        conditions.put("machine_reasons", List.of(busy ? "other processes used 1.2 of 2 CPUs (more than 0.10)"
+                : "other processes used 0.02 of 2 CPUs"));
+        conditions.put("measured", Map.of("other_cpus", busy ? 1.2 : 0.02, "steal_pct", 0.0, "load_start", busy ? 3.5 : 0.3,
+                "load_end", 0.4, "gc_max_pause_ms", 0.1 * seed));
         new ReportDocument(new Report(Report.SCHEMA, 1.0, runTime, 1.0, tasks, List.of())).section("run", run)
-                .section("advice", advice).write(out.resolve("report.json"));
+                .section("advice", advice).section("conditions", conditions).write(out.resolve("report.json"));
         StringBuilder csv = new StringBuilder("t_s,x_m,y_m,yaw_rad\n");
         for (int i = 0; i <= 100; i++) {
             double a = i / 100.0 * Math.PI;

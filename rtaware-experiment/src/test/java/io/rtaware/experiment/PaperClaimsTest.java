@@ -150,7 +150,8 @@ class PaperClaimsTest {
         ExperimentSummary running = summary(rows(sweep, 2, (s, p, r) -> p <= 5
                 ? new Object[] {"timeout", 360.0, 4.0, 0} : completed(230), FALLING));
         Claim c = claim(running, PaperClaims.FAST);
-        assertEquals(Verdict.NOT_REPRODUCED, c.verdict());
+        assertEquals(Verdict.NOT_COMPARABLE, c.verdict(), "no lock-up here cannot speak against the paper's mechanism");
+        assertTrue(c.evidence().contains(PaperClaims.LOCK_UP_MECHANISM), c.evidence());
         // what happens to the robot, from the data: 10 % of releases missed at 5 ms, half of them skipped
         assertTrue(c.evidence().contains("all 5 ms (5 ms): 0 of 2 runs locked up, 0 completed, outcomes {timeout=2}"),
                 c.evidence());
@@ -194,7 +195,18 @@ class PaperClaimsTest {
         assertEquals(Verdict.REPRODUCED, claim(s, PaperClaims.FIG7).verdict());
         Claim same = claim(s, PaperClaims.SAME);
         assertEquals(Verdict.MIXED, same.verdict(), same.evidence());
-        assertEquals(Verdict.REPRODUCED, claim(s, PaperClaims.T_DISTANCE).verdict());
+        Claim distance = claim(s, PaperClaims.T_DISTANCE);
+        // No pair differs, but with 3 runs a set the tests detect only differences of about 0.3 m,
+        // larger than the paper's differences of the set means (0.01 to 0.28 m).
+        assertEquals(Verdict.INCONCLUSIVE, distance.verdict(), distance.evidence());
+        assertTrue(distance.evidence().contains("too weak to see the paper's differences: Set 1 vs Set 2 detects"),
+                distance.evidence());
+        Claim misses = claim(s, PaperClaims.SET1_MISSES);
+        assertEquals(Verdict.REPRODUCED, misses.verdict(), "all tasks at 10 ms miss most: " + misses.evidence());
+        Claim spread = claim(s, PaperClaims.SPREAD);
+        // SDs: Set 1 1, Set 2 8, Set 3 8, Set 4 1, Set 5 2: (8 + 8) / 2 over (1 + 1 + 2) / 3 = 6
+        assertEquals(Verdict.REPRODUCED, spread.verdict(), spread.evidence());
+        assertTrue(spread.evidence().contains("ratio 6.00 (paper: 10.79 s and 6.03 s, ratio 1.79)"), spread.evidence());
         Claim verge = claim(s, PaperClaims.T_VERGE);
         assertTrue(verge.evidence().contains("Set 2 vs Set 4: confidence"), verge.evidence());
 
@@ -202,6 +214,33 @@ class PaperClaimsTest {
         List<RunResult> reversed = rows(paper, 3, (x, p, r) -> completed(paper.indexOf(x) == 0 ? 300 + r : 250 + r),
                 (task, period) -> 1);
         assertEquals(Verdict.NOT_REPRODUCED, claim(summary(reversed), PaperClaims.T_SET1).verdict());
+    }
+
+    @Test
+    void noDistanceDifferenceWithEnoughPowerIsReproduced() {
+        List<PeriodSet> paper = ExperimentSets.paper();
+        // 10 runs a set, distances within +-0.001 m: the tests detect differences far below the paper's
+        List<RunResult> rows = rows(paper, 10, (s, p, r) -> new Object[] {"completed", 250.0 + r, 2.0 + 0.001 * (r % 3), 0},
+                (task, period) -> 1);
+        Claim distance = claim(summary(rows), PaperClaims.T_DISTANCE);
+        assertEquals(Verdict.REPRODUCED, distance.verdict(), distance.evidence());
+    }
+
+    @Test
+    void everyTimingClaimOfThePaperIsJudgedOrListedWithAReason() {
+        ExperimentSummary s = summary(rows(ExperimentSets.paper(), 2, (x, p, r) -> completed(250 + r), (task, period) -> 1));
+        List<String> all = new java.util.ArrayList<>();
+        s.claims().forEach(c -> all.add(c.claim()));
+        s.claimsNotEvaluated().forEach(c -> {
+            assertTrue(!c.reason().isBlank(), c.claim());
+            all.add(c.claim());
+        });
+        for (String claim : List.of(PaperClaims.SLOW, PaperClaims.FAST, PaperClaims.MISSES_FALL, PaperClaims.T_SET1,
+                PaperClaims.T_VERGE, PaperClaims.T_DISTANCE, PaperClaims.SET3, PaperClaims.SAME, PaperClaims.FIG7,
+                PaperClaims.SET1_MISSES, PaperClaims.SPREAD, PaperClaims.CONCLUSION, PaperClaims.AVOIDER_FAST,
+                PaperClaims.SAMPLING)) {
+            assertTrue(all.contains(claim), "claim listed: " + claim + " in " + all);
+        }
     }
 
     @Test
@@ -231,7 +270,7 @@ class PaperClaimsTest {
             ResultsCsv.append(out.resolve(ResultsCsv.FILE_NAME), r);
         }
         ExperimentSummary s = io.rtaware.experiment.report.ExperimentReport.render(out,
-                io.rtaware.experiment.report.MapBackground.none());
+                io.rtaware.experiment.report.MapBackground.none(), true);
         for (String name : List.of("sweep-rates", "sweep-runtime", "sweep-distance", "sweep-misses", "speed-rates",
                 "speed-runtime", "speed-distance", "speed-misses")) {
             assertTrue(java.nio.file.Files.size(out.resolve(name + ".png")) > 5000, name);
@@ -264,6 +303,6 @@ class PaperClaimsTest {
                 ? new Object[] {"stuck", 50.0, 3.0, 1} : completed(230), FALLING));
         assertEquals(Verdict.NOT_REPRODUCED, claim(s, PaperClaims.SLOW + " (at 0.1 m/s)").verdict());
         assertEquals(Verdict.REPRODUCED, claim(s, PaperClaims.SLOW + " (at 0.5 m/s)").verdict());
-        assertEquals(Verdict.NOT_REPRODUCED, claim(s, PaperClaims.FAST + " (at 0.5 m/s)").verdict());
+        assertEquals(Verdict.NOT_COMPARABLE, claim(s, PaperClaims.FAST + " (at 0.5 m/s)").verdict());
     }
 }

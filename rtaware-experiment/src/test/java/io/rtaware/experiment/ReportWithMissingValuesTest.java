@@ -34,7 +34,7 @@ class ReportWithMissingValuesTest {
         String text = Files.readString(csv);
         Files.writeString(csv, text + "2,Set 2,2,paper-room,10,2,,100,10,100,100,completed,NaN,NaN,Infinity,0,4,4"
                 + ",".repeat(ResultsCsv.HEADER.size() - 18) + "\n");
-        ExperimentSummary summary = ExperimentReport.render(dir, MapBackground.none());
+        ExperimentSummary summary = ExperimentReport.render(dir, MapBackground.none(), true);
         assertEquals(1, summary.sets().get(0).runTimeS().n(), "the NaN run time is not a sample");
         assertEquals(1, summary.sets().get(1).runTimeS().n(), "nor the one written as NaN");
         assertEquals(0, summary.sets().get(2).runTimeS().n(), "a set whose only run time is NaN has none");
@@ -64,7 +64,7 @@ class ReportWithMissingValuesTest {
         Files.writeString(runDir.resolve("trajectory.csv"), "t_s,x_m,y_m,yaw_rad\n0.0,1.0,1.0,0\n0.1,NaN,NaN,NaN\n0.2,2.0,1.5,0\n");
         Path run2 = Files.createDirectories(dir.resolve("runs/set2-run1"));
         Files.writeString(run2.resolve("trajectory.csv"), "t_s,x_m,y_m,yaw_rad\n0.0,NaN,NaN,NaN\n0.1,Infinity,1,0\n");
-        ExperimentSummary summary = ExperimentReport.render(dir, MapBackground.none());
+        ExperimentSummary summary = ExperimentReport.render(dir, MapBackground.none(), true);
         assertEquals(0, summary.sets().get(0).runTimeS().n());
         assertTrue(Files.size(dir.resolve("runtime-box.png")) > 0);
         assertTrue(Files.size(dir.resolve("report.md")) > 0);

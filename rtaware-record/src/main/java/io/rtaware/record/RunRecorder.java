@@ -10,6 +10,7 @@ import io.rtaware.ros2msg.cdr.CdrWriter;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.atomic.AtomicLong;
@@ -95,6 +96,7 @@ public final class RunRecorder {
     private final Ros2Channels layout;
     private final LogTimeOrderedSink ordered;
     private boolean closed;
+    private final Map<String, Map<String, String>> closingMetadata = new LinkedHashMap<>();
     private RecordingStats stats;
 
     /**
@@ -287,6 +289,17 @@ public final class RunRecorder {
     }
 
     /**
+     * Adds a metadata record written when the file is finished, for what is known only at the end
+     * of a run (its conditions, {@code rtaware.conditions}). Call before {@link #finish()}.
+     *
+     * @param name the record's name
+     * @param entries its entries
+     */
+    public synchronized void closingMetadata(String name, Map<String, String> entries) {
+        closingMetadata.put(name, Map.copyOf(entries));
+    }
+
+    /**
      * Stops the writer thread after it has written everything handed over, then finishes the
      * file (summary, footer). Idempotent. A write that failed (a full disk) leaves the file
      * incomplete: the statistics then say why and count only the messages in whole chunks.
@@ -303,6 +316,9 @@ public final class RunRecorder {
             if (error == null) {
                 ordered.flush();
                 layout.writeBagMetadata(file.getFileName() == null ? file.toString() : file.getFileName().toString());
+                for (Map.Entry<String, Map<String, String>> m : closingMetadata.entrySet()) {
+                    writer.addMetadata(m.getKey(), m.getValue());
+                }
             }
             writer.close();
         } catch (IOException e) {

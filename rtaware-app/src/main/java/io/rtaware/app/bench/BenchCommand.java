@@ -28,7 +28,10 @@ import io.rtaware.core.monitor.ExecutorKind;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.ros2.export.MonitorExporter;
 import io.rtaware.core.report.Report;
+import io.rtaware.core.conditions.Conditions;
+import io.rtaware.core.conditions.ConditionsMeter;
 import io.rtaware.core.report.ReportDocument;
+import io.rtaware.core.report.TaskReport;
 import io.rtaware.core.report.SummaryTable;
 import io.rtaware.rt.CpuLatencyRequest;
 import io.rtaware.rt.RealtimeThreads;
@@ -319,12 +322,15 @@ public final class BenchCommand implements Callable<Integer> {
         CompareRun.Family family = family();
         CompareRun run = new CompareRun(specs, work, durationNs, segmentNs, System.err, family, workerCount(),
                 sleeper);
+        ConditionsMeter.Span span = ConditionsMeter.ofThisProcess().start(1.0, "none");
         List<RunResult> runs = run.run();
+        Conditions measured = span.finish(specs.stream().mapToLong(BenchSpec::periodNs).min().orElse(0) / 1e6);
         CompareReport report = new CompareReport(CompareReport.SCHEMA, specs.size(), specs.get(0).periodNs() / 1e6,
                 specs.get(0).workNs() / 1e6, run.measuredNs() / 1e9, segmentNs / 1e9, loadThreads, gcPressureMbps,
                 System.getProperty("java.vm.version"), CompareRun.collectors(), runs, Goal.check(runs),
-                PairedRounds.check(runs));
+                PairedRounds.check(runs), measured);
         out.print(report.table());
+        out.println(measured.summaryLine());
         OutputWrites writes = new OutputWrites(System.err);
         if (json != null && writes.write(json, () -> {
             Files.createDirectories(json.toAbsolutePath().getParent());
@@ -383,6 +389,9 @@ public final class BenchCommand implements Callable<Integer> {
         monitor.onTermination(report -> liveView.finish(report, null));
         warmUp(specs, work);
         ThreadAllocation.prepare();
+        conditions = ConditionsMeter.ofThisProcess().start(timeScale, realtime
+                ? "--realtime: SCHED_FIFO priority " + rtPriority + (affinity.isEmpty() ? "" : ", affinity " + affinity)
+                + ", CPU latency request 0 us" : "none");
         monitor.start();
         long wallNs = clock.toWallNanos(durationNs);
         // Steady state: the last two thirds of the run (the first third warms up the JIT).
@@ -449,6 +458,9 @@ public final class BenchCommand implements Callable<Integer> {
         warmUp.stop();
     }
 
+    /** The measurement of the run's conditions, from just before the monitor's start (null before). */
+    private volatile ConditionsMeter.Span conditions;
+
     /** The sleeper {@code --sleep} chose (null: park), set when the command starts. */
     private MonotonicSleeper sleeper;
 
@@ -470,6 +482,18 @@ public final class BenchCommand implements Callable<Integer> {
         out.println();
         out.print(SummaryTable.format(report));
         ReportDocument doc = new ReportDocument(report);
+        ConditionsMeter.Span span = conditions;
+        Conditions measured = null;
+        if (span != null) {
+            measured = span.finish(report.tasks().stream().map(TaskReport::periodMs).filter(p -> p != null && p > 0)
+                    .mapToDouble(Double::doubleValue).min().orElse(Double.NaN));
+            doc.section(Conditions.SECTION, measured);
+            out.println();
+            out.println(measured.summaryLine());
+            if (recording != null) {
+                recording.closingMetadata(Conditions.MCAP_METADATA, ConditionsMeter.metadata(measured));
+            }
+        }
         out.println();
         out.print(ReportSections.enrich(doc, Runtime.getRuntime().availableProcessors()).text());
         String history = ReportSections.addPeriodHistory(doc, monitor);

@@ -4,6 +4,8 @@ import io.rtaware.app.UserError;
 import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.output.OutputFolder;
 import io.rtaware.app.output.OutputWrites;
+import io.rtaware.core.conditions.HostFiles;
+import io.rtaware.core.conditions.HostReader;
 import io.rtaware.experiment.ExperimentInputException;
 import io.rtaware.experiment.ExperimentPlan;
 import io.rtaware.experiment.ExperimentProfile;
@@ -13,6 +15,8 @@ import io.rtaware.experiment.ExperimentSummary;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
 import io.rtaware.experiment.FolderLock;
 import io.rtaware.experiment.JvmRunCommand;
+import io.rtaware.experiment.MachineCheck;
+import io.rtaware.experiment.QuietGate;
 import io.rtaware.experiment.PeriodSet;
 import io.rtaware.experiment.PlanFile;
 import io.rtaware.experiment.ProgressBar;
@@ -46,6 +50,8 @@ import picocli.CommandLine.Spec;
         description = {"Reproduce the paper's experiment: several sets of task periods, repeated runs of the course,",
                 "run time, distance to the finish, missed deadlines, and Welch t-tests between sets.",
                 "Each run is a fresh JVM running 'rtaware run'; runs of different sets are interleaved.",
+                "Before each run the machine is checked and, unless --allow-busy, the run waits for it to be quiet;",
+                "the report uses the quiet runs only unless --include-busy.",
                 "Re-running into the same --out (or --resume) skips the runs already in results.csv.",
                 "Worst case it takes sets x runs x (360 s / time scale) plus JVM start-up.",
                 "Examples:",
@@ -56,6 +62,8 @@ public final class ExperimentCommand implements Callable<Integer> {
 
     /** The run's time limit in world seconds (the paper's six minutes), for the worst-case ETA. */
     static final double RUN_LIMIT_S = 360;
+    /** How long the machine is watched before each run to call it quiet or busy. */
+    static final java.time.Duration CHECK_WINDOW = java.time.Duration.ofSeconds(2);
 
     @Option(names = "--sets", defaultValue = ExperimentSets.PAPER, paramLabel = "paper|sweep-obstacle|sweep-all|FILE",
             description = "'paper' (Table I: Sets 1-5), 'sweep-obstacle' (obstacle period 5 to 800 ms, the others 100 ms), "
@@ -105,6 +113,19 @@ public final class ExperimentCommand implements Callable<Integer> {
             description = "Record each run to run.mcap in its folder (see rtaware run --record).")
     boolean record;
 
+    @Option(names = "--allow-busy", description = "Do not wait for a quiet machine before each run; runs on a busy "
+            + "machine are labelled in results.csv and left out of the report unless --include-busy.")
+    boolean allowBusy;
+
+    @Option(names = "--include-busy", description = "Use every run in the summary, tables, t-tests and claims, not only "
+            + "those made on a quiet machine (the report says how many of each).")
+    boolean includeBusy;
+
+    @Option(names = "--quiet-wait", defaultValue = "600", paramLabel = "S",
+            description = "Wait at most S seconds for a quiet machine before each run, then run it labelled "
+                    + "(default: ${DEFAULT-VALUE}).")
+    double quietWaitS;
+
     @Option(names = "--resume", description = "Continue the experiment in --out with the plan stored there (sets, runs, "
             + "scenario, time scale, seed, grid), skipping the runs already in its results.csv.")
     boolean resume;
@@ -139,8 +160,13 @@ public final class ExperimentCommand implements Callable<Integer> {
         }
         ProgressBar progress = new ProgressBar(System.err, System.console() != null, System::nanoTime,
                 RUN_LIMIT_S / timeScale);
+        if (!(quietWaitS >= 0)) {
+            throw new UserError("--quiet-wait must be a number of seconds >= 0, got " + quietWaitS);
+        }
+        QuietGate gate = new QuietGate(MachineCheck.overWindow(new HostReader(HostFiles.system(), System::nanoTime),
+                CHECK_WINDOW), s -> Thread.sleep((long) (s * 1000)), System::nanoTime, quietWaitS, allowBusy);
         ExperimentRunner runner = new ExperimentRunner(plan, JvmRunCommand.ofCurrentProcess(JvmRunCommand.RTAWARE_MAIN),
-                dir, progress).recordEachRun(record);
+                dir, progress).recordEachRun(record).quietGate(gate);
         int total = plan.order().size();
         System.out.printf(Locale.ROOT, "rtaware experiment: %d set(s) x %d run(s) of %s at time scale x%s into %s%s; %s%n",
                 plan.sets().size(), runs, scenario, timeScale, dir, plan.shard().whole() ? ""
@@ -165,7 +191,7 @@ public final class ExperimentCommand implements Callable<Integer> {
             if (rows.isEmpty()) {
                 return runner.interrupted() ? 130 : 0;
             }
-            ExperimentSummary summary = ExperimentReport.render(dir, CourseBackgrounds.forScenario(scenario));
+            ExperimentSummary summary = ExperimentReport.render(dir, CourseBackgrounds.forScenario(scenario), includeBusy);
             printSummary(summary, dir);
             return runner.interrupted() ? 130 : 0;
         } catch (ExperimentInputException e) {

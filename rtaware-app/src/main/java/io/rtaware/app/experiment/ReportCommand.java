@@ -8,9 +8,11 @@ import io.rtaware.experiment.FolderCheck;
 import io.rtaware.experiment.ExperimentProfile;
 import io.rtaware.experiment.ResultsCsv;
 import io.rtaware.experiment.report.ExperimentReport;
+import io.rtaware.experiment.report.ResultsMarkdown;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -27,6 +29,7 @@ import picocli.CommandLine.Parameters;
                 "from DIR/results.csv and the runs' trajectory.csv files.",
                 "With several folders (the shards of one plan, made with 'experiment --shard K/N'), merge them",
                 "into --out first; folders of different plans, or holding the same run twice, are refused.",
+                "With --results FILE, report each folder on its own and write FILE (RESULTS.md for the docs).",
                 "Examples:", "  rtaware report experiments/paper",
                 "  rtaware report shard1 shard2 shard3 --out experiments/sweep"})
 public final class ReportCommand implements Callable<Integer> {
@@ -38,8 +41,19 @@ public final class ReportCommand implements Callable<Integer> {
             description = "Merge the folders into this new folder and write the report there (needed with several DIRs).")
     Path out;
 
+    @Option(names = "--include-busy", description = "Use every run, not only those made on a quiet machine.")
+    boolean includeBusy;
+
+    @Option(names = "--results", paramLabel = "FILE", description = "Report each DIR on its own (no merge) and write "
+            + "FILE (e.g. docs/experiment/RESULTS.md): Tables I and II and the claims beside the paper's, with the "
+            + "conditions, for the docs to link.")
+    Path results;
+
     @Override
     public Integer call() throws IOException {
+        if (results != null) {
+            return results();
+        }
         if (dirs.size() > 1 && out == null) {
             throw new UserError("report: " + dirs.size() + " folders are merged into a new folder: add --out DIR");
         }
@@ -66,12 +80,38 @@ public final class ReportCommand implements Callable<Integer> {
                     .orElseGet(() -> firstScenario(dir));
             ResultsCsv.tornLastLine(dir.resolve(ResultsCsv.FILE_NAME))
                     .ifPresent(note -> System.err.println("rtaware: note: " + note));
-            ExperimentReport.render(dir, CourseBackgrounds.forScenario(scenario));
+            ExperimentReport.render(dir, CourseBackgrounds.forScenario(scenario), includeBusy);
         } catch (ExperimentInputException e) {
             throw new UserError(e.getMessage());
         }
         System.out.println("report written to " + dir.resolve(ExperimentReport.MARKDOWN_FILE) + " and "
                 + dir.resolve(ExperimentReport.HTML_FILE));
+        return 0;
+    }
+
+    private int results() throws IOException {
+        if (out != null) {
+            throw new UserError("report: --results reports each folder on its own; it does not merge into --out");
+        }
+        System.setProperty("java.awt.headless", "true");
+        List<ResultsMarkdown.Folder> folders = new ArrayList<>();
+        for (Path dir : dirs) {
+            OutputFolder.existing("report", dir);
+            String scenario = ExperimentProfile.read(dir).map(ExperimentProfile::scenario).orElseGet(() -> firstScenario(dir));
+            try {
+                folders.add(new ResultsMarkdown.Folder(dir.toAbsolutePath().normalize().getFileName().toString(),
+                        ExperimentReport.render(dir, CourseBackgrounds.forScenario(scenario), includeBusy)));
+            } catch (ExperimentInputException e) {
+                throw new UserError(e.getMessage());
+            }
+        }
+        StringBuilder command = new StringBuilder("rtaware report --results ").append(results);
+        if (includeBusy) {
+            command.append(" --include-busy");
+        }
+        dirs.forEach(d -> command.append(' ').append(d)); // as typed: run it from the checkout with relative paths
+        ResultsMarkdown.write(results, folders, command.toString());
+        System.out.println("results written to " + results + " (" + folders.size() + " experiment(s))");
         return 0;
     }
 

@@ -9,11 +9,15 @@ import io.rtaware.live.RunScene;
 import io.rtaware.app.ros2.ExportOptions;
 import io.rtaware.app.ros2.Ros2Link;
 import io.rtaware.app.ros2.Ros2Options;
+import io.rtaware.core.conditions.Conditions;
+import io.rtaware.core.conditions.ConditionsMeter;
 import io.rtaware.core.monitor.ConsoleReporter;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.TaskCounters;
 import io.rtaware.core.monitor.TaskInfo;
+import io.rtaware.core.report.Report;
 import io.rtaware.core.report.Rounding;
+import io.rtaware.core.report.TaskReport;
 import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.TaskSpec;
@@ -242,6 +246,9 @@ public final class RobotRun {
         Supplier<Pose2d> truthNow = simulator != null ? () -> simulator.withWorld(World::pose)
                 : () -> state.referee() == null ? null : state.referee().latest();
         RunArtifacts artifacts = new RunArtifacts(options, scenario, navConfig, out, err);
+        ConditionsMeter.Span conditions = ConditionsMeter.ofThisProcess().start(options.timeScale(), options.realtime()
+                ? "--realtime: SCHED_FIFO from priority " + RealtimeThreads.DEFAULT_TOP_PRIORITY + ", CPU latency request 0 us"
+                : "none");
         LiveView live;
         try {
             live = LiveView.start(options.live(), monitor, new RunScene(scenario.name(),
@@ -264,6 +271,11 @@ public final class RobotRun {
                     referee.close(); // closes the pose source too
                 } else {
                     closeQuietly(truth); // stopped before the start: no referee owns the source yet
+                }
+                Conditions measured = conditions.finish(shortestPeriodMs(report));
+                artifacts.section(Conditions.SECTION, measured);
+                if (recorder != null) {
+                    recorder.closingMetadata(Conditions.MCAP_METADATA, ConditionsMeter.metadata(measured));
                 }
                 artifacts.section("recording", RecordOptions.finish(recorder, out, artifacts.writes()));
                 monitor.read(nav.keys().course(), course);
@@ -314,6 +326,15 @@ public final class RobotRun {
             err.println(link.summary());
         }
         return artifacts.exitStatus(state.ending().outcome().exitStatus());
+    }
+
+    /**
+     * @param report a finished run
+     * @return the shortest period of its periodic tasks, ms, or NaN when it has none
+     */
+    static double shortestPeriodMs(Report report) {
+        return report.tasks().stream().map(TaskReport::periodMs).filter(p -> p != null && p > 0)
+                .mapToDouble(Double::doubleValue).min().orElse(Double.NaN);
     }
 
     private static void closeQuietly(Referee.PoseSource source) {

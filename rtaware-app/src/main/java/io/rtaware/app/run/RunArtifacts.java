@@ -2,6 +2,7 @@ package io.rtaware.app.run;
 
 import io.rtaware.app.output.OutputWrites;
 import io.rtaware.app.report.ReportSections;
+import io.rtaware.core.conditions.Conditions;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
 import io.rtaware.core.report.SummaryTable;
@@ -23,8 +24,9 @@ import java.util.Locale;
 import java.util.Map;
 
 /**
- * Writes a run's output folder: {@code report.json} (core report plus the {@code run} and
- * {@code player} sections),
+ * Writes a run's output folder: {@code report.json} (core report plus the {@code run},
+ * {@code player} and {@code conditions} sections; the machine's verdict is the last line of the
+ * run's summary),
  * {@code report.md}, {@code trajectory.csv}, {@code trajectory.png}, and the grid the robot built
  * as {@code map.pgm} + {@code map.yaml}. Prints the termination summary first, so a person sees
  * it even if a file cannot be written. Each file is written on its own: one that fails is named
@@ -182,6 +184,9 @@ final class RunArtifacts {
                 r.scenario(), options.periods(), r.timeScale(), r.seed(), navConfig.grid().resolutionM(),
                 r.robotModel().get("name"), r.robotModel().get("top_speed_mps"),
                 r.robotSeed() == null ? "" : ", robot seed " + r.robotSeed()));
+        if (sections.get(Conditions.SECTION) instanceof Conditions c) {
+            sb.append("     ").append(c.summaryLine()).append(System.lineSeparator());
+        }
         return sb.toString();
     }
 

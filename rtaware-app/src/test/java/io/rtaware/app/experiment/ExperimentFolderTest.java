@@ -36,7 +36,8 @@ class ExperimentFolderTest {
         }
         ExperimentProfile.of(plan, "test machine").write(dir);
         ResultsCsv.append(dir.resolve(ResultsCsv.FILE_NAME), new RunResult(1, 1, set, plan.conditions(), "completed",
-                12.0, 0.2, 3.0, 0, 4, 4, Map.of()));
+                12.0, 0.2, 3.0, 0, 4, 4, Map.of()).withMachine(new io.rtaware.experiment.RunMachine("quiet", "", 0.01, 0,
+                0.2, 0.2, 0.1, Double.NaN, "quiet", 0)));
         return plan;
     }
 

@@ -2,6 +2,7 @@ package io.rtaware.experiment.report;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.core.report.ReportDocument;
+import io.rtaware.experiment.ExperimentConditions;
 import io.rtaware.experiment.ExperimentInputException;
 import io.rtaware.experiment.ExperimentProfile;
 import io.rtaware.experiment.ExperimentRunner;
@@ -55,19 +56,39 @@ public final class ExperimentReport {
      * @throws ExperimentInputException if there is no results.csv with at least one row
      */
     public static ExperimentSummary render(Path dir, MapBackground background) throws IOException {
+        return render(dir, background, false);
+    }
+
+    /**
+     * @param dir an experiment folder with a {@code results.csv}
+     * @param background the course drawn behind the paths
+     * @param includeBusy true to use every run; false to use the quiet ones only
+     *     ({@link ExperimentConditions#RULE})
+     * @return the summary written
+     * @throws IOException if reading or writing fails
+     * @throws ExperimentInputException if there is no results.csv with at least one row, or no
+     *     quiet run when only quiet runs are used
+     */
+    public static ExperimentSummary render(Path dir, MapBackground background, boolean includeBusy) throws IOException {
         Path csv = dir.resolve(ResultsCsv.FILE_NAME);
         if (!Files.exists(csv)) {
             throw new ExperimentInputException(dir + " has no " + ResultsCsv.FILE_NAME + " (not an experiment folder?)");
         }
-        List<RunResult> rows = ResultsCsv.read(csv);
-        if (rows.isEmpty()) {
+        List<RunResult> all = ResultsCsv.read(csv);
+        if (all.isEmpty()) {
             throw new ExperimentInputException(csv + " has no runs yet: nothing to report");
+        }
+        ExperimentConditions conditions = ExperimentConditions.of(all, includeBusy);
+        List<RunResult> rows = ExperimentConditions.used(all, includeBusy);
+        if (rows.isEmpty()) {
+            throw new ExperimentInputException(csv + ": none of its " + all.size() + " runs was made on a quiet machine ("
+                    + conditions.byMachine() + "); report them labelled with --include-busy, or re-run on a quiet machine");
         }
         // No disk cache: its clean-up registers a shutdown hook, which fails when the report is
         // written after Ctrl-C, during shutdown.
         javax.imageio.ImageIO.setUseCache(false);
         ExperimentProfile profile = ExperimentProfile.read(dir).orElse(ExperimentProfile.fromResults(rows));
-        ExperimentSummary summary = ExperimentSummary.of(rows, profile);
+        ExperimentSummary summary = ExperimentSummary.of(rows, profile, conditions);
         ObjectMapper mapper = ReportDocument.mapper();
         Files.writeString(dir.resolve(SUMMARY_FILE), mapper.writeValueAsString(summary) + "\n");
 
@@ -122,6 +143,9 @@ public final class ExperimentReport {
                 + "each run's noise from its seed (results.csv: robot_seed, robots).");
         b.text("Machine: " + (p.machine() == null ? "not recorded (no experiment.json)" : p.machine())
                 + ". The paper's runs: " + s.paper().source() + ".");
+        if (s.conditions() != null) {
+            b.text(s.conditions().text());
+        }
         b.text("Which runs count: run time over the runs that completed the course; distance to the finish and missed "
                 + "deadlines over every run that ended on the course (completed, timeout, stuck); `error` runs are only counted. "
                 + "Missed deadlines are pooled: 100 x (misses summed over runs) / (releases summed over runs). "
@@ -192,7 +216,9 @@ public final class ExperimentReport {
         b.heading(2, "Welch t-tests between sets (two-sided)");
         b.text("t = (mean of A - mean of B) / standard error; df by Welch–Satterthwaite; p from Apache Commons Math; "
                 + "confidence = 1 - p, as the paper quotes it. A p below 0.05 (confidence above 95%) is the usual threshold "
-                + "for 'statistically different'.");
+                + "for 'statistically different'. Detectable: the test's power as a size, the smallest difference of the "
+                + "means it detects at alpha " + WelchTest.ALPHA + " with " + num(100 * WelchTest.POWER, 0) + "% power, "
+                + "given the observed spreads and n; a 'no difference' is only as strong as that figure.");
         for (String quantity : ExperimentSummary.TESTED) {
             b.heading(3, "run_time_s".equals(quantity) ? "Run time (completed runs)" : "Distance to the finish");
             rows = new ArrayList<>();
@@ -200,9 +226,10 @@ public final class ExperimentReport {
                 WelchTest t = pair.test();
                 rows.add(List.of(name(s, pair.setA()) + " vs " + name(s, pair.setB()), num(t.t(), 3), num(t.df(), 2),
                         num(t.p(), 4), t.confidence() == null ? NA : num(100 * t.confidence(), 1) + "%",
-                        t.applicable() ? "" : NA + ": " + t.note()));
+                        num(t.detectableDifference(), 3), t.applicable() ? "" : NA + ": " + t.note()));
             }
-            b.table(List.of("sets", "t", "df", "p", "confidence 1 - p", "note"), rows);
+            b.table(List.of("sets", "t", "df", "p", "confidence 1 - p",
+                    "detectable (" + ("run_time_s".equals(quantity) ? "s" : "m") + ")", "note"), rows);
             List<String> said = s.paper().tests().stream().filter(pt -> pt.quantity().equals(quantity))
                     .map(pt -> (pt.setA() == null ? "all pairs" : "Set " + pt.setA() + " vs Set " + pt.setB()) + ": "
                             + pt.statement()).toList();

@@ -73,4 +73,22 @@ class WelchTestTest {
         assertEquals(0, none.n());
         assertNull(none.mean());
     }
+
+    /**
+     * Two samples of 10 with variance 1 each: df = 18, standard error sqrt(0.2) = 0.447214; from
+     * printed t tables t(0.975, 18) = 2.1009 and t(0.80, 18) = 0.8620, so the smallest difference
+     * detected at alpha 0.05 with 80 % power is (2.1009 + 0.8620) * 0.447214 = 1.3250.
+     */
+    @Test
+    void detectableDifferenceIsThePowerOfTheTestAsASize() {
+        assertEquals(1.3250, WelchTest.detectable(1, 10, 1, 10), 2e-4);
+        double[] a = {-1.5, -0.5, 0.5, 1.5, 0, 0, 1, -1, 2, -2};
+        double[] b = {8.5, 9.5, 10.5, 11.5, 10, 10, 11, 9, 12, 8};
+        WelchTest w = WelchTest.of(a, b);
+        double variance = 15.0 / 9; // both samples: sum of squared deviations 15 over n - 1
+        assertEquals(WelchTest.detectable(variance, 10, variance, 10), w.detectableDifference(), 1e-12);
+        assertEquals(1.3250 * Math.sqrt(variance), w.detectableDifference(), 3e-4,
+                "scales with the spread: sqrt(15/9) times the unit-variance figure");
+        assertNull(WelchTest.of(new double[] {1}, b).detectableDifference(), "n/a test: no power figure");
+    }
 }

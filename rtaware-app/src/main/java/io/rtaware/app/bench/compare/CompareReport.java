@@ -1,6 +1,7 @@
 package io.rtaware.app.bench.compare;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
+import io.rtaware.core.conditions.Conditions;
 import io.rtaware.core.report.ReportDocument;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -24,11 +25,36 @@ import java.util.Locale;
  * @param runs one row per executor
  * @param goals the goals checked against the rows
  * @param paired rtaware's executors against their baselines round by round ({@link PairedRounds})
+ * @param conditions the machine and JVM over the whole comparison, with the verdict (null if not measured)
  */
 public record CompareReport(String schema, int tasks, double periodMs, double workMs, double durationS,
                             double segmentS, int load, double gcPressureMbps, String java, String gc,
                             List<RunResult> runs, List<Goal> goals,
-                            List<PairedRounds.Paired> paired) {
+                            List<PairedRounds.Paired> paired, Conditions conditions) {
+
+    /**
+     * A report without measured conditions.
+     *
+     * @param schema always {@value #SCHEMA}
+     * @param tasks number of tasks
+     * @param periodMs period of each task, ms
+     * @param workMs CPU work per release, ms
+     * @param durationS measured time per executor, s
+     * @param segmentS length of one segment, s
+     * @param load busy threads
+     * @param gcPressureMbps garbage allocated by a helper thread, MB/s
+     * @param java the JVM's version
+     * @param gc the collectors in use
+     * @param runs one row per executor
+     * @param goals the goals checked
+     * @param paired the paired rounds
+     */
+    public CompareReport(String schema, int tasks, double periodMs, double workMs, double durationS, double segmentS,
+                         int load, double gcPressureMbps, String java, String gc, List<RunResult> runs,
+                         List<Goal> goals, List<PairedRounds.Paired> paired) {
+        this(schema, tasks, periodMs, workMs, durationS, segmentS, load, gcPressureMbps, java, gc, runs, goals, paired,
+                null);
+    }
 
     /** The JSON schema name. */
     public static final String SCHEMA = "rtaware.bench-compare/1";

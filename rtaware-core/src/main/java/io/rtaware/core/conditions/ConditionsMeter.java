@@ -1,0 +1,104 @@
+package io.rtaware.core.conditions;
+
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import io.rtaware.core.report.ReportDocument;
+import java.util.Map;
+import java.util.Objects;
+
+/**
+ * Takes a run's conditions: the setup and the counters at {@link #start}, the counters and the
+ * JVM's pauses at {@link Span#finish}, and the verdict by {@link MachineVerdict}'s rule. Costs
+ * a few file reads at each end and a listener on the collectors in between; nothing on the
+ * task threads.
+ */
+public final class ConditionsMeter {
+
+    private final HostReader host;
+    private final JvmProbe jvm;
+    private final BuildInfo build;
+
+    /**
+     * @param host the machine's files
+     * @param jvm the JVM
+     * @param build rtaware's build
+     */
+    public ConditionsMeter(HostReader host, JvmProbe jvm, BuildInfo build) {
+        this.host = Objects.requireNonNull(host, "host");
+        this.jvm = Objects.requireNonNull(jvm, "jvm");
+        this.build = Objects.requireNonNull(build, "build");
+    }
+
+    /** @return a meter of this process on this machine */
+    public static ConditionsMeter ofThisProcess() {
+        return new ConditionsMeter(new HostReader(HostFiles.system(), System::nanoTime), new PlatformJvmProbe(),
+                BuildInfo.ofThisCode());
+    }
+
+    /** @return the machine's reader, for checks between runs */
+    public HostReader host() {
+        return host;
+    }
+
+    /**
+     * Reads the setup and starts measuring.
+     *
+     * @param timeScale the run's time scale
+     * @param realtime the run's real-time settings, or {@code none}
+     * @return the span under way
+     */
+    public Span start(double timeScale, String realtime) {
+        StaticConditions setup = StaticConditions.read(host, jvm, build, timeScale, realtime);
+        JvmProbe.PauseWatch pauses = jvm.watchPauses();
+        return new Span(setup, host.sample(), pauses);
+    }
+
+    /** A run under measurement. */
+    public final class Span {
+        private final StaticConditions setup;
+        private final HostSample start;
+        private final JvmProbe.PauseWatch pauses;
+        private Conditions finished;
+
+        private Span(StaticConditions setup, HostSample start, JvmProbe.PauseWatch pauses) {
+            this.setup = setup;
+            this.start = start;
+            this.pauses = pauses;
+        }
+
+        /**
+         * Ends the measurement (once; later calls return the same conditions).
+         *
+         * @param shortestPeriodMs the run's shortest task period, ms, or NaN when it has none
+         * @return the conditions with the verdict
+         */
+        public synchronized Conditions finish(double shortestPeriodMs) {
+            if (finished == null) {
+                HostSample end = host.sample();
+                pauses.close(); // first: the JVM may deliver the last pauses while closing
+                MeasuredConditions measured = MeasuredConditions.between(start, end, pauses);
+                finished = Conditions.of(setup, measured, MachineVerdict.of(measured, shortestPeriodMs));
+            }
+            return finished;
+        }
+    }
+
+    /**
+     * @param conditions a run's conditions
+     * @return them as the string map of an MCAP metadata record ({@link Conditions#MCAP_METADATA}):
+     *     the verdict, its reasons, and the setup and measured figures as JSON text
+     */
+    public static Map<String, String> metadata(Conditions conditions) {
+        ObjectMapper mapper = ReportDocument.mapper().disable(SerializationFeature.INDENT_OUTPUT);
+        try {
+            return Map.of("machine", conditions.machine(),
+                    "machine_reasons", String.join("; ", conditions.machineReasons()),
+                    "rule", conditions.rule(),
+                    "setup", mapper.writeValueAsString(conditions.setup()),
+                    "measured", mapper.writeValueAsString(conditions.measured()));
+        } catch (JsonProcessingException e) {
+            throw new IllegalStateException("conditions cannot be written as JSON", e);
+        }
+    }
+}

@@ -1,0 +1,65 @@
+package io.rtaware.core.conditions;
+
+/**
+ * What happened on the machine and in the JVM over a span (a run, or the check before one),
+ * measured from the OS's counters and the JVM's notifications, not estimated. A figure that
+ * could not be measured is NaN (null in JSON), or -1 for counts.
+ *
+ * @param durationS the span's wall-clock length, s
+ * @param loadStart the one-minute load average at the start
+ * @param loadEnd the one-minute load average at the end
+ * @param machineCpus the CPUs the OS counts
+ * @param otherCpus CPU used by other processes over the span, in CPUs (machine busy time from
+ *     {@code /proc/stat} minus this process's from {@code /proc/self/stat}, over the span)
+ * @param stealPct CPU time the hypervisor gave to other guests, percent of the machine's
+ * @param gcCount collections that paused the application threads
+ * @param gcTotalMs their summed duration, ms
+ * @param gcMaxPauseMs the longest, ms
+ * @param safepoints safepoints over the span (JFR's {@code jdk.SafepointBegin}), or -1 where not measured
+ * @param timeToSafepointMaxMs the longest time to reach one of them, ms (0 with none), or null where not measured
+ * @param safepointNote null when the time to safepoint is measured, else why not
+ * @param involuntarySwitches involuntary context switches of this process's threads over the span
+ */
+public record MeasuredConditions(double durationS, double loadStart, double loadEnd, int machineCpus,
+                                 double otherCpus, double stealPct, long gcCount, double gcTotalMs,
+                                 double gcMaxPauseMs, long safepoints, Double timeToSafepointMaxMs, String safepointNote,
+                                 long involuntarySwitches) {
+
+    /**
+     * @param start the counters at the start
+     * @param end the counters at the end
+     * @param pauses the JVM's pauses over the span, or null when they are not part of it (the
+     *     check of the machine before a run)
+     * @return the difference
+     */
+    public static MeasuredConditions between(HostSample start, HostSample end, JvmProbe.PauseWatch pauses) {
+        double durationS = (end.nanoTime() - start.nanoTime()) / 1e9;
+        long total = known(start.totalTicks(), end.totalTicks());
+        long busy = known(start.busyTicks(), end.busyTicks());
+        long steal = known(start.stealTicks(), end.stealTicks());
+        long self = known(start.selfTicks(), end.selfTicks());
+        int cpus = end.cpus();
+        double other = Double.NaN;
+        double stealPct = Double.NaN;
+        if (total > 0 && cpus > 0) {
+            if (busy >= 0) {
+                // A process's ticks are counted apart from the machine's: at most one tick per
+                // CPU apart at each end, so a small negative difference is zero.
+                other = Math.max(0, busy - Math.max(0, self)) * (double) cpus / total;
+            }
+            if (steal >= 0) {
+                stealPct = 100.0 * steal / total;
+            }
+        }
+        long switches = known(start.involuntarySwitches(), end.involuntarySwitches());
+        return new MeasuredConditions(durationS, start.load1(), end.load1(), cpus, other, stealPct,
+                pauses == null ? 0 : pauses.gcCount(), pauses == null ? 0 : pauses.gcTotalMs(),
+                pauses == null ? 0 : pauses.gcMaxPauseMs(), pauses == null ? -1 : pauses.safepoints(),
+                pauses == null ? null : pauses.maxTimeToSafepointMs(),
+                pauses == null ? "not part of this span" : pauses.safepointNote(), switches);
+    }
+
+    private static long known(long a, long b) {
+        return a < 0 || b < 0 ? -1 : b - a;
+    }
+}

@@ -1,0 +1,89 @@
+package io.rtaware.core.conditions;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+class ConditionsMeterTest {
+
+    /** Copies a fixture machine over the folder (the state of /proc at that moment). */
+    private static void lay(String fixture, Path root) throws IOException {
+        Path from = HostReaderTest.fixture(fixture);
+        try (Stream<Path> files = Files.walk(from)) {
+            for (Path f : files.filter(Files::isRegularFile).toList()) {
+                Path to = root.resolve(from.relativize(f).toString());
+                Files.createDirectories(to.getParent());
+                Files.copy(f, to, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+            }
+        }
+    }
+
+    @Test
+    void aRunBesideOtherProcessesIsBusyWithTheirShareNamed(@TempDir Path root) throws IOException {
+        lay("busy-start", root);
+        AtomicLong now = new AtomicLong();
+        FakeJvm jvm = new FakeJvm();
+        ConditionsMeter meter = new ConditionsMeter(new HostReader(new HostFiles(root), now::get), jvm,
+                new BuildInfo("0.1.0", "abc123"));
+        ConditionsMeter.Span span = meter.start(10, "none");
+        lay("busy-end", root);
+        now.set(10_000_000_000L);
+        jvm.gcCount = 3;
+        jvm.gcTotalMs = 0.6;
+        jvm.gcMaxPauseMs = 0.3;
+        Conditions c = span.finish(10);
+
+        MeasuredConditions m = c.measured();
+        assertEquals(10.0, m.durationS(), 1e-12);
+        // 2000 ticks over the span on 2 CPUs; 1800 busy, 200 of them this process's: 1600 * 2 / 2000
+        assertEquals(1.6, m.otherCpus(), 1e-12, "machine busy ticks minus this process's, in CPUs");
+        assertEquals(1.0, m.stealPct(), 1e-12, "20 of 2000 ticks stolen");
+        assertEquals(14.2, m.loadStart(), 1e-12);
+        assertEquals(15.0, m.loadEnd(), 1e-12);
+        assertEquals(42, m.involuntarySwitches(), "52 at the end minus 10 at the start, over both threads");
+        assertEquals(3, m.gcCount());
+        assertEquals(0.3, m.gcMaxPauseMs(), 1e-12);
+        assertNull(m.timeToSafepointMaxMs(), "the fake JVM does not measure it");
+        assertTrue(jvm.closed, "finishing stops the pause counting");
+
+        assertEquals("busy", c.machine());
+        assertEquals("machine: busy (other processes used 1.6 of 2 CPUs (more than 0.10); load 14.2 at start)",
+                c.summaryLine());
+        StaticConditions s = c.setup();
+        assertEquals("AMD EPYC 7B13", s.cpuModel());
+        assertEquals(1.5, s.usableCpus(), 1e-12);
+        assertEquals("Test Vendor", s.jvmVendor());
+        assertEquals(List.of("-XX:+UseZGC", "-Xmx512m"), s.jvmOptions());
+        assertEquals(512, s.heapMaxMb());
+        assertEquals("abc123", s.gitCommit());
+        assertEquals(10.0, s.timeScale());
+        assertEquals("kvm-clock", s.clockSource());
+        assertEquals(c, span.finish(10), "a second finish gives the same conditions");
+    }
+
+    @Test
+    void theMcapMetadataCarriesVerdictSetupAndMeasuredFigures(@TempDir Path root) throws IOException {
+        lay("busy-start", root);
+        AtomicLong now = new AtomicLong();
+        ConditionsMeter meter = new ConditionsMeter(new HostReader(new HostFiles(root), now::get), new FakeJvm(),
+                new BuildInfo("0.1.0", null));
+        ConditionsMeter.Span span = meter.start(1, "none");
+        lay("busy-end", root);
+        now.set(10_000_000_000L);
+        Map<String, String> md = ConditionsMeter.metadata(span.finish(Double.NaN));
+        assertEquals("busy", md.get("machine"));
+        assertTrue(md.get("measured").contains("\"other_cpus\":1.6"), md.get("measured"));
+        assertTrue(md.get("setup").contains("\"cpu_model\":\"AMD EPYC 7B13\""), md.get("setup"));
+        assertTrue(md.get("setup").contains("\"git_commit\":null"), md.get("setup"));
+    }
+}
