@@ -69,13 +69,37 @@ fn json_strings(values: &[String]) -> String {
     format!("[{}]", quoted.join(","))
 }
 
-/// A direct buffer's memory as a slice of `capacity` bytes.
-fn direct<'a>(env: &mut JNIEnv, buffer: &JByteBuffer) -> Result<&'a mut [u8], String> {
+/// A direct buffer's address and capacity.
+fn direct_memory(env: &mut JNIEnv, buffer: &JByteBuffer) -> Result<(*mut u8, usize), String> {
     let address = env.get_direct_buffer_address(buffer).map_err(|e| format!("not a direct buffer: {e}"))?;
     let capacity = env.get_direct_buffer_capacity(buffer).map_err(|e| format!("not a direct buffer: {e}"))?;
+    Ok((address, capacity))
+}
+
+/// A direct buffer's memory, to read (several such views may share memory).
+fn direct<'a>(env: &mut JNIEnv, buffer: &JByteBuffer) -> Result<&'a [u8], String> {
+    let (address, capacity) = direct_memory(env, buffer)?;
     // SAFETY: the JVM guarantees `capacity` bytes at `address` while the buffer is reachable,
     // and the Java caller keeps it reachable for the duration of the call.
-    Ok(unsafe { std::slice::from_raw_parts_mut(address, capacity) })
+    Ok(unsafe { std::slice::from_raw_parts(address, capacity) })
+}
+
+/// The memory of three direct buffers to write, refused when any two of them overlap (two
+/// mutable views of the same bytes are not allowed in Rust).
+fn direct_disjoint<'a>(env: &mut JNIEnv, buffers: [&JByteBuffer; 3]) -> Result<[&'a mut [u8]; 3], String> {
+    let [a, b, c] = buffers;
+    let memory = [direct_memory(env, a)?, direct_memory(env, b)?, direct_memory(env, c)?];
+    for i in 0..3 {
+        for j in i + 1..3 {
+            let (start_i, end_i) = (memory[i].0 as usize, memory[i].0 as usize + memory[i].1);
+            let (start_j, end_j) = (memory[j].0 as usize, memory[j].0 as usize + memory[j].1);
+            if start_i < end_j && start_j < end_i {
+                return Err("the payload, attachment and info buffers must not share memory".to_string());
+            }
+        }
+    }
+    // SAFETY: as in `direct`; the three ranges are disjoint, so the mutable views do not alias.
+    Ok(memory.map(|(address, capacity)| unsafe { std::slice::from_raw_parts_mut(address, capacity) }))
 }
 
 fn key_expr(text: String) -> Result<KeyExpr<'static>, String> {
@@ -225,9 +249,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_take(
     guarded(&mut env, CLOSED, |env| {
         // Our own reference: a concurrent closeMailbox wakes this wait, but cannot free it.
         let mailbox = HANDLES.get::<Mailbox>(mailbox, "mailbox")?;
-        let payload_dst = direct(env, &payload)?;
-        let attachment_dst = direct(env, &attachment)?;
-        let info_dst = direct(env, &info)?;
+        let [payload_dst, attachment_dst, info_dst] = direct_disjoint(env, [&payload, &attachment, &info])?;
         mailbox.take(timeout_ns, payload_dst, attachment_dst, info_dst)
     })
 }

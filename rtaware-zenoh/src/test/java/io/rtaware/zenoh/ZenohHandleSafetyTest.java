@@ -53,7 +53,8 @@ class ZenohHandleSafetyTest {
 
         NativeZenoh.closeMailbox(mailbox);
         assertClosedError(() -> NativeZenoh.closeMailbox(mailbox), "mailbox closed twice");
-        assertClosedError(() -> NativeZenoh.take(mailbox, 0, buffer, buffer, buffer), "take after close");
+        assertClosedError(() -> NativeZenoh.take(mailbox, 0, buffer, ByteBuffer.allocateDirect(1),
+                ByteBuffer.allocateDirect(12)), "take after close");
         assertClosedError(() -> NativeZenoh.overflowed(mailbox), "overflowed after close");
 
         NativeZenoh.undeclareToken(token);
@@ -76,7 +77,14 @@ class ZenohHandleSafetyTest {
             assertTrue(e.getMessage().contains("closed or was never opened"), e.getMessage());
             e = assertThrows(ZenohException.class, () -> NativeZenoh.undeclarePublisher(mailbox));
             assertTrue(e.getMessage().contains("not a Zenoh publisher"), e.getMessage());
-            assertEquals(0, NativeZenoh.take(mailbox, 0, buffer, buffer, buffer), "the mailbox survived the wrong close");
+            SampleBuffer into = new SampleBuffer(16, 0);
+            assertEquals(0, NativeZenoh.take(mailbox, 0, into.payload(), into.attachment(), into.info()),
+                    "the mailbox survived the wrong close");
+            e = assertThrows(ZenohException.class, () -> NativeZenoh.take(mailbox, 0, buffer, buffer, into.info()));
+            assertTrue(e.getMessage().contains("must not share memory"), e.getMessage());
+            e = assertThrows(ZenohException.class, () -> NativeZenoh.take(mailbox, 0, buffer,
+                    buffer.slice(8, 8), into.info()));
+            assertTrue(e.getMessage().contains("must not share memory"), "a slice of the payload: " + e.getMessage());
             NativeZenoh.closeMailbox(mailbox);
             publisher.put(buffer, 1, null, 0);
         }
