@@ -89,17 +89,21 @@ fn direct<'a>(env: &mut JNIEnv, buffer: &JByteBuffer) -> Result<&'a [u8], String
 fn direct_disjoint<'a>(env: &mut JNIEnv, buffers: [&JByteBuffer; 3]) -> Result<[&'a mut [u8]; 3], String> {
     let [a, b, c] = buffers;
     let memory = [direct_memory(env, a)?, direct_memory(env, b)?, direct_memory(env, c)?];
-    for i in 0..3 {
-        for j in i + 1..3 {
-            let (start_i, end_i) = (memory[i].0 as usize, memory[i].0 as usize + memory[i].1);
-            let (start_j, end_j) = (memory[j].0 as usize, memory[j].0 as usize + memory[j].1);
-            if start_i < end_j && start_j < end_i {
-                return Err("the payload, attachment and info buffers must not share memory".to_string());
-            }
-        }
+    if any_overlap(&memory.map(|(address, capacity)| (address as usize, capacity))) {
+        return Err("the payload, attachment and info buffers must not share memory".to_string());
     }
     // SAFETY: as in `direct`; the three ranges are disjoint, so the mutable views do not alias.
     Ok(memory.map(|(address, capacity)| unsafe { std::slice::from_raw_parts_mut(address, capacity) }))
+}
+
+/// Whether any two of the (start, length) ranges share a byte.
+fn any_overlap(ranges: &[(usize, usize)]) -> bool {
+    (0..ranges.len()).any(|i| {
+        (i + 1..ranges.len()).any(|j| {
+            let ((start_i, length_i), (start_j, length_j)) = (ranges[i], ranges[j]);
+            start_i < start_j + length_j && start_j < start_i + length_i
+        })
+    })
 }
 
 fn key_expr(text: String) -> Result<KeyExpr<'static>, String> {
@@ -366,4 +370,18 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_livelinessGet(
         }
         Ok(array.into_raw())
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::any_overlap;
+
+    #[test]
+    fn buffers_sharing_a_byte_overlap_and_adjacent_ones_do_not() {
+        assert!(!any_overlap(&[(0, 16), (16, 4), (20, 12)]), "adjacent");
+        assert!(any_overlap(&[(0, 16), (100, 4), (0, 16)]), "the same buffer twice");
+        assert!(any_overlap(&[(0, 16), (8, 8), (100, 12)]), "a slice of the first");
+        assert!(any_overlap(&[(100, 4), (0, 16), (15, 1)]), "the last byte");
+        assert!(!any_overlap(&[(0, 0), (0, 16), (200, 12)]), "an empty buffer shares nothing");
+    }
 }
