@@ -1,22 +1,43 @@
 #!/usr/bin/env bash
 # Builds the JNI library of rtaware-zenoh with cargo and copies it to $1/<os>-<arch>/, where
 # io.rtaware.zenoh.ZenohLibrary finds it on the class path. Without cargo (or with a Rust older
-# than the zenoh crate needs) it says so in one line and succeeds: everything but the ROS 2
-# features builds and runs without Rust. The cargo target folder lives outside the clone
-# (RTAWARE_CARGO_TARGET_DIR, default: the user's cache folder) so that rebuilds reuse it.
+# than the zenoh crate needs) it prints a WARNING block saying what is off and how to enable it,
+# and succeeds: everything but the ROS 2 features builds and runs without Rust. With
+# RTAWARE_REQUIRE_NATIVE=1 a skip fails the build instead. The cargo target folder lives outside
+# the clone (RTAWARE_CARGO_TARGET_DIR, default: the user's cache folder) so that rebuilds reuse it.
+#
+# build-native.sh --test runs the layer's Rust tests instead (cargo test, release profile, so it
+# reuses the dependencies the build compiled), skipping with the same WARNING block without cargo.
 set -euo pipefail
 out="$1"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 min_rust="1.75"
 
-if ! command -v cargo >/dev/null 2>&1; then
-  echo "rtaware-zenoh: no cargo on the PATH: the native Zenoh layer is skipped (ROS 2 features off; install Rust >= $min_rust and rebuild to enable them)"
+# Prints the reason in a block Maven's output cannot hide (stderr, shown also under -q), then
+# succeeds, or fails when the native layer is required.
+skip() {
+  {
+    echo "[WARNING] ========================================================================"
+    echo "[WARNING] rtaware-zenoh: the native Zenoh layer is NOT built: $1"
+    echo "[WARNING] OFF: everything ROS 2 (run/sim --ros2, the ROS 2 exporter); ROS 2 tests skip."
+    echo "[WARNING] To enable: install Rust >= $min_rust with cargo on the PATH (https://rustup.rs),"
+    echo "[WARNING] then rebuild (./mvnw -B -DskipTests package)."
+    echo "[WARNING] Set RTAWARE_REQUIRE_NATIVE=1 to make this a build failure."
+    echo "[WARNING] ========================================================================"
+  } >&2
+  if [ "${RTAWARE_REQUIRE_NATIVE:-0}" = "1" ]; then
+    echo "[ERROR] rtaware-zenoh: RTAWARE_REQUIRE_NATIVE=1 and the native Zenoh layer cannot be built" >&2
+    exit 1
+  fi
   exit 0
+}
+
+if ! command -v cargo >/dev/null 2>&1; then
+  skip "no cargo on the PATH"
 fi
 rust_version="$(rustc --version 2>/dev/null | awk '{print $2}')"
 if [ "$(printf '%s\n%s\n' "$min_rust" "$rust_version" | sort -V | head -1)" != "$min_rust" ]; then
-  echo "rtaware-zenoh: rustc $rust_version is older than $min_rust: the native Zenoh layer is skipped (ROS 2 features off; install Rust >= $min_rust and rebuild to enable them)"
-  exit 0
+  skip "rustc ${rust_version:-(none)} is older than $min_rust"
 fi
 
 case "$(uname -s)-$(uname -m)" in
@@ -24,10 +45,14 @@ case "$(uname -s)-$(uname -m)" in
   Linux-aarch64) platform="linux-aarch64"; lib="librtaware_zenoh.so" ;;
   Darwin-x86_64) platform="macos-x86_64"; lib="librtaware_zenoh.dylib" ;;
   Darwin-arm64) platform="macos-aarch64"; lib="librtaware_zenoh.dylib" ;;
-  *) echo "rtaware-zenoh: no native build for $(uname -s)-$(uname -m): the native Zenoh layer is skipped"; exit 0 ;;
+  *) skip "no native build for $(uname -s)-$(uname -m)" ;;
 esac
 
 export CARGO_TARGET_DIR="${RTAWARE_CARGO_TARGET_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/rtaware/cargo-target}"
+if [ "$out" = "--test" ]; then
+  mkdir -p "$CARGO_TARGET_DIR"
+  exec cargo test --release --locked --quiet --manifest-path "$here/Cargo.toml"
+fi
 mkdir -p "$CARGO_TARGET_DIR" "$out/$platform"
 cargo build --release --locked --quiet --manifest-path "$here/Cargo.toml"
 cp "$CARGO_TARGET_DIR/release/$lib" "$out/$platform/$lib.tmp"

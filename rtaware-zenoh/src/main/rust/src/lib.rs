@@ -2,15 +2,24 @@
 //! Zenoh implementation. It only forwards: every decision (configuration, key expressions, what to
 //! do with a sample) is taken on the Java side.
 //!
-//! Handles given to Java are raw pointers of boxed Rust objects, turned back into boxes exactly
-//! once by the matching `close*`/`undeclare*` function. Samples of subscribers reach Java through
-//! a mailbox: the subscriber callbacks (Zenoh's threads) append owned copies to a bounded queue,
-//! and a Java thread takes them one at a time, copying payload and attachment into direct buffers
-//! that Java allocated once, so the Java side allocates nothing per sample.
+//! Java holds every Rust object by a number in one table ([`handles`]), never by its address: a
+//! call looks the number up and keeps the object alive until it returns, and closing takes the
+//! number out of the table, so a double close, a use after close or a close racing a waiting
+//! `take` ends in a `ZenohException` or a defined result, never in freed memory. Samples of
+//! subscribers reach Java through a [`mailbox`]: the subscriber callbacks (Zenoh's threads) append
+//! owned copies to a bounded queue, and a Java thread takes them one at a time, copying payload
+//! and attachment into direct buffers that Java allocated once, so the Java side allocates
+//! nothing per sample.
 
-use std::collections::VecDeque;
-use std::sync::{Arc, Condvar, Mutex};
+mod handles;
+mod mailbox;
+mod messages;
+
+use std::sync::Arc;
 use std::time::Duration;
+
+use handles::{release, Handles};
+use mailbox::{Mailbox, Sample, CLOSED};
 
 use jni::objects::{JByteBuffer, JClass, JObject, JObjectArray, JString};
 use jni::sys::{jboolean, jint, jlong, jobjectArray, jstring, JNI_TRUE};
@@ -22,13 +31,16 @@ use zenoh::{Config, Session, Wait};
 
 const ZENOH_EXCEPTION: &str = "io/rtaware/zenoh/ZenohException";
 
+/// Every object Java holds.
+static HANDLES: Handles = Handles::new();
+
 /// Runs `body`, turning an error or a panic into a `ZenohException` and `fallback`.
 fn guarded<T>(env: &mut JNIEnv, fallback: T, body: impl FnOnce(&mut JNIEnv) -> Result<T, String>) -> T {
     let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| body(env)));
     match outcome {
         Ok(Ok(value)) => value,
         Ok(Err(message)) => {
-            let _ = env.throw_new(ZENOH_EXCEPTION, message);
+            let _ = env.throw_new(ZENOH_EXCEPTION, messages::without_source_locations(&message));
             fallback
         }
         Err(_) => {
@@ -57,29 +69,47 @@ fn json_strings(values: &[String]) -> String {
     format!("[{}]", quoted.join(","))
 }
 
-/// A direct buffer's memory as a slice of `capacity` bytes.
-fn direct<'a>(env: &mut JNIEnv, buffer: &JByteBuffer) -> Result<&'a mut [u8], String> {
+/// A direct buffer's address and capacity.
+fn direct_memory(env: &mut JNIEnv, buffer: &JByteBuffer) -> Result<(*mut u8, usize), String> {
     let address = env.get_direct_buffer_address(buffer).map_err(|e| format!("not a direct buffer: {e}"))?;
     let capacity = env.get_direct_buffer_capacity(buffer).map_err(|e| format!("not a direct buffer: {e}"))?;
+    Ok((address, capacity))
+}
+
+/// A direct buffer's memory, to read (several such views may share memory).
+fn direct<'a>(env: &mut JNIEnv, buffer: &JByteBuffer) -> Result<&'a [u8], String> {
+    let (address, capacity) = direct_memory(env, buffer)?;
     // SAFETY: the JVM guarantees `capacity` bytes at `address` while the buffer is reachable,
     // and the Java caller keeps it reachable for the duration of the call.
-    Ok(unsafe { std::slice::from_raw_parts_mut(address, capacity) })
+    Ok(unsafe { std::slice::from_raw_parts(address, capacity) })
+}
+
+/// The memory of three direct buffers to write, refused when any two of them overlap (two
+/// mutable views of the same bytes are not allowed in Rust).
+fn direct_disjoint<'a>(env: &mut JNIEnv, buffers: [&JByteBuffer; 3]) -> Result<[&'a mut [u8]; 3], String> {
+    let [a, b, c] = buffers;
+    let memory = [direct_memory(env, a)?, direct_memory(env, b)?, direct_memory(env, c)?];
+    if any_overlap(&memory.map(|(address, capacity)| (address as usize, capacity))) {
+        return Err("the payload, attachment and info buffers must not share memory".to_string());
+    }
+    // SAFETY: as in `direct`; the three ranges are disjoint, so the mutable views do not alias.
+    Ok(memory.map(|(address, capacity)| unsafe { std::slice::from_raw_parts_mut(address, capacity) }))
+}
+
+/// Whether any two of the (start, length) ranges share a byte.
+fn any_overlap(ranges: &[(usize, usize)]) -> bool {
+    (0..ranges.len()).any(|i| {
+        (i + 1..ranges.len()).any(|j| {
+            let ((start_i, length_i), (start_j, length_j)) = (ranges[i], ranges[j]);
+            start_i < start_j + length_j && start_j < start_i + length_i
+        })
+    })
 }
 
 fn key_expr(text: String) -> Result<KeyExpr<'static>, String> {
     KeyExpr::try_from(text.clone()).map_err(|e| format!("invalid key expression '{text}': {e}"))
 }
 
-unsafe fn borrow<'a, T>(handle: jlong) -> Result<&'a T, String> {
-    if handle == 0 {
-        return Err("handle is closed".to_string());
-    }
-    Ok(&*(handle as *const T))
-}
-
-fn into_handle<T>(value: T) -> jlong {
-    Box::into_raw(Box::new(value)) as jlong
-}
 
 // ---------------------------------------------------------------------------------------------
 // Session
@@ -114,7 +144,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_open(
             set("connect/exit_on_failure", "true".to_string())?;
         }
         let session = zenoh::open(config).wait().map_err(|e| format!("cannot open the Zenoh session: {e}"))?;
-        Ok(into_handle(session))
+        Ok(HANDLES.insert(session))
     })
 }
 
@@ -122,7 +152,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_open(
 #[no_mangle]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_zid(mut env: JNIEnv, _class: JClass, session: jlong) -> jstring {
     guarded(&mut env, std::ptr::null_mut(), |env| {
-        let session = unsafe { borrow::<Session>(session)? };
+        let session = HANDLES.get::<Session>(session, "session")?;
         let zid = session.zid().to_string();
         env.new_string(zid).map(JString::into_raw).map_err(|e| e.to_string())
     })
@@ -131,11 +161,10 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_zid(mut env: JNIEnv, _c
 #[no_mangle]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_close(mut env: JNIEnv, _class: JClass, session: jlong) {
     guarded(&mut env, (), |_| {
-        if session != 0 {
-            let session = unsafe { Box::from_raw(session as *mut Session) };
-            session.close().wait().map_err(|e| format!("closing the Zenoh session: {e}"))?;
-        }
-        Ok(())
+        // Zenoh closes a session through a shared reference: calls still using it get Zenoh's
+        // "closed" errors, and its memory goes with the last of them.
+        let session = HANDLES.remove::<Session>(session, "session")?;
+        session.close().wait().map_err(|e| format!("closing the Zenoh session: {e}"))
     })
 }
 
@@ -150,10 +179,10 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_declarePublisher(
     key: JString,
 ) -> jlong {
     guarded(&mut env, 0, |env| {
-        let session = unsafe { borrow::<Session>(session)? };
+        let session = HANDLES.get::<Session>(session, "session")?;
         let key = key_expr(java_string(env, &key)?)?;
         let publisher = session.declare_publisher(key).wait().map_err(|e| format!("declaring a publisher: {e}"))?;
-        Ok(into_handle(publisher))
+        Ok(HANDLES.insert(publisher))
     })
 }
 
@@ -170,7 +199,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_put(
     attachment_length: jint,
 ) {
     guarded(&mut env, (), |env| {
-        let publisher = unsafe { borrow::<Publisher<'static>>(publisher)? };
+        let publisher = HANDLES.get::<Publisher<'static>>(publisher, "publisher")?;
         let bytes = direct(env, &payload)?;
         if length < 0 || length as usize > bytes.len() {
             return Err(format!("payload length {length} outside 0..{}", bytes.len()));
@@ -190,72 +219,27 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_put(
 #[no_mangle]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_undeclarePublisher(mut env: JNIEnv, _class: JClass, publisher: jlong) {
     guarded(&mut env, (), |_| {
-        if publisher != 0 {
-            let publisher = unsafe { Box::from_raw(publisher as *mut Publisher<'static>) };
-            publisher.undeclare().wait().map_err(|e| format!("undeclaring a publisher: {e}"))?;
-        }
-        Ok(())
+        let publisher = HANDLES.remove::<Publisher<'static>>(publisher, "publisher")?;
+        release(publisher, |p| p.undeclare().wait().map_err(|e| format!("undeclaring a publisher: {e}")))
     })
 }
 
 // ---------------------------------------------------------------------------------------------
 // Mailbox and subscribers
 
-struct Sample {
-    channel: jint,
-    payload: Vec<u8>,
-    attachment: Option<Vec<u8>>,
-}
-
-struct Queue {
-    samples: VecDeque<Sample>,
-    closed: bool,
-    overflowed: u64,
-}
-
-/// A bounded queue filled by subscriber callbacks and emptied by one Java thread. When it is
-/// full the oldest sample is dropped (and counted): for sensor data the newest value matters.
-struct Mailbox {
-    capacity: usize,
-    queue: Mutex<Queue>,
-    ready: Condvar,
-}
-
-impl Mailbox {
-    fn offer(&self, sample: Sample) {
-        let mut queue = self.queue.lock().unwrap_or_else(|p| p.into_inner());
-        if queue.closed {
-            return;
-        }
-        if queue.samples.len() >= self.capacity {
-            queue.samples.pop_front();
-            queue.overflowed += 1;
-        }
-        queue.samples.push_back(sample);
-        self.ready.notify_one();
-    }
-}
-
 #[no_mangle]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_newMailbox(mut env: JNIEnv, _class: JClass, capacity: jint) -> jlong {
     guarded(&mut env, 0, |_| {
-        if capacity <= 0 {
-            return Err(format!("mailbox capacity {capacity} must be positive"));
-        }
-        let mailbox = Arc::new(Mailbox {
-            capacity: capacity as usize,
-            queue: Mutex::new(Queue { samples: VecDeque::with_capacity(capacity as usize), closed: false, overflowed: 0 }),
-            ready: Condvar::new(),
-        });
-        Ok(into_handle(mailbox))
+        Ok(HANDLES.insert(Mailbox::new(capacity)?))
     })
 }
 
-/// Waits up to `timeout_ns` for a sample and copies it into `payload` and `attachment`.
-/// Writes into `info[0]` the channel, `info[1]` the payload length and `info[2]` the attachment
-/// length (-1 for none) of the sample taken. Returns 1 when a sample was copied, 0 on timeout,
-/// -1 when the sample did not fit (it is dropped, its lengths are reported), -2 when the mailbox
-/// was closed. Bytes beyond a buffer's capacity are never written.
+/// Waits up to `timeout_ns` for a sample and copies it into `payload` and `attachment`
+/// ([`Mailbox::take`]). Writes into `info[0]` the channel, `info[1]` the payload length and
+/// `info[2]` the attachment length (-1 for none) of the sample taken. Returns 1 when a sample was
+/// copied, 0 on timeout, -1 when the sample did not fit (it is dropped, its lengths are reported),
+/// -2 when the mailbox was closed while or before waiting; throws when the handle is closed.
+/// Bytes beyond a buffer's capacity are never written.
 #[no_mangle]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_take(
     mut env: JNIEnv,
@@ -266,72 +250,27 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_take(
     attachment: JByteBuffer,
     info: JByteBuffer,
 ) -> jint {
-    guarded(&mut env, -2, |env| {
-        let mailbox = unsafe { borrow::<Arc<Mailbox>>(mailbox)? };
-        let payload_dst = direct(env, &payload)?;
-        let attachment_dst = direct(env, &attachment)?;
-        let info_dst = direct(env, &info)?;
-        if info_dst.len() < 12 {
-            return Err("info buffer needs 12 bytes".to_string());
-        }
-        let sample = {
-            let mut queue = mailbox.queue.lock().unwrap_or_else(|p| p.into_inner());
-            if queue.samples.is_empty() && !queue.closed && timeout_ns > 0 {
-                let (guard, _) = mailbox
-                    .ready
-                    .wait_timeout_while(queue, Duration::from_nanos(timeout_ns as u64), |q| q.samples.is_empty() && !q.closed)
-                    .unwrap_or_else(|p| p.into_inner());
-                queue = guard;
-            }
-            if queue.closed {
-                return Ok(-2);
-            }
-            match queue.samples.pop_front() {
-                Some(sample) => sample,
-                None => return Ok(0),
-            }
-        };
-        let attachment_length = sample.attachment.as_ref().map_or(-1, |a| a.len() as i64);
-        let write = |dst: &mut [u8], at: usize, value: i64| {
-            dst[at..at + 4].copy_from_slice(&(value.clamp(i32::MIN as i64, i32::MAX as i64) as i32).to_le_bytes());
-        };
-        write(info_dst, 0, sample.channel as i64);
-        write(info_dst, 4, sample.payload.len() as i64);
-        write(info_dst, 8, attachment_length);
-        let attachment_fits = sample.attachment.as_ref().map_or(true, |a| a.len() <= attachment_dst.len());
-        if sample.payload.len() > payload_dst.len() || !attachment_fits {
-            return Ok(-1);
-        }
-        payload_dst[..sample.payload.len()].copy_from_slice(&sample.payload);
-        if let Some(a) = &sample.attachment {
-            attachment_dst[..a.len()].copy_from_slice(a);
-        }
-        Ok(1)
+    guarded(&mut env, CLOSED, |env| {
+        // Our own reference: a concurrent closeMailbox wakes this wait, but cannot free it.
+        let mailbox = HANDLES.get::<Mailbox>(mailbox, "mailbox")?;
+        let [payload_dst, attachment_dst, info_dst] = direct_disjoint(env, [&payload, &attachment, &info])?;
+        mailbox.take(timeout_ns, payload_dst, attachment_dst, info_dst)
     })
 }
 
 /// Samples dropped because the mailbox was full.
 #[no_mangle]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_overflowed(mut env: JNIEnv, _class: JClass, mailbox: jlong) -> jlong {
-    guarded(&mut env, 0, |_| {
-        let mailbox = unsafe { borrow::<Arc<Mailbox>>(mailbox)? };
-        let queue = mailbox.queue.lock().unwrap_or_else(|p| p.into_inner());
-        Ok(queue.overflowed as jlong)
-    })
+    guarded(&mut env, 0, |_| Ok(HANDLES.get::<Mailbox>(mailbox, "mailbox")?.overflowed() as jlong))
 }
 
-/// Wakes a waiting `take` and makes every later one return -2; frees the mailbox's memory once
-/// its subscribers are undeclared too.
+/// Wakes a waiting `take` (which returns -2) and makes every later call with this handle throw.
+/// The memory goes with the last reference: a `take` still returning, or a subscriber callback
+/// (its subscriber not yet undeclared).
 #[no_mangle]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_closeMailbox(mut env: JNIEnv, _class: JClass, mailbox: jlong) {
     guarded(&mut env, (), |_| {
-        if mailbox != 0 {
-            let mailbox = unsafe { Box::from_raw(mailbox as *mut Arc<Mailbox>) };
-            let mut queue = mailbox.queue.lock().unwrap_or_else(|p| p.into_inner());
-            queue.closed = true;
-            queue.samples.clear();
-            mailbox.ready.notify_all();
-        }
+        HANDLES.remove::<Mailbox>(mailbox, "mailbox")?.close();
         Ok(())
     })
 }
@@ -347,8 +286,8 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_declareSubscriber(
     channel: jint,
 ) -> jlong {
     guarded(&mut env, 0, |env| {
-        let session = unsafe { borrow::<Session>(session)? };
-        let mailbox = Arc::clone(unsafe { borrow::<Arc<Mailbox>>(mailbox)? });
+        let session = HANDLES.get::<Session>(session, "session")?;
+        let mailbox: Arc<Mailbox> = HANDLES.get::<Mailbox>(mailbox, "mailbox")?;
         let key = key_expr(java_string(env, &key)?)?;
         let subscriber = session
             .declare_subscriber(key)
@@ -361,18 +300,15 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_declareSubscriber(
             })
             .wait()
             .map_err(|e| format!("declaring a subscriber: {e}"))?;
-        Ok(into_handle(subscriber))
+        Ok(HANDLES.insert(subscriber))
     })
 }
 
 #[no_mangle]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_undeclareSubscriber(mut env: JNIEnv, _class: JClass, subscriber: jlong) {
     guarded(&mut env, (), |_| {
-        if subscriber != 0 {
-            let subscriber = unsafe { Box::from_raw(subscriber as *mut Subscriber<()>) };
-            subscriber.undeclare().wait().map_err(|e| format!("undeclaring a subscriber: {e}"))?;
-        }
-        Ok(())
+        let subscriber = HANDLES.remove::<Subscriber<()>>(subscriber, "subscriber")?;
+        release(subscriber, |s| s.undeclare().wait().map_err(|e| format!("undeclaring a subscriber: {e}")))
     })
 }
 
@@ -387,21 +323,18 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_declareToken(
     key: JString,
 ) -> jlong {
     guarded(&mut env, 0, |env| {
-        let session = unsafe { borrow::<Session>(session)? };
+        let session = HANDLES.get::<Session>(session, "session")?;
         let key = key_expr(java_string(env, &key)?)?;
         let token = session.liveliness().declare_token(key).wait().map_err(|e| format!("declaring a liveliness token: {e}"))?;
-        Ok(into_handle(token))
+        Ok(HANDLES.insert(token))
     })
 }
 
 #[no_mangle]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_undeclareToken(mut env: JNIEnv, _class: JClass, token: jlong) {
     guarded(&mut env, (), |_| {
-        if token != 0 {
-            let token = unsafe { Box::from_raw(token as *mut LivelinessToken) };
-            token.undeclare().wait().map_err(|e| format!("undeclaring a liveliness token: {e}"))?;
-        }
-        Ok(())
+        let token = HANDLES.remove::<LivelinessToken>(token, "liveliness token")?;
+        release(token, |t| t.undeclare().wait().map_err(|e| format!("undeclaring a liveliness token: {e}")))
     })
 }
 
@@ -416,7 +349,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_livelinessGet(
     timeout_ms: jlong,
 ) -> jobjectArray {
     guarded(&mut env, std::ptr::null_mut(), |env| {
-        let session = unsafe { borrow::<Session>(session)? };
+        let session = HANDLES.get::<Session>(session, "session")?;
         let key = key_expr(java_string(env, &key)?)?;
         let replies = session
             .liveliness()
@@ -437,4 +370,18 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_livelinessGet(
         }
         Ok(array.into_raw())
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::any_overlap;
+
+    #[test]
+    fn buffers_sharing_a_byte_overlap_and_adjacent_ones_do_not() {
+        assert!(!any_overlap(&[(0, 16), (16, 4), (20, 12)]), "adjacent");
+        assert!(any_overlap(&[(0, 16), (100, 4), (0, 16)]), "the same buffer twice");
+        assert!(any_overlap(&[(0, 16), (8, 8), (100, 12)]), "a slice of the first");
+        assert!(any_overlap(&[(100, 4), (0, 16), (15, 1)]), "the last byte");
+        assert!(!any_overlap(&[(0, 0), (0, 16), (200, 12)]), "an empty buffer shares nothing");
+    }
 }

@@ -3,9 +3,11 @@ package io.rtaware.zenoh;
 import java.nio.ByteBuffer;
 
 /**
- * The functions of the JNI library ({@code src/main/rust/src/lib.rs}); handles are addresses of
- * Rust objects, 0 for none. Only the classes of this package call them, after
- * {@link ZenohLibrary#require()}.
+ * The functions of the JNI library ({@code src/main/rust/src/lib.rs}); handles are numbers in the
+ * native layer's table of objects (never addresses), 0 for none. A handle used after its close, closed
+ * twice, or of the wrong kind makes the call throw a {@link ZenohException}; a close while another
+ * thread uses the object (a {@code take} waiting, a {@code put}) is safe: the object lives until
+ * that call returns. Only the classes of this package call them, after {@link ZenohLibrary#require()}.
  */
 final class NativeZenoh {
 

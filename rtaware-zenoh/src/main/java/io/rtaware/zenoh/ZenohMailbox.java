@@ -10,8 +10,9 @@ import java.util.List;
  * dropped and counted ({@link #overflowed()}). Each subscriber tags its samples with a channel
  * number, so one reader can serve several topics.
  *
- * <p>One reader thread; {@link #subscribe} and {@link #close} from that thread or before/after
- * it runs.
+ * <p>One reader thread calls {@link #take}; {@link #subscribe} and {@link #close} may be called
+ * from any thread, also while the reader waits: a reader waiting in {@code take} then returns
+ * {@link Take#CLOSED}, and a later {@code take} throws.
  */
 public final class ZenohMailbox implements AutoCloseable {
 
@@ -29,7 +30,7 @@ public final class ZenohMailbox implements AutoCloseable {
 
     private final ZenohSession session;
     private final List<Long> subscribers = new ArrayList<>();
-    private long handle;
+    private volatile long handle;
 
     ZenohMailbox(ZenohSession session, long handle) {
         this.session = session;
@@ -43,7 +44,7 @@ public final class ZenohMailbox implements AutoCloseable {
      * @param channel the tag, chosen by the caller
      * @throws ZenohException if the key is invalid or the mailbox or session is closed
      */
-    public void subscribe(String key, int channel) throws ZenohException {
+    public synchronized void subscribe(String key, int channel) throws ZenohException {
         subscribers.add(session.declareSubscriber(key, live(), channel));
     }
 
@@ -53,8 +54,8 @@ public final class ZenohMailbox implements AutoCloseable {
      *
      * @param timeoutNs longest wait in nanoseconds of wall time (0: do not wait)
      * @param into where to copy
-     * @return what was found
-     * @throws ZenohException if the mailbox was closed under the reader's feet
+     * @return what was found ({@link Take#CLOSED} when the mailbox was closed while waiting)
+     * @throws ZenohException if the mailbox was closed before the call
      */
     public Take take(long timeoutNs, SampleBuffer into) throws ZenohException {
         int r = NativeZenoh.take(live(), timeoutNs, into.payload(), into.attachment(), into.info());
@@ -78,9 +79,12 @@ public final class ZenohMailbox implements AutoCloseable {
         return handle;
     }
 
-    /** Undeclares the subscribers, then frees the queue. Idempotent. */
+    /**
+     * Undeclares the subscribers, then closes the queue, waking a waiting reader. Idempotent;
+     * safe from any thread (the native queue is freed only after the last call using it returns).
+     */
     @Override
-    public void close() throws ZenohException {
+    public synchronized void close() throws ZenohException {
         if (handle == 0) {
             return;
         }

@@ -4,14 +4,14 @@ import java.nio.ByteBuffer;
 
 /**
  * A publisher on one key expression. {@link #put} reads the caller's direct buffers and
- * allocates nothing on the Java heap. Safe to use from one thread at a time; close it from the
- * same thread or after its users stopped.
+ * allocates nothing on the Java heap. Safe to use from one thread at a time; {@link #close} may
+ * come from any thread (a {@code put} racing it either publishes or throws).
  */
 public final class ZenohPublisher implements AutoCloseable {
 
     private final ZenohSession session;
     private final String key;
-    private long handle;
+    private volatile long handle;
 
     ZenohPublisher(ZenohSession session, String key, long handle) {
         this.session = session;
@@ -36,16 +36,17 @@ public final class ZenohPublisher implements AutoCloseable {
      *     direct, or the publisher is closed
      */
     public void put(ByteBuffer payload, int length, ByteBuffer attachment, int attachmentLength) throws ZenohException {
-        if (handle == 0) {
+        long h = handle;
+        if (h == 0) {
             throw new ZenohException("publisher on " + key + " is closed");
         }
-        NativeZenoh.put(handle, payload, length, attachment == null ? payload : attachment,
+        NativeZenoh.put(h, payload, length, attachment == null ? payload : attachment,
                 attachment == null ? -1 : attachmentLength);
     }
 
     /** Undeclares the publisher. Idempotent. */
     @Override
-    public void close() throws ZenohException {
+    public synchronized void close() throws ZenohException {
         if (handle == 0) {
             return;
         }

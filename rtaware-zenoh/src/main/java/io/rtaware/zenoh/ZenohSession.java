@@ -7,7 +7,8 @@ import java.util.Objects;
 /**
  * An open Zenoh session. Declarations made through it belong to it and are undeclared by
  * {@link #close()} if their owners did not close them first. Thread-safe (Zenoh sessions are);
- * {@link #close()} must not race with the use of its publishers, subscribers and mailboxes.
+ * {@link #close()} may race with the use of its publishers and mailboxes, which then throw a
+ * {@link ZenohException} (or a waiting {@code take} returns {@code CLOSED}).
  */
 public final class ZenohSession implements AutoCloseable {
 
@@ -158,7 +159,9 @@ public final class ZenohSession implements AutoCloseable {
             handle = 0;
             owned.clear();
             try {
-                NativeZenoh.close(h);
+                if (h != 0) { // 0: a concurrent close got here first
+                    NativeZenoh.close(h);
+                }
             } catch (ZenohException e) {
                 first = first == null ? e : first;
             }

@@ -1,6 +1,7 @@
 package io.rtaware.zenoh;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -107,6 +108,7 @@ class ZenohSessionTest {
                 List.of(ZenohConfig.LOOPBACK_ANY_PORT), false, 500);
         ZenohException e = assertThrows(ZenohException.class, () -> ZenohSession.open(config).close());
         assertTrue(e.getMessage().contains("Zenoh"), e.getMessage());
+        assertFalse(e.getMessage().contains(".rs:"), "no Rust source locations in messages: " + e.getMessage());
     }
 
     @Test

@@ -10,6 +10,7 @@ import io.rtaware.ros2.task.Ros2Stats;
 import io.rtaware.sim.ros2.Ros2SimRobot;
 import io.rtaware.sim.server.PlayerSimServer;
 import io.rtaware.zenoh.ZenohException;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
@@ -53,7 +54,8 @@ public final class Ros2Link implements AutoCloseable {
             String endpoint = Ros2Wiring.freeLoopbackEndpoint();
             Ros2Context simContext = Ros2Wiring.open(List.of(), List.of(endpoint), options.topics().domain());
             try {
-                robot = Ros2SimRobot.start(server, simContext, options.topics().namespace());
+                // its notices reach the run's summary and report through notices()
+                robot = Ros2SimRobot.start(server, simContext, options.topics().namespace(), line -> { });
             } catch (ZenohException e) {
                 throw new IllegalStateException("the simulator's ROS 2 side did not start: " + e.getMessage(), e);
             }
@@ -82,15 +84,36 @@ public final class Ros2Link implements AutoCloseable {
                 : "ROS 2 robot through Zenoh at " + options.router();
     }
 
-    /** @return one line with the data task's counters, scan latency and CPU cost per sample */
+    /**
+     * @return one line with the data task's counters, scan latency and CPU cost per sample, then
+     *     one line ({@code ros2: notice: ...}) per event reported once ({@link #notices()})
+     */
     public String summary() {
         Ros2Stats s = task.stats();
         Histogram latency = task.latencySnapshot();
-        return String.format(Locale.ROOT,
+        StringBuilder text = new StringBuilder(String.format(Locale.ROOT,
                 "ros2: %d scans, %d odometry, %d commands; dropped %d (malformed %d, oversized %d, implausible %d, "
-                        + "behind %d); scan source-to-commit latency p50 %.2f ms p99 %.2f ms; data task CPU %.1f us/sample",
+                        + "behind %d, other publishers %d); clock epochs %d; scan source-to-commit latency p50 %.2f ms "
+                        + "p99 %.2f ms; data task CPU %.1f us/sample",
                 s.scans(), s.odometry(), s.commands(), s.dropped(), s.malformed(), s.oversized(), s.rejected(),
-                s.overflowed(), latencyMs(latency, 50), latencyMs(latency, 99), cpuUsPerSample(s));
+                s.overflowed(), s.otherPublishers(), s.clockEpochs(), latencyMs(latency, 50), latencyMs(latency, 99),
+                cpuUsPerSample(s)));
+        for (String notice : notices()) {
+            text.append(System.lineSeparator()).append("ros2: notice: ").append(notice);
+        }
+        return text.toString();
+    }
+
+    /**
+     * @return the events reported once: the data task's (other publishers on its input topics,
+     *     clock epochs), then the built-in simulator's (other publishers on its {@code cmd_vel})
+     */
+    public List<String> notices() {
+        List<String> all = new ArrayList<>(task.notices());
+        if (simRobot != null) {
+            simRobot.notices().forEach(n -> all.add("simulator: " + n));
+        }
+        return all;
     }
 
     /** @return the {@code ros2} section of the run's report */
@@ -104,7 +127,8 @@ public final class Ros2Link implements AutoCloseable {
         latencyMs.put("p50", Rounding.toDecimals(latencyMs(latency, 50), 3));
         latencyMs.put("p99", Rounding.toDecimals(latencyMs(latency, 99), 3));
         return new Ros2Section(describe(), s.scans(), s.odometry(), s.commands(), rejected, s.malformed(),
-                s.oversized(), s.overflowed(), s.lastProblem(), task.fault(), latencyMs,
+                s.oversized(), s.overflowed(), s.otherPublishers(), s.clockEpochs(), notices(), s.lastProblem(),
+                task.fault(), latencyMs,
                 Rounding.toDecimals(cpuUsPerSample(s), 2), s.droppedBeams());
     }
 

@@ -1,5 +1,6 @@
 package io.rtaware.app.ros2;
 
+import java.util.List;
 import java.util.Map;
 
 /**
@@ -15,6 +16,12 @@ import java.util.Map;
  * @param malformed samples that could not be decoded
  * @param oversized samples larger than the largest accepted message
  * @param overflowed samples dropped because the data task fell behind
+ * @param otherPublisherSamples samples dropped because another publisher than the first one
+ *     heard on their topic sent them
+ * @param clockEpochs new epochs of a topic's clock that were followed (a restarted or jumped
+ *     robot clock)
+ * @param notices one line per event reported once: another publisher on an input topic (also
+ *     on the built-in simulator's {@code cmd_vel}), a new clock epoch
  * @param lastProblem the last reason a sample was dropped, or null
  * @param fault why the robot was halted (a topic sent only impossible samples), or null
  * @param scanLatencyMs a scan's source timestamp to its commit in the store, {@code p50} and {@code p99}
@@ -23,6 +30,7 @@ import java.util.Map;
  *     from scans that were kept
  */
 public record Ros2Section(String robot, long scans, long odometry, long commands, Map<String, Long> rejectedSamples,
-                          long malformed, long oversized, long overflowed, String lastProblem, String fault,
+                          long malformed, long oversized, long overflowed, long otherPublisherSamples,
+                          long clockEpochs, List<String> notices, String lastProblem, String fault,
                           Map<String, Double> scanLatencyMs, double cpuUsPerSample, long droppedBeams) {
 }

@@ -42,7 +42,8 @@ public final class Ros2SimServe {
         List<String> connect = ros2.routerEndpoint().map(List::of).orElse(List.of());
         try (PlayerSimServer server = SimCommandSupport.start(s, clock, config, seed)) {
             Ros2Context context = Ros2Wiring.open(connect, List.of(listen), ros2.topics().domain());
-            try (Ros2SimRobot robot = Ros2SimRobot.start(server, context, ros2.topics().namespace())) {
+            try (Ros2SimRobot robot = Ros2SimRobot.start(server, context, ros2.topics().namespace(),
+                    line -> out.println("rtaware-sim: " + line))) {
                 out.println(SimCommandSupport.startLine(s, config, server.port(), timeScale, seed));
                 out.println("rtaware-sim: ROS 2 robot node " + Ros2SimRobot.NODE_NAME + " in namespace "
                         + ros2.topics().namespace() + ", domain " + ros2.topics().domain() + ", Zenoh listening on "

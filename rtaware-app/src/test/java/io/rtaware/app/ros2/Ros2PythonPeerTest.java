@@ -84,7 +84,7 @@ class Ros2PythonPeerTest {
             assertEquals("ready", routerOut.readLine(), "the Python router started");
             try (PlayerSimServer server = SimCommandSupport.start(ScenarioLoader.load("paper-room"), new SystemClock(),
                          ServerConfig.defaults(0), 1);
-                 Ros2SimRobot robot = Ros2SimRobot.start(server, openThrough(endpoint), "/")) {
+                 Ros2SimRobot robot = Ros2SimRobot.start(server, openThrough(endpoint), "/", line -> { })) {
                 Pose2d start = server.groundTruth();
                 Process peer = new ProcessBuilder(python, script.toString(), "check", "--router", endpoint,
                         "--timeout", "60").redirectError(ProcessBuilder.Redirect.INHERIT).start();

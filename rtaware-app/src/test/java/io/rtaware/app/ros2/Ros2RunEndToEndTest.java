@@ -63,6 +63,9 @@ class Ros2RunEndToEndTest {
                 "rejected samples by fully qualified topic: " + ros2);
         assertTrue(ros2.path("scan_latency_ms").has("p50") && ros2.path("scan_latency_ms").has("p99"), "ros2: " + ros2);
         assertTrue(ros2.path("cpu_us_per_sample").asDouble() > 0, "ros2: " + ros2);
+        assertEquals(0, ros2.path("clock_epochs").asLong(-1), "one clock, no epochs: " + ros2);
+        assertEquals(0, ros2.path("other_publisher_samples").asLong(-1), "one publisher per topic: " + ros2);
+        assertTrue(ros2.path("notices").isArray() && ros2.path("notices").isEmpty(), "nothing to report once: " + ros2);
         return report;
     }
 

@@ -14,6 +14,8 @@ public final class SampleAttachment {
     public static final int BYTES = 33;
     /** Bytes of a gid. */
     public static final int GID_BYTES = 16;
+    /** Where the gid starts in an attachment. */
+    public static final int GID_OFFSET = 17;
 
     private SampleAttachment() {
     }
@@ -32,7 +34,7 @@ public final class SampleAttachment {
         into.putLong(0, little ? sequence : Long.reverseBytes(sequence));
         into.putLong(8, little ? sourceTimestampNs : Long.reverseBytes(sourceTimestampNs));
         into.put(16, (byte) GID_BYTES);
-        into.put(17, gid, 0, GID_BYTES);
+        into.put(GID_OFFSET, gid, 0, GID_BYTES);
     }
 
     /**

@@ -13,6 +13,7 @@ import io.rtaware.robot.validate.ImpossibleDataException;
 import io.rtaware.robot.validate.RejectionWatch;
 import io.rtaware.robot.validate.SampleLimits;
 import io.rtaware.robot.validate.SampleValidator;
+import io.rtaware.ros2.graph.FirstPublisherFilter;
 import io.rtaware.ros2.graph.QosProfile;
 import io.rtaware.ros2.graph.Ros2Context;
 import io.rtaware.ros2.graph.Ros2Node;
@@ -31,8 +32,10 @@ import java.io.IOException;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import java.nio.ByteOrder;
+import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import org.HdrHistogram.Histogram;
 
@@ -51,6 +54,13 @@ import org.HdrHistogram.Histogram;
  * message, or with values that cannot be true is counted and dropped, never committed and
  * never fatal. Nothing is allocated per sample on the Java side.
  *
+ * <p>Two rules a ROS 2 graph needs beyond the values: when several publishers send on one input
+ * topic, only the first one heard is followed ({@link FirstPublisherFilter}, by the gid of the
+ * rmw_zenoh attachment; another one after {@value #PUBLISHER_SILENCE_NS} ns of silence of the
+ * followed one), the others' samples dropped and counted; and a source's clock that restarts or
+ * jumps is followed as a new epoch ({@link SampleValidator}). Each such event is reported once as
+ * one line in {@link #notices()}.
+ *
  * <p>{@link #terminate} publishes a zero Twist first, then closes the session. Called by one
  * thread at a time, as every task; {@link #stats()} and {@link #latencySnapshot()} may be called
  * from any thread.
@@ -59,6 +69,8 @@ public final class Ros2DataTask implements Task {
 
     /** World time of rejection-only samples on one topic after which the robot is halted: 1 s. */
     public static final long IMPOSSIBLE_DATA_FAULT_AFTER_NS = 1_000_000_000L;
+    /** World time the followed publisher of a topic may be silent before another is followed: 1 s. */
+    public static final long PUBLISHER_SILENCE_NS = 1_000_000_000L;
 
     /** The name of the controller's node in the ROS graph. */
     public static final String NODE_NAME = "rtaware_controller";
@@ -85,8 +97,11 @@ public final class Ros2DataTask implements Task {
     private final LaserScan scanScratch = new LaserScan();
     private final Odometry odomScratch = new Odometry();
     private final VelocityCommand zero = new VelocityCommand();
-    private final SampleValidator scanValidator = new SampleValidator("scan", SampleLimits.defaults());
-    private final SampleValidator odomValidator = new SampleValidator("odom", SampleLimits.defaults());
+    private final SampleValidator scanValidator;
+    private final SampleValidator odomValidator;
+    private final FirstPublisherFilter scanPublishers;
+    private final FirstPublisherFilter odomPublishers;
+    private final List<String> notices = new CopyOnWriteArrayList<>();
     private final RejectionWatch scanWatch = new RejectionWatch(IMPOSSIBLE_DATA_FAULT_AFTER_NS);
     private final RejectionWatch odomWatch = new RejectionWatch(IMPOSSIBLE_DATA_FAULT_AFTER_NS);
     private final Histogram scanLatencyNs = new Histogram(MAX_LATENCY_NS, 3);
@@ -104,6 +119,8 @@ public final class Ros2DataTask implements Task {
     private double sentOmegaRadPerSec;
     private long sentAtNs;
     private long pendingScanSourceNs = Long.MIN_VALUE;
+    private long scanEpochsSeen;
+    private long odomEpochsSeen;
 
     private volatile long scans;
     private volatile long odometry;
@@ -134,6 +151,10 @@ public final class Ros2DataTask implements Task {
         this.sample.attachment().order(ByteOrder.LITTLE_ENDIAN);
         this.bytes = new byte[maxMessageBytes];
         this.epoch = new EpochClock();
+        this.scanValidator = new SampleValidator(topics.qualifiedScan(), SampleLimits.defaults());
+        this.odomValidator = new SampleValidator(topics.qualifiedOdom(), SampleLimits.defaults());
+        this.scanPublishers = new FirstPublisherFilter(topics.qualifiedScan(), PUBLISHER_SILENCE_NS, notices::add);
+        this.odomPublishers = new FirstPublisherFilter(topics.qualifiedOdom(), PUBLISHER_SILENCE_NS, notices::add);
     }
 
     /**
@@ -183,7 +204,7 @@ public final class Ros2DataTask implements Task {
                 if (took == ZenohMailbox.Take.CLOSED) {
                     throw new ZenohException("the ROS 2 subscriptions were closed");
                 }
-                handle(took);
+                handle(took, nowNs);
                 took = mailbox.take(0, sample);
             }
             long overflowed = mailbox.overflowed();
@@ -204,16 +225,19 @@ public final class Ros2DataTask implements Task {
         }
     }
 
-    private void handle(ZenohMailbox.Take took) {
+    private void handle(ZenohMailbox.Take took, long nowNs) {
         if (took == ZenohMailbox.Take.TOO_LARGE) {
             oversized++;
             lastProblem = "sample of " + sample.payloadLength() + " bytes exceeds the largest accepted ("
                     + bytes.length + ")";
             return;
         }
+        boolean scan = sample.channel() == SCAN;
+        if (!(scan ? scanPublishers : odomPublishers).accept(sample.attachment(), sample.attachmentLength(), nowNs)) {
+            return; // another publisher than the one followed: counted by the filter, reported once
+        }
         int length = sample.payloadLength();
         sample.payload().get(0, bytes, 0, length);
-        boolean scan = sample.channel() == SCAN;
         try {
             reader.wrap(bytes, 0, length);
             if (scan) {
@@ -229,6 +253,7 @@ public final class Ros2DataTask implements Task {
         }
         if (scan) {
             if (scanValidator.acceptScan(scanScratch)) {
+                scanEpochsSeen = noticeEpoch(scanValidator, scanEpochsSeen);
                 laserOut.value().copyFrom(scanScratch);
                 laserOut.publish();
                 scans++;
@@ -239,12 +264,22 @@ public final class Ros2DataTask implements Task {
                 lastProblem = "scan: " + scanValidator.lastRejection();
             }
         } else if (odomValidator.acceptOdometry(odomScratch)) {
+            odomEpochsSeen = noticeEpoch(odomValidator, odomEpochsSeen);
             odometryOut.value().copyFrom(odomScratch);
             odometryOut.publish();
             odometry++;
         } else {
             lastProblem = "odom: " + odomValidator.lastRejection();
         }
+    }
+
+    /** Reports a new epoch of the source's clock once; returns the epochs seen now. */
+    private long noticeEpoch(SampleValidator validator, long seen) {
+        long epochs = validator.clockEpochs();
+        if (epochs != seen) {
+            notices.add(validator.lastClockEpoch());
+        }
+        return epochs;
     }
 
     private void watchRejections(long nowNs) throws ZenohException, ImpossibleDataException {
@@ -335,8 +370,18 @@ public final class Ros2DataTask implements Task {
     /** @return a snapshot of the counters */
     public Ros2Stats stats() {
         return new Ros2Stats(scans, odometry, cmdVel == null ? 0 : cmdVel.published(), malformed, oversized,
-                scanValidator.rejected(), odomValidator.rejected(), overflowedSeen, lastProblem,
-                scanValidator.droppedBeams());
+                scanValidator.rejected(), odomValidator.rejected(), overflowedSeen,
+                scanPublishers.ignored() + odomPublishers.ignored(),
+                scanValidator.clockEpochs() + odomValidator.clockEpochs(), lastProblem, scanValidator.droppedBeams());
+    }
+
+    /**
+     * @return one line per event reported once, in order: another publisher on an input topic,
+     *     a publisher followed after the previous one fell silent, a new epoch of a topic's
+     *     clock (a snapshot; may be called from any thread)
+     */
+    public List<String> notices() {
+        return List.copyOf(notices);
     }
 
     /**

@@ -12,12 +12,16 @@ package io.rtaware.ros2.task;
  * @param scanRejected decoded scans dropped because their values cannot be true
  * @param odomRejected decoded odometry samples dropped because their values cannot be true
  * @param overflowed samples dropped because the task fell behind
+ * @param otherPublishers samples dropped because another publisher than the followed one of
+ *     their topic sent them
+ * @param clockEpochs new epochs of a topic's clock followed (a restarted or jumped source clock)
  * @param lastProblem the last reason a sample was dropped, or null
  * @param droppedBeams readings that said nothing (NaN, beyond the maximum range) dropped from
  *     scans, which were kept while they had a usable beam
  */
 public record Ros2Stats(long scans, long odometry, long commands, long malformed, long oversized, long scanRejected,
-                        long odomRejected, long overflowed, String lastProblem, long droppedBeams) {
+                        long odomRejected, long overflowed, long otherPublishers, long clockEpochs,
+                        String lastProblem, long droppedBeams) {
 
     /** @return decoded samples of either topic dropped because their values cannot be true */
     public long rejected() {
@@ -26,6 +30,6 @@ public record Ros2Stats(long scans, long odometry, long commands, long malformed
 
     /** @return samples dropped for any reason */
     public long dropped() {
-        return malformed + oversized + rejected() + overflowed;
+        return malformed + oversized + rejected() + overflowed + otherPublishers;
     }
 }

@@ -14,6 +14,7 @@ import io.rtaware.robot.msg.Odometry;
 import io.rtaware.robot.msg.RobotKeys;
 import io.rtaware.robot.msg.VelocityCommand;
 import io.rtaware.robot.validate.ImpossibleDataException;
+import io.rtaware.robot.validate.SampleValidator;
 import io.rtaware.ros2.NativeZenohAssumption;
 import io.rtaware.ros2.graph.QosProfile;
 import io.rtaware.ros2.graph.Ros2Context;
@@ -484,5 +485,83 @@ class Ros2DataTaskTest {
         }
         assertEquals(0, allocated, "bytes allocated by 200 publishes and cycles; " + task.stats());
         assertTrue(published(RobotKeys.LASER) > 100, "scans committed: " + published(RobotKeys.LASER));
+    }
+
+    /**
+     * Publishes one odometry stamped {@code stampNs} per cycle, the stamp advancing by a cycle,
+     * for {@code worldNs} of world time; no cycle may throw. Returns the next stamp.
+     */
+    private long publishOdomFor(long stampNs, long worldNs) throws Exception {
+        long until = nowNs + worldNs;
+        while (nowNs < until) {
+            publishOdom(stampNs);
+            stampNs += CYCLE_NS;
+            cycle();
+            assertNull(task.fault(), "no halt; " + task.stats());
+        }
+        return stampNs;
+    }
+
+    @Test
+    void oneOdometrySampleStampedFarAheadIsRejectedAndDoesNotHaltTheRobot() throws Exception {
+        firstScan();
+        publishOdomUntil(2_000_000_000L, () -> published(RobotKeys.ODOMETRY) >= 1, "a true pose");
+        publishOdom(1_002_000_000_000L); // 1000 s ahead
+        long rejectedAt = cyclesUntilRejected(false, () -> { });
+        long committed = published(RobotKeys.ODOMETRY);
+        publishOdomFor(2_100_000_000L, 3 * Ros2DataTask.IMPOSSIBLE_DATA_FAULT_AFTER_NS);
+        assertTrue(nowNs >= rejectedAt + 3 * Ros2DataTask.IMPOSSIBLE_DATA_FAULT_AFTER_NS);
+        assertTrue(published(RobotKeys.ODOMETRY) > committed + 50, "the genuine stream is followed: "
+                + published(RobotKeys.ODOMETRY) + " after " + committed);
+        assertEquals(1, task.stats().odomRejected(), task.stats().toString());
+        assertEquals(0, task.stats().clockEpochs());
+        assertTrue(harness.read(RobotKeys.ODOMETRY).serverTimeS < 10, "the far-ahead sample was never committed");
+    }
+
+    @Test
+    void aRobotRestartingItsClockIsFollowedAsANewEpochAndReportedOnce() throws Exception {
+        firstScan();
+        publishOdomUntil(500_000_000_000L, () -> published(RobotKeys.ODOMETRY) >= 1, "a pose at 500 s");
+        long stampNs = publishOdomFor(500_020_000_000L, 200_000_000L);
+        assertTrue(harness.read(RobotKeys.ODOMETRY).serverTimeS >= 500);
+        // the simulator restarts with simulated time from 0
+        publishOdomFor(0, 3 * Ros2DataTask.IMPOSSIBLE_DATA_FAULT_AFTER_NS);
+        assertTrue(harness.read(RobotKeys.ODOMETRY).serverTimeS < 10, "the new clock is followed");
+        Ros2Stats stats = task.stats();
+        assertEquals(1, stats.clockEpochs(), stats.toString());
+        assertEquals(SampleValidator.EPOCH_AFTER_SAMPLES - 1, stats.odomRejected(), stats.toString());
+        List<String> notices = task.notices();
+        assertEquals(1, notices.size(), notices.toString());
+        assertTrue(notices.get(0).startsWith("/robot1/odom: clock epoch 2 from 0.0 s (the previous sample was at "),
+                notices.get(0));
+        assertTrue(stampNs > 500_000_000_000L);
+    }
+
+    @Test
+    void aSecondOdometryPublisherIsReportedOnceAndOnlyTheFirstIsFollowed() throws Exception {
+        firstScan();
+        publishOdomUntil(2_000_000_000L, () -> published(RobotKeys.ODOMETRY) >= 1, "the first publisher's pose");
+        Ros2Publisher intruder = robotNode.createPublisher("odom", Ros2Types.ODOMETRY, QosProfile.defaults(), 64 * 1024);
+        OdometryCodec codec = new OdometryCodec("base_link");
+        Odometry elsewhere = new Odometry();
+        elsewhere.copyFrom(odom);
+        elsewhere.xM = odom.xM + 2.7; // the same robot 2.7 m away, as seen in the field
+        long stampNs = 2_000_000_000L;
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (task.stats().otherPublishers() < 20) {
+            assertTrue(System.nanoTime() < deadline, "the second publisher was not heard; " + task.stats());
+            stampNs += CYCLE_NS;
+            publishOdom(stampNs);
+            codec.encode(header.set(stampNs, "odom"), elsewhere, writer);
+            intruder.publish(writer.buffer(), writer.size(), System.currentTimeMillis() * 1_000_000L);
+            cycle();
+            assertEquals(1.5, harness.read(RobotKeys.ODOMETRY).xM, 1e-9, "only the first publisher's pose is committed");
+        }
+        List<String> notices = task.notices();
+        assertEquals(1, notices.size(), notices.toString());
+        assertTrue(notices.get(0).matches("/robot1/odom: another publisher \\(gid [0-9a-f]{32}\\) besides the one "
+                + "followed \\(gid [0-9a-f]{32}\\); its samples are dropped"), notices.get(0));
+        assertEquals(0, task.stats().odomRejected(), "dropped as another publisher's, not as implausible");
+        intruder.close();
     }
 }

@@ -4,8 +4,10 @@ import io.rtaware.core.time.EpochClock;
 import io.rtaware.robot.msg.LaserScan;
 import io.rtaware.robot.msg.Odometry;
 import io.rtaware.robot.msg.VelocityCommand;
+import io.rtaware.ros2.graph.FirstPublisherFilter;
 import io.rtaware.ros2.graph.QosProfile;
 import io.rtaware.ros2.graph.Ros2Context;
+import io.rtaware.ros2.graph.Ros2Names;
 import io.rtaware.ros2.graph.Ros2Node;
 import io.rtaware.ros2.graph.Ros2Publisher;
 import io.rtaware.ros2msg.LaserScanCodec;
@@ -21,7 +23,9 @@ import io.rtaware.zenoh.ZenohException;
 import io.rtaware.zenoh.ZenohMailbox;
 import java.util.List;
 import java.util.Objects;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
 
 /**
  * The world of a running {@link PlayerSimServer} as a ROS 2 robot: the node {@value #NODE_NAME}
@@ -31,6 +35,11 @@ import java.util.concurrent.TimeUnit;
  * {@code cmd_vel}; topic names are relative to the robot's namespace. Header stamps are world
  * time (the simulator's clock, as ROS's {@code use_sim_time}); attachments carry the wall-clock
  * source timestamp. One thread of its own does all of it; the Player server keeps serving.
+ *
+ * <p>Only the first publisher heard on {@code cmd_vel} drives the robot (told apart by the gid of
+ * the rmw_zenoh attachment, {@link FirstPublisherFilter}; another one once the first has been
+ * silent for {@value #COMMANDER_SILENCE_NS} ns of wall time): a foreign velocity publisher is
+ * reported once ({@link #notices()} and the report callback) and its Twists are dropped.
  *
  * <p>Thread-safe: {@link #close()} from any thread.
  */
@@ -46,6 +55,9 @@ public final class Ros2SimRobot implements AutoCloseable {
     public static final String GROUND_TRUTH = "ground_truth";
     /** Velocity command topic. */
     public static final String CMD_VEL = "cmd_vel";
+
+    /** Wall time the followed {@code cmd_vel} publisher may be silent before another drives: 1 s. */
+    public static final long COMMANDER_SILENCE_NS = 1_000_000_000L;
 
     private static final long POLL_NS = TimeUnit.MILLISECONDS.toNanos(2);
     private static final int MAX_MESSAGE_BYTES = 64 * 1024;
@@ -73,6 +85,8 @@ public final class Ros2SimRobot implements AutoCloseable {
     private final Odometry odom = new Odometry();
     private final Odometry truth = new Odometry();
     private final boolean[] news = new boolean[2];
+    private final List<String> notices = new CopyOnWriteArrayList<>();
+    private final FirstPublisherFilter commanders;
 
     private volatile boolean running = true;
     private volatile long commands;
@@ -81,8 +95,14 @@ public final class Ros2SimRobot implements AutoCloseable {
     private double lastScanTimeS = Double.NaN;
     private double lastOdomTimeS = Double.NaN;
 
-    private Ros2SimRobot(PlayerSimServer server, Ros2Context context, String namespace) throws ZenohException {
+    private Ros2SimRobot(PlayerSimServer server, Ros2Context context, String namespace, Consumer<String> report)
+            throws ZenohException {
         this.server = server;
+        this.commanders = new FirstPublisherFilter(Ros2Names.resolveTopic(Ros2Names.namespace(namespace), CMD_VEL),
+                COMMANDER_SILENCE_NS, line -> {
+                    notices.add(line);
+                    report.accept(line);
+                });
         this.context = context;
         this.node = context.createNode(namespace, NODE_NAME);
         this.scanPub = node.createPublisher(SCAN, scanCodec.type(), QosProfile.sensorData(), MAX_MESSAGE_BYTES);
@@ -100,14 +120,17 @@ public final class Ros2SimRobot implements AutoCloseable {
      * @param server the running simulator
      * @param context an open context, owned by the robot from now on
      * @param namespace the robot's namespace ({@code /} for none)
+     * @param report receives, on the robot's thread, one line per event reported once (a foreign
+     *     {@code cmd_vel} publisher)
      * @return the running robot
      * @throws ZenohException if a declaration fails (the context is closed then)
      */
-    public static Ros2SimRobot start(PlayerSimServer server, Ros2Context context, String namespace)
-            throws ZenohException {
+    public static Ros2SimRobot start(PlayerSimServer server, Ros2Context context, String namespace,
+                                     Consumer<String> report) throws ZenohException {
         Objects.requireNonNull(server, "server");
+        Objects.requireNonNull(report, "report");
         try {
-            Ros2SimRobot robot = new Ros2SimRobot(server, context, namespace);
+            Ros2SimRobot robot = new Ros2SimRobot(server, context, namespace, report);
             robot.thread.start();
             return robot;
         } catch (ZenohException | RuntimeException e) {
@@ -140,6 +163,9 @@ public final class Ros2SimRobot implements AutoCloseable {
         if (took == ZenohMailbox.Take.TOO_LARGE) {
             badCommands++;
             return;
+        }
+        if (!commanders.accept(sample.attachment(), sample.attachmentLength(), System.nanoTime())) {
+            return; // a foreign velocity publisher: counted by the filter, reported once
         }
         int length = sample.payloadLength();
         sample.payload().get(0, bytes, 0, length);
@@ -205,6 +231,16 @@ public final class Ros2SimRobot implements AutoCloseable {
     /** @return Twist messages obeyed so far */
     public long commands() {
         return commands;
+    }
+
+    /** @return Twist messages dropped because another publisher than the one followed sent them */
+    public long foreignCommands() {
+        return commanders.ignored();
+    }
+
+    /** @return one line per event reported once (a foreign {@code cmd_vel} publisher), a snapshot */
+    public List<String> notices() {
+        return List.copyOf(notices);
     }
 
     /** @return Twist messages dropped because they could not be decoded or were not finite */
