@@ -42,11 +42,17 @@ public record ExperimentPlan(List<PeriodSet> sets, int runsPerSet, RunConditions
         if (sets.isEmpty()) {
             throw new IllegalArgumentException("an experiment needs at least one set");
         }
-        if (runsPerSet < 1) {
-            throw new IllegalArgumentException("runs per set must be at least 1, got " + runsPerSet);
+        if (runsPerSet < 1 || runsPerSet > MAX_RUNS_PER_SET) {
+            throw new IllegalArgumentException("runs per set must be in 1.." + MAX_RUNS_PER_SET + ", got " + runsPerSet);
         }
         Objects.requireNonNull(conditions, "conditions");
     }
+
+    /**
+     * Most runs per set a plan may hold: 10 000 runs of the paper's course take months even at
+     * the top time scale, while the plan lists every run in memory and in plan.json.
+     */
+    public static final int MAX_RUNS_PER_SET = 10_000;
 
     /**
      * @return the runs of this plan's shard, in the order of {@link #fullOrder()}

@@ -138,10 +138,12 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
             if (heightM < resolutionM) {
                 throw new IllegalArgumentException("gridHeightM must be at least gridResolutionM, got " + heightM);
             }
-            long cells = (long) Math.ceil(widthM / resolutionM) * (long) Math.ceil(heightM / resolutionM);
-            if (cells > MAX_GRID_CELLS) {
+            // In doubles: a hostile configuration (a recording's nav_config) overflowed the product of longs.
+            double cells = Math.ceil(widthM / resolutionM) * Math.ceil(heightM / resolutionM);
+            if (!(cells <= MAX_GRID_CELLS)) {
                 throw new IllegalArgumentException("grid of " + widthM + " x " + heightM + " m at "
-                        + resolutionM + " m has " + cells + " cells, more than " + MAX_GRID_CELLS);
+                        + resolutionM + " m has " + String.format(java.util.Locale.ROOT, "%.0f", cells)
+                        + " cells, more than " + MAX_GRID_CELLS);
             }
         }
 
@@ -700,8 +702,8 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
             long obstacle = periodsNs.get(Behavior.OBSTACLE);
             long waypoint = periodsNs.get(Behavior.WAYPOINT);
             long mediator = mediatorPeriodNs > 0 ? mediatorPeriodNs : Math.min(obstacle, waypoint);
-            long avoidAge = avoidMaxAgeNs > 0 ? avoidMaxAgeNs : 2 * obstacle + mediator;
-            long waypointAge = waypointMaxAgeNs > 0 ? waypointMaxAgeNs : 2 * waypoint + mediator;
+            long avoidAge = avoidMaxAgeNs > 0 ? avoidMaxAgeNs : saturatedSum(obstacle, obstacle, mediator);
+            long waypointAge = waypointMaxAgeNs > 0 ? waypointMaxAgeNs : saturatedSum(waypoint, waypoint, mediator);
             return new NavConfig(new Periods(periodsNs, mediator),
                     new Grid(gridResolutionM, gridOriginXM, gridOriginYM, gridWidthM, gridHeightM),
                     new Planner(inflationMarginM, unknownCostFactor),
@@ -711,6 +713,15 @@ public record NavConfig(Periods periods, Grid grid, Planner planner, Follower fo
                             laserMinRangeM, obstacleSpeedMps),
                     new MaxAges(laserMaxAgeNs, odometryMaxAgeNs, avoidAge, waypointAge),
                     new Course(waypoints, externalWaypoints));
+        }
+
+        /** @return the sum of non-negative spans, or Long.MAX_VALUE where it would overflow */
+        private static long saturatedSum(long... ns) {
+            long sum = 0;
+            for (long v : ns) {
+                sum = v > Long.MAX_VALUE - sum ? Long.MAX_VALUE : sum + v;
+            }
+            return sum;
         }
     }
 }

@@ -104,4 +104,20 @@ class NavConfigTest {
                 () -> NavConfig.builder().waypoints(COURSE).grid(0.001, 0, 0, 100, 100).build());
         assertTrue(e.getMessage().contains("cells"), e.getMessage());
     }
+
+    /** Issue 24: a hostile nav_config in a recording overflowed these checks. */
+    @Test
+    void hostileSizesAndPeriodsCannotOverflowTheirChecks() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> NavConfig.builder().waypoints(List.of(new Point2d(1, 1))).grid(1e-300, 0, 0, 1e300, 1e300).build());
+        assertTrue(e.getMessage().contains("more than " + NavConfig.MAX_GRID_CELLS), e.getMessage());
+        e = assertThrows(IllegalArgumentException.class,
+                () -> NavConfig.builder().waypoints(List.of(new Point2d(1, 1))).grid(1e-10, 0, 0, 1e10, 1e10).build());
+        assertTrue(e.getMessage().contains("cells, more than"), e.getMessage());
+        NavConfig slow = NavConfig.builder().waypoints(List.of(new Point2d(1, 1)))
+                .periodNs(Behavior.OBSTACLE, Long.MAX_VALUE / 2 + 1)
+                .periodNs(Behavior.WAYPOINT, Long.MAX_VALUE / 2 + 1).build();
+        assertEquals(Long.MAX_VALUE, slow.maxAges().avoidRequestNs(), "saturated, not wrapped to a negative age");
+        assertEquals(Long.MAX_VALUE, slow.maxAges().waypointRequestNs());
+    }
 }

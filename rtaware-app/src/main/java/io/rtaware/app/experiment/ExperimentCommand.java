@@ -208,8 +208,8 @@ public final class ExperimentCommand implements Callable<Integer> {
 
     /** @return the plan the options ask for */
     ExperimentPlan plan() {
-        if (runs < 1) {
-            throw new UserError("--runs must be at least 1, got " + runs);
+        if (runs < 1 || runs > ExperimentPlan.MAX_RUNS_PER_SET) {
+            throw new UserError("--runs must be in 1.." + ExperimentPlan.MAX_RUNS_PER_SET + ", got " + runs);
         }
         if (gridResolutionM != null && !(gridResolutionM > 0)) {
             throw new UserError("--grid-resolution must be a positive number of metres, got " + gridResolutionM);

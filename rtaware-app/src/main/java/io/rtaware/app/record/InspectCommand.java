@@ -1,6 +1,8 @@
 package io.rtaware.app.record;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.output.OutputFile;
+import io.rtaware.app.output.OutputWrites;
 import io.rtaware.record.RecordingPlan;
 import io.rtaware.record.TaskCycleMessage;
 import io.rtaware.record.mcap.McapChannel;
@@ -82,6 +84,9 @@ public final class InspectCommand implements Callable<Integer> {
         if (recover) {
             return recover(out);
         }
+        if (plot != null) {
+            OutputFile.of("--plot", plot); // checked before the file is read: an empty name, a folder, ...
+        }
         McapReader reader = open(file);
         McapSummary summary;
         try {
@@ -159,9 +164,15 @@ public final class InspectCommand implements Callable<Integer> {
             if (tasks.isEmpty()) {
                 throw new UserError("--plot: " + file + " has no /rtaware/timing channels to plot");
             }
-            writePlot(tasks, plot);
-            out.println();
-            out.println("lateness plot written to " + plot);
+            OutputWrites writes = new OutputWrites(System.err);
+            byte[] png = plotPng(tasks);
+            Path folder = plot.toAbsolutePath().getParent();
+            if (writes.write(plot, () -> Files.createDirectories(folder))
+                    && writes.writeFile(plot, target -> Files.write(target, png))) {
+                out.println();
+                out.println("lateness plot written to " + plot);
+            }
+            return writes.exitStatus(0);
         }
         return 0;
     }
@@ -241,7 +252,12 @@ public final class InspectCommand implements Callable<Integer> {
         return String.format(Locale.ROOT, "%.3fms", ns / 1e6);
     }
 
-    private static void writePlot(Map<String, TaskTiming> tasks, Path png) throws IOException {
+    /**
+     * The lateness figure as PNG bytes, written by the caller to exactly the path the user gave
+     * (XChart's own file writer appends {@code .png} to any name: {@code --plot /dev/full} wrote
+     * {@code /dev/full.png}, {@code --plot ''} wrote {@code ./.png}).
+     */
+    private static byte[] plotPng(Map<String, TaskTiming> tasks) throws IOException {
         XYChart chart = new XYChartBuilder().width(1000).height(500)
                 .title("Release lateness per task (start - release)").xAxisTitle("world time since the first message (s)")
                 .yAxisTitle("lateness (ms)").build();
@@ -257,12 +273,6 @@ public final class InspectCommand implements Callable<Integer> {
             s.setMarker(SeriesMarkers.NONE);
             s.setLineStyle(new BasicStroke(1f));
         }
-        Path parent = png.toAbsolutePath().getParent();
-        if (parent != null) {
-            Files.createDirectories(parent);
-        }
-        String name = png.toString();
-        String base = name.toLowerCase(Locale.ROOT).endsWith(".png") ? name.substring(0, name.length() - 4) : name;
-        BitmapEncoder.saveBitmap(chart, base, BitmapEncoder.BitmapFormat.PNG);
+        return BitmapEncoder.getBitmapBytes(chart, BitmapEncoder.BitmapFormat.PNG);
     }
 }

@@ -8,6 +8,7 @@ import io.rtaware.app.run.TaskPeriods;
 import io.rtaware.core.report.ReportDocument;
 import io.rtaware.core.report.SummaryTable;
 import io.rtaware.core.task.TaskSpec;
+import io.rtaware.core.time.Durations;
 import io.rtaware.nav.Behavior;
 import io.rtaware.nav.NavConfig;
 import io.rtaware.nav.NavController;
@@ -56,6 +57,9 @@ public final class ReplayCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "DIR",
             description = "Write replay.json (exact) or report.json (what-if) into this folder.")
     Path out;
+
+    /** Most cycles a what-if replay makes: about a minute of replay on a 2-core machine. */
+    static final long MAX_WHAT_IF_CYCLES = 20_000_000L;
 
     @Option(names = "--periods", paramLabel = "TASK=MS,...",
             description = "What-if: periods to try, e.g. planner=50 (ms; tasks not named keep the recorded periods).")
@@ -140,6 +144,27 @@ public final class ReplayCommand implements Callable<Integer> {
         return 0;
     }
 
+    /**
+     * Refuses periods that would make the replay run for hours without a word (issue 24: a
+     * planner period of 10 ns over a recording of minutes): one line with the cycle count, the
+     * budget and the shortest period the budget allows.
+     */
+    private static void checkCycleBudget(Recording recording, Map<String, Long> periodsNs) {
+        double worldNs = Math.max(1, recording.endNs());
+        double cycles = 0;
+        for (long periodNs : periodsNs.values()) {
+            cycles += worldNs / periodNs;
+        }
+        if (cycles > MAX_WHAT_IF_CYCLES) {
+            Map.Entry<String, Long> shortest = periodsNs.entrySet().stream().min(Map.Entry.comparingByValue()).orElseThrow();
+            throw new UserError(String.format(Locale.ROOT, "--periods: %s=%s over the recording's %.1f s of world time makes"
+                            + " %.3g cycles; a what-if replay makes at most %.0e (give '%s' a period of at least %s)",
+                    shortest.getKey(), Durations.format(shortest.getValue()), worldNs / 1e9, cycles,
+                    (double) MAX_WHAT_IF_CYCLES, shortest.getKey(),
+                    Durations.format((long) Math.ceil(worldNs * periodsNs.size() / MAX_WHAT_IF_CYCLES))));
+        }
+    }
+
     private int whatIf(Recording recording, NavConfig recorded, PrintStream stdout) throws IOException {
         TaskPeriods defaults = TaskPeriods.of(recorded.periods().ns(Behavior.WAYPOINT) / 1e6,
                 recorded.periods().ns(Behavior.OBSTACLE) / 1e6, recorded.periods().ns(Behavior.OCCUPANCY) / 1e6,
@@ -151,6 +176,7 @@ public final class ReplayCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw new UserError("--periods: " + e.getMessage());
         }
+        checkCycleBudget(recording, asked.nanosByTask());
         long wallStart = System.nanoTime();
         WhatIfReplay.Result result = WhatIfReplay.replay(recording, new NavController(config).taskSpecs(),
                 new NavController(config).taskSpecs());

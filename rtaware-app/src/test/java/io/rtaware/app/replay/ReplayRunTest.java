@@ -121,6 +121,9 @@ class ReplayRunTest {
         CliRun.of("replay", recording.toString(), "--periods", "planner=fast").assertOneLineUserError("'fast'");
         CliRun.of("replay", recording.toString(), "--periods", "steering=50").assertOneLineUserError("unknown task 'steering'");
         CliRun.of("replay", recording.toString(), "--periods", "planner=0").assertOneLineUserError("must be positive");
+        // Issue 24: a 10 ns planner divided by zero in the advice, then would have replayed for hours.
+        CliRun.of("replay", recording.toString(), "--periods", "planner=10ns")
+                .assertOneLineUserError("a what-if replay makes at most 2e+07");
         CliRun.of("replay", recording.toString(), "--periods", "planner=50", "--task", "planner")
                 .assertOneLineUserError("exclude each other");
     }

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
+import io.rtaware.app.CliRun;
 import io.rtaware.app.RtawareCli;
 import io.rtaware.record.mcap.McapChannel;
 import io.rtaware.record.mcap.McapReader;
@@ -124,6 +125,22 @@ class RecordRunTest {
         assertTrue(Files.size(png) > 1000, "plot written");
         assertEquals(2, RtawareCli.execute("inspect", out.resolve("report.json").toString()), "not MCAP: user error");
         assertEquals(2, RtawareCli.execute("inspect", dir.resolve("none.mcap").toString()), "missing: user error");
+    }
+
+    /** Issue 24: --plot NAME wrote NAME.png and said NAME; /dev/full got /dev/full.png, '' got ./.png. */
+    @Test
+    void thePlotIsWrittenWhereTheUserSaidOrTheFailureIsOneLine() throws Exception {
+        Path named = dir.resolve("plots/lateness-without-extension");
+        CliRun plotted = CliRun.of("inspect", recording.toString(), "--plot", named.toString());
+        assertEquals(0, plotted.status(), plotted.toString());
+        assertTrue(plotted.out().contains("lateness plot written to " + named), plotted.out());
+        assertTrue(Files.size(named) > 1000, "written under the name given");
+        assertTrue(Files.notExists(Path.of(named + ".png")), "and under no other");
+        CliRun.of("inspect", recording.toString(), "--plot", "").assertOneLineUserError("--plot must name a file");
+        CliRun full = CliRun.of("inspect", recording.toString(), "--plot", "/dev/full");
+        assertEquals(1, full.status(), full.toString());
+        assertTrue(full.err().contains("could not write /dev/full"), full.err());
+        assertTrue(Files.notExists(Path.of("/dev/full.png")), "nothing beside the device");
     }
 
     @Test
