@@ -1,7 +1,6 @@
 package io.rtaware.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
@@ -36,8 +35,6 @@ class DocsTest {
      * {@code rtaware report} once the published experiment folders are regenerated (issue 26).
      * {@link #pendingLinkTargetsDoNotExistYet()} fails when one appears, so the entry is removed.
      */
-    private static final Set<String> PENDING = Set.of("docs/experiment/RESULTS.md");
-
     private static final Pattern FENCE = Pattern.compile("```[a-z]*\\n(.*?)```", Pattern.DOTALL);
     private static final Pattern INLINE = Pattern.compile("`([^`]+)`");
     private static final Pattern COMMAND = Pattern.compile(
@@ -93,23 +90,13 @@ class DocsTest {
                 Path resolved = file.isEmpty() ? page : page.getParent().resolve(file).normalize();
                 String name = ROOT.relativize(resolved).toString();
                 if (!Files.exists(resolved)) {
-                    if (!PENDING.contains(name)) {
-                        broken.add(ROOT.relativize(page) + ": " + target + " (no file " + name + ")");
-                    }
+                    broken.add(ROOT.relativize(page) + ": " + target + " (no file " + name + ")");
                 } else if (hash >= 0 && !anchors(resolved).contains(target.substring(hash + 1))) {
                     broken.add(ROOT.relativize(page) + ": " + target + " (no such heading in " + name + ")");
                 }
             }
         }
         assertEquals(List.of(), broken, "links in README.md and docs/ that lead nowhere");
-    }
-
-    @Test
-    void pendingLinkTargetsDoNotExistYet() {
-        for (String name : PENDING) {
-            assertFalse(Files.exists(ROOT.resolve(name)),
-                    name + " exists now: remove it from DocsTest.PENDING so its links are checked");
-        }
     }
 
     @Test

@@ -12,6 +12,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.Objects;
 import java.util.TreeMap;
 import java.util.function.Function;
@@ -86,7 +88,10 @@ public final class PaperClaims {
         }
     }
 
-    /** Each claim's id, by its text without a top-speed suffix. */
+    /** What may follow a claim's text: its course, then its top speed. */
+    private static final Pattern SUFFIXES = Pattern.compile("(?: on ([A-Za-z0-9._-]+))?(?: \\(at (.+)\\))?");
+
+    /** Each claim's id, by its text without a course or top-speed suffix. */
     private static final Map<String, String> IDS = new LinkedHashMap<>();
 
     /**
@@ -96,13 +101,22 @@ public final class PaperClaims {
      */
     public static String id(String claim) {
         for (Map.Entry<String, String> e : IDS.entrySet()) {
-            if (claim.equals(e.getKey())) {
-                return e.getValue();
+            if (!claim.startsWith(e.getKey())) {
+                continue;
             }
-            if (claim.startsWith(e.getKey() + " (at ")) {
-                String speed = claim.substring(e.getKey().length() + 5, claim.length() - 1);
-                return e.getValue() + "@" + speed.replace(" m/s", "mps").replace("run's default top speed", "default")
-                        .replace(' ', '-');
+            // The text, then optionally " on SCENARIO" (a course other than the paper's room), then
+            // optionally " (at SPEED)" (a top-speed sweep).
+            Matcher m = SUFFIXES.matcher(claim.substring(e.getKey().length()));
+            if (m.matches()) {
+                String id = e.getValue();
+                if (m.group(1) != null) {
+                    id += "-on-" + m.group(1);
+                }
+                if (m.group(2) != null) {
+                    id += "@" + m.group(2).replace(" m/s", "mps").replace("run's default top speed", "default")
+                            .replace(' ', '-');
+                }
+                return id;
             }
         }
         throw new IllegalArgumentException("no id for claim: " + claim);
@@ -181,6 +195,7 @@ public final class PaperClaims {
         IDS.put(CONCLUSION, "conclusion-timing-matters");
         IDS.put(AVOIDER_FAST, "avoider-too-fast-hits");
         IDS.put(SAMPLING, "sampling-rate-advice");
+        IDS.put(RULE, "reaction-rule-bound");
     }
 
     private static final List<String> FIG7_ORDER = List.of("planner", "occupancy", "waypoint", "obstacle");
