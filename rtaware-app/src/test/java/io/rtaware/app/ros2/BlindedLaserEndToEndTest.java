@@ -3,13 +3,10 @@ package io.rtaware.app.ros2;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.app.RtawareCli;
-import io.rtaware.zenoh.ZenohLibrary;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.net.ServerSocket;
@@ -31,14 +28,6 @@ class BlindedLaserEndToEndTest {
 
     @TempDir
     Path dir;
-
-    private static void requireNativeZenoh() {
-        String reason = ZenohLibrary.unavailableReason();
-        if (reason != null && "true".equals(System.getenv("CI")) && !"1".equals(System.getenv("RTAWARE_NO_RUST"))) {
-            fail("CI=true but " + reason + " (.ci/run sets RTAWARE_NO_RUST=1 when the machine has no Rust toolchain)");
-        }
-        assumeTrue(reason == null, () -> "skipped: " + reason);
-    }
 
     private static String freeEndpoint() throws Exception {
         try (ServerSocket s = new ServerSocket(0)) {
@@ -74,7 +63,7 @@ class BlindedLaserEndToEndTest {
 
     @Test
     void aLaserSeeingEverythingCloserThanItsMinimumRangeIsNeverDrivenInto() throws Exception {
-        requireNativeZenoh();
+        Ros2RunEndToEndTest.requireNativeZenoh();
         String endpoint = freeEndpoint();
         ScriptedRos2Robot robot = ScriptedRos2Robot.scanning(endpoint, 181, Float.NEGATIVE_INFINITY, 0);
         Outcome o = run(robot, endpoint, dir.resolve("minus-inf"));
@@ -91,7 +80,7 @@ class BlindedLaserEndToEndTest {
 
     @Test
     void scansOfNoBeamsAreImpossibleDataAndHaltTheRobot() throws Exception {
-        requireNativeZenoh();
+        Ros2RunEndToEndTest.requireNativeZenoh();
         String endpoint = freeEndpoint();
         ScriptedRos2Robot robot = ScriptedRos2Robot.scanning(endpoint, 0, 4f, 100_000_000_000L);
         Outcome o = run(robot, endpoint, dir.resolve("empty"));

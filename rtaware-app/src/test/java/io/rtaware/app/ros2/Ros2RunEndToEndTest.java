@@ -31,7 +31,8 @@ class Ros2RunEndToEndTest {
     @TempDir
     Path dir;
 
-    private static void requireNativeZenoh() {
+    /** Skips without the native layer, saying why; under CI=true with Rust, its absence fails. */
+    static void requireNativeZenoh() {
         String reason = ZenohLibrary.unavailableReason();
         if (reason != null && "true".equals(System.getenv("CI")) && !"1".equals(System.getenv("RTAWARE_NO_RUST"))) {
             fail("CI=true but " + reason + " (.ci/run sets RTAWARE_NO_RUST=1 when the machine has no Rust toolchain)");
