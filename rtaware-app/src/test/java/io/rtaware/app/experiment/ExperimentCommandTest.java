@@ -3,6 +3,7 @@ package io.rtaware.app.experiment;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 
+import io.rtaware.app.CliRun;
 import io.rtaware.app.RtawareCli;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -18,6 +19,9 @@ class ExperimentCommandTest {
     void badInputIsAUserErrorAndCreatesNothing() throws Exception {
         Path out = dir.resolve("exp");
         assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("experiment", "--runs", "0", "--out", out.toString()));
+        // Issue 24: two billion runs per set ran out of heap building the plan.
+        CliRun.of("experiment", "--runs", "2000000000", "--out", out.toString())
+                .assertOneLineUserError("--runs must be in 1..10000, got 2000000000");
         assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("experiment", "--time-scale", "-1", "--out", out.toString()));
         assertEquals(RtawareCli.EXIT_USER_ERROR, RtawareCli.execute("experiment", "--sets", dir.resolve("none.yaml").toString(),
                 "--out", out.toString()));
