@@ -33,10 +33,14 @@ for t in "${tests[@]}"; do
   rm -rf "$module/.cifuzz-corpus"
   mkdir -p "$module/.cifuzz-corpus"
   ln -sfn "$corpus_root/$class" "$module/.cifuzz-corpus/$(find "$module/src/test/java" -name "$class.java" | sed 's|.*/src/test/java/||; s|\.java$||; s|/|.|g')"
+  touch "$corpus_root/$class.log.start"
   if ! JAZZER_FUZZ=1 ./mvnw -B -q -o -pl "$module" -am test -Dtest="$class" -Dsurefire.failIfNoSpecifiedTests=false \
       >"$corpus_root/$class.log" 2>&1; then
     echo "fuzz: $class FOUND A PROBLEM (log: $corpus_root/$class.log):" >&2
     grep -E "FuzzTestFinding|Caused by|Test unit written" "$corpus_root/$class.log" | head -5 >&2 || true
+    # The input, so that it survives a CI log: base64 -d it into the test's corpus folder.
+    find "$module/src/test/resources" -name 'crash-*' -newer "$corpus_root/$class.log.start" 2>/dev/null \
+      | while read -r crash; do echo "fuzz: input $crash (base64): $(base64 -w0 "$crash")" >&2; done
     failed+=("$class")
   else
     grep -E "^Done [0-9]+ runs" "$corpus_root/$class.log" | tail -1 | sed "s/^/fuzz: $class: /" >&2 || true

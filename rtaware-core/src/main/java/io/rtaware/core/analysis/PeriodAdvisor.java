@@ -247,8 +247,8 @@ public final class PeriodAdvisor {
         // unit periods are declared in: any period of at least 1 ns has a phase).
         Map<String, List<TaskReport>> groups = new LinkedHashMap<>();
         for (TaskReport task : report.tasks()) {
-            if (task.periodMs() == null || task.offsetMs() == null) {
-                continue;
+            if (task.periodMs() == null || task.offsetMs() == null || task.latenessUs() == null) {
+                continue; // a report without offsets or lateness (lateness_us is optional): no such advice
             }
             long periodNs = Math.round(task.periodMs() * 1e6);
             if (periodNs <= 0) {
