@@ -28,7 +28,7 @@ public interface MachineCheck {
         return () -> {
             HostSample start = host.sample();
             Thread.sleep(window.toMillis());
-            return MachineVerdict.of(MeasuredConditions.between(start, host.sample(), null), Double.NaN);
+            return MachineVerdict.of(MeasuredConditions.between(start, host.sample(), null, Double.NaN), Double.NaN);
         };
     }
 }

@@ -85,7 +85,7 @@ class RunConditionsEndToEndTest {
         HostReader host = new HostReader(HostFiles.system(), System::nanoTime);
         var before = host.sample();
         Thread.sleep(1000);
-        MeasuredConditions idle = MeasuredConditions.between(before, host.sample(), null);
+        MeasuredConditions idle = MeasuredConditions.between(before, host.sample(), null, Double.NaN);
         assumeTrue(idle.otherCpus() <= MachineVerdict.OTHER_CPUS_MAX / 2, "the machine is not quiet now (other "
                 + "processes used " + idle.otherCpus() + " CPUs in the second before the run): the quiet half is skipped");
         run(dir.resolve("alone"));

@@ -70,15 +70,19 @@ public final class ConditionsMeter {
         /**
          * Ends the measurement (once; later calls return the same conditions).
          *
-         * @param shortestPeriodMs the run's shortest task period, ms, or NaN when it has none
+         * @param shortestPeriodWorldMs the run's shortest task period, ms of world time, or NaN
+         *     when it has none; the JVM's pauses are judged against it in wall time (divided by the
+         *     time scale): at time scale 10 a 10 ms period lasts 1 ms on the machine
          * @return the conditions with the verdict
          */
-        public synchronized Conditions finish(double shortestPeriodMs) {
+        public synchronized Conditions finish(double shortestPeriodWorldMs) {
             if (finished == null) {
                 HostSample end = host.sample();
                 pauses.close(); // first: the JVM may deliver the last pauses while closing
-                MeasuredConditions measured = MeasuredConditions.between(start, end, pauses);
-                finished = Conditions.of(setup, measured, MachineVerdict.of(measured, shortestPeriodMs));
+                double wallPeriodMs = shortestPeriodWorldMs / setup.timeScale();
+                MeasuredConditions measured = MeasuredConditions.between(start, end, pauses,
+                        MachineVerdict.PAUSE_PERIOD_FRACTION * wallPeriodMs);
+                finished = Conditions.of(setup, measured, MachineVerdict.of(measured, wallPeriodMs));
             }
             return finished;
         }

@@ -47,6 +47,13 @@ public interface JvmProbe {
         /** @return the longest of them, ms (0 if none) */
         double gcMaxPauseMs();
 
+        /**
+         * @param ms a duration, ms
+         * @return the stops longer than it: each collection's longest pause and each safepoint's
+         *     time to reach (the time the first stopped threads waited for the last)
+         */
+        long stopsLongerThan(double ms);
+
         /** @return safepoints seen (each a stop of every application thread), or -1 where not measured */
         long safepoints();
 

@@ -13,8 +13,11 @@ import java.util.Locale;
  *       average over the span, or the hypervisor stole more than {@link #STEAL_MAX_PCT} % of
  *       the machine's CPU time;</li>
  *   <li>{@code disturbed} (and not busy): the JVM stopped the run's threads for longer than
- *       {@link #PAUSE_PERIOD_FRACTION} of the shortest period, in one collection or in reaching
- *       a safepoint;</li>
+ *       {@link #PAUSE_PERIOD_FRACTION} of the shortest period (in wall time), in a collection or
+ *       in reaching a safepoint, more often than {@link #LONG_STOPS_PER_1000_PERIODS_MAX} times per
+ *       1000 such periods. One such stop can delay one release of each task; a handful in a run
+ *       of tens of thousands of releases (ZGC's cycles, the JIT's safepoints, about 0.1-0.5 ms
+ *       each on the development VM) cannot explain a miss rate, a steady stream of them can;</li>
  *   <li>{@code quiet}: none of these;</li>
  *   <li>{@code unknown}: the OS does not expose the CPU counters (not Linux).</li>
  * </ul>
@@ -43,12 +46,15 @@ public record MachineVerdict(String verdict, List<String> reasons, String contex
     public static final double STEAL_MAX_PCT = 2.0;
     /** A JVM pause longer than this share of the shortest period disturbs the run. */
     public static final double PAUSE_PERIOD_FRACTION = 0.1;
+    /** Long stops (see {@link #PAUSE_PERIOD_FRACTION}) per 1000 shortest periods above which the run is disturbed. */
+    public static final double LONG_STOPS_PER_1000_PERIODS_MAX = 1.0;
 
     /** The rule, in words, as written in reports. */
     public static final String RULE = String.format(Locale.ROOT,
-            "busy if other processes used more than %.2f of one CPU or steal was above %.0f %%; disturbed if a GC pause "
-                    + "or a time to safepoint was longer than %.1f of the shortest period; quiet otherwise",
-            OTHER_CPUS_MAX, STEAL_MAX_PCT, PAUSE_PERIOD_FRACTION);
+            "busy if other processes used more than %.2f of one CPU or steal was above %.0f %%; disturbed if the JVM "
+                    + "stopped the threads (a GC pause or a time to safepoint) for longer than %.1f of the shortest period in "
+                    + "wall time more than %.0f times per 1000 such periods; quiet otherwise",
+            OTHER_CPUS_MAX, STEAL_MAX_PCT, PAUSE_PERIOD_FRACTION, LONG_STOPS_PER_1000_PERIODS_MAX);
 
     /** Copies the list. */
     public MachineVerdict {
@@ -57,8 +63,9 @@ public record MachineVerdict(String verdict, List<String> reasons, String contex
 
     /**
      * @param m the measured span
-     * @param shortestPeriodMs the shortest task period of the run, ms, or NaN when it has none
-     *     (then pauses are not judged)
+     * @param shortestPeriodMs the shortest task period of the run in wall-clock ms (a world
+     *     period divided by the time scale), or NaN when it has none (then pauses are not judged);
+     *     {@code m}'s long stops are counted against a tenth of it
      * @return the verdict by the rule
      */
     public static MachineVerdict of(MeasuredConditions m, double shortestPeriodMs) {
@@ -77,17 +84,20 @@ public record MachineVerdict(String verdict, List<String> reasons, String contex
             busy.add(String.format(Locale.ROOT, "steal %.1f %% (above %.0f %%)", m.stealPct(), STEAL_MAX_PCT));
         }
         List<String> disturbed = new ArrayList<>();
-        if (Double.isFinite(shortestPeriodMs) && shortestPeriodMs > 0) {
-            double limitMs = PAUSE_PERIOD_FRACTION * shortestPeriodMs;
-            if (m.gcMaxPauseMs() > limitMs) {
-                disturbed.add(String.format(Locale.ROOT, "a GC pause of %s ms (longer than %s ms, %.1f of the %s ms period)",
-                        ms(m.gcMaxPauseMs()), ms(limitMs), PAUSE_PERIOD_FRACTION, ms(shortestPeriodMs)));
-            }
+        String stops = null;
+        if (Double.isFinite(shortestPeriodMs) && shortestPeriodMs > 0 && m.longStops() >= 0) {
+            double periods = m.durationS() * 1000.0 / shortestPeriodMs;
             Double ttsp = m.timeToSafepointMaxMs();
-            if (ttsp != null && ttsp > limitMs) {
-                disturbed.add(String.format(Locale.ROOT, "a time to safepoint of %s ms (longer than %s ms, %.1f of the %s ms"
-                        + " period)", ms(ttsp), ms(limitMs), PAUSE_PERIOD_FRACTION, ms(shortestPeriodMs)));
+            stops = String.format(Locale.ROOT, "%d JVM stops longer than %s ms (%.1f of the shortest period, %s ms of wall "
+                    + "time) in %.0f such periods", m.longStops(), ms(m.longStopLimitMs()), PAUSE_PERIOD_FRACTION,
+                    ms(shortestPeriodMs), periods);
+            String longest = "longest GC pause " + ms(m.gcMaxPauseMs()) + " ms, longest time to safepoint "
+                    + (ttsp == null ? "not measured" : ms(ttsp) + " ms");
+            if (m.longStops() > LONG_STOPS_PER_1000_PERIODS_MAX * periods / 1000.0) {
+                disturbed.add(String.format(Locale.ROOT, "%s, more than %.0f per 1000 (%s)", stops,
+                        LONG_STOPS_PER_1000_PERIODS_MAX, longest));
             }
+            stops += " (" + longest + ")";
         }
         if (!busy.isEmpty()) {
             List<String> all = new ArrayList<>(busy);
@@ -102,7 +112,9 @@ public record MachineVerdict(String verdict, List<String> reasons, String contex
         if (Double.isFinite(m.stealPct())) {
             below.add(String.format(Locale.ROOT, "steal %.1f %%", m.stealPct()));
         }
-        if (m.gcCount() > 0) {
+        if (stops != null) {
+            below.add(stops);
+        } else if (m.gcCount() > 0) {
             below.add("longest GC pause " + ms(m.gcMaxPauseMs()) + " ms");
         }
         return new MachineVerdict(QUIET, below, context);

@@ -18,21 +18,27 @@ package io.rtaware.core.conditions;
  * @param safepoints safepoints over the span (JFR's {@code jdk.SafepointBegin}), or -1 where not measured
  * @param timeToSafepointMaxMs the longest time to reach one of them, ms (0 with none), or null where not measured
  * @param safepointNote null when the time to safepoint is measured, else why not
+ * @param longStopLimitMs the length, ms of wall time, above which a JVM stop counts in
+ *     {@code longStops} (a tenth of the run's shortest period in wall time), or NaN when not judged
+ * @param longStops the JVM's stops (a collection's longest pause, a safepoint's time to reach)
+ *     longer than {@code longStopLimitMs}, or -1 when not judged
  * @param involuntarySwitches involuntary context switches of this process's threads over the span
  */
 public record MeasuredConditions(double durationS, double loadStart, double loadEnd, int machineCpus,
                                  double otherCpus, double stealPct, long gcCount, double gcTotalMs,
                                  double gcMaxPauseMs, long safepoints, Double timeToSafepointMaxMs, String safepointNote,
-                                 long involuntarySwitches) {
+                                 double longStopLimitMs, long longStops, long involuntarySwitches) {
 
     /**
      * @param start the counters at the start
      * @param end the counters at the end
      * @param pauses the JVM's pauses over the span, or null when they are not part of it (the
      *     check of the machine before a run)
+     * @param longStopLimitMs the stop length, ms, above which stops are counted, or NaN for none
      * @return the difference
      */
-    public static MeasuredConditions between(HostSample start, HostSample end, JvmProbe.PauseWatch pauses) {
+    public static MeasuredConditions between(HostSample start, HostSample end, JvmProbe.PauseWatch pauses,
+                                             double longStopLimitMs) {
         double durationS = (end.nanoTime() - start.nanoTime()) / 1e9;
         long total = known(start.totalTicks(), end.totalTicks());
         long busy = known(start.busyTicks(), end.busyTicks());
@@ -56,7 +62,8 @@ public record MeasuredConditions(double durationS, double loadStart, double load
                 pauses == null ? 0 : pauses.gcCount(), pauses == null ? 0 : pauses.gcTotalMs(),
                 pauses == null ? 0 : pauses.gcMaxPauseMs(), pauses == null ? -1 : pauses.safepoints(),
                 pauses == null ? null : pauses.maxTimeToSafepointMs(),
-                pauses == null ? "not part of this span" : pauses.safepointNote(), switches);
+                pauses == null ? "not part of this span" : pauses.safepointNote(), longStopLimitMs,
+                pauses == null || Double.isNaN(longStopLimitMs) ? -1 : pauses.stopsLongerThan(longStopLimitMs), switches);
     }
 
     private static long known(long a, long b) {

@@ -6,6 +6,7 @@ import java.lang.management.ManagementFactory;
 import java.lang.management.RuntimeMXBean;
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.atomic.AtomicLong;
@@ -18,19 +19,26 @@ import javax.management.openmbean.CompositeData;
 import jdk.jfr.consumer.RecordingStream;
 
 /**
- * The running JVM, through its management beans: vendor, version, options, collectors and
- * heap; collection pauses from the collectors' notifications (a collector bean whose name says
- * {@code Cycles} or {@code Concurrent} counts concurrent work, not pauses, and is left out);
- * the time to safepoint from JFR event streaming ({@code jdk.SafepointBegin}, whose duration
- * is the time the threads took to stop), except on the Epsilon heap, where nothing is ever
- * collected and JFR's own allocations would fill it. JFR delivers events about once a second, so
- * closing waits (at most 2.5 s) for the buffered ones.
+ * The running JVM, through its management beans and JFR: vendor, version, options, collectors
+ * and heap from the beans; collection pauses and the time to safepoint from JFR event streaming
+ * ({@code jdk.GarbageCollection}, whose {@code sumOfPauses} and {@code longestPause} are in
+ * nanoseconds, so ZGC's sub-millisecond pauses are measured, not rounded down to 0 ms as the
+ * collector beans' whole milliseconds would; {@code jdk.SafepointBegin}, whose duration is the
+ * time the threads took to stop). On the Epsilon heap, where nothing is ever collected and JFR's
+ * own allocations would fill it, or where JFR cannot start, pauses come from the collectors'
+ * notifications instead (a collector bean whose name says {@code Cycles} or {@code Concurrent}
+ * counts concurrent work, not pauses, and is left out) and the time to safepoint is not
+ * measured. JFR delivers events about once a second, so closing waits (at most 2.5 s) for the
+ * buffered ones.
  */
 public final class PlatformJvmProbe implements JvmProbe {
 
     private static final String SAFEPOINT_EVENT = "jdk.SafepointBegin";
+    private static final String GC_EVENT = "jdk.GarbageCollection";
     /** The longest wait at the end for JFR to deliver the events still buffered (it flushes about once a second). */
     private static final long FLUSH_WAIT_MS = 2500;
+    /** Stops kept for {@link PauseWatch#stopsLongerThan}; any beyond count as longer than every limit. */
+    private static final int STOPS_KEPT = 1 << 16;
 
     @Override
     public String vendor() {
@@ -72,7 +80,7 @@ public final class PlatformJvmProbe implements JvmProbe {
         return !n.contains("cycles") && !n.contains("concurrent");
     }
 
-    /** Listens to the collectors and, where it can, streams JFR's safepoint events. */
+    /** Streams JFR's collection and safepoint events where it can, else listens to the collectors. */
     private static final class PlatformPauseWatch implements PauseWatch, NotificationListener {
         private final AtomicLong count = new AtomicLong();
         private final DoubleAdder totalMs = new DoubleAdder();
@@ -82,16 +90,14 @@ public final class PlatformJvmProbe implements JvmProbe {
         private final RecordingStream stream;
         private final String safepointNote;
         private boolean closed;
+        /** Every stop, ms, in the order seen (a handful a minute); past {@link #STOPS_KEPT} only counted. */
+        private double[] stopsMs = new double[64];
+        private int stopsKept;
+        private long stopsNotKept;
         private long flushes;
         private long safepointCount;
 
         PlatformPauseWatch(boolean epsilon) {
-            for (GarbageCollectorMXBean bean : ManagementFactory.getGarbageCollectorMXBeans()) {
-                if (bean instanceof NotificationEmitter emitter && countsPauses(bean.getName())) {
-                    emitter.addNotificationListener(this, null, null);
-                    emitters.add(emitter);
-                }
-            }
             RecordingStream started = null;
             String note = null;
             if (epsilon) {
@@ -101,6 +107,9 @@ public final class PlatformJvmProbe implements JvmProbe {
                     started = new RecordingStream();
                     started.enable(SAFEPOINT_EVENT).withThreshold(Duration.ZERO);
                     started.onEvent(SAFEPOINT_EVENT, e -> safepoint(e.getDuration().toNanos() / 1e6));
+                    started.enable(GC_EVENT).withThreshold(Duration.ZERO);
+                    started.onEvent(GC_EVENT, e -> collected(e.getDuration("sumOfPauses").toNanos() / 1e6,
+                            e.getDuration("longestPause").toNanos() / 1e6));
                     started.onFlush(this::flushed);
                     started.startAsync();
                 } catch (RuntimeException | Error e) {
@@ -113,6 +122,49 @@ public final class PlatformJvmProbe implements JvmProbe {
             }
             stream = started;
             safepointNote = note;
+            if (stream == null) {
+                for (GarbageCollectorMXBean bean : ManagementFactory.getGarbageCollectorMXBeans()) {
+                    if (bean instanceof NotificationEmitter emitter && countsPauses(bean.getName())) {
+                        emitter.addNotificationListener(this, null, null);
+                        emitters.add(emitter);
+                    }
+                }
+            }
+        }
+
+        /** One collection: its pauses summed and its longest, ms. */
+        private void collected(double pausesMs, double longestMs) {
+            count.incrementAndGet();
+            totalMs.add(pausesMs);
+            synchronized (this) {
+                if (longestMs > maxMs) {
+                    maxMs = longestMs;
+                }
+                stopped(longestMs);
+            }
+        }
+
+        /** Keeps one stop's length; called holding the lock. */
+        private void stopped(double ms) {
+            if (stopsKept == STOPS_KEPT) {
+                stopsNotKept++;
+                return;
+            }
+            if (stopsKept == stopsMs.length) {
+                stopsMs = Arrays.copyOf(stopsMs, Math.min(STOPS_KEPT, stopsMs.length * 2));
+            }
+            stopsMs[stopsKept++] = ms;
+        }
+
+        @Override
+        public synchronized long stopsLongerThan(double ms) {
+            long n = stopsNotKept;
+            for (int i = 0; i < stopsKept; i++) {
+                if (stopsMs[i] > ms) {
+                    n++;
+                }
+            }
+            return n;
         }
 
         /** Counts the stream's flushes: each delivered every event recorded before it. */
@@ -136,6 +188,7 @@ public final class PlatformJvmProbe implements JvmProbe {
 
         private synchronized void safepoint(double ms) {
             safepointCount++;
+            stopped(ms);
             if (ms > maxSafepointMs) {
                 maxSafepointMs = ms;
             }
@@ -148,14 +201,8 @@ public final class PlatformJvmProbe implements JvmProbe {
             }
             GarbageCollectionNotificationInfo info =
                     GarbageCollectionNotificationInfo.from((CompositeData) notification.getUserData());
-            double ms = info.getGcInfo().getDuration();
-            count.incrementAndGet();
-            totalMs.add(ms);
-            synchronized (this) {
-                if (ms > maxMs) {
-                    maxMs = ms;
-                }
-            }
+            double ms = info.getGcInfo().getDuration(); // whole milliseconds: the beans say no more
+            collected(ms, ms);
         }
 
         @Override

@@ -41,6 +41,7 @@ class ConditionsMeterTest {
         jvm.gcCount = 3;
         jvm.gcTotalMs = 0.6;
         jvm.gcMaxPauseMs = 0.3;
+        jvm.stopsMs = new double[] {0.3, 0.05, 0.3};
         Conditions c = span.finish(10);
 
         MeasuredConditions m = c.measured();
@@ -59,6 +60,9 @@ class ConditionsMeterTest {
         assertEquals("busy", c.machine());
         assertEquals("machine: busy (other processes used 1.6 of 2 CPUs (more than 0.10); load 14.2 at start)",
                 c.summaryLine());
+        // The 10 ms period at time scale 10 lasts 1 ms on the machine: stops are judged against 0.1 ms.
+        assertEquals(0.1, m.longStopLimitMs(), 1e-12);
+        assertEquals(2, m.longStops());
         StaticConditions s = c.setup();
         assertEquals("AMD EPYC 7B13", s.cpuModel());
         assertEquals(1.5, s.usableCpus(), 1e-12);
@@ -69,6 +73,43 @@ class ConditionsMeterTest {
         assertEquals(10.0, s.timeScale());
         assertEquals("kvm-clock", s.clockSource());
         assertEquals(c, span.finish(10), "a second finish gives the same conditions");
+    }
+
+    @Test
+    void stopsAreJudgedAgainstThePeriodInWallTime(@TempDir Path root) throws IOException {
+        for (double scale : new double[] {1, 10}) {
+            lay("busy-start", root);
+            AtomicLong now = new AtomicLong();
+            FakeJvm jvm = new FakeJvm();
+            ConditionsMeter meter = new ConditionsMeter(new HostReader(new HostFiles(root), now::get), jvm,
+                    new BuildInfo("0.1.0", null));
+            ConditionsMeter.Span span = meter.start(scale, "none");
+            lay("busy-end", root);
+            now.set(10_000_000_000L);
+            jvm.gcCount = 20;
+            jvm.gcMaxPauseMs = 0.5;
+            jvm.stopsMs = new double[20];
+            java.util.Arrays.fill(jvm.stopsMs, 0.5);
+            // 10 s of 100 ms periods: 100 periods at time scale 1 (limit 10 ms, no stop is long), 1000 of 10 ms
+            // at time scale 10 (limit 1 ms): no stop is long either; 20 stops of 0.5 ms only count against 1 ms
+            // periods, i.e. a 10 ms world period at time scale 10.
+            MeasuredConditions slow = span.finish(100).measured();
+            assertEquals(0, slow.longStops());
+            assertEquals(10.0 / scale, slow.longStopLimitMs(), 1e-12);
+        }
+        lay("busy-start", root);
+        FakeJvm jvm = new FakeJvm();
+        AtomicLong now = new AtomicLong();
+        ConditionsMeter.Span span = new ConditionsMeter(new HostReader(new HostFiles(root), now::get), jvm,
+                new BuildInfo("0.1.0", null)).start(10, "none");
+        lay("busy-end", root);
+        now.set(10_000_000_000L);
+        jvm.stopsMs = new double[20];
+        java.util.Arrays.fill(jvm.stopsMs, 0.5);
+        Conditions c = span.finish(10);
+        assertEquals(20, c.measured().longStops(), "0.5 ms stops against the 0.1 ms limit of a 1 ms wall period");
+        assertTrue(c.machineReasons().stream().anyMatch(r -> r.startsWith("20 JVM stops longer than 0.10 ms")),
+                c.machineReasons().toString());
     }
 
     @Test

@@ -9,6 +9,7 @@ final class FakeJvm implements JvmProbe {
     double gcTotalMs;
     double gcMaxPauseMs;
     Double safepointMaxMs;
+    double[] stopsMs = {};
     boolean closed;
 
     @Override
@@ -52,6 +53,11 @@ final class FakeJvm implements JvmProbe {
             @Override
             public double gcMaxPauseMs() {
                 return gcMaxPauseMs;
+            }
+
+            @Override
+            public long stopsLongerThan(double ms) {
+                return java.util.Arrays.stream(stopsMs).filter(s -> s > ms).count();
             }
 
             @Override
