@@ -1,6 +1,7 @@
 package io.rtaware.experiment;
 
 import com.fasterxml.jackson.annotation.JsonProperty;
+import io.rtaware.experiment.stats.RateInterval;
 import io.rtaware.experiment.stats.SampleStats;
 import io.rtaware.experiment.stats.WelchTest;
 import java.util.ArrayList;
@@ -93,6 +94,30 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
         @JsonProperty("collision_rate")
         public Double collisionRate() {
             return measuredRuns == 0 ? null : (double) runsWithCollisions / measuredRuns;
+        }
+
+        /** @return the collision rate with its Wilson 95 % interval, or null with no measured run */
+        public RateInterval collisions95() {
+            return measuredRuns == 0 ? null : RateInterval.of(runsWithCollisions, measuredRuns);
+        }
+
+        /** @return the near-miss rate with its Wilson 95 % interval, or null with no measured run */
+        public RateInterval nearMisses95() {
+            return measuredRuns == 0 ? null : RateInterval.of(runsWithNearMisses, measuredRuns);
+        }
+
+        /** @return {@link #collisions95()}'s interval as {@code [lower, upper]}, 0 to 1, or null */
+        @JsonProperty("collision_rate_ci95")
+        public List<Double> collisionRateCi95() {
+            RateInterval r = collisions95();
+            return r == null ? null : List.of(r.lower(), r.upper());
+        }
+
+        /** @return {@link #nearMisses95()}'s interval as {@code [lower, upper]}, 0 to 1, or null */
+        @JsonProperty("near_miss_rate_ci95")
+        public List<Double> nearMissRateCi95() {
+            RateInterval r = nearMisses95();
+            return r == null ? null : List.of(r.lower(), r.upper());
         }
     }
 

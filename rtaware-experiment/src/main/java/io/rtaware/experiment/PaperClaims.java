@@ -5,6 +5,7 @@ import com.fasterxml.jackson.annotation.JsonValue;
 import io.rtaware.experiment.ExperimentSummary.Misses;
 import io.rtaware.experiment.ExperimentSummary.PairTest;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
+import io.rtaware.experiment.stats.RateInterval;
 import io.rtaware.experiment.stats.WelchTest;
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -12,11 +13,12 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import java.util.Objects;
+import java.util.Optional;
 import java.util.TreeMap;
 import java.util.function.Function;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import org.apache.commons.math3.stat.correlation.SpearmansCorrelation;
 
 /**
@@ -273,12 +275,12 @@ public final class PaperClaims {
         Verdict v = allMost && baselineClean ? Verdict.REPRODUCED : none ? Verdict.NOT_REPRODUCED : Verdict.MIXED;
         List<String> parts = new ArrayList<>();
         for (SetSummary s : above) {
-            parts.add(s.name() + " (" + s.sweptPeriodMs() + " ms): " + s.runsWithCollisions() + " of " + s.measuredRuns()
-                    + " runs collided (" + s.collisions() + " collisions), " + s.completed() + " of " + s.runs() + " completed"
+            parts.add(s.name() + " (" + s.sweptPeriodMs() + " ms): " + s.collisions95().text() + " runs collided ("
+                    + s.collisions() + " collisions), " + s.completed() + " of " + s.runs() + " completed"
                     + (s.nearMisses() == null ? "" : ", " + s.runsWithNearMisses() + " with a near miss"));
         }
         String evidence = String.join("; ", parts) + ". At or below " + SLOW_ABOVE_MS + " ms: "
-                + (belowRuns == 0 ? "no runs" : belowHits + " of " + belowRuns + " runs collided") + ". "
+                + (belowRuns == 0 ? "no runs" : RateInterval.of(belowHits, belowRuns).text() + " runs collided") + ". "
                 + firstCollision(group) + reactionBound(group);
         claims.add(new Claim(claim, v, evidence, "reproduced if every set above " + SLOW_ABOVE_MS
                 + " ms has a collision in at least " + pct(MAJORITY) + " of its runs and the sets at or below "
@@ -301,6 +303,12 @@ public final class PaperClaims {
         }
         var first = axis.stream().filter(s -> s.runsWithCollisions() > 0).min(Comparator.comparingLong(SetSummary::sweptPeriodMs));
         long longest = axis.stream().mapToLong(SetSummary::sweptPeriodMs).max().orElseThrow();
+        if (first.isEmpty() && longest < bound) {
+            notEvaluated.add(new NotEvaluated(claim, "no swept period reaches the rule's largest safe period ("
+                    + num(bound, 1) + " ms; the longest is " + longest + " ms) and no run collided: the runs agree with "
+                    + "the rule without testing it"));
+            return;
+        }
         Verdict v;
         String evidence;
         if (first.isEmpty()) {
@@ -320,15 +328,32 @@ public final class PaperClaims {
                 + "far too cautious); mixed otherwise"));
     }
 
-    private static Double ruleBound(List<SetSummary> group) {
+    /** The reaction rule's largest safe period for one task: the mean over the sets whose runs' advice gave it. */
+    private record Bound(String task, double ms, int sets) {
+    }
+
+    private static Optional<Bound> bound(List<SetSummary> group) {
         for (String task : PeriodSet.TASKS) {
             double[] bounds = group.stream().map(s -> s.misses().get(task).maxSafePeriodMsMean()).filter(Objects::nonNull)
                     .mapToDouble(Double::doubleValue).toArray();
             if (bounds.length > 0) {
-                return java.util.Arrays.stream(bounds).average().orElseThrow();
+                return Optional.of(new Bound(task, java.util.Arrays.stream(bounds).average().orElseThrow(), bounds.length));
             }
         }
-        return null;
+        return Optional.empty();
+    }
+
+    private static Double ruleBound(List<SetSummary> group) {
+        return bound(group).map(Bound::ms).orElse(null);
+    }
+
+    /**
+     * @param sets sets of one top speed
+     * @return the largest safe period the runs' advice gave by the reaction rule (the mean over the
+     *     sets that report it), ms, or null when no run reports one
+     */
+    public static Double reactionRuleBoundMs(List<SetSummary> sets) {
+        return ruleBound(sets);
     }
 
     private static String firstCollision(List<SetSummary> group) {
@@ -344,26 +369,22 @@ public final class PaperClaims {
      *     runs' advice gave by the reaction rule, or "" when no run reports that bound
      */
     static String reactionBound(List<SetSummary> group) {
-        for (String task : PeriodSet.TASKS) {
-            double[] bounds = group.stream().map(s -> s.misses().get(task).maxSafePeriodMsMean()).filter(Objects::nonNull)
-                    .mapToDouble(Double::doubleValue).toArray();
-            if (bounds.length == 0) {
-                continue;
-            }
-            double bound = java.util.Arrays.stream(bounds).average().orElseThrow();
-            String text = " Reaction rule (the runs' advice): largest safe period of " + task + " " + num(bound, 1)
-                    + " ms (mean over " + bounds.length + " set(s)); ";
-            var first = onAxis(group).stream().filter(s -> s.runsWithCollisions() > 0)
-                    .min(Comparator.comparingLong(SetSummary::sweptPeriodMs));
-            if (first.isPresent()) {
-                return text + "the shortest period with a collision, " + first.get().sweptPeriodMs() + " ms, is "
-                        + num(first.get().sweptPeriodMs() / bound, 2) + " x that bound.";
-            }
-            long longest = onAxis(group).stream().mapToLong(SetSummary::sweptPeriodMs).max().orElse(0);
-            return text + "no run collided up to the longest period, " + longest + " ms (" + num(longest / bound, 2)
-                    + " x that bound).";
+        Optional<Bound> found = bound(group);
+        if (found.isEmpty()) {
+            return "";
         }
-        return "";
+        Bound b = found.get();
+        String text = " Reaction rule (the runs' advice): largest safe period of " + b.task() + " " + num(b.ms(), 1)
+                + " ms (mean over " + b.sets() + " set(s)); ";
+        var first = onAxis(group).stream().filter(s -> s.runsWithCollisions() > 0)
+                .min(Comparator.comparingLong(SetSummary::sweptPeriodMs));
+        if (first.isPresent()) {
+            return text + "the shortest period with a collision, " + first.get().sweptPeriodMs() + " ms, is "
+                    + num(first.get().sweptPeriodMs() / b.ms(), 2) + " x that bound.";
+        }
+        long longest = onAxis(group).stream().mapToLong(SetSummary::sweptPeriodMs).max().orElse(0);
+        return text + "no run collided up to the longest period, " + longest + " ms (" + num(longest / b.ms(), 2)
+                + " x that bound).";
     }
 
     private void fast(List<SetSummary> group, String suffix) {

@@ -89,9 +89,10 @@ class PaperClaimsTest {
                 ? new Object[] {"stuck", 120.0, 3.0, r <= 3 ? 2 : 0} : completed(230), FALLING));
         Claim c = claim(reproduced, PaperClaims.SLOW);
         assertEquals(Verdict.REPRODUCED, c.verdict(), c.evidence());
-        assertTrue(c.evidence().contains("obstacle 200 ms (200 ms): 3 of 4 runs collided (6 collisions), 0 of 4 completed"),
+        assertTrue(c.evidence().contains("obstacle 200 ms (200 ms): 3 of 4 (75 %, 95 % CI 30-95 %) runs collided (6 collisions),"
+                + " 0 of 4 completed"),
                 c.evidence());
-        assertTrue(c.evidence().contains("At or below 100 ms: 0 of 20 runs collided"), c.evidence());
+        assertTrue(c.evidence().contains("At or below 100 ms: 0 of 20 (0 %, 95 % CI 0-16 %) runs collided"), c.evidence());
         assertTrue(c.evidence().contains("Shortest period with a collision: 200 ms"), c.evidence());
         assertTrue(c.evidence().contains("Reaction rule (the runs' advice): largest safe period of obstacle 250.0 ms (mean "
                 + "over 8 set(s)); the shortest period with a collision, 200 ms, is 0.80 x that bound."), c.evidence());
@@ -125,6 +126,10 @@ class PaperClaimsTest {
         assertEquals(Verdict.NOT_REPRODUCED, unsafe.verdict(), "collisions below the bound: " + unsafe.evidence());
         Claim cautious = claim(summary(rows(sweep, 2, (s, p, r) -> completed(230), FALLING)), PaperClaims.RULE);
         assertEquals(Verdict.NOT_REPRODUCED, cautious.verdict(), "none up to 800 ms, 3.2 x the bound: " + cautious.evidence());
+        ExperimentSummary belowTheBound = summary(rows(ExperimentSets.resolve("paper"), 2, (s, p, r) -> completed(230),
+                FALLING));
+        assertTrue(notEvaluated(belowTheBound, PaperClaims.RULE), "periods of 10-100 ms against a 250 ms bound and no "
+                + "collision agree with the rule without testing it: " + belowTheBound.claims());
         List<RunResult> corridor = rows(sweep, 2, (s, p, r) -> completed(230), FALLING).stream()
                 .map(r -> new RunResult(r.set(), r.run(), r.periods(), new RunConditions("corridor", 10, 1, null),
                         r.outcome(), r.runTimeS(), r.distanceToFinishM(), r.distanceTravelledM(), r.collisions(),

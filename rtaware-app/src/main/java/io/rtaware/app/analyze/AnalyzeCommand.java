@@ -2,6 +2,7 @@ package io.rtaware.app.analyze;
 
 import io.rtaware.app.UserError;
 import io.rtaware.app.report.ReportSections;
+import io.rtaware.core.conditions.MachineVerdict;
 import io.rtaware.core.report.ReportDocument;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -12,7 +13,8 @@ import picocli.CommandLine.Parameters;
 
 /**
  * {@code rtaware analyze report.json}: prints the period advice and the schedulability analysis
- * of a saved report, exactly as the run's summary printed them.
+ * of a saved report, exactly as the run's summary printed them: with the run's machine verdict
+ * first, and no advice that blames a task for what the verdict blames on the machine.
  */
 @Command(name = "analyze", mixinStandardHelpOptions = true,
         description = {"Print period advice and schedulability for a saved report (rtaware.report/1).",
@@ -39,7 +41,10 @@ public final class AnalyzeCommand implements Callable<Integer> {
             throw new UserError("cannot read report " + file + ": " + why);
         }
         ReportInput.check(doc.report(), file);
-        System.out.print(ReportSections.analyze(doc.report(), cores).text());
+        MachineVerdict machine = ReportSections.machine(doc);
+        System.out.println(machine == null ? "machine: not recorded (a report written before rtaware recorded its"
+                + " run's conditions): the advice cannot tell the machine's share from the tasks'" : machine.text());
+        System.out.print(ReportSections.enrich(doc, cores).text());
         return 0;
     }
 }

@@ -61,22 +61,31 @@ public final class ReportSections {
      */
     public static Analysis enrich(ReportDocument doc, int cores) {
         Analysis analysis = analyze(doc.report(), cores);
-        Object conditions = doc.sections().get(Conditions.SECTION);
-        String machine = null;
-        List<String> reasons = List.of();
-        if (conditions instanceof Conditions c) {
-            machine = c.machine();
-            reasons = c.machineReasons();
-        } else if (conditions instanceof JsonNode node) {
-            machine = node.path("machine").asText(null);
-            List<String> fromJson = new ArrayList<>();
-            node.path("machine_reasons").forEach(r -> fromJson.add(r.asText()));
-            reasons = fromJson;
-        }
+        MachineVerdict verdict = machine(doc);
+        String machine = verdict == null ? null : verdict.verdict();
+        List<String> reasons = verdict == null ? List.of() : verdict.reasons();
         analysis = new Analysis(onMachine(analysis.advice(), machine, reasons), analysis.schedulability());
         doc.section(ADVICE, analysis.advice());
         doc.section(SCHEDULABILITY, analysis.schedulability());
         return analysis;
+    }
+
+    /**
+     * @param doc a run's document, made by the run or read from its report.json
+     * @return the machine verdict of its {@code conditions} section, or null when it has none
+     *     (a report written before rtaware recorded conditions)
+     */
+    public static MachineVerdict machine(ReportDocument doc) {
+        Object conditions = doc.sections().get(Conditions.SECTION);
+        if (conditions instanceof Conditions c) {
+            return new MachineVerdict(c.machine(), c.machineReasons(), "");
+        }
+        if (conditions instanceof JsonNode node && node.path("machine").isTextual()) {
+            List<String> reasons = new ArrayList<>();
+            node.path("machine_reasons").forEach(r -> reasons.add(r.asText()));
+            return new MachineVerdict(node.path("machine").asText(), reasons, "");
+        }
+        return null;
     }
 
     /**

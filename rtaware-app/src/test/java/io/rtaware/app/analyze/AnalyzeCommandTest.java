@@ -71,7 +71,36 @@ class AnalyzeCommandTest {
 
         String[] result = run("analyze", file.toString(), "--cores", "2");
         assertEquals("0", result[0], result[2]);
-        assertEquals(printed, result[1]);
+        assertEquals("machine: not recorded (a report written before rtaware recorded its run's conditions): the advice"
+                + " cannot tell the machine's share from the tasks'" + System.lineSeparator() + printed, result[1]);
+    }
+
+    /**
+     * Issue 26: analyze applies the saved run's machine verdict as the run did: a task whose
+     * execution time nears its period on a busy machine is not told to lengthen it.
+     */
+    @Test
+    void aSavedBusyRunGetsNoAdviceThatBlamesATaskForTheMachine() throws Exception {
+        Percentiles exec = new Percentiles(8000, 9000, 9500, 9900, 8500, 9800);
+        Report report = new Report(Report.SCHEMA, 1.0, 5.0, 0.0, List.of(
+                new TaskReport("heavy", "periodic", 10.0, 10.0, 500, 500, 0, 0, 0, 0, 0, 0, exec, Percentiles.EMPTY)),
+                List.of());
+        Path quiet = dir.resolve("quiet.json");
+        new ReportDocument(report).write(quiet);
+        String[] alone = run("analyze", quiet.toString());
+        assertEquals("0", alone[0], alone[2]);
+        assertTrue(alone[1].contains("exec_near_period"), alone[1]);
+
+        Path busy = dir.resolve("busy.json");
+        JsonNode root = ReportDocument.mapper().readTree(quiet.toFile());
+        ((com.fasterxml.jackson.databind.node.ObjectNode) root).set("conditions", ReportDocument.mapper().readTree(
+                "{\"machine\": \"busy\", \"machine_reasons\": [\"other processes used 1.6 of 2 CPUs (more than 0.10)\"]}"));
+        ReportDocument.mapper().writeValue(busy.toFile(), root);
+        String[] r = run("analyze", busy.toString());
+        assertEquals("0", r[0], r[2]);
+        assertTrue(r[1].startsWith("machine: busy (other processes used 1.6 of 2 CPUs (more than 0.10))"), r[1]);
+        assertTrue(r[1].contains("'heavy': no exec_near_period advice from this run: the machine was busy"), r[1]);
+        assertTrue(!r[1].contains("lengthen the period"), r[1]);
     }
 
     @Test

@@ -2,7 +2,9 @@ package io.rtaware.experiment.report;
 
 import io.rtaware.experiment.ExperimentSummary;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
+import io.rtaware.experiment.PaperClaims;
 import io.rtaware.experiment.PeriodSet;
+import io.rtaware.experiment.stats.RateInterval;
 import io.rtaware.experiment.stats.SampleStats;
 import java.awt.BasicStroke;
 import java.io.IOException;
@@ -11,6 +13,7 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
 import java.util.function.Function;
@@ -21,7 +24,8 @@ import org.knowm.xchart.style.Styler;
 import org.knowm.xchart.style.markers.SeriesMarkers;
 
 /**
- * The figures of a sweep, each as PNG and SVG: completion and collision rate, run time,
+ * The figures of a sweep, each as PNG and SVG: completion and collision rate, collisions and
+ * near misses with their intervals beside the reaction rule's bound (period axis only), run time,
  * distance to the finish and missed deadlines per task, against the swept period (log axis;
  * {@code sweep-*}) and, when the sets differ in top speed, against the speed ({@code speed-*}).
  * One line per top speed on the period figures, one per swept period on the speed figures.
@@ -30,6 +34,11 @@ public final class SweepFigures {
 
     /** Completion and collision rate against the period. */
     public static final String PERIOD_RATES = "sweep-rates";
+    /**
+     * Collision and near-miss rate against the period, each with its Wilson 95 % interval, and
+     * the reaction rule's largest safe period on the same axis.
+     */
+    public static final String PERIOD_SAFETY = "sweep-safety";
     /** Mean run time (completed runs, SD as error bars) against the period. */
     public static final String PERIOD_RUNTIME = "sweep-runtime";
     /** Mean distance to the finish (SD as error bars) against the period. */
@@ -105,6 +114,9 @@ public final class SweepFigures {
         }
         rates.getStyler().setYAxisMin(0.0).setYAxisMax(100.0);
         Figures.save(rates, dir, prefix + "rates");
+        if (axis.log()) {
+            safety(summary, lines, axis, dir);
+        }
 
         XYChart runtime = chart("Run time of the completed runs against the " + against + " (mean, SD as bars)", axis,
                 "run time (s, world time)");
@@ -135,6 +147,54 @@ public final class SweepFigures {
         }
         misses.getStyler().setYAxisMin(0.0);
         Figures.save(misses, dir, prefix + "misses");
+    }
+
+    /**
+     * The safety figure of the period axis: per line, the collision and the near-miss rate with
+     * their intervals as vertical segments, and a vertical line at each line's reaction-rule
+     * bound (the largest safe period the runs' advice gave), when the runs report one.
+     */
+    private static void safety(ExperimentSummary summary, Map<String, List<SetSummary>> lines, Axis axis, Path dir)
+            throws IOException {
+        XYChart chart = chart("Runs with a collision or a near miss against the period (95 % Wilson intervals)", axis,
+                "runs (%)");
+        int colour = 0;
+        for (Map.Entry<String, List<SetSummary>> e : lines.entrySet()) {
+            String suffix = lines.size() > 1 ? " (" + e.getKey() + ")" : "";
+            List<SetSummary> sets = e.getValue().stream().filter(s -> s.measuredRuns() > 0).toList();
+            interval(chart, "collided" + suffix, sets, axis, SetSummary::collisions95, colour, SOLID);
+            interval(chart, "near miss" + suffix, sets, axis, SetSummary::nearMisses95, colour + 1, DASHES[1]);
+            Double bound = PaperClaims.reactionRuleBoundMs(e.getValue());
+            if (bound != null) {
+                XYSeries line = chart.addSeries(String.format(Locale.ROOT,
+                        "reaction rule's largest safe period %.1f ms", bound) + suffix, List.of(bound, bound), List.of(0.0, 100.0));
+                line.setLineColor(Figures.colour(colour + 2));
+                line.setMarker(SeriesMarkers.NONE);
+                line.setLineStyle(new BasicStroke(2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, DASHES[2], 0f));
+            }
+            colour += 3;
+        }
+        chart.getStyler().setYAxisMin(0.0).setYAxisMax(100.0);
+        Figures.save(chart, dir, PERIOD_SAFETY);
+    }
+
+    /** A rate with its interval: the points joined by a line, each interval a segment of its own. */
+    private static void interval(XYChart chart, String name, List<SetSummary> sets, Axis axis,
+                                 Function<SetSummary, RateInterval> rate, int colour, float[] dash) {
+        if (sets.isEmpty()) {
+            return;
+        }
+        add(chart, name, sets, axis, s -> 100 * rate.apply(s).rate(), s -> null, colour, dash);
+        for (SetSummary s : sets) {
+            RateInterval r = rate.apply(s);
+            double x = axis.x().apply(s);
+            XYSeries segment = chart.addSeries(name + " interval at " + s.sweptPeriodMs() + " ms", List.of(x, x),
+                    List.of(100 * r.lower(), 100 * r.upper()));
+            segment.setLineColor(Figures.colour(colour));
+            segment.setMarker(SeriesMarkers.NONE);
+            segment.setLineStyle(new BasicStroke(1f));
+            segment.setShowInLegend(false);
+        }
     }
 
     private static Map<String, List<SetSummary>> lines(ExperimentSummary summary, Axis axis) {
