@@ -303,6 +303,10 @@ public final class PaperClaims {
         }
         var first = axis.stream().filter(s -> s.runsWithCollisions() > 0).min(Comparator.comparingLong(SetSummary::sweptPeriodMs));
         long longest = axis.stream().mapToLong(SetSummary::sweptPeriodMs).max().orElseThrow();
+        if (bound <= 0) {
+            noSafePeriod(claim, axis, first);
+            return;
+        }
         if (first.isEmpty() && longest < bound) {
             notEvaluated.add(new NotEvaluated(claim, "no swept period reaches the rule's largest safe period ("
                     + num(bound, 1) + " ms; the longest is " + longest + " ms) and no run collided: the runs agree with "
@@ -326,6 +330,24 @@ public final class PaperClaims {
                 + "lies between the bound and " + num(RULE_NEAR, 1) + " x the bound; not reproduced if runs collided below "
                 + "the bound (the rule is unsafe) or none collided up to beyond " + num(RULE_NEAR, 1) + " x it (the rule is "
                 + "far too cautious); mixed otherwise"));
+    }
+
+    /**
+     * The reaction rule found no safe period (its bound is 0 in every run that gave one): it
+     * predicts collisions from the shortest period on.
+     */
+    private void noSafePeriod(String claim, List<SetSummary> axis, Optional<SetSummary> first) {
+        SetSummary shortest = axis.stream().min(Comparator.comparingLong(SetSummary::sweptPeriodMs)).orElseThrow();
+        Verdict v = first.isEmpty() ? Verdict.NOT_REPRODUCED
+                : first.get() == shortest ? Verdict.REPRODUCED : Verdict.MIXED;
+        List<String> parts = new ArrayList<>();
+        for (SetSummary s : axis) {
+            parts.add(s.sweptPeriodMs() + " ms " + s.collisions95().text());
+        }
+        claims.add(new Claim(claim, v, "the rule finds no safe period (the input's age and the stopping distance alone "
+                + "use up the avoider's range); runs with a collision: " + String.join("; ", parts) + ".",
+                "where the rule finds no safe period: reproduced if runs collided already at the shortest swept period; "
+                        + "not reproduced if no run collided at any period; mixed otherwise"));
     }
 
     /** The reaction rule's largest safe period for one task: the mean over the sets whose runs' advice gave it. */
@@ -374,6 +396,10 @@ public final class PaperClaims {
             return "";
         }
         Bound b = found.get();
+        if (b.ms() <= 0) {
+            return " Reaction rule (the runs' advice): no period of " + b.task() + " is safe (the input's age and the "
+                    + "stopping distance alone use up its range).";
+        }
         String text = " Reaction rule (the runs' advice): largest safe period of " + b.task() + " " + num(b.ms(), 1)
                 + " ms (mean over " + b.sets() + " set(s)); ";
         var first = onAxis(group).stream().filter(s -> s.runsWithCollisions() > 0)

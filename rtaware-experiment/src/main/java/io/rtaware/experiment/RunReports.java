@@ -85,15 +85,17 @@ public final class RunReports {
 
     /**
      * @param advice the report's {@code advice} section (a list of items), or null
-     * @return per task, {@code evidence.max_safe_period_ms} of its {@code reaction} item, where positive
+     * @return per task, {@code evidence.max_safe_period_ms} of its {@code reaction} item, or 0 where
+     *     the rule finds no safe period (the item's bound is zero or negative: the input's age and the
+     *     stopping distance alone use up the range)
      */
     private static Map<String, Double> maxSafePeriods(Object advice) {
         Map<String, Double> safe = new LinkedHashMap<>();
         if (advice instanceof JsonNode items && items.isArray()) {
             for (JsonNode item : items) {
                 JsonNode bound = item.path("evidence").path("max_safe_period_ms");
-                if ("reaction".equals(item.path("rule").asText()) && bound.isNumber() && bound.asDouble() > 0) {
-                    safe.put(item.path("task").asText(), bound.asDouble());
+                if ("reaction".equals(item.path("rule").asText()) && bound.isNumber()) {
+                    safe.put(item.path("task").asText(), Math.max(0, bound.asDouble()));
                 }
             }
         }

@@ -28,6 +28,9 @@ class PaperClaimsTest {
         Object[] of(PeriodSet s, long periodMs, int run);
     }
 
+    /** The obstacle task's largest safe period in every synthetic run's advice, ms (0: the rule finds none). */
+    private double obstacleBoundMs = 250.0;
+
     private List<RunResult> rows(List<PeriodSet> sets, int runs, Outcome outcome, ToDoubleBiFunction<String, Long> missPct) {
         List<RunResult> rows = new ArrayList<>();
         for (int run = 1; run <= runs; run++) {
@@ -44,7 +47,7 @@ class PaperClaimsTest {
                         double pct = missPct.applyAsDouble(t, s.periodsMs().get(t));
                         long misses = Math.round(pct * 100);
                         tasks.put(t, new TaskResult(10_000, misses, 100.0 * misses / 10_000, 0, 50, misses / 2,
-                                "obstacle".equals(t) ? 250.0 : null));
+                                "obstacle".equals(t) ? obstacleBoundMs : null));
                     }
                 }
                 rows.add(new RunResult(i + 1, run, s, CONDITIONS, (String) o[0], (double) o[1], (double) o[2], 20.0,
@@ -139,6 +142,24 @@ class PaperClaimsTest {
                 "another course is named in the claim: " + onCorridor.claims());
         assertTrue(claim(onCorridor, PaperClaims.SLOW + " on corridor").evidence().contains("2 with a near miss"),
                 "near misses in the evidence");
+    }
+
+    @Test
+    void whereTheRuleFindsNoSafePeriodCollisionsFromTheShortestPeriodReproduceIt() {
+        obstacleBoundMs = 0; // "cannot react in time at any period"
+        List<PeriodSet> sweep = ExperimentSets.resolve("sweep-obstacle");
+        Claim everywhere = claim(summary(rows(sweep, 3, (s, p, r) -> r == 1
+                ? new Object[] {"stuck", 120.0, 3.0, 1} : completed(230), FALLING)), PaperClaims.RULE);
+        assertEquals(Verdict.REPRODUCED, everywhere.verdict(), everywhere.evidence());
+        assertTrue(everywhere.evidence().startsWith("the rule finds no safe period"), everywhere.evidence());
+        assertTrue(everywhere.evidence().contains("5 ms 1 of 3 (33 %, 95 % CI 6-79 %)"), everywhere.evidence());
+        Claim late = claim(summary(rows(sweep, 3, (s, p, r) -> p >= 200 && r == 1
+                ? new Object[] {"stuck", 120.0, 3.0, 1} : completed(230), FALLING)), PaperClaims.RULE);
+        assertEquals(Verdict.MIXED, late.verdict(), late.evidence());
+        Claim never = claim(summary(rows(sweep, 3, (s, p, r) -> completed(230), FALLING)), PaperClaims.RULE);
+        assertEquals(Verdict.NOT_REPRODUCED, never.verdict(), never.evidence());
+        Claim slow = claim(summary(rows(sweep, 3, (s, p, r) -> completed(230), FALLING)), PaperClaims.SLOW);
+        assertTrue(slow.evidence().contains("no period of obstacle is safe"), slow.evidence());
     }
 
     @Test

@@ -98,7 +98,7 @@ public final class ExperimentCommand implements Callable<Integer> {
             description = "Seed of run 1; run j of every set uses S + j - 1 (default: ${DEFAULT-VALUE}).")
     long seed;
 
-    @Option(names = "--robot-seed", defaultValue = "1", paramLabel = "S",
+    @Option(names = "--robot-seed", defaultValue = "4", paramLabel = "S",
             description = "Seed of the simulated robot's systematic odometry errors: every run drives this one robot, as the paper's trials used one Koala (default: ${DEFAULT-VALUE}).")
     long robotSeed;
 

@@ -27,6 +27,7 @@ public final class Ros2SimServe {
      * @param config the Player server's port, listen address and limits
      * @param timeScale world seconds per wall second
      * @param seed seed of the sensor noise
+     * @param robotSeed seed of the robot's systematic odometry errors
      * @param ros2 the ROS 2 options
      * @param out where the start lines go
      * @throws IOException if the Player port cannot be bound
@@ -35,12 +36,12 @@ public final class Ros2SimServe {
      *     endpoint cannot be bound
      */
     public static void serveUntilInterrupted(String scenario, ServerConfig config, double timeScale, long seed,
-                                             Ros2Options ros2, PrintStream out) throws IOException {
+                                             long robotSeed, Ros2Options ros2, PrintStream out) throws IOException {
         Scenario s = ScenarioLoader.load(scenario);
         ScaledClock clock = new ScaledClock(timeScale);
         String listen = ros2.listen() != null ? ros2.listen() : Ros2Wiring.freeLoopbackEndpoint();
         List<String> connect = ros2.routerEndpoint().map(List::of).orElse(List.of());
-        try (PlayerSimServer server = SimCommandSupport.start(s, clock, config, seed)) {
+        try (PlayerSimServer server = SimCommandSupport.start(s, clock, config, seed, robotSeed)) {
             Ros2Context context = Ros2Wiring.open(connect, List.of(listen), ros2.topics().domain());
             try (Ros2SimRobot robot = Ros2SimRobot.start(server, context, ros2.topics().namespace(),
                     line -> out.println("rtaware-sim: " + line))) {

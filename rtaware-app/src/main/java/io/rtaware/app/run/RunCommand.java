@@ -53,7 +53,7 @@ public final class RunCommand implements Callable<Integer> {
     @Option(names = "--seed", defaultValue = "1", description = "Seed of this run's noise: laser ranges, odometry increments (default: ${DEFAULT-VALUE}).")
     long seed;
 
-    @Option(names = "--robot-seed", defaultValue = "1", paramLabel = "S",
+    @Option(names = "--robot-seed", defaultValue = "4", paramLabel = "S",
             description = {"Seed of the simulated robot's systematic odometry errors (scale, heading, drift), drawn once per robot:",
                     "the same robot seed is the same robot in every run, as the paper used one Koala (default: ${DEFAULT-VALUE})."})
     long robotSeed;

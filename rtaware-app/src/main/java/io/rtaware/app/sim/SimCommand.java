@@ -38,6 +38,11 @@ public final class SimCommand implements Callable<Integer> {
     @Option(names = "--seed", defaultValue = "1", description = "Seed of the sensor noise (default: ${DEFAULT-VALUE}).")
     long seed;
 
+    @Option(names = "--robot-seed", defaultValue = "4", paramLabel = "S",
+            description = "Seed of the simulated robot's systematic odometry errors: the same seed is the same robot, "
+                    + "as in 'rtaware run --robot-seed' (default: ${DEFAULT-VALUE}).")
+    long robotSeed;
+
     @Option(names = "--bind", defaultValue = ServerConfig.LOOPBACK, paramLabel = "ADDR",
             description = "Listen address (default: ${DEFAULT-VALUE}); 0.0.0.0 exposes the simulator to other machines.")
     String bind;
@@ -76,9 +81,10 @@ public final class SimCommand implements Callable<Integer> {
         try {
             Optional<Ros2Options> ros2Options = ros2.options();
             if (ros2Options.isPresent()) {
-                Ros2SimServe.serveUntilInterrupted(scenario, config, timeScale, seed, ros2Options.get(), System.out);
+                Ros2SimServe.serveUntilInterrupted(scenario, config, timeScale, seed, robotSeed, ros2Options.get(),
+                        System.out);
             } else {
-                SimCommandSupport.serveUntilInterrupted(scenario, config, timeScale, seed, System.out);
+                SimCommandSupport.serveUntilInterrupted(scenario, config, timeScale, seed, robotSeed, System.out);
             }
         } catch (ScenarioException e) {
             throw new UserError(e.getMessage());

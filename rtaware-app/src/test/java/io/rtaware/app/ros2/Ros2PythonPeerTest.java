@@ -83,7 +83,7 @@ class Ros2PythonPeerTest {
                 new InputStreamReader(router.getInputStream(), StandardCharsets.UTF_8))) {
             assertEquals("ready", routerOut.readLine(), "the Python router started");
             try (PlayerSimServer server = SimCommandSupport.start(ScenarioLoader.load("paper-room"), new SystemClock(),
-                         ServerConfig.defaults(0), 1);
+                         ServerConfig.defaults(0), 1, 4);
                  Ros2SimRobot robot = Ros2SimRobot.start(server, openThrough(endpoint), "/", line -> { })) {
                 Pose2d start = server.groundTruth();
                 Process peer = new ProcessBuilder(python, script.toString(), "check", "--router", endpoint,

@@ -58,7 +58,7 @@ class Ros2SimRobotCommandersTest {
         }
         List<String> reported = new CopyOnWriteArrayList<>();
         try (PlayerSimServer server = SimCommandSupport.start(ScenarioLoader.load("paper-room"), new SystemClock(),
-                     ServerConfig.defaults(0), 1);
+                     ServerConfig.defaults(0), 1, 4);
              Ros2SimRobot robot = Ros2SimRobot.start(server,
                      Ros2Context.open(ZenohConfig.loopbackPeer().withListen(List.of(endpoint)), 0), "/", reported::add);
              Ros2Context controller = Ros2Context.open(ZenohConfig.loopbackPeer().withConnect(List.of(endpoint)), 0);

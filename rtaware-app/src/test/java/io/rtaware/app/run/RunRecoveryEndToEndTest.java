@@ -54,7 +54,7 @@ class RunRecoveryEndToEndTest {
     private PlayerSimServer startSim(int port) throws Exception {
         scenarioFile = Path.of(Objects.requireNonNull(getClass().getResource("/scenarios/short-leg.yaml")).toURI());
         scenario = ScenarioLoader.load(scenarioFile);
-        return SimCommandSupport.start(scenario, Clock.forTimeScale(TIME_SCALE), ServerConfig.defaults(port), SEED);
+        return SimCommandSupport.start(scenario, Clock.forTimeScale(TIME_SCALE), ServerConfig.defaults(port), SEED, SEED);
     }
 
     private CompletableFuture<Integer> runAgainst(int port, Path out) {

@@ -165,7 +165,7 @@ public final class SweepFigures {
             interval(chart, "collided" + suffix, sets, axis, SetSummary::collisions95, colour, SOLID);
             interval(chart, "near miss" + suffix, sets, axis, SetSummary::nearMisses95, colour + 1, DASHES[1]);
             Double bound = PaperClaims.reactionRuleBoundMs(e.getValue());
-            if (bound != null) {
+            if (bound != null && bound > 0) {
                 XYSeries line = chart.addSeries(String.format(Locale.ROOT,
                         "reaction rule's largest safe period %.1f ms", bound) + suffix, List.of(bound, bound), List.of(0.0, 100.0));
                 line.setLineColor(Figures.colour(colour + 2));

@@ -29,14 +29,15 @@ public final class SimCommandSupport {
      * @param clock world time (share it with the controller in the same process)
      * @param config address, port and limits
      * @param seed seed of all sensor noise
+     * @param robotSeed seed of the robot's systematic odometry errors (one robot per seed)
      * @return the running server; close it when done
      * @throws IOException if the port cannot be bound
      * @throws IllegalArgumentException if the scenario has no map
      */
-    public static PlayerSimServer start(Scenario scenario, Clock clock, ServerConfig config, long seed)
+    public static PlayerSimServer start(Scenario scenario, Clock clock, ServerConfig config, long seed, long robotSeed)
             throws IOException {
         return start(scenario, scenario.robot().orElseGet(() -> RobotModel.koala(RobotModel.PAPER_TOP_SPEED_MPS)),
-                clock, config, seed);
+                clock, config, seed, robotSeed);
     }
 
     /**
@@ -100,15 +101,16 @@ public final class SimCommandSupport {
      *     any free port; the bound port is printed) and limits
      * @param timeScale world seconds per wall second, positive
      * @param seed seed of all sensor noise
+     * @param robotSeed seed of the robot's systematic odometry errors
      * @param out where the one-line start message goes
      * @throws IOException if the port cannot be bound
      * @throws io.rtaware.sim.scenario.ScenarioException if the scenario cannot be loaded
      */
     public static void serveUntilInterrupted(String scenario, ServerConfig config, double timeScale, long seed,
-                                             PrintStream out) throws IOException {
+                                             long robotSeed, PrintStream out) throws IOException {
         Scenario s = ScenarioLoader.load(scenario);
         ScaledClock clock = new ScaledClock(timeScale);
-        try (PlayerSimServer server = start(s, clock, config, seed)) {
+        try (PlayerSimServer server = start(s, clock, config, seed, robotSeed)) {
             out.println(startLine(s, config, server.port(), timeScale, seed));
             out.flush();
             waitUntilInterrupted();

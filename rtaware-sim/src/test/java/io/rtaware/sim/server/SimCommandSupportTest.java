@@ -20,7 +20,7 @@ class SimCommandSupportTest {
     void scaledClockServerPublishesAtWorldTimeRates() throws Exception {
         ScaledClock clock = new ScaledClock(20.0);
         try (PlayerSimServer server = SimCommandSupport.start(ScenarioLoader.load("paper-room"), clock,
-                ServerConfig.defaults(0), 5L);
+                ServerConfig.defaults(0), 5L, 5L);
              RawClient c = new RawClient(server.port())) {
             PlayerSimServerTest.dataMode(c, Subtypes.DATAMODE_PULL);
             PlayerSimServerTest.subscribe(c, Interfaces.POSITION2D);
@@ -55,7 +55,7 @@ class SimCommandSupportTest {
         Scenario s = new Scenario("bare", Optional.empty(), io.rtaware.robot.geometry.Pose2d.ORIGIN,
                 List.of(new Point2d(1, 1)), 0.3, 10);
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> SimCommandSupport.start(s, new ScaledClock(1), ServerConfig.defaults(0), 1L));
+                () -> SimCommandSupport.start(s, new ScaledClock(1), ServerConfig.defaults(0), 1L, 1L));
         assertTrue(e.getMessage().contains("bare"));
     }
 
