@@ -265,7 +265,7 @@ public final class RobotRun {
                 if (console != null) {
                     console.close();
                 }
-                state.end(RunOutcome.INTERRUPTED, "interrupted (Ctrl-C or SIGTERM)");
+                state.end(RunOutcome.INTERRUPTED, "interrupted (Ctrl-C or SIGTERM)", clock.nanos());
                 Referee referee = state.referee();
                 if (referee != null) {
                     referee.close(); // closes the pose source too
@@ -285,7 +285,7 @@ public final class RobotRun {
                 double[] safety = server != null
                         ? server.withWorld(w -> new double[] {w.minClearanceM(), w.nearMisses()}) : null;
                 RunSection run = runSection(scenario, nav, course, referee, state.ending(),
-                        clock.nanos() - state.startNs(), collisions, server != null, List.copyOf(passes), model,
+                        state.elapsedNs(clock.nanos()), collisions, server != null, List.copyOf(passes), model,
                         robotErrors, safety);
                 live.finish(report, run);
                 if (link != null) {
@@ -455,7 +455,7 @@ public final class RobotRun {
             RunState.Ending ending = supervisor.check();
             recordPasses(scenario, view.course(), view.odometry(), truthNow, elapsedS, passes);
             if (ending != null) {
-                state.end(ending.outcome(), ending.reason());
+                state.end(ending.outcome(), ending.reason(), clock.nanos());
                 if (!options.quiet()) {
                     monitor.read(nav.keys().course(), course);
                     printStatus(monitor, nav, course, elapsedS, referee, tty);

@@ -26,6 +26,7 @@ final class RunState {
 
     private final AtomicReference<Ending> ending = new AtomicReference<>();
     private volatile long startNs;
+    private volatile long endedNs;
     private volatile Referee referee;
     private volatile Supervisor supervisor;
 
@@ -62,12 +63,31 @@ final class RunState {
     }
 
     /**
-     * Records the ending unless one was recorded already.
+     * Records the ending, and when it happened, unless one was recorded already.
      *
+     * @param outcome how the run ended
+     * @param reason why, in words
+     * @param atNs world time of the ending (when the supervisor saw the finish, the time limit, ...)
      * @return true if this call set it
      */
-    boolean end(RunOutcome outcome, String reason) {
-        return ending.compareAndSet(null, new Ending(outcome, reason));
+    boolean end(RunOutcome outcome, String reason, long atNs) {
+        if (!ending.compareAndSet(null, new Ending(outcome, reason))) {
+            return false;
+        }
+        endedNs = atNs;
+        return true;
+    }
+
+    /**
+     * The run's duration in world time: from the start to the ending, not to the moment the
+     * report is written. Stopping the tasks, the referee and the console takes wall time that, at
+     * {@code --time-scale 10}, would add up to ten times as much world time to a run that is over.
+     *
+     * @param nowNs world time now, used while no ending is recorded
+     * @return world nanoseconds from the start to the ending (or to now)
+     */
+    long elapsedNs(long nowNs) {
+        return (ending.get() == null ? nowNs : endedNs) - startNs;
     }
 
     /** @return the ending, or null while the run goes on */

@@ -159,8 +159,10 @@ class SupervisorTest {
         assertEquals(42, state.startNs(), "Ctrl-C before the start measures from the state's creation");
         assertNull(state.referee());
         assertEquals(0, state.stallEdges());
-        assertTrue(state.end(RunOutcome.STUCK, "stuck"));
-        assertTrue(!state.end(RunOutcome.INTERRUPTED, "interrupted"));
+        assertEquals(100 - 42, state.elapsedNs(100), "while the run goes on: to now");
+        assertTrue(state.end(RunOutcome.STUCK, "stuck", 142));
+        assertTrue(!state.end(RunOutcome.INTERRUPTED, "interrupted", 900));
         assertEquals(RunOutcome.STUCK, state.outcome());
+        assertEquals(100, state.elapsedNs(1_000), "the run's time ends at its ending, not when the report is written");
     }
 }
