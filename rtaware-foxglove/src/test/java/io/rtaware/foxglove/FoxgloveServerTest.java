@@ -4,10 +4,12 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import io.rtaware.record.TapChannel;
 import java.io.IOException;
+import java.lang.management.ManagementFactory;
 import java.net.Socket;
 import java.net.URI;
 import java.net.http.HttpClient;
@@ -259,6 +261,31 @@ class FoxgloveServerTest {
         }
         barrier(slow);
         assertEquals(0, slow.queued(), "exactly what was counted as sent");
+    }
+
+    @Test
+    void aMessageNoClientSubscribedToAllocatesNothingOnTheWritersThread() throws Exception {
+        com.sun.management.ThreadMXBean threads =
+                (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        assumeTrue(threads.isThreadAllocatedMemorySupported(), "thread allocation counting unsupported");
+        FoxgloveServer server = server(4, 1 << 20);
+        WsClient c = connected(server); // connected, subscribed to nothing
+        byte[] data = new byte[512];
+        long id = Thread.currentThread().getId();
+        long allocated = Long.MAX_VALUE;
+        for (int round = 0; round < 5; round++) {
+            long before = threads.getThreadAllocatedBytes(id);
+            for (int i = 0; i < 20_000; i++) {
+                server.message(1, i, data, 0, data.length);
+                server.message(3, i, data, 0, data.length); // latched: kept, in a buffer of its own
+                server.message(99, i, data, 0, data.length); // no such channel
+            }
+            allocated = Math.min(allocated, threads.getThreadAllocatedBytes(id) - before);
+        }
+        assertEquals(0, allocated, "bytes allocated handing over 60 000 messages nobody subscribed to");
+        barrier(c);
+        assertEquals(0, c.queued(), "nothing sent");
+        assertEquals(0, server.stats().messagesSent() + server.stats().messagesDropped(), server.stats().toString());
     }
 
     @Test
