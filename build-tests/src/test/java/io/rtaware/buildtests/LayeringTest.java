@@ -126,6 +126,24 @@ class LayeringTest {
     }
 
     @Test
+    void theFoxgloveServerMayNotReachTheLiveViewAboveTheRecorder() throws Exception {
+        // The real foxglove pom (foxglove -> record only); record and live stubs. Foxglove asks for live.
+        write("pom.xml", parentedPom("", "layering-fixture", "pom",
+                "  <modules>\n    <module>rtaware-record</module>\n    <module>rtaware-live</module>\n"
+                        + "    <module>rtaware-foxglove</module>\n  </modules>\n"));
+        write("rtaware-record/pom.xml", parentedPom("rtaware-record", "rtaware-record", "jar", ""));
+        write("rtaware-live/pom.xml", parentedPom("rtaware-live", "rtaware-live", "jar", ""));
+        write("rtaware-foxglove/pom.xml", withDependency(realPom("rtaware-foxglove"), "io.rtaware", "rtaware-live"));
+
+        Result result = maven("validate");
+
+        assertNotEquals(0, result.status(), "the build fails:\n" + result.output());
+        assertTrue(result.output().contains("an arrow pointing up: rtaware-foxglove may depend only on the modules below it"),
+                "the layering rule names the module:\n" + result.output());
+        assertTrue(result.output().contains("io.rtaware:rtaware-live"), "and the dependency:\n" + result.output());
+    }
+
+    @Test
     void aDependencyUsedButNotDeclaredOrDeclaredButNotUsedFailsTheBuild() throws Exception {
         // Declares databind and HdrHistogram; uses jackson-core (only transitive) and not HdrHistogram.
         write("pom.xml", parentedPom("", "undeclared-fixture", "jar", """

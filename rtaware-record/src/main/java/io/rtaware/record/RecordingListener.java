@@ -9,7 +9,6 @@ import io.rtaware.core.monitor.TaskInfo;
 import io.rtaware.core.task.ErrorPolicy;
 import java.io.IOException;
 import java.nio.file.Path;
-import java.time.Instant;
 import java.util.List;
 
 /**
@@ -31,19 +30,14 @@ public final class RecordingListener implements MonitorListener {
      * ({@link RecordingPlan#logTimeOffsetNs}), both kept in the metadata.
      *
      * @param monitor a monitor that has not started yet
-     * @param file the MCAP file
+     * @param file the MCAP file, or null to record for the plan's {@link RecordingPlan#tap} alone (a
+     *     live server without a file)
      * @param plan topics, metadata, sizes
      * @return the recorder; call {@link RunRecorder#finish()} once the monitor has stopped
      * @throws IOException if the file cannot be written
      */
     public static RunRecorder attach(Monitor monitor, Path file, RecordingPlan plan) throws IOException {
-        Instant wallStart = Instant.now();
-        long worldStartNs = monitor.clock().nanos();
-        long wallStartNs = wallStart.getEpochSecond() * 1_000_000_000L + wallStart.getNano();
-        plan.metadata(RecordingPlan.WALL_CLOCK_START_NS, Long.toString(wallStartNs))
-                .metadata(RecordingPlan.WORLD_START_NS, Long.toString(worldStartNs))
-                .worldStartNs(worldStartNs)
-                .logTimeOffsetNs(wallStartNs - worldStartNs);
+        plan.startingNow(monitor.clock().nanos());
         List<String> names = monitor.tasks().stream().map(TaskInfo::name).toList();
         List<List<String>> inputs = monitor.tasks().stream().map(TaskInfo::inputKeys).toList();
         RunRecorder recorder = new RunRecorder(file, names, inputs, monitor.keys(), plan);

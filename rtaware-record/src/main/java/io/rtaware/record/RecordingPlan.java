@@ -1,6 +1,7 @@
 package io.rtaware.record;
 
 import io.rtaware.record.mcap.Compression;
+import java.time.Instant;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -54,6 +55,7 @@ public final class RecordingPlan {
     private long valueBytesPerKey = 4L << 20;
     private int cycleSlots = 16384;
     private int eventSlots = 4096;
+    private RecordingTap tap;
 
     /**
      * @param key a key name
@@ -157,6 +159,40 @@ public final class RecordingPlan {
     public String[] transformsOf(String key) {
         String[] frames = transformsFrom.get(key);
         return frames == null ? null : frames.clone();
+    }
+
+    /**
+     * Shows every channel and message of the recording to a tap as well (a live server), or, with
+     * no file, to the tap alone ({@link RecordingListener#attach}).
+     *
+     * @param value the tap, or null for none
+     * @return this plan
+     */
+    public RecordingPlan tap(RecordingTap value) {
+        tap = value;
+        return this;
+    }
+
+    /** @return the tap, or null */
+    public RecordingTap tap() {
+        return tap;
+    }
+
+    /**
+     * Starts the recording's clock now: log times become Unix-epoch ns, the wall clock now plus
+     * the world time since ({@link #logTimeOffsetNs}), with the wall-clock start and the world
+     * time at it kept in the {@code rtaware.run} metadata so that readers recover world time.
+     *
+     * @param worldNowNs the world time now
+     * @return this plan
+     */
+    public RecordingPlan startingNow(long worldNowNs) {
+        Instant wallStart = Instant.now();
+        long wallStartNs = wallStart.getEpochSecond() * 1_000_000_000L + wallStart.getNano();
+        return metadata(WALL_CLOCK_START_NS, Long.toString(wallStartNs))
+                .metadata(WORLD_START_NS, Long.toString(worldNowNs))
+                .worldStartNs(worldNowNs)
+                .logTimeOffsetNs(wallStartNs - worldNowNs);
     }
 
     /**

@@ -3,7 +3,7 @@ package io.rtaware.record;
 /**
  * What a recording holds: the {@code recording} section of a run's report.
  *
- * @param file the MCAP file
+ * @param file the MCAP file, or null for a recording made for a {@link RecordingTap} alone
  * @param messages messages written
  * @param bytes the file's size in bytes
  * @param dropped records dropped because the writer fell behind (its rings were full)

@@ -16,6 +16,9 @@ import java.util.Map;
  * {@code topic_type_hash} where the type's RIHS01 hash is known), and at the end the
  * {@code rosbag2} metadata record ({@link #writeBagMetadata}). QoS and bag metadata are in the
  * form of rosbag2's metadata version {@value #BAG_VERSION} (Jazzy: QoS policies as numbers).
+ * Every channel is declared to the plan's {@link RecordingTap} too, if it has one; without a
+ * file (a recording for its tap alone) the channels are numbered here as the file would number
+ * them, from 1.
  */
 final class Ros2Channels {
 
@@ -55,15 +58,22 @@ final class Ros2Channels {
     }
 
     private final McapWriter writer;
+    private final RecordingTap tap;
     private final Map<String, Integer> schemas = new HashMap<>();
     private final List<Channel> channels = new ArrayList<>();
 
-    Ros2Channels(McapWriter writer) {
+    /**
+     * @param writer the file, or null when recording for the tap alone
+     * @param tap what else is told of every channel, or null
+     */
+    Ros2Channels(McapWriter writer, RecordingTap tap) {
         this.writer = writer;
+        this.tap = tap;
     }
 
     /**
-     * Adds a channel, or returns the one of the same topic and type added before.
+     * Adds a channel (to the file, if there is one, and to the tap), or returns the one of the
+     * same topic and type added before.
      *
      * @param topic the topic
      * @param type the message type, e.g. {@code sensor_msgs/msg/LaserScan}
@@ -81,18 +91,26 @@ final class Ros2Channels {
                 return c.id(); // one channel per topic (e.g. /tf from odometry and from the ground truth)
             }
         }
-        Integer schema = schemas.get(type);
-        if (schema == null) {
-            schema = writer.addSchema(type, "ros2msg", schemaText);
-            schemas.put(type, schema);
+        int id;
+        if (writer != null) {
+            Integer schema = schemas.get(type);
+            if (schema == null) {
+                schema = writer.addSchema(type, TapChannel.SCHEMA_ENCODING, schemaText);
+                schemas.put(type, schema);
+            }
+            Map<String, String> all = new LinkedHashMap<>(metadata);
+            all.put("offered_qos_profiles", qos.yaml());
+            if (typeHash != null) {
+                all.put("topic_type_hash", typeHash);
+            }
+            id = writer.addChannel(schema, topic, TapChannel.MESSAGE_ENCODING, all);
+        } else {
+            id = channels.size() + 1;
         }
-        Map<String, String> all = new LinkedHashMap<>(metadata);
-        all.put("offered_qos_profiles", qos.yaml());
-        if (typeHash != null) {
-            all.put("topic_type_hash", typeHash);
-        }
-        int id = writer.addChannel(schema, topic, "cdr", all);
         channels.add(new Channel(id, topic, type, qos.yaml(), typeHash));
+        if (tap != null) {
+            tap.channel(new TapChannel(id, topic, type, schemaText, qos == Qos.RELIABLE_TRANSIENT_LOCAL));
+        }
         return id;
     }
 
@@ -104,6 +122,9 @@ final class Ros2Channels {
      * @throws IOException if writing fails
      */
     void writeBagMetadata(String fileName) throws IOException {
+        if (writer == null) {
+            return;
+        }
         long messages = writer.messageCount();
         long startNs = messages == 0 ? 0 : writer.messageStartNs();
         long durationNs = messages == 0 ? 0 : writer.messageEndNs() - startNs;

@@ -36,7 +36,9 @@ import java.util.concurrent.atomic.AtomicLong;
  * ({@code rtaware_msgs/msg/MonitorEvent}); {@code /ground_truth} if the plan declares it. Log
  * and publish time of every message are the world time of its commit, cycle end or event plus
  * the plan's log-time offset (Unix-epoch ns), and messages are written in log-time order through
- * a reorder window ({@link LogTimeOrderedSink}).
+ * a reorder window ({@link LogTimeOrderedSink}). A plan's {@link RecordingTap} (a live server)
+ * is told of every channel and handed every message as the writer thread encodes it, before the
+ * reorder window ({@link TappedSink}); without a file the recorder works for the tap alone.
  *
  * <p>{@link #finish()} drains everything, writes the summary and the footer: call it on every exit
  * path (the run's termination handler). Thread-safety, as the rings' types say:
@@ -94,7 +96,10 @@ public final class RunRecorder {
     private final AtomicLong dropped = new AtomicLong();
     private final RecorderWriterThread thread;
     private final Ros2Channels layout;
+    /** The file's sink, or null without a file. */
     private final LogTimeOrderedSink ordered;
+    /** Where the writer thread writes: the file's sink, the tap's, or both. */
+    private final MessageSink sink;
     private boolean closed;
     private final Map<String, Map<String, String>> closingMetadata = new LinkedHashMap<>();
     private RecordingStats stats;
@@ -102,7 +107,8 @@ public final class RunRecorder {
     /**
      * Creates the file, writes its schemas and channels, and starts the writer thread.
      *
-     * @param file the MCAP file (created or truncated)
+     * @param file the MCAP file (created or truncated), or null to record for the plan's
+     *     {@link RecordingPlan#tap} alone
      * @param taskNames task names by task index
      * @param taskInputs each task's input key names, in the order {@link #cycle} gives their generations
      * @param keysByIndex every key by key index (the index {@link #commit} is called with); null
@@ -112,15 +118,16 @@ public final class RunRecorder {
      */
     public RunRecorder(Path file, List<String> taskNames, List<List<String>> taskInputs, List<Key<?>> keysByIndex,
                        RecordingPlan plan) throws IOException {
-        this(new McapWriter(file, plan.compression(), McapWriter.DEFAULT_CHUNK_BYTES, PROFILE), file,
-                taskNames, taskInputs, keysByIndex, plan);
+        this(file == null ? null : new McapWriter(file, plan.compression(), McapWriter.DEFAULT_CHUNK_BYTES, PROFILE),
+                file, taskNames, taskInputs, keysByIndex, plan);
     }
 
     /**
      * Records into a writer of the caller's (e.g. over a channel that fails as a full disk does).
      *
-     * @param writer the MCAP writer (closed by {@link #finish()}, or here if this fails)
-     * @param file the file written, for the statistics
+     * @param writer the MCAP writer (closed by {@link #finish()}, or here if this fails), or null to
+     *     record for the plan's {@link RecordingPlan#tap} alone
+     * @param file the file written, for the statistics (null without a writer)
      * @param taskNames task names by task index
      * @param taskInputs each task's input key names, in the order {@link #cycle} gives their generations
      * @param keysByIndex every key by key index; null entries are not recorded
@@ -129,7 +136,10 @@ public final class RunRecorder {
      */
     public RunRecorder(McapWriter writer, Path file, List<String> taskNames, List<List<String>> taskInputs,
                        List<Key<?>> keysByIndex, RecordingPlan plan) throws IOException {
-        this.file = file;
+        if (writer == null && plan.tap() == null) {
+            throw new IllegalArgumentException("a recording needs a file, a tap or both");
+        }
+        this.file = writer == null ? null : file;
         this.writer = writer;
         List<String> names = new ArrayList<>();
         for (Key<?> k : keysByIndex) {
@@ -137,9 +147,11 @@ public final class RunRecorder {
         }
         this.keyNames = names;
         List<RecorderRing> rings = new ArrayList<>();
-        layout = new Ros2Channels(writer);
+        layout = new Ros2Channels(writer, plan.tap());
         try {
-            writer.addMetadata("rtaware.run", plan.metadata());
+            if (writer != null) {
+                writer.addMetadata("rtaware.run", plan.metadata());
+            }
             keys = new CommitRing[keysByIndex.size()];
             for (int i = 0; i < keys.length; i++) {
                 Key<?> key = keysByIndex.get(i);
@@ -176,18 +188,19 @@ public final class RunRecorder {
                 truth = null;
             }
         } catch (IOException | RuntimeException e) {
-            writer.close();
+            closeIfAny(writer);
             throw e;
         }
-        ordered = new LogTimeOrderedSink(writer, plan.logTimeOffsetNs(), plan.reorderWindowNs(), REORDER_SLOTS,
-                REORDER_BYTES);
+        ordered = writer == null ? null : new LogTimeOrderedSink(writer, plan.logTimeOffsetNs(),
+                plan.reorderWindowNs(), REORDER_SLOTS, REORDER_BYTES);
+        sink = plan.tap() == null ? ordered : new TappedSink(plan.tap(), ordered, plan.logTimeOffsetNs());
         try {
             writeStaticTransforms(plan);
         } catch (IOException | RuntimeException e) {
-            writer.close();
+            closeIfAny(writer);
             throw e;
         }
-        thread = new RecorderWriterThread(rings, ordered);
+        thread = new RecorderWriterThread(rings, sink);
         thread.start();
     }
 
@@ -206,10 +219,17 @@ public final class RunRecorder {
         for (RecordingPlan.StaticTransform t : all) {
             TransformEncoder.transform(cdr, stampNs, t.parent(), t.child(), t.xM(), t.yM(), t.yawRad());
         }
-        ordered.write(channel, 0, plan.worldStartNs(), plan.worldStartNs(), cdr.buffer(), 0, cdr.size());
+        sink.write(channel, 0, plan.worldStartNs(), plan.worldStartNs(), cdr.buffer(), 0, cdr.size());
     }
 
-    /** @return the file being written */
+    /** Closes the writer, if there is one. */
+    private static void closeIfAny(McapWriter writer) throws IOException {
+        if (writer != null) {
+            writer.close();
+        }
+    }
+
+    /** @return the file being written, or null when recording for a tap alone */
     public Path file() {
         return file;
     }
@@ -313,16 +333,20 @@ public final class RunRecorder {
         closed = true;
         String error = thread.stopAndJoin();
         try {
-            if (error == null) {
+            if (error == null && writer != null) {
                 ordered.flush();
                 layout.writeBagMetadata(file.getFileName() == null ? file.toString() : file.getFileName().toString());
                 for (Map.Entry<String, Map<String, String>> m : closingMetadata.entrySet()) {
                     writer.addMetadata(m.getKey(), m.getValue());
                 }
             }
-            writer.close();
+            closeIfAny(writer);
         } catch (IOException e) {
             error = error == null ? (e.getMessage() == null ? e.toString() : e.getMessage()) : error;
+        }
+        if (writer == null) {
+            stats = new RecordingStats(null, 0, 0, dropped.get(), 0, error);
+            return stats;
         }
         long messages = error == null ? writer.messageCount() : writer.durableMessageCount();
         stats = new RecordingStats(file.toString(), messages, writer.fileBytes(), dropped.get(), ordered.outOfOrder(),

@@ -15,6 +15,7 @@ import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.app.cli.MemoryBudget;
 import io.rtaware.app.cli.RecordOptions;
 import io.rtaware.app.cli.TraceOptions;
+import io.rtaware.app.foxglove.FoxgloveMixin;
 import io.rtaware.app.live.LiveMixin;
 import io.rtaware.live.LiveAddressException;
 import io.rtaware.live.LiveView;
@@ -37,6 +38,7 @@ import io.rtaware.rt.CpuLatencyRequest;
 import io.rtaware.rt.RealtimeThreads;
 import io.rtaware.core.monitor.AdaptivePolicy;
 import io.rtaware.core.trace.TraceRecorder;
+import io.rtaware.foxglove.FoxgloveServer;
 import io.rtaware.record.RecordingPlan;
 import io.rtaware.record.RecordingStats;
 import io.rtaware.record.RunRecorder;
@@ -214,6 +216,9 @@ public final class BenchCommand implements Callable<Integer> {
     LiveMixin live;
 
     @Mixin
+    FoxgloveMixin foxglove;
+
+    @Mixin
     ExportMixin export;
 
     private final Supplier<MemoryBudget> memory;
@@ -232,6 +237,7 @@ public final class BenchCommand implements Callable<Integer> {
     public Integer call() throws IOException, InterruptedException {
         List<BenchSpec> specs = taskSet();
         live.options(); // a bad --live-port or --live-bind ends the command before anything runs
+        foxglove.address(); // so does a bad --foxglove
         if (json != null) {
             OutputFile.of("--json", json);
         }
@@ -266,10 +272,10 @@ public final class BenchCommand implements Callable<Integer> {
             compare = true;
         }
         if (compare && (spec != null || chain || timeScale != 1.0 || live.options().enabled() || record.enabled()
-                || export.requested())) {
+                || foxglove.enabled() || export.requested())) {
             // --export needs one monitor to watch; a comparison runs several executors in turn
             throw new UserError((sweepTasks != null ? "--sweep-tasks" : "--compare") + " takes --tasks, --period and"
-                    + " --work (not --spec, --chain, --time-scale, --live, --record or --export)");
+                    + " --work (not --spec, --chain, --time-scale, --live, --record, --foxglove or --export)");
         }
         if (compare && segmentNs < 2 * specs.stream().mapToLong(BenchSpec::periodNs).max().orElse(0)) {
             throw new UserError("--segment must be at least two periods, got " + Durations.format(segmentNs));
@@ -371,9 +377,17 @@ public final class BenchCommand implements Callable<Integer> {
         }
         ConsoleReporter console = CommandMonitor.console(monitor, quiet, System.err);
         TraceRecorder recorder = trace.attach(monitor);
-        RunRecorder recording = record.attach(monitor, new RecordingPlan().metadata("command", "bench")
-                .metadata("tasks", String.join(",", specs.stream().map(s -> s.name() + ":" + Durations.format(s.periodNs())
-                        + ":" + Durations.format(s.workNs())).toList())));
+        FoxgloveServer foxgloveServer = foxglove.start("bench", out);
+        RunRecorder recording;
+        try {
+            recording = record.attach(monitor, new RecordingPlan().metadata("command", "bench")
+                    .metadata("tasks", String.join(",", specs.stream().map(s -> s.name() + ":"
+                            + Durations.format(s.periodNs()) + ":" + Durations.format(s.workNs())).toList()))
+                    .tap(foxgloveServer));
+        } catch (RuntimeException e) {
+            FoxgloveMixin.close(foxgloveServer);
+            throw e;
+        }
         out.printf("rtaware bench: %d task(s)%s for %s of world time (time scale x%s)%n", specs.size(),
                 chain ? " in a chain" : "", Durations.format(durationNs), timeScale);
         LiveView liveView;
@@ -385,7 +399,8 @@ public final class BenchCommand implements Callable<Integer> {
         MonitorExporter exporter = export.options().map(e -> e.start(monitor, List.of(), System.err)).orElse(null);
         Thread hook = monitor.installShutdownHook();
         OutputWrites writes = new OutputWrites(System.err);
-        monitor.onTermination(report -> finish(monitor, report, console, recorder, recording, out, writes));
+        monitor.onTermination(report -> finish(monitor, report, console, recorder, recording, foxgloveServer, out,
+                writes));
         monitor.onTermination(report -> liveView.finish(report, null));
         warmUp(specs, work);
         ThreadAllocation.prepare();
@@ -404,6 +419,7 @@ public final class BenchCommand implements Callable<Integer> {
         long releases = monitor.totalReleases() - releasesBefore;
         CommandMonitor.stop(monitor, hook);
         liveView.close();
+        FoxgloveMixin.close(foxgloveServer);
         if (histogram != null) {
             histogram.write(latenessHistogram);
         }
@@ -475,7 +491,7 @@ public final class BenchCommand implements Callable<Integer> {
     }
 
     private void finish(Monitor monitor, Report report, ConsoleReporter console, TraceRecorder recorder,
-                        RunRecorder recording, PrintStream out, OutputWrites writes) {
+                        RunRecorder recording, FoxgloveServer foxgloveServer, PrintStream out, OutputWrites writes) {
         if (console != null) {
             console.close();
         }
@@ -505,6 +521,9 @@ public final class BenchCommand implements Callable<Integer> {
         RecordingStats stats = RecordOptions.finish(recording, out, writes);
         if (stats != null) {
             doc.section("recording", stats);
+        }
+        if (foxgloveServer != null) {
+            doc.section(FoxgloveMixin.SECTION, foxgloveServer.stats()); // after the recorder's last message
         }
         if (json != null && writes.writeFile(json, doc::write)) {
             out.println("report written to " + json);

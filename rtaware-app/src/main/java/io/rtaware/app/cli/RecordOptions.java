@@ -10,6 +10,7 @@ import io.rtaware.record.RecordingStats;
 import io.rtaware.record.RunRecorder;
 import java.io.IOException;
 import java.io.PrintStream;
+import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
 import java.nio.file.Path;
@@ -59,16 +60,28 @@ public final class RecordOptions {
     }
 
     /**
-     * Creates the recording and attaches it to the monitor, if {@code --record} was given.
+     * Creates the recording and attaches it to the monitor, if {@code --record} was given or the
+     * plan has a tap ({@code --foxglove}: then, without {@code --record}, a recorder without a
+     * file feeds the tap alone).
      *
      * @param monitor a monitor that has not started
      * @param plan topics and metadata
-     * @return the recorder, or null without {@code --record}
+     * @return the recorder, or null without {@code --record} and without a tap
      * @throws UserError if the file cannot be created
      */
     public RunRecorder attach(Monitor monitor, RecordingPlan plan) {
         checkOutput();
-        return file == null ? null : attach(monitor, file, plan);
+        if (file != null) {
+            return attach(monitor, file, plan);
+        }
+        if (plan.tap() == null) {
+            return null;
+        }
+        try {
+            return RecordingListener.attach(monitor, null, plan);
+        } catch (IOException e) {
+            throw new UncheckedIOException("a recorder without a file writes nothing, yet failed", e);
+        }
     }
 
     /**
@@ -98,16 +111,20 @@ public final class RecordOptions {
      * what it holds, and counts as a failed write (the command's exit status 1). Nothing is
      * thrown, so the rest of the termination goes on.
      *
-     * @param recorder what {@link #attach} returned (null: nothing to do)
+     * @param recorder what {@link #attach} returned (null: nothing to do; one without a file is
+     *     finished, and nothing is said)
      * @param out where the confirmation goes
      * @param writes the command's writes, told of an incomplete recording
-     * @return the recording's statistics, or null without a recorder
+     * @return the recording's statistics, or null without a recorder or a file
      */
     public static RecordingStats finish(RunRecorder recorder, PrintStream out, OutputWrites writes) {
         if (recorder == null) {
             return null;
         }
         RecordingStats stats = recorder.finish();
+        if (recorder.file() == null) {
+            return null; // a recorder for --foxglove alone: no file to speak of
+        }
         if (stats.error() != null) {
             writes.failed(String.format(Locale.ROOT, "recording %s is incomplete: %s; it holds %d messages in whole "
                     + "chunks (%d bytes written, %d records dropped); 'rtaware inspect --recover %s' writes them to a "

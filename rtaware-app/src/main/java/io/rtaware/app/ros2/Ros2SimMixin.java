@@ -28,6 +28,11 @@ public final class Ros2SimMixin {
             description = "The robot's namespace (with --ros2; default: ${DEFAULT-VALUE}).")
     String namespace;
 
+    /** @return true if {@code --ros2} was given (before its options are checked) */
+    public boolean requested() {
+        return enabled;
+    }
+
     /**
      * @return the ROS 2 options when {@code --ros2} was given
      * @throws UserError for a malformed endpoint, namespace or domain, for ROS 2 options without

@@ -3,6 +3,8 @@ package io.rtaware.app.run;
 import io.rtaware.app.UserError;
 import io.rtaware.app.cli.CommandMonitor;
 import io.rtaware.app.cli.RecordOptions;
+import io.rtaware.app.foxglove.FoxgloveMixin;
+import io.rtaware.foxglove.FoxgloveServer;
 import io.rtaware.live.LiveAddressException;
 import io.rtaware.live.LiveView;
 import io.rtaware.live.RunScene;
@@ -86,6 +88,7 @@ public final class RobotRun {
     private final PrintStream out;
     private final PrintStream err;
     private RecordOptions record = new RecordOptions();
+    private FoxgloveMixin foxglove = new FoxgloveMixin();
 
     /**
      * @param options what to run
@@ -118,6 +121,15 @@ public final class RobotRun {
      */
     public RobotRun recording(RecordOptions recording) {
         this.record = recording;
+        return this;
+    }
+
+    /**
+     * @param server the {@code --foxglove} option
+     * @return this run
+     */
+    public RobotRun foxglove(FoxgloveMixin server) {
+        this.foxglove = server;
         return this;
     }
 
@@ -235,7 +247,15 @@ public final class RobotRun {
         MonitorExporter exporter = export.map(e -> e.start(monitor, RunExports.keys(nav), err)).orElse(null);
         ConsoleReporter console = CommandMonitor.console(monitor, options.quiet(), err);
         TraceRecorder trace = options.trace().attach(monitor);
-        RunRecorder recorder = record.attach(monitor, RunRecording.plan(scenario, options, navConfig, model.name()));
+        FoxgloveServer foxgloveServer = foxglove.start("run", out);
+        RunRecorder recorder;
+        try {
+            recorder = record.attach(monitor, RunRecording.plan(scenario, options, navConfig, model.name())
+                    .tap(foxgloveServer));
+        } catch (RuntimeException e) {
+            FoxgloveMixin.close(foxgloveServer);
+            throw e;
+        }
 
         // Everything the termination handler reads exists before the start: Ctrl-C may run it on
         // the shutdown-hook thread at any moment from here on.
@@ -278,6 +298,9 @@ public final class RobotRun {
                     recorder.closingMetadata(Conditions.MCAP_METADATA, ConditionsMeter.metadata(measured));
                 }
                 artifacts.section("recording", RecordOptions.finish(recorder, out, artifacts.writes()));
+                if (foxgloveServer != null) {
+                    artifacts.section(FoxgloveMixin.SECTION, foxgloveServer.stats()); // after the recorder's last message
+                }
                 monitor.read(nav.keys().course(), course);
                 long collisions = server != null ? server.withWorld(World::contactCount) : state.stallEdges();
                 Map<String, Object> robotErrors = server != null ? server.withWorld(w -> w.odometryBias().parameters())
@@ -321,6 +344,7 @@ public final class RobotRun {
         supervise(scenario, clock, startNs, monitor, nav, referee, supervisor, view, course, state, truthNow, passes);
         CommandMonitor.stop(monitor, hook);
         live.close();
+        FoxgloveMixin.close(foxgloveServer);
         ExportOptions.stop(exporter, err);
         if (link != null && !options.quiet()) {
             err.println(link.summary());
@@ -347,9 +371,10 @@ public final class RobotRun {
 
     /**
      * @param map the scenario's map
-     * @return the same walls as an occupancy grid for the live view: obstacles occupied, the rest free
+     * @return the same walls as an occupancy grid for the live view (and {@code sim --foxglove}'s
+     *     {@code /map}): obstacles occupied, the rest free
      */
-    private static OccupancyGrid worldGrid(OccupancyMap map) {
+    public static OccupancyGrid worldGrid(OccupancyMap map) {
         OccupancyGrid grid = new OccupancyGrid(map.widthCells() * map.heightCells());
         grid.setGeometry(map.widthCells(), map.heightCells(), map.resolutionM(), map.originXM(), map.originYM());
         for (int row = 0; row < map.heightCells(); row++) {

@@ -5,6 +5,7 @@ import io.rtaware.app.cli.MemoryBudget;
 import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.cli.RecordOptions;
 import io.rtaware.app.cli.TraceOptions;
+import io.rtaware.app.foxglove.FoxgloveMixin;
 import io.rtaware.app.live.LiveMixin;
 import io.rtaware.app.output.OutputFolder;
 import io.rtaware.app.ros2.ExportMixin;
@@ -106,6 +107,9 @@ public final class RunCommand implements Callable<Integer> {
     LiveMixin live;
 
     @Mixin
+    FoxgloveMixin foxglove;
+
+    @Mixin
     Ros2RunMixin ros2;
 
     @Mixin
@@ -126,9 +130,11 @@ public final class RunCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException {
         RunOptions options = options();
+        foxglove.address(); // a bad --foxglove ends the command before anything runs
         ExperimentParentWatch.start(System.getenv(ExperimentRunner.PARENT_PID_ENV), System.err, System::exit);
         memory.get().require(trace.heapBytes(), trace.describe());
-        return new RobotRun(options, ros2.options(), export.options(), System.out, System.err).recording(record).execute();
+        return new RobotRun(options, ros2.options(), export.options(), System.out, System.err).recording(record).foxglove(foxglove)
+                .execute();
     }
 
     RunOptions options() {

@@ -3,11 +3,17 @@ package io.rtaware.app.sim;
 import io.rtaware.app.UserError;
 import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.app.cli.TimeScaleConverter;
+import io.rtaware.app.foxglove.FoxgloveMixin;
 import io.rtaware.app.ros2.Ros2Options;
 import io.rtaware.app.ros2.Ros2SimMixin;
 import io.rtaware.app.ros2.Ros2SimServe;
 import io.rtaware.core.time.Durations;
+import io.rtaware.core.time.ScaledClock;
+import io.rtaware.foxglove.FoxgloveServer;
+import io.rtaware.sim.scenario.Scenario;
 import io.rtaware.sim.scenario.ScenarioException;
+import io.rtaware.sim.scenario.ScenarioLoader;
+import io.rtaware.sim.server.PlayerSimServer;
 import io.rtaware.sim.server.ServerConfig;
 import io.rtaware.sim.server.SimCommandSupport;
 import java.io.IOException;
@@ -62,6 +68,9 @@ public final class SimCommand implements Callable<Integer> {
     @Mixin
     Ros2SimMixin ros2;
 
+    @Mixin
+    FoxgloveMixin foxglove;
+
     @Override
     public Integer call() {
         if (port < 0 || port > 65535) {
@@ -78,9 +87,14 @@ public final class SimCommand implements Callable<Integer> {
         }
         ServerConfig config = ServerConfig.defaults(port).withBindAddress(bind)
                 .withLimits(maxClients, maxRules, messageTimeoutNs);
+        if (foxglove.enabled() && ros2.requested()) {
+            throw new UserError("--foxglove and --ros2 are not served together yet: give one of them");
+        }
         try {
             Optional<Ros2Options> ros2Options = ros2.options();
-            if (ros2Options.isPresent()) {
+            if (foxglove.enabled()) {
+                serveWithFoxglove(config);
+            } else if (ros2Options.isPresent()) {
                 Ros2SimServe.serveUntilInterrupted(scenario, config, timeScale, seed, robotSeed, ros2Options.get(),
                         System.out);
             } else {
@@ -92,5 +106,31 @@ public final class SimCommand implements Callable<Integer> {
             throw new UserError("cannot serve on " + bind + ":" + port + ": " + e.getMessage());
         }
         return 0;
+    }
+
+    /** Serves the world over the Player protocol and to Foxglove until interrupted. */
+    private void serveWithFoxglove(ServerConfig config) throws IOException {
+        foxglove.address(); // a bad --foxglove ends the command before the simulator starts
+        Scenario s = ScenarioLoader.load(scenario);
+        ScaledClock clock = new ScaledClock(timeScale);
+        try (PlayerSimServer server = SimCommandSupport.start(s, clock, config, seed, robotSeed)) {
+            FoxgloveServer foxgloveServer = foxglove.start("sim", System.out);
+            SimFoxglove feed = null;
+            try {
+                feed = SimFoxglove.start(s, server, clock, foxgloveServer);
+                System.out.println(SimCommandSupport.startLine(s, config, server.port(), timeScale, seed));
+                System.out.flush();
+                SimCommandSupport.waitUntilInterrupted();
+            } finally {
+                boolean interrupted = Thread.interrupted(); // how sim is stopped; the closes below wait
+                if (feed != null) {
+                    feed.close();
+                }
+                foxgloveServer.close();
+                if (interrupted) {
+                    Thread.currentThread().interrupt();
+                }
+            }
+        }
     }
 }

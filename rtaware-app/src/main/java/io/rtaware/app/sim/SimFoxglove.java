@@ -1,0 +1,152 @@
+package io.rtaware.app.sim;
+
+import io.rtaware.app.run.RobotRun;
+import io.rtaware.core.data.Key;
+import io.rtaware.core.time.Clock;
+import io.rtaware.foxglove.FoxgloveServer;
+import io.rtaware.nav.NavKeys;
+import io.rtaware.record.RecordingPlan;
+import io.rtaware.record.RosCodecs;
+import io.rtaware.record.RunRecorder;
+import io.rtaware.robot.msg.LaserScan;
+import io.rtaware.robot.msg.OccupancyGrid;
+import io.rtaware.robot.msg.Odometry;
+import io.rtaware.robot.msg.RobotKeys;
+import io.rtaware.sim.scenario.Scenario;
+import io.rtaware.sim.server.PlayerSimServer;
+import io.rtaware.sim.world.World;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.locks.LockSupport;
+
+/**
+ * {@code rtaware sim --foxglove}: the simulated robot as Foxglove sees a ROS 2 robot, through the
+ * recorder's channels and encoders (a recorder without a file, its tap the Foxglove server):
+ * {@code /scan} (frame {@code laser}), {@code /odom}, {@code /ground_truth}, {@code /tf}
+ * ({@code odom} to {@code base_link}, {@code map} to {@code ground_truth}), {@code /tf_static}
+ * ({@code map} to {@code odom}, {@code base_link} to {@code laser}) and the scenario's walls on
+ * {@code /map} (latched). A sampler thread looks at the world every {@value #SAMPLE_PERIOD_MS}
+ * ms of wall time and hands each new scan and odometry sample to the recorder (the world is
+ * read under its lock, as the Player server does); the recorder's writer thread encodes and
+ * sends them.
+ */
+final class SimFoxglove implements AutoCloseable {
+
+    /** Wall time between two looks at the world. */
+    static final long SAMPLE_PERIOD_MS = 5;
+
+    private static final int LASER = 0;
+    private static final int ODOMETRY = 1;
+    private static final int MAP = 2;
+
+    private final PlayerSimServer server;
+    private final Clock clock;
+    private final RunRecorder recorder;
+    private final Thread sampler;
+    private final LaserScan scan = new LaserScan();
+    private final Odometry odometry = new Odometry();
+    private final boolean[] news = new boolean[2];
+    private double truthXM;
+    private double truthYM;
+    private double truthYawRad;
+    private double lastScanTimeS = Double.NaN;
+    private double lastOdometryTimeS = Double.NaN;
+    private long scans;
+    private long samples;
+    private volatile boolean running = true;
+
+    private SimFoxglove(PlayerSimServer server, Clock clock, RunRecorder recorder) {
+        this.server = server;
+        this.clock = clock;
+        this.recorder = recorder;
+        this.sampler = new Thread(this::loop, "rtaware-sim-foxglove");
+        sampler.setDaemon(true);
+    }
+
+    /**
+     * Starts feeding the Foxglove server from the simulator.
+     *
+     * @param scenario the served scenario (its map becomes {@code /map})
+     * @param server the simulator
+     * @param clock its world clock
+     * @param foxglove the Foxglove server
+     * @return the running feed; close it before the simulator
+     */
+    static SimFoxglove start(Scenario scenario, PlayerSimServer server, Clock clock, FoxgloveServer foxglove) {
+        OccupancyGrid walls = scenario.map().map(RobotRun::worldGrid).orElse(null);
+        int cells = walls == null ? 1 : walls.width() * walls.height();
+        Key<OccupancyGrid> mapKey = Key.of(NavKeys.MAP, OccupancyGrid.class, () -> new OccupancyGrid(cells));
+        RecordingPlan plan = new RecordingPlan()
+                .topic(RobotKeys.LASER.name(), "/scan", "laser")
+                .topic(RobotKeys.ODOMETRY.name(), "/odom", "odom")
+                .topic(NavKeys.MAP, "/map", "map")
+                .latched(NavKeys.MAP)
+                .withGroundTruth()
+                .staticTransform(RosCodecs.BASE_FRAME, "laser", 0, 0, 0)
+                .staticTransform("map", "odom", 0, 0, 0)
+                .transformsFrom(RobotKeys.ODOMETRY.name(), "odom", RosCodecs.BASE_FRAME)
+                .metadata("command", "sim")
+                .metadata("scenario", scenario.name())
+                .startingNow(clock.nanos())
+                .tap(foxglove);
+        RunRecorder recorder;
+        try {
+            recorder = new RunRecorder((Path) null, List.of(), List.of(),
+                    List.of(RobotKeys.LASER, RobotKeys.ODOMETRY, mapKey), plan);
+        } catch (IOException e) {
+            throw new IllegalStateException("a recorder without a file writes nothing, yet failed", e);
+        }
+        if (walls != null) {
+            recorder.commit(MAP, 1, clock.nanos(), walls);
+        }
+        SimFoxglove feed = new SimFoxglove(server, clock, recorder);
+        feed.sampler.start();
+        return feed;
+    }
+
+    private void loop() {
+        while (running) {
+            boolean[] fresh = server.withWorld(this::copyNews);
+            long nowNs = clock.nanos();
+            if (fresh[0]) {
+                recorder.commit(LASER, ++scans, nowNs, scan);
+            }
+            if (fresh[1]) {
+                recorder.commit(ODOMETRY, ++samples, nowNs, odometry);
+                recorder.groundTruth(nowNs, truthXM, truthYM, truthYawRad);
+            }
+            LockSupport.parkNanos(SAMPLE_PERIOD_MS * 1_000_000L);
+        }
+    }
+
+    private boolean[] copyNews(World w) {
+        news[0] = w.scan().serverTimeS != lastScanTimeS;
+        news[1] = w.odometry().serverTimeS != lastOdometryTimeS;
+        if (news[0]) {
+            scan.copyFrom(w.scan());
+            lastScanTimeS = scan.serverTimeS;
+        }
+        if (news[1]) {
+            odometry.copyFrom(w.odometry());
+            lastOdometryTimeS = odometry.serverTimeS;
+            truthXM = w.xM();
+            truthYM = w.yM();
+            truthYawRad = w.yawRad();
+        }
+        return news;
+    }
+
+    /** Stops the sampler and finishes the recorder (its last messages are sent). Idempotent. */
+    @Override
+    public void close() {
+        running = false;
+        LockSupport.unpark(sampler);
+        try {
+            sampler.join();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        recorder.finish();
+    }
+}

@@ -1,0 +1,323 @@
+package io.rtaware.foxglove;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import io.rtaware.record.TapChannel;
+import java.io.IOException;
+import java.lang.management.ManagementFactory;
+import java.net.Socket;
+import java.net.URI;
+import java.net.http.HttpClient;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The server end to end over loopback, with the JDK's WebSocket client: what a client gets on
+ * connecting, subscriptions, Message Data frames on exact bytes, latched channels, the bounds on
+ * clients and on each client's send buffer, and the address it listens on.
+ */
+class FoxgloveServerTest {
+
+    private static final TapChannel SCAN = new TapChannel(1, "/scan", "sensor_msgs/msg/LaserScan",
+            "float32 angle_min\n", false);
+    private static final TapChannel TIMING = new TapChannel(2, "/rtaware/timing/avoid", "rtaware_msgs/msg/TaskCycle",
+            "int64 release_ns\n", false);
+    private static final TapChannel MAP = new TapChannel(3, "/map", "nav_msgs/msg/OccupancyGrid", "int8[] data\n",
+            true);
+
+    private final List<FoxgloveServer> servers = new ArrayList<>();
+    private final List<WsClient> clients = new ArrayList<>();
+
+    @AfterEach
+    void closeAll() {
+        clients.forEach(WsClient::close);
+        servers.forEach(FoxgloveServer::close);
+    }
+
+    private FoxgloveServer server(int maxClients, int sendBufferBytes) {
+        FoxgloveServer s = FoxgloveServer.start(FoxgloveAddress.parse("0"), "rtaware test", Map.of("ROS_DISTRO", "jazzy"),
+                maxClients, sendBufferBytes);
+        servers.add(s);
+        s.channel(SCAN);
+        s.channel(TIMING);
+        s.channel(MAP);
+        return s;
+    }
+
+    private WsClient client(FoxgloveServer server) throws Exception {
+        WsClient c = WsClient.connect(server.url());
+        clients.add(c);
+        return c;
+    }
+
+    /** Connects and takes the Server Info and the Advertise every client gets first. */
+    private WsClient connected(FoxgloveServer server) throws Exception {
+        WsClient c = client(server);
+        assertEquals("serverInfo", c.nextJson().path("op").asText());
+        assertEquals("advertise", c.nextJson().path("op").asText());
+        return c;
+    }
+
+    /**
+     * Sends an op the server does not support and waits for its status reply: the server reads a
+     * connection's messages in order, so everything sent before has been handled, and anything
+     * it sent before the reply has arrived before it.
+     */
+    private static void barrier(WsClient c) throws Exception {
+        c.send("{\"op\":\"getParameters\",\"parameterNames\":[]}");
+        JsonNode status = c.nextJson();
+        assertEquals("status", status.path("op").asText(), "the barrier's reply: " + status);
+        assertTrue(status.path("message").asText().contains("'getParameters' is not supported"), status.toString());
+    }
+
+    private static byte[] frame(int subscriptionId, long timeNs, byte[] payload) {
+        ByteBuffer b = ByteBuffer.allocate(13 + payload.length).order(ByteOrder.LITTLE_ENDIAN);
+        b.put((byte) 1).putInt(subscriptionId).putLong(timeNs).put(payload);
+        return b.array();
+    }
+
+    @Test
+    void aClientGetsServerInfoThenEveryChannelWithItsRos2Schema() throws Exception {
+        FoxgloveServer server = server(4, 1 << 20);
+        WsClient c = client(server);
+        assertEquals(FoxgloveProtocol.SUBPROTOCOL, c.socket().getSubprotocol(), "the subprotocol is selected");
+        JsonNode info = c.nextJson();
+        assertEquals("serverInfo", info.path("op").asText(), info.toString());
+        assertEquals("rtaware test", info.path("name").asText());
+        assertEquals(0, info.path("capabilities").size(), "no optional capability: " + info);
+        assertEquals("jazzy", info.path("metadata").path("ROS_DISTRO").asText());
+        JsonNode advertise = c.nextJson();
+        assertEquals("advertise", advertise.path("op").asText(), advertise.toString());
+        assertEquals(3, advertise.path("channels").size(), advertise.toString());
+        JsonNode scan = advertise.path("channels").get(0);
+        assertEquals(1, scan.path("id").asInt());
+        assertEquals("/scan", scan.path("topic").asText());
+        assertEquals("cdr", scan.path("encoding").asText());
+        assertEquals("sensor_msgs/msg/LaserScan", scan.path("schemaName").asText());
+        assertEquals("float32 angle_min\n", scan.path("schema").asText());
+        assertEquals("ros2msg", scan.path("schemaEncoding").asText());
+        assertEquals(1, server.clients(), "one client connected");
+        assertEquals(1, server.stats().clientsAccepted());
+    }
+
+    @Test
+    void aChannelDeclaredLaterIsAdvertisedToConnectedClients() throws Exception {
+        FoxgloveServer server = server(4, 1 << 20);
+        WsClient c = connected(server);
+        server.channel(new TapChannel(4, "/rtaware/events", "rtaware_msgs/msg/MonitorEvent", "string kind\n", false));
+        JsonNode advertise = c.nextJson();
+        assertEquals("advertise", advertise.path("op").asText(), advertise.toString());
+        assertEquals(1, advertise.path("channels").size());
+        assertEquals("/rtaware/events", advertise.path("channels").get(0).path("topic").asText());
+    }
+
+    @Test
+    void aSubscriberGetsEachMessageAsAMessageDataFrameStampedWithItsLogTime() throws Exception {
+        FoxgloveServer server = server(4, 1 << 20);
+        WsClient c = connected(server);
+        c.send("{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":7,\"channelId\":1},{\"id\":4294967295,\"channelId\":2}]}");
+        barrier(c);
+        byte[] payload = {0, 1, 0, 0, 42, 43, 44};
+        server.message(1, 1_700_000_000_123_456_789L, new byte[] {9, 9, 0, 1, 0, 0, 42, 43, 44, 9}, 2, 7);
+        assertArrayEquals(frame(7, 1_700_000_000_123_456_789L, payload), c.nextBinary(),
+                "opcode 1, subscription 7, the log time, the CDR bytes");
+        server.message(2, 5L, new byte[] {1, 2}, 0, 2);
+        assertArrayEquals(frame(-1, 5L, new byte[] {1, 2}), c.nextBinary(), "subscription id 4294967295");
+        FoxgloveStats stats = server.stats();
+        assertEquals(2, stats.messagesSent());
+        assertEquals(13 + 7 + 13 + 2, stats.bytesSent());
+        assertEquals(0, stats.messagesDropped());
+    }
+
+    @Test
+    void onlySubscribedChannelsAreSentAndUnsubscribeEndsThem() throws Exception {
+        FoxgloveServer server = server(4, 1 << 20);
+        WsClient c = connected(server);
+        c.send("{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":0,\"channelId\":1}]}");
+        barrier(c);
+        server.message(2, 1, new byte[] {1}, 0, 1); // not subscribed
+        server.message(1, 2, new byte[] {2}, 0, 1);
+        assertArrayEquals(frame(0, 2, new byte[] {2}), c.nextBinary(), "the subscribed channel's message only");
+        c.send("{\"op\":\"unsubscribe\",\"subscriptionIds\":[0]}");
+        barrier(c);
+        server.message(1, 3, new byte[] {3}, 0, 1);
+        barrier(c); // a frame sent after the unsubscribe would arrive before this reply
+        assertEquals(0, c.queued(), "nothing after the unsubscribe");
+        assertEquals(1, server.stats().messagesSent());
+    }
+
+    @Test
+    void aLateSubscriberToALatchedChannelGetsItsLastMessage() throws Exception {
+        FoxgloveServer server = server(4, 1 << 20);
+        server.message(3, 100, new byte[] {1, 1}, 0, 2);
+        server.message(3, 200, new byte[] {2, 2, 2}, 0, 3);
+        server.message(1, 300, new byte[] {3}, 0, 1); // not latched: gone for later subscribers
+        WsClient c = connected(server);
+        c.send("{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":5,\"channelId\":3},{\"id\":6,\"channelId\":1}]}");
+        assertArrayEquals(frame(5, 200, new byte[] {2, 2, 2}), c.nextBinary(), "the last /map, once");
+        barrier(c);
+        assertEquals(0, c.queued(), "nothing else");
+        server.message(3, 400, new byte[] {4}, 0, 1);
+        assertArrayEquals(frame(5, 400, new byte[] {4}), c.nextBinary(), "then every new one");
+    }
+
+    @Test
+    void badRequestsGetAStatusAndTheConnectionGoesOn() throws Exception {
+        FoxgloveServer server = server(4, 1 << 20);
+        WsClient c = connected(server);
+        c.send("{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":1,\"channelId\":99}]}");
+        JsonNode unknown = c.nextJson();
+        assertEquals(FoxgloveProtocol.STATUS_WARNING, unknown.path("level").asInt(), unknown.toString());
+        assertTrue(unknown.path("message").asText().contains("no channel 99"), unknown.toString());
+        c.send("{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":1,\"channelId\":1}]}");
+        c.send("{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":1,\"channelId\":2}]}");
+        JsonNode reused = c.nextJson();
+        assertEquals(FoxgloveProtocol.STATUS_ERROR, reused.path("level").asInt(), reused.toString());
+        assertTrue(reused.path("message").asText().contains("subscription id 1 is in use"), reused.toString());
+        c.send("{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":2,\"channelId\":1}]}");
+        JsonNode twice = c.nextJson();
+        assertTrue(twice.path("message").asText().contains("is subscribed already"), twice.toString());
+        c.send("not json");
+        JsonNode malformed = c.nextJson();
+        assertEquals(FoxgloveProtocol.STATUS_ERROR, malformed.path("level").asInt(), malformed.toString());
+        assertTrue(malformed.path("message").asText().startsWith("rtaware: not JSON"), malformed.toString());
+        c.socket().sendBinary(ByteBuffer.wrap(new byte[] {1, 0, 0, 0, 0}), true).get(20, TimeUnit.SECONDS);
+        JsonNode binary = c.nextJson();
+        assertTrue(binary.path("message").asText().contains("binary client messages are not supported"),
+                binary.toString());
+        server.message(1, 9, new byte[] {9}, 0, 1);
+        assertArrayEquals(frame(1, 9, new byte[] {9}), c.nextBinary(), "the first subscription still works");
+    }
+
+    @Test
+    void clientsBeyondTheLimitAreRefusedAndCounted() throws Exception {
+        FoxgloveServer server = server(1, 1 << 20);
+        connected(server);
+        ExecutionException refused = assertThrows(ExecutionException.class, () -> HttpClient.newHttpClient()
+                .newWebSocketBuilder().subprotocols(FoxgloveProtocol.SUBPROTOCOL)
+                .buildAsync(URI.create(server.url()), new WsClient()).get(20, TimeUnit.SECONDS));
+        assertTrue(refused.getCause() instanceof IOException, "the connection is closed: " + refused.getCause());
+        long before = server.stats().clientsRefused(); // the JDK's client tries its handshake twice
+        assertTrue(before >= 1, "refused and counted: " + server.stats());
+        try (Socket socket = new Socket(server.address().getAddress(), server.address().getPort())) {
+            socket.setSoTimeout(20_000);
+            assertEquals(-1, socket.getInputStream().read(), "closed before a byte is read");
+        }
+        assertEquals(before + 1, server.stats().clientsRefused(), "each refused connection counted once");
+        assertEquals(1, server.stats().clientsAccepted());
+        assertEquals(1, server.clients());
+    }
+
+    @Test
+    void aSlowClientLosesMessagesCountedWhileTheWriterNeverWaits() throws Exception {
+        int bufferBytes = 64 << 10;
+        FoxgloveServer server = server(4, bufferBytes);
+        WsClient slow = connected(server);
+        WsClient fast = connected(server);
+        slow.send("{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":1,\"channelId\":1}]}");
+        fast.send("{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":1,\"channelId\":2}]}");
+        barrier(slow);
+        barrier(fast);
+        slow.pause();
+        byte[] scan = new byte[16 << 10];
+        int offered = 4096; // 64 MiB: far more than the socket buffers and the 64 KiB send buffer together
+        int small = 256; // 256 frames of 14 bytes: always room in the other client's buffer
+        for (int i = 0; i < offered; i++) {
+            Arrays.fill(scan, 0, 8, (byte) i);
+            server.message(1, i, scan, 0, scan.length);
+            if (i < small) {
+                server.message(2, i, new byte[] {(byte) i}, 0, 1);
+            }
+        }
+        FoxgloveStats stats = server.stats();
+        assertTrue(stats.messagesDropped() > 0, "the slow client lost messages: " + stats);
+        assertEquals(offered + small, stats.messagesSent() + stats.messagesDropped(),
+                "each one sent or counted: " + stats);
+        for (int i = 0; i < small; i++) {
+            assertArrayEquals(frame(1, i, new byte[] {(byte) i}), fast.nextBinary(),
+                    "the other client got every message of its channel, in order: " + i);
+        }
+        long slowSent = stats.messagesSent() - small;
+        slow.resume();
+        long previous = -1;
+        for (long k = 0; k < slowSent; k++) {
+            byte[] b = slow.nextBinary();
+            long time = ByteBuffer.wrap(b, 5, 8).order(ByteOrder.LITTLE_ENDIAN).getLong();
+            assertTrue(time > previous, "what the slow client got is in order: " + time + " after " + previous);
+            previous = time;
+        }
+        barrier(slow);
+        assertEquals(0, slow.queued(), "exactly what was counted as sent");
+    }
+
+    @Test
+    void aMessageNoClientSubscribedToAllocatesNothingOnTheWritersThread() throws Exception {
+        com.sun.management.ThreadMXBean threads =
+                (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
+        assumeTrue(threads.isThreadAllocatedMemorySupported(), "thread allocation counting unsupported");
+        FoxgloveServer server = server(4, 1 << 20);
+        WsClient c = connected(server); // connected, subscribed to nothing
+        byte[] data = new byte[512];
+        long id = Thread.currentThread().getId();
+        long allocated = Long.MAX_VALUE;
+        for (int round = 0; round < 5; round++) {
+            long before = threads.getThreadAllocatedBytes(id);
+            for (int i = 0; i < 20_000; i++) {
+                server.message(1, i, data, 0, data.length);
+                server.message(3, i, data, 0, data.length); // latched: kept, in a buffer of its own
+                server.message(99, i, data, 0, data.length); // no such channel
+            }
+            allocated = Math.min(allocated, threads.getThreadAllocatedBytes(id) - before);
+        }
+        assertEquals(0, allocated, "bytes allocated handing over 60 000 messages nobody subscribed to");
+        barrier(c);
+        assertEquals(0, c.queued(), "nothing sent");
+        assertEquals(0, server.stats().messagesSent() + server.stats().messagesDropped(), server.stats().toString());
+    }
+
+    @Test
+    void aBarePortListensOnLoopbackOnly() {
+        FoxgloveServer server = server(1, 1 << 20);
+        assertTrue(server.address().getAddress().isLoopbackAddress(), "bound to " + server.address());
+        assertTrue(server.url().startsWith("ws://127.0.0.1:"), server.url());
+        assertTrue(server.address().getPort() > 0, "a free port was taken");
+    }
+
+    @Test
+    void aTakenPortIsOneLineNamingTheAddress() {
+        FoxgloveServer first = server(1, 1 << 20);
+        int port = first.address().getPort();
+        FoxgloveAddressException e = assertThrows(FoxgloveAddressException.class, () -> FoxgloveServer.start(
+                new FoxgloveAddress("127.0.0.1", port), "second", Map.of(), 1, 1 << 20));
+        assertEquals(1, e.getMessage().lines().count(), e.getMessage());
+        assertTrue(e.getMessage().startsWith("cannot serve Foxglove on 127.0.0.1:" + port + ": "), e.getMessage());
+    }
+
+    @Test
+    void anUnknownHostIsOneLine() {
+        FoxgloveAddressException e = assertThrows(FoxgloveAddressException.class, () -> FoxgloveServer.start(
+                new FoxgloveAddress("no-such-host.invalid", 0), "x", Map.of(), 1, 1 << 20));
+        assertTrue(e.getMessage().contains("cannot resolve 'no-such-host.invalid'"), e.getMessage());
+    }
+
+    @Test
+    void closingEndsEveryConnectionWithGoingAway() throws Exception {
+        FoxgloveServer server = server(4, 1 << 20);
+        WsClient c = connected(server);
+        server.close();
+        assertEquals(1001, c.awaitCloseCode(), "WebSocket close 1001, going away");
+    }
+}

@@ -1,0 +1,191 @@
+package io.rtaware.record;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import io.rtaware.core.data.Key;
+import io.rtaware.record.mcap.McapChannel;
+import io.rtaware.record.mcap.McapReader;
+import io.rtaware.record.mcap.McapSchema;
+import io.rtaware.record.mcap.McapVisitor;
+import io.rtaware.robot.msg.LaserScan;
+import io.rtaware.robot.msg.MotionRequest;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CopyOnWriteArrayList;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * A recording's tap (the live Foxglove server's feed) sees the channels and messages of the
+ * file: the same ids, topics, types and schemas, the same CDR bytes at the same Unix-epoch log
+ * times; and without a file the recorder feeds the tap alone.
+ */
+class RecordingTapTest {
+
+    private static final Key<LaserScan> LASER = Key.of("laser", LaserScan.class, () -> new LaserScan(8));
+    private static final Key<MotionRequest> MOTION = Key.of("motion.avoid", MotionRequest.class, MotionRequest::new);
+    private static final long OFFSET_NS = 1_700_000_000_000_000_000L;
+
+    @TempDir
+    Path dir;
+
+    /** A message as the tap or the file has it. */
+    private record Msg(int channel, long logTimeNs, byte[] data) {
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof Msg m && m.channel == channel && m.logTimeNs == logTimeNs && Arrays.equals(m.data, data);
+        }
+
+        @Override
+        public int hashCode() {
+            return 31 * Long.hashCode(logTimeNs) + Arrays.hashCode(data);
+        }
+
+        @Override
+        public String toString() {
+            return "channel " + channel + " at " + logTimeNs + ": " + data.length + " bytes";
+        }
+    }
+
+    /** Collects what the recorder hands its tap. */
+    private static final class CollectingTap implements RecordingTap {
+        final List<TapChannel> channels = new CopyOnWriteArrayList<>();
+        final List<Msg> messages = new CopyOnWriteArrayList<>();
+
+        @Override
+        public void channel(TapChannel channel) {
+            channels.add(channel);
+        }
+
+        @Override
+        public void message(int channelId, long logTimeNs, byte[] data, int offset, int length) {
+            assertTrue(channels.stream().anyMatch(c -> c.id() == channelId), "a message after its channel: " + channelId);
+            messages.add(new Msg(channelId, logTimeNs, Arrays.copyOfRange(data, offset, offset + length)));
+        }
+    }
+
+    private static RecordingPlan plan(CollectingTap tap) {
+        return new RecordingPlan().topic("laser", "/scan", "laser").logTimeOffsetNs(OFFSET_NS).withGroundTruth()
+                .staticTransform("base_link", "laser", 0, 0, 0).tap(tap);
+    }
+
+    private static void feed(RunRecorder recorder) {
+        LaserScan scan = new LaserScan(8);
+        scan.minAngleRad = -1;
+        scan.maxAngleRad = 1;
+        scan.maxRangeM = 5;
+        scan.setCount(3);
+        scan.rangesM[0] = 1;
+        scan.rangesM[1] = 2;
+        scan.rangesM[2] = 3;
+        recorder.commit(0, 1, 1_000, scan);
+        MotionRequest motion = new MotionRequest();
+        motion.request(0.25, -0.5);
+        recorder.commit(1, 1, 2_000, motion);
+        recorder.cycle(0, RunRecorder.OK, 3_000, 3_500, 5_000, 0, new long[] {1});
+        recorder.cycle(0, RunRecorder.MISS, 10_000, 10_000, 30_000, 0, new long[] {1});
+        recorder.event(RunRecorder.DEADLINE_MISS, 0, 20_000, 10_000, 20_000, true, null, null);
+        recorder.groundTruth(6_000, 1, 2, 0.5);
+    }
+
+    @Test
+    void theTapSeesTheFilesChannelsAndMessagesByteForByte() throws IOException {
+        Path file = dir.resolve("run.mcap");
+        CollectingTap tap = new CollectingTap();
+        RunRecorder recorder = new RunRecorder(file, List.of("avoid"), List.of(List.of("laser")),
+                List.of(LASER, MOTION), plan(tap));
+        feed(recorder);
+        RecordingStats stats = recorder.finish();
+        assertNull(stats.error());
+
+        Map<Integer, McapSchema> schemas = new HashMap<>();
+        List<McapChannel> fileChannels = new ArrayList<>();
+        List<Msg> fileMessages = new ArrayList<>();
+        McapReader.open(file).read(new McapVisitor() {
+            @Override
+            public void schema(McapSchema schema) {
+                schemas.put(schema.id(), schema);
+            }
+
+            @Override
+            public void channel(McapChannel channel) {
+                fileChannels.add(channel);
+            }
+
+            @Override
+            public void message(McapChannel channel, long sequence, long logTimeNs, long publishTimeNs, byte[] data,
+                                int offset, int length) {
+                fileMessages.add(new Msg(channel.id(), logTimeNs, Arrays.copyOfRange(data, offset, offset + length)));
+            }
+        });
+        assertEquals(fileChannels.size(), tap.channels.size(), "as many channels: " + tap.channels);
+        for (McapChannel c : fileChannels) {
+            TapChannel t = tap.channels.stream().filter(x -> x.id() == c.id()).findFirst().orElseThrow(
+                    () -> new AssertionError("the tap lacks channel " + c.id() + " " + c.topic()));
+            McapSchema schema = schemas.get(c.schemaId());
+            assertEquals(c.topic(), t.topic(), "topic of channel " + c.id());
+            assertEquals(schema.name(), t.schemaName(), "type of " + c.topic());
+            assertEquals(schema.data(), t.schema(), "ros2msg schema of " + c.topic());
+            assertEquals(schema.encoding(), TapChannel.SCHEMA_ENCODING, "schema encoding of " + c.topic());
+            assertEquals(c.messageEncoding(), TapChannel.MESSAGE_ENCODING, "message encoding of " + c.topic());
+            assertEquals(c.topic().equals(RecordingPlan.TF_STATIC_TOPIC), t.latched(), "latched: " + c.topic());
+        }
+        Comparator<Msg> order = Comparator.comparingLong(Msg::logTimeNs).thenComparingInt(Msg::channel);
+        List<Msg> fromTap = new ArrayList<>(tap.messages);
+        fromTap.sort(order);
+        fileMessages.sort(order);
+        assertEquals(fileMessages, fromTap, "the same messages, bytes and Unix-epoch log times");
+        assertTrue(fromTap.stream().allMatch(m -> m.logTimeNs() >= OFFSET_NS), "log times are world time plus the offset");
+    }
+
+    @Test
+    void withoutAFileTheRecorderFeedsItsTapAlone() throws IOException {
+        CollectingTap tap = new CollectingTap();
+        RunRecorder recorder = new RunRecorder((Path) null, List.of("avoid"), List.of(List.of("laser")),
+                List.of(LASER, MOTION), plan(tap));
+        feed(recorder);
+        RecordingStats stats = recorder.finish();
+        assertNull(stats.error());
+        assertNull(stats.file(), "no file");
+        assertNull(recorder.file());
+        assertEquals(0, stats.dropped());
+        try (var files = Files.list(dir)) {
+            assertFalse(files.findAny().isPresent(), "nothing written to disk");
+        }
+        List<Integer> ids = tap.channels.stream().map(TapChannel::id).toList();
+        List<Integer> expected = new ArrayList<>();
+        for (int i = 1; i <= ids.size(); i++) {
+            expected.add(i);
+        }
+        assertEquals(expected, ids, "channels numbered from 1 as a file would number them");
+        TapChannel scan = tap.channels.stream().filter(c -> c.topic().equals("/scan")).findFirst().orElseThrow();
+        assertEquals("sensor_msgs/msg/LaserScan", scan.schemaName());
+        assertTrue(scan.schema().contains("float32[] ranges"), "the ros2msg definition: " + scan.schema());
+        assertTrue(tap.channels.stream().anyMatch(c -> c.topic().equals("/rtaware/timing/avoid")
+                && c.schemaName().equals("rtaware_msgs/msg/TaskCycle")), "the timing channel: " + tap.channels);
+        // scan + its state, motion, 2 cycles, 1 event, 1 pose + its /tf, /tf_static
+        assertEquals(9, tap.messages.size(), "every message: " + tap.messages);
+        long scans = tap.messages.stream().filter(m -> m.channel() == scan.id()).count();
+        assertEquals(1, scans, "one scan");
+        assertEquals(OFFSET_NS + 1_000, tap.messages.stream().filter(m -> m.channel() == scan.id()).findFirst()
+                .orElseThrow().logTimeNs(), "the scan's log time: its commit plus the offset");
+    }
+
+    @Test
+    void aRecordingWithNeitherFileNorTapIsRefused() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new RunRecorder((Path) null,
+                List.of(), List.of(), List.of(LASER), new RecordingPlan()));
+        assertTrue(e.getMessage().contains("a file, a tap or both"), e.getMessage());
+    }
+}
