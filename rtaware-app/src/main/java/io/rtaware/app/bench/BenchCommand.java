@@ -371,9 +371,13 @@ public final class BenchCommand implements Callable<Integer> {
         }
         ConsoleReporter console = CommandMonitor.console(monitor, quiet, System.err);
         TraceRecorder recorder = trace.attach(monitor);
-        RunRecorder recording = record.attach(monitor, new RecordingPlan().metadata("command", "bench")
+        RecordingPlan recordingPlan = new RecordingPlan().metadata("command", "bench")
                 .metadata("tasks", String.join(",", specs.stream().map(s -> s.name() + ":" + Durations.format(s.periodNs())
-                        + ":" + Durations.format(s.workNs())).toList())));
+                        + ":" + Durations.format(s.workNs())).toList()));
+        if (timeScale != 1.0) {
+            recordingPlan.clock(RecordingPlan.CLOCK_PERIOD_NS); // simulated time: /clock, for consumers that follow it
+        }
+        RunRecorder recording = record.attach(monitor, recordingPlan);
         out.printf("rtaware bench: %d task(s)%s for %s of world time (time scale x%s)%n", specs.size(),
                 chain ? " in a chain" : "", Durations.format(durationNs), timeScale);
         LiveView liveView;
@@ -382,7 +386,7 @@ public final class BenchCommand implements Callable<Integer> {
         } catch (LiveAddressException e) {
             throw new UserError(e.getMessage());
         }
-        MonitorExporter exporter = export.options().map(e -> e.start(monitor, List.of(), System.err)).orElse(null);
+        MonitorExporter exporter = export.options().map(e -> e.start(monitor, List.of(), List.of(), System.err)).orElse(null);
         Thread hook = monitor.installShutdownHook();
         OutputWrites writes = new OutputWrites(System.err);
         monitor.onTermination(report -> finish(monitor, report, console, recorder, recording, out, writes));

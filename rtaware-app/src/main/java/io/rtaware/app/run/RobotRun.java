@@ -232,10 +232,10 @@ public final class RobotRun {
             CpuLatencyRequest.hold(CpuLatencyRequest.DEVICE, 0, err)
                     .ifPresent(request -> monitor.onTermination(report -> request.close()));
         }
-        MonitorExporter exporter = export.map(e -> e.start(monitor, RunExports.keys(nav), err)).orElse(null);
+        MonitorExporter exporter = export.map(e -> e.start(monitor, RunExports.keys(nav), RunExports.STATIC_TRANSFORMS, err)).orElse(null);
         ConsoleReporter console = CommandMonitor.console(monitor, options.quiet(), err);
         TraceRecorder trace = options.trace().attach(monitor);
-        RunRecorder recorder = record.attach(monitor, RunRecording.plan(scenario, options, navConfig, model.name()));
+        RunRecorder recorder = record.attach(monitor, RunRecording.plan(scenario, options, navConfig, model.name(), server));
 
         // Everything the termination handler reads exists before the start: Ctrl-C may run it on
         // the shutdown-hook thread at any moment from here on.
