@@ -6,7 +6,9 @@
   ros2_peer.py check --router tcp/127.0.0.1:PORT [--namespace /] [--timeout 60]
       Against rtaware's simulator served as a ROS 2 robot: lists the ROS graph through the
       liveliness tokens, decodes /scan and /odom with zenoh-ros2-sdk subscribers (types and
-      RIHS01 hashes from rosbags' Jazzy store, nothing fetched from the internet), drives the
+      RIHS01 hashes from rosbags' Jazzy store, nothing fetched from the internet), checks the
+      REP 105 frames (/tf_static base_link -> laser, /tf odom -> base_link stamped and placed as
+      an odometry sample, scans in laser, odometry in odom with child base_link), drives the
       robot with a zenoh-ros2-sdk /cmd_vel publisher and watches odometry move. Prints one JSON
       object with what it saw; exits 0 when every check passed, 1 otherwise (reasons in
       "failures").
@@ -54,20 +56,34 @@ def check(endpoint, namespace, timeout_s):
                 "type_hash": jazzy.hash_rihs01(name), "router_ip": host, "router_port": port}
 
     lock = threading.Lock()
-    scans, odoms = [], []
+    scans, odoms, tfs, statics = [], [], [], []
 
     def on_scan(msg):
         with lock:
             scans.append({"beams": len(msg.ranges), "angle_min": float(msg.angle_min),
                           "angle_max": float(msg.angle_max), "range_max": float(msg.range_max),
-                          "stamp_s": msg.header.stamp.sec + msg.header.stamp.nanosec * 1e-9})
+                          "stamp_s": msg.header.stamp.sec + msg.header.stamp.nanosec * 1e-9,
+                          "stamp_ns": msg.header.stamp.sec * 1_000_000_000 + msg.header.stamp.nanosec,
+                          "frame": msg.header.frame_id})
 
     def on_odom(msg):
         p = msg.pose.pose
         with lock:
             odoms.append({"x": float(p.position.x), "y": float(p.position.y),
                           "qz": float(p.orientation.z), "qw": float(p.orientation.w),
-                          "frame": msg.header.frame_id, "child": msg.child_frame_id})
+                          "frame": msg.header.frame_id, "child": msg.child_frame_id,
+                          "stamp_ns": msg.header.stamp.sec * 1_000_000_000 + msg.header.stamp.nanosec})
+
+    def transforms(into):
+        def on_tf(msg):
+            with lock:
+                for t in msg.transforms:
+                    r = t.transform.rotation
+                    into.append({"parent": t.header.frame_id, "child": t.child_frame_id,
+                                 "stamp_ns": t.header.stamp.sec * 1_000_000_000 + t.header.stamp.nanosec,
+                                 "x": float(t.transform.translation.x), "y": float(t.transform.translation.y),
+                                 "qz": float(r.z), "qw": float(r.w)})
+        return on_tf
 
     failures = []
     result = {"failures": failures}
@@ -75,6 +91,10 @@ def check(endpoint, namespace, timeout_s):
                               **typed("sensor_msgs/msg/LaserScan"))
     odom_sub = ROS2Subscriber(topic=topic(namespace, "odom"), callback=on_odom, node_name="peer_odom",
                               **typed("nav_msgs/msg/Odometry"))
+    tf_sub = ROS2Subscriber(topic="/tf", callback=transforms(tfs), node_name="peer_tf",
+                            **typed("tf2_msgs/msg/TFMessage"))
+    tf_static_sub = ROS2Subscriber(topic="/tf_static", callback=transforms(statics), node_name="peer_tf_static",
+                                   **typed("tf2_msgs/msg/TFMessage"))
     cmd_pub = ROS2Publisher(topic=topic(namespace, "cmd_vel"), node_name="peer_driver",
                             **typed("geometry_msgs/msg/Twist"))
     deadline = time.monotonic() + timeout_s
@@ -89,11 +109,39 @@ def check(endpoint, namespace, timeout_s):
 
     if not wait_for(lambda: len(scans) >= 3 and len(odoms) >= 3):
         failures.append("fewer than 3 scans and 3 odometry samples arrived")
+    if not wait_for(lambda: len(tfs) >= 3 and len(statics) >= 1):
+        failures.append("fewer than 3 /tf and 1 /tf_static transforms arrived")
+    with lock:
+        result["tf"] = sorted({(t["parent"], t["child"]) for t in tfs})
+        result["tf_static"] = sorted({(t["parent"], t["child"]) for t in statics})
+        if result["tf"] != [("odom", "base_link")]:
+            failures.append("/tf should carry odom -> base_link only, carried %s" % result["tf"])
+        if result["tf_static"] != [("base_link", "laser")]:
+            failures.append("/tf_static should carry base_link -> laser only, carried %s" % result["tf_static"])
+        if any(s["frame"] != "laser" for s in scans):
+            failures.append("a scan not in frame laser: %s" % sorted({s["frame"] for s in scans}))
+        if any(o["frame"] != "odom" or o["child"] != "base_link" for o in odoms):
+            failures.append("an odometry sample not odom -> base_link")
+        # every odom -> base_link transform is an odometry sample's pose at that sample's stamp
+        by_stamp = {o["stamp_ns"]: o for o in odoms}
+        matched = 0
+        for t in tfs:
+            o = by_stamp.get(t["stamp_ns"])
+            if o is None:
+                continue
+            matched += 1
+            if (t["x"], t["y"], t["qz"], t["qw"]) != (o["x"], o["y"], o["qz"], o["qw"]):
+                failures.append("/tf at %d ns is not the odometry pose of that stamp: %s vs %s" % (t["stamp_ns"], t, o))
+                break
+        result["tf_matched_odometry"] = matched
+        if matched == 0:
+            failures.append("no /tf transform had the stamp of an odometry sample")
     with lock:
         result["scans"] = len(scans)
         result["odometry"] = len(odoms)
         result["first_scan"] = scans[0] if scans else None
         result["first_odometry"] = odoms[0] if odoms else None
+        result["scan_stamps_ns"] = [x["stamp_ns"] for x in scans[:5]]
         start = dict(odoms[-1]) if odoms else None
 
     expected = (("scan", "sensor_msgs/msg/LaserScan"), ("odom", "nav_msgs/msg/Odometry"),
@@ -138,7 +186,7 @@ def check(endpoint, namespace, timeout_s):
         if moved < 0.1:
             failures.append("the robot moved only %.3f m while /cmd_vel asked for 0.3 m/s" % moved)
 
-    for entity in (scan_sub, odom_sub, cmd_pub):
+    for entity in (scan_sub, odom_sub, tf_sub, tf_static_sub, cmd_pub):
         entity.close()
     print(json.dumps(result), flush=True)
     return 1 if failures else 0

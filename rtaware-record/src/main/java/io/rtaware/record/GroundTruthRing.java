@@ -2,6 +2,7 @@ package io.rtaware.record;
 
 import io.rtaware.record.ring.SingleProducerSequence;
 import io.rtaware.ros2msg.Ros2Codec;
+import io.rtaware.ros2msg.TransformMessages;
 import io.rtaware.ros2msg.value.PlanarPose;
 import java.io.IOException;
 
@@ -66,8 +67,8 @@ final class GroundTruthRing implements RecorderRing {
             codec.encode(scratch.header, pose, scratch.cdr);
             sink.write(channel, i, time[s], time[s], scratch.cdr.buffer(), 0, scratch.cdr.size());
             if (tfChannel != 0) {
-                TransformEncoder.begin(scratch.cdr, 1);
-                TransformEncoder.transform(scratch.cdr, stampOffsetNs + time[s], "map", GROUND_TRUTH_FRAME, x[s], y[s],
+                TransformMessages.begin(scratch.cdr, 1);
+                TransformMessages.transform(scratch.cdr, stampOffsetNs + time[s], "map", GROUND_TRUTH_FRAME, x[s], y[s],
                         yaw[s]);
                 sink.write(tfChannel, i, time[s], time[s], scratch.cdr.buffer(), 0, scratch.cdr.size());
             }

@@ -13,8 +13,9 @@ import java.io.IOException;
  * same (nothing is lost) and counted ({@link #outOfOrder()}), never silently misordered.
  *
  * <p>Log times in the file are the world time plus {@code logTimeOffsetNs} (the Unix-epoch time
- * of world time 0), publish times likewise. Writer thread only; once its slots have grown to the
- * run's message sizes it allocates nothing.
+ * of world time 0), publish times likewise. With {@link ClockTicks}, the {@code /clock} ticks
+ * due up to each message are written just before it. Writer thread only; once its slots have
+ * grown to the run's message sizes it allocates nothing.
  */
 final class LogTimeOrderedSink implements MessageSink {
 
@@ -40,6 +41,8 @@ final class LogTimeOrderedSink implements MessageSink {
     private long newestNs = Long.MIN_VALUE;
     private long lastWrittenNs = Long.MIN_VALUE;
     private long outOfOrder;
+    /** {@code /clock}, or null when the world runs on wall time. */
+    private ClockTicks clock;
 
     /**
      * @param writer the file
@@ -96,6 +99,16 @@ final class LogTimeOrderedSink implements MessageSink {
     }
 
     /**
+     * Writes the {@code /clock} ticks due up to each message just before it. Call before the
+     * first {@link #write}.
+     *
+     * @param ticks the ticks
+     */
+    void clock(ClockTicks ticks) {
+        clock = ticks;
+    }
+
+    /**
      * Writes every held message, oldest first (at the end of the recording).
      *
      * @throws IOException if writing fails
@@ -125,6 +138,9 @@ final class LogTimeOrderedSink implements MessageSink {
             outOfOrder++;
         } else {
             lastWrittenNs = t;
+            if (clock != null) {
+                clock.upTo(t);
+            }
         }
         writer.writeMessage(channel[slot], sequence[slot], t + offsetNs, publish[slot] + offsetNs, data[slot], 0,
                 length[slot]);

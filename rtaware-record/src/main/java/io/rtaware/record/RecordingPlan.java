@@ -1,6 +1,7 @@
 package io.rtaware.record;
 
 import io.rtaware.record.mcap.Compression;
+import io.rtaware.ros2msg.value.PlanarTransform;
 import java.time.Instant;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -39,6 +40,21 @@ public final class RecordingPlan {
     public static final String TF_TOPIC = "/tf";
     /** The static transforms topic. */
     public static final String TF_STATIC_TOPIC = "/tf_static";
+    /** The simulated-time topic ({@code rosgraph_msgs/msg/Clock}). */
+    public static final String CLOCK_TOPIC = "/clock";
+    /** World time between {@code /clock} ticks the commands record: 10 ms (100 Hz). */
+    public static final long CLOCK_PERIOD_NS = 10_000_000L;
+    /**
+     * {@code rtaware.run} metadata: {@value #STAMPS_MEASURED} when the ROS 2 headers of the
+     * robot's scans and odometry are stamped at the time the robot measured them
+     * ({@link #robotClockOriginNs(long)}); absent when every header is stamped with its commit's
+     * time.
+     */
+    public static final String HEADER_STAMPS = "header_stamps";
+    /** {@link #HEADER_STAMPS}: scans and odometry at the time the robot measured them. */
+    public static final String STAMPS_MEASURED = "measured";
+    /** {@code rtaware.run} metadata: the world time at which the robot's clock read 0, ns. */
+    public static final String ROBOT_CLOCK_ORIGIN_NS = "robot_clock_origin_ns";
 
     private final Map<String, String> topics = new HashMap<>();
     private final Map<String, String> frames = new HashMap<>();
@@ -47,9 +63,12 @@ public final class RecordingPlan {
     private long logTimeOffsetNs;
     private long worldStartNs;
     private boolean groundTruth;
-    private final List<StaticTransform> staticTransforms = new ArrayList<>();
+    private final List<PlanarTransform> staticTransforms = new ArrayList<>();
     private final Map<String, String[]> transformsFrom = new HashMap<>();
     private long reorderWindowNs = 2_000_000_000L;
+    private long robotClockOriginNs;
+    private boolean robotClockKnown;
+    private long clockPeriodNs;
     private Compression compression = Compression.ZSTD;
     private int valueSlots = 8192;
     private long valueBytesPerKey = 4L << 20;
@@ -107,18 +126,6 @@ public final class RecordingPlan {
     }
 
     /**
-     * A transform that never changes, published once on {@code /tf_static}.
-     *
-     * @param parent the parent frame, e.g. {@code base_link}
-     * @param child the child frame, e.g. {@code laser}
-     * @param xM translation x in metres
-     * @param yM translation y in metres
-     * @param yawRad rotation about z in radians
-     */
-    public record StaticTransform(String parent, String child, double xM, double yM, double yawRad) {
-    }
-
-    /**
      * Adds a transform to {@code /tf_static} (REP 105: e.g. {@code base_link} to {@code laser}).
      *
      * @param parent the parent frame
@@ -129,12 +136,12 @@ public final class RecordingPlan {
      * @return this plan
      */
     public RecordingPlan staticTransform(String parent, String child, double xM, double yM, double yawRad) {
-        staticTransforms.add(new StaticTransform(parent, child, xM, yM, yawRad));
+        staticTransforms.add(new PlanarTransform(parent, child, xM, yM, yawRad));
         return this;
     }
 
     /** @return the transforms of {@code /tf_static} */
-    public List<StaticTransform> staticTransforms() {
+    public List<PlanarTransform> staticTransforms() {
         return List.copyOf(staticTransforms);
     }
 
@@ -193,6 +200,61 @@ public final class RecordingPlan {
                 .metadata(WORLD_START_NS, Long.toString(worldNowNs))
                 .worldStartNs(worldNowNs)
                 .logTimeOffsetNs(wallStartNs - worldNowNs);
+    }
+
+    /**
+     * Declares where the robot's timestamps lie in world time, so that the ROS 2 headers of its
+     * scans and odometry are stamped when it measured them ({@code LaserScan.serverTimeS}: the
+     * scan as the robot stamps it, Player's laser timestamp or a ROS 2 header's stamp;
+     * {@code Odometry.serverTimeS}: the pose's sample time) rather than when they were committed:
+     * a timestamp of {@code t} seconds was taken at world time {@code originNs + t * 1e9}. Known
+     * for the built-in simulator (the clock's reading at its time 0); without it every header is
+     * stamped with its commit's time. Kept in the {@code rtaware.run} metadata as
+     * {@value #HEADER_STAMPS} and {@value #ROBOT_CLOCK_ORIGIN_NS}.
+     *
+     * @param originNs the world time at which the robot's clock read 0
+     * @return this plan
+     */
+    public RecordingPlan robotClockOriginNs(long originNs) {
+        robotClockOriginNs = originNs;
+        robotClockKnown = true;
+        metadata.put(HEADER_STAMPS, STAMPS_MEASURED);
+        metadata.put(ROBOT_CLOCK_ORIGIN_NS, Long.toString(originNs));
+        return this;
+    }
+
+    /** @return true if {@link #robotClockOriginNs(long)} was given */
+    public boolean robotClockKnown() {
+        return robotClockKnown;
+    }
+
+    /** @return the world time at which the robot's clock read 0 (meaningful if {@link #robotClockKnown()}) */
+    public long robotClockOriginNs() {
+        return robotClockOriginNs;
+    }
+
+    /**
+     * Records {@code /clock} ({@code rosgraph_msgs/msg/Clock}): the world runs on simulated time
+     * (a time scale other than 1, or the simulator), so a consumer that follows {@code /clock}
+     * (ROS's {@code use_sim_time}, {@code ros2 bag play --clock}) keeps the file's time. A tick
+     * every {@code periodNs} of world time from the recording's start, each carrying its own log
+     * time (the time every stamp and log time of the file is in), written in order with the
+     * other messages up to the last of them.
+     *
+     * @param periodNs world time between ticks, positive
+     * @return this plan
+     */
+    public RecordingPlan clock(long periodNs) {
+        if (periodNs <= 0) {
+            throw new IllegalArgumentException("/clock period must be positive, got " + periodNs + " ns");
+        }
+        clockPeriodNs = periodNs;
+        return this;
+    }
+
+    /** @return world time between {@code /clock} ticks, or 0 for no {@code /clock} */
+    public long clockPeriodNs() {
+        return clockPeriodNs;
     }
 
     /**

@@ -32,23 +32,28 @@ final class Ros2Channels {
     /** What a topic's publisher offers. */
     enum Qos {
         /** Reliable, volatile, keep last 10: the rclcpp default. */
-        RELIABLE_VOLATILE(10, 2),
+        RELIABLE_VOLATILE(10, 1, 2),
         /** Reliable, transient local, keep last 1: a latched topic ({@code /map}, {@code /tf_static}). */
-        RELIABLE_TRANSIENT_LOCAL(1, 1),
+        RELIABLE_TRANSIENT_LOCAL(1, 1, 1),
         /** Reliable, volatile, keep last 100: {@code /tf}, as tf2's broadcaster offers it. */
-        TF(100, 2);
+        TF(100, 1, 2),
+        /** Best effort, volatile, keep last 1: {@code /clock}, as rclcpp's {@code ClockQoS} offers it. */
+        CLOCK(1, 2, 2);
 
         private final int depth;
+        private final int reliability;
         private final int durability;
 
-        Qos(int depth, int durability) {
+        Qos(int depth, int reliability, int durability) {
             this.depth = depth;
+            this.reliability = reliability;
             this.durability = durability;
         }
 
         /** @return the YAML rosbag2 stores in {@code offered_qos_profiles} (one profile) */
         String yaml() {
-            return "- history: 1\n  depth: " + depth + "\n  reliability: 1\n  durability: " + durability
+            return "- history: 1\n  depth: " + depth + "\n  reliability: " + reliability + "\n  durability: "
+                    + durability
                     + "\n  deadline:" + INFINITE + "\n  lifespan:" + INFINITE + "\n  liveliness: 1"
                     + "\n  liveliness_lease_duration:" + INFINITE + "\n  avoid_ros_namespace_conventions: false\n";
         }

@@ -6,7 +6,9 @@ import io.rtaware.record.encode.TimingTypes;
 import io.rtaware.record.mcap.McapWriter;
 import io.rtaware.ros2msg.PoseStampedCodec;
 import io.rtaware.ros2msg.Ros2Types;
+import io.rtaware.ros2msg.TransformMessages;
 import io.rtaware.ros2msg.cdr.CdrWriter;
+import io.rtaware.ros2msg.value.PlanarTransform;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -33,12 +35,14 @@ import java.util.concurrent.atomic.AtomicLong;
  * ROS 2 type, the fields the ROS 2 message lacks on {@code /rtaware/state/<key>} as a StateJson
  * (so a value can be rebuilt exactly); one {@code /rtaware/timing/<task>} per task
  * ({@code rtaware_msgs/msg/TaskCycle}), one message per cycle; {@code /rtaware/events}
- * ({@code rtaware_msgs/msg/MonitorEvent}); {@code /ground_truth} if the plan declares it. Log
- * and publish time of every message are the world time of its commit, cycle end or event plus
- * the plan's log-time offset (Unix-epoch ns), and messages are written in log-time order through
- * a reorder window ({@link LogTimeOrderedSink}). A plan's {@link RecordingTap} (a live server)
- * is told of every channel and handed every message as the writer thread encodes it, before the
- * reorder window ({@link TappedSink}); without a file the recorder works for the tap alone.
+ * ({@code rtaware_msgs/msg/MonitorEvent}); {@code /ground_truth} if the plan declares it;
+ * {@code /tf_static} and {@code /tf} as the plan names them; {@code /clock} when the world runs
+ * on simulated time ({@link RecordingPlan#clock}). Log and publish time of every message are the
+ * world time of its commit, cycle end or event plus the plan's log-time offset (Unix-epoch ns),
+ * and messages are written in log-time order through a reorder window
+ * ({@link LogTimeOrderedSink}). A plan's {@link RecordingTap} (a live server) is told of every
+ * channel and handed every message as the writer thread encodes it, before the reorder window
+ * ({@link TappedSink}); without a file the recorder works for the tap alone.
  *
  * <p>{@link #finish()} drains everything, writes the summary and the footer: call it on every exit
  * path (the run's termination handler). Thread-safety, as the rings' types say:
@@ -165,13 +169,14 @@ public final class RunRecorder {
             for (int t = 0; t < tasks.length; t++) {
                 List<String> inputs = taskInputs.get(t);
                 int channel = layout.add(RecordingPlan.TIMING_PREFIX + taskNames.get(t), TimingTypes.TASK_CYCLE.name(),
-                        TimingTypes.TASK_CYCLE.schemaText(), null, Ros2Channels.Qos.RELIABLE_VOLATILE,
-                        Map.of("task", taskNames.get(t), "inputs", String.join(",", inputs), SEQUENCE, SEQUENCE_CYCLE));
+                        TimingTypes.TASK_CYCLE.schemaText(), TimingTypes.TASK_CYCLE.typeHash(),
+                        Ros2Channels.Qos.RELIABLE_VOLATILE, Map.of("task", taskNames.get(t), "inputs", String.join(",", inputs), SEQUENCE, SEQUENCE_CYCLE));
                 tasks[t] = new CycleRing(channel, inputs.size(), plan.cycleSlots());
                 rings.add(tasks[t]);
             }
             events = new EventRing(layout.add(RecordingPlan.EVENTS_TOPIC, TimingTypes.MONITOR_EVENT.name(),
-                    TimingTypes.MONITOR_EVENT.schemaText(), null, Ros2Channels.Qos.RELIABLE_VOLATILE, Map.of()),
+                    TimingTypes.MONITOR_EVENT.schemaText(), TimingTypes.MONITOR_EVENT.typeHash(),
+                    Ros2Channels.Qos.RELIABLE_VOLATILE, Map.of()),
                     List.copyOf(taskNames), plan.eventSlots());
             rings.add(events);
             if (plan.hasGroundTruth()) {
@@ -195,6 +200,12 @@ public final class RunRecorder {
                 plan.reorderWindowNs(), REORDER_SLOTS, REORDER_BYTES);
         sink = plan.tap() == null ? ordered : new TappedSink(plan.tap(), ordered, plan.logTimeOffsetNs());
         try {
+            if (plan.clockPeriodNs() > 0 && ordered != null) { // /clock is for files; a tap alone follows live time
+                int clock = layout.add(RecordingPlan.CLOCK_TOPIC, Ros2Types.CLOCK.name(), Ros2Types.CLOCK.schemaText(),
+                        Ros2Types.CLOCK.typeHash(), Ros2Channels.Qos.CLOCK, Map.of());
+                ordered.clock(new ClockTicks(writer, clock, plan.worldStartNs(), plan.clockPeriodNs(),
+                        plan.logTimeOffsetNs()));
+            }
             writeStaticTransforms(plan);
         } catch (IOException | RuntimeException e) {
             closeIfAny(writer);
@@ -206,7 +217,7 @@ public final class RunRecorder {
 
     /** Writes {@code /tf_static} once, at the recording's start (before the writer thread runs). */
     private void writeStaticTransforms(RecordingPlan plan) throws IOException {
-        List<RecordingPlan.StaticTransform> all = plan.staticTransforms();
+        List<PlanarTransform> all = plan.staticTransforms();
         if (all.isEmpty()) {
             return;
         }
@@ -214,11 +225,7 @@ public final class RunRecorder {
                 Ros2Types.TF_MESSAGE.schemaText(), Ros2Types.TF_MESSAGE.typeHash(),
                 Ros2Channels.Qos.RELIABLE_TRANSIENT_LOCAL, Map.of());
         CdrWriter cdr = new CdrWriter(4096);
-        TransformEncoder.begin(cdr, all.size());
-        long stampNs = plan.logTimeOffsetNs() + plan.worldStartNs();
-        for (RecordingPlan.StaticTransform t : all) {
-            TransformEncoder.transform(cdr, stampNs, t.parent(), t.child(), t.xM(), t.yM(), t.yawRad());
-        }
+        TransformMessages.write(cdr, plan.logTimeOffsetNs() + plan.worldStartNs(), all);
         sink.write(channel, 0, plan.worldStartNs(), plan.worldStartNs(), cdr.buffer(), 0, cdr.size());
     }
 

@@ -180,7 +180,7 @@ public final class ExactReplay {
                 throw new IOException("the recording has no channel of key '" + key.name() + "', which task '"
                         + spec.name() + "' reads");
             }
-            return new Port<>(new ValueCodec<>(key, channel == null ? "map" : channel.frameId()), channel);
+            return new Port<>(new ValueCodec<>(key), channel);
         }
 
         TaskResult replay() throws IOException {

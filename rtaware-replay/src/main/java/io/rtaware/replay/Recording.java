@@ -40,10 +40,8 @@ public final class Recording {
      * @param generation its generation
      * @param data its message as recorded
      * @param state the JSON of what its ROS 2 message lacks, or null
-     * @param stampNs the stamp of its ROS 2 message's header: its log time (world time before
-     *     recordings had Unix-epoch log times)
      */
-    public record Commit(long timeNs, long generation, byte[] data, byte[] state, long stampNs) {
+    public record Commit(long timeNs, long generation, byte[] data, byte[] state) {
     }
 
     /** One task's timing record with its number among the task's records (dropped ones included). */
@@ -143,11 +141,10 @@ public final class Recording {
                             ? StateJsonMessage.json(data, offset, length) : Arrays.copyOfRange(data, offset, offset + length);
                     long worldNs = logTimeNs - offsetNs[0];
                     if (topic.startsWith(RecordingPlan.STATE_PREFIX)) {
-                        stateOf.computeIfAbsent(key, k -> new ChannelBuilder(channel)).add(sequence, worldNs, bytes,
-                                logTimeNs);
+                        stateOf.computeIfAbsent(key, k -> new ChannelBuilder(channel)).add(sequence, worldNs, bytes);
                     } else {
                         builders.computeIfAbsent(channel.id(), id -> new ChannelBuilder(channel))
-                                .add(sequence, worldNs, bytes, logTimeNs);
+                                .add(sequence, worldNs, bytes);
                     }
                 }
             });
@@ -206,9 +203,9 @@ public final class Recording {
             numbered = RunRecorder.SEQUENCE_GENERATION.equals(channel.metadata().get(RunRecorder.SEQUENCE));
         }
 
-        void add(long sequence, long timeNs, byte[] bytes, long logTimeNs) {
+        void add(long sequence, long timeNs, byte[] bytes) {
             long generation = numbered ? sequence : data.size() + 1;
-            stamps.add(new long[] {generation, timeNs, logTimeNs});
+            stamps.add(new long[] {generation, timeNs});
             data.add(bytes);
         }
 
@@ -226,7 +223,7 @@ public final class Recording {
                 if (state != null && s == null) {
                     continue; // the value without its state message cannot be rebuilt: as if dropped
                 }
-                commits.add(new Commit(stamps.get(i)[1], generation, data.get(i), s, stamps.get(i)[2]));
+                commits.add(new Commit(stamps.get(i)[1], generation, data.get(i), s));
             }
             commits.sort(Comparator.comparingLong(Commit::generation));
             long[] generations = new long[commits.size()];

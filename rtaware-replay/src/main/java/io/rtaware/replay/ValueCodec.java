@@ -28,7 +28,6 @@ import java.util.List;
 final class ValueCodec<T extends StateValue<T>> {
 
     private final Key<T> key;
-    private final String frameId;
     private final Ros2Codec<T> ros;
     private final JsonStateCodec json;
     private final StateFields fields;
@@ -40,9 +39,8 @@ final class ValueCodec<T extends StateValue<T>> {
     private final T replayed;
 
     @SuppressWarnings("unchecked")
-    ValueCodec(Key<T> key, String frameId) {
+    ValueCodec(Key<T> key) {
         this.key = key;
-        this.frameId = frameId;
         this.ros = (Ros2Codec<T>) RosCodecs.forType(key.type());
         this.json = new JsonStateCodec(key.type(), ros != null);
         this.fields = StateFields.of(key.type());
@@ -83,9 +81,10 @@ final class ValueCodec<T extends StateValue<T>> {
 
     /**
      * Tells whether a value is what a recorded commit holds, as far as the recording carries it:
-     * a ROS 2-typed value must encode to the same CDR bytes (header stamped as recorded) and
-     * equal the recorded state fields; any other value must equal every recorded field. Doubles
-     * are equal when their bits are. Allocates nothing.
+     * a ROS 2-typed value must encode to the same CDR bytes (with the recorded header: its stamp
+     * is when the data was measured or committed, which the value does not say) and equal the
+     * recorded state fields; any other value must equal every recorded field. Doubles are equal
+     * when their bits are. Allocates nothing.
      *
      * @param value a value
      * @param commit a recorded commit
@@ -93,8 +92,8 @@ final class ValueCodec<T extends StateValue<T>> {
      * @throws IOException if the recorded commit is not readable
      */
     boolean sameAs(T value, Recording.Commit commit) throws IOException {
+        decode(commit, recorded); // of a ROS 2-typed value, the header comes with it, as recorded
         if (ros != null) {
-            header.set(commit.stampNs(), frameId);
             ros.encode(header, value, cdr);
             if (!Arrays.equals(cdr.buffer(), 0, cdr.size(), commit.data(), 0, commit.data().length)) {
                 return false;
@@ -103,7 +102,6 @@ final class ValueCodec<T extends StateValue<T>> {
                 return true;
             }
         }
-        decode(commit, recorded);
         // The CDR bytes matched; of a ROS 2-typed value, compare the scalars the state carries exactly
         // (its arrays came back through the ROS type, which may round them, e.g. yaw as a quaternion).
         return firstDifferentField(recorded, value, ros != null) == null;
@@ -119,11 +117,10 @@ final class ValueCodec<T extends StateValue<T>> {
      * @throws IOException if the recorded commit is not readable
      */
     Difference difference(T value, Recording.Commit commit) throws IOException {
-        decode(commit, recorded);
+        decode(commit, recorded); // of a ROS 2-typed value, the header comes with it, as recorded
         byte[] data;
         byte[] state = null;
         if (ros != null) {
-            header.set(commit.stampNs(), frameId);
             ros.encode(header, value, cdr);
             data = Arrays.copyOf(cdr.buffer(), cdr.size());
             text.clear();
@@ -134,7 +131,7 @@ final class ValueCodec<T extends StateValue<T>> {
             json.encode(value, text);
             data = Arrays.copyOf(text.array(), text.size());
         }
-        decode(new Recording.Commit(commit.timeNs(), commit.generation(), data, state, commit.stampNs()), replayed);
+        decode(new Recording.Commit(commit.timeNs(), commit.generation(), data, state), replayed);
         Difference d = firstDifferentField(recorded, replayed, false);
         if (d != null) {
             return d;

@@ -127,7 +127,7 @@ public final class WhatIfReplay {
     }
 
     private static <T extends StateValue<T>> Feed<T> feed(Key<T> key, Recording.KeyChannel channel) {
-        return new Feed<>(new ValueCodec<>(key, channel.frameId()), channel);
+        return new Feed<>(new ValueCodec<>(key), channel);
     }
 
     /** @return the task's recorded execution times (end - start of each cycle), world ns, in order */

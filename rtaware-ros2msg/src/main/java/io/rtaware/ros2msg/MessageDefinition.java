@@ -39,6 +39,11 @@ public final class MessageDefinition {
         return name.replace("/msg/", "/");
     }
 
+    /** @return the message types of its fields, in field order */
+    public List<MessageDefinition> dependencies() {
+        return dependencies;
+    }
+
     /** @return this type's own definition text */
     public String text() {
         return text;

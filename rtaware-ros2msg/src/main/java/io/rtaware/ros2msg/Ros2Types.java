@@ -1,9 +1,10 @@
 package io.rtaware.ros2msg;
 
 /**
- * The ROS 2 message definitions rtaware speaks (Jazzy, comments removed) and the seven top-level
+ * The ROS 2 message definitions rtaware speaks (Jazzy, comments removed) and the top-level
  * types with their RIHS01 hashes. The hashes are the values ROS 2 computes from these
- * definitions; a test recomputes them against an independent implementation's output.
+ * definitions; tests recompute them against an independent implementation's output and with
+ * {@link TypeDescriptionHash}.
  */
 public final class Ros2Types {
 
@@ -99,6 +100,14 @@ public final class Ros2Types {
     public static final Ros2MessageType TF_MESSAGE = new Ros2MessageType(new MessageDefinition(
             "tf2_msgs/msg/TFMessage", "geometry_msgs/TransformStamped[] transforms\n", TRANSFORM_STAMPED),
             "RIHS01_e369d0f05a23ae52508854b66f6aa0437f3449d652e8cbf22d5abe85d020f087");
+
+    /**
+     * {@code rosgraph_msgs/msg/Clock}, what {@code /clock} carries when a system runs on simulated
+     * time (its hash as {@link TypeDescriptionHash} and rosbags compute it for Jazzy).
+     */
+    public static final Ros2MessageType CLOCK = new Ros2MessageType(new MessageDefinition(
+            "rosgraph_msgs/msg/Clock", "builtin_interfaces/Time clock\n", TIME),
+            "RIHS01_692f7a66e93a3c83e71765d033b60349ba68023a8c689a79e48078bcb5c58564");
 
     private Ros2Types() {
     }

@@ -377,13 +377,16 @@ public final class BenchCommand implements Callable<Integer> {
         }
         ConsoleReporter console = CommandMonitor.console(monitor, quiet, System.err);
         TraceRecorder recorder = trace.attach(monitor);
+        RecordingPlan recordingPlan = new RecordingPlan().metadata("command", "bench")
+                .metadata("tasks", String.join(",", specs.stream().map(s -> s.name() + ":" + Durations.format(s.periodNs())
+                        + ":" + Durations.format(s.workNs())).toList()));
+        if (timeScale != 1.0) {
+            recordingPlan.clock(RecordingPlan.CLOCK_PERIOD_NS); // simulated time: /clock, for consumers that follow it
+        }
         FoxgloveServer foxgloveServer = foxglove.start("bench", out);
         RunRecorder recording;
         try {
-            recording = record.attach(monitor, new RecordingPlan().metadata("command", "bench")
-                    .metadata("tasks", String.join(",", specs.stream().map(s -> s.name() + ":"
-                            + Durations.format(s.periodNs()) + ":" + Durations.format(s.workNs())).toList()))
-                    .tap(foxgloveServer));
+            recording = record.attach(monitor, recordingPlan.tap(foxgloveServer));
         } catch (RuntimeException e) {
             FoxgloveMixin.close(foxgloveServer);
             throw e;
@@ -396,7 +399,7 @@ public final class BenchCommand implements Callable<Integer> {
         } catch (LiveAddressException e) {
             throw new UserError(e.getMessage());
         }
-        MonitorExporter exporter = export.options().map(e -> e.start(monitor, List.of(), System.err)).orElse(null);
+        MonitorExporter exporter = export.options().map(e -> e.start(monitor, List.of(), List.of(), System.err)).orElse(null);
         Thread hook = monitor.installShutdownHook();
         OutputWrites writes = new OutputWrites(System.err);
         monitor.onTermination(report -> finish(monitor, report, console, recorder, recording, foxgloveServer, out,

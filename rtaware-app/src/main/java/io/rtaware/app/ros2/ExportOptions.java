@@ -5,7 +5,9 @@ import io.rtaware.ros2.export.ExportedKey;
 import io.rtaware.ros2.export.MonitorExporter;
 import io.rtaware.ros2.graph.Ros2Context;
 import io.rtaware.zenoh.ZenohException;
+import io.rtaware.ros2msg.value.PlanarTransform;
 import java.io.PrintStream;
+import java.util.ArrayList;
 import java.util.List;
 
 /**
@@ -24,17 +26,25 @@ public record ExportOptions(String router, String listen) {
      *
      * @param monitor the monitor to export
      * @param keys the keys with a ROS 2 type
+     * @param staticTransforms what {@code /tf_static} carries (none: no such topic)
      * @param err where the one line goes
      * @return the running exporter
      * @throws io.rtaware.app.UserError if the router cannot be reached or the endpoint bound
      */
-    public MonitorExporter start(Monitor monitor, List<ExportedKey<?>> keys, PrintStream err) {
+    public MonitorExporter start(Monitor monitor, List<ExportedKey<?>> keys, List<PlanarTransform> staticTransforms,
+                                 PrintStream err) {
         String at = listen != null ? listen : Ros2Wiring.freeLoopbackEndpoint();
         List<String> connect = router == null ? List.of() : List.of(router);
         Ros2Context context = Ros2Wiring.open(connect, List.of(at), 0);
         try {
-            MonitorExporter exporter = MonitorExporter.start(monitor, context, keys, KEY_PERIOD_MS);
-            List<String> topics = exporter.topics().values().stream().sorted().toList();
+            MonitorExporter exporter = MonitorExporter.start(monitor, context, keys, staticTransforms, KEY_PERIOD_MS);
+            List<String> topics = new ArrayList<>(exporter.topics().values().stream().sorted().toList());
+            if (keys.stream().anyMatch(k -> k.transformChild() != null)) {
+                topics.add(MonitorExporter.TF);
+            }
+            if (!staticTransforms.isEmpty()) {
+                topics.add(MonitorExporter.TF_STATIC);
+            }
             err.println("rtaware export: ROS 2 over Zenoh on " + at + (router == null ? "" : " via " + router) + ": "
                     + MonitorExporter.DIAGNOSTICS + (topics.isEmpty()
                             ? " (no key of this run has a ROS 2 type: each key's health is a status there)"

@@ -244,13 +244,13 @@ public final class RobotRun {
             CpuLatencyRequest.hold(CpuLatencyRequest.DEVICE, 0, err)
                     .ifPresent(request -> monitor.onTermination(report -> request.close()));
         }
-        MonitorExporter exporter = export.map(e -> e.start(monitor, RunExports.keys(nav), err)).orElse(null);
+        MonitorExporter exporter = export.map(e -> e.start(monitor, RunExports.keys(nav), RunExports.STATIC_TRANSFORMS, err)).orElse(null);
         ConsoleReporter console = CommandMonitor.console(monitor, options.quiet(), err);
         TraceRecorder trace = options.trace().attach(monitor);
         FoxgloveServer foxgloveServer = foxglove.start("run", out);
         RunRecorder recorder;
         try {
-            recorder = record.attach(monitor, RunRecording.plan(scenario, options, navConfig, model.name())
+            recorder = record.attach(monitor, RunRecording.plan(scenario, options, navConfig, model.name(), server)
                     .tap(foxgloveServer));
         } catch (RuntimeException e) {
             FoxgloveMixin.close(foxgloveServer);

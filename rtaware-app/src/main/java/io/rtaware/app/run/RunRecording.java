@@ -10,6 +10,7 @@ import io.rtaware.record.RunRecorder;
 import io.rtaware.robot.geometry.Pose2d;
 import io.rtaware.robot.msg.RobotKeys;
 import io.rtaware.sim.scenario.Scenario;
+import io.rtaware.sim.server.PlayerSimServer;
 import java.util.Locale;
 
 /**
@@ -18,7 +19,10 @@ import java.util.Locale;
  * on {@code /ground_truth}, the REP 105 frames on {@code /tf_static} ({@code map} to {@code odom},
  * {@code base_link} to {@code laser}) and {@code /tf} ({@code odom} to {@code base_link} from
  * odometry, {@code map} to {@code ground_truth}), and the run's settings as the file's {@code rtaware.run} metadata
- * (what {@code rtaware replay} rebuilds the controller from).
+ * (what {@code rtaware replay} rebuilds the controller from). Against the built-in simulator
+ * (over Player or ROS 2), whose clock is the run's, scans and odometry are stamped when the
+ * simulator measured them; against another robot, when they were committed. {@code /clock} is
+ * recorded when the world runs on simulated time: the simulator, or a time scale other than 1.
  */
 final class RunRecording {
 
@@ -36,9 +40,11 @@ final class RunRecording {
      * @param options the run's options
      * @param navConfig the controller's configuration (recorded whole, for replay)
      * @param modelName the robot model's name
+     * @param simulator the built-in simulator, stepping on the run's clock, or null for another robot
      * @return the plan
      */
-    static RecordingPlan plan(Scenario scenario, RunOptions options, NavConfig navConfig, String modelName) {
+    static RecordingPlan plan(Scenario scenario, RunOptions options, NavConfig navConfig, String modelName,
+                              PlayerSimServer simulator) {
         RecordingPlan plan = new RecordingPlan()
                 .topic(RobotKeys.LASER.name(), "/scan", LASER_FRAME)
                 .topic(RobotKeys.ODOMETRY.name(), "/odom", "odom")
@@ -62,6 +68,12 @@ final class RunRecording {
                         : String.format(Locale.ROOT, "player %s:%d", options.playerHost(), options.playerPort()));
         ControllerMetadata.entries(navConfig, modelName, Runtime.getRuntime().availableProcessors())
                 .forEach(plan::metadata);
+        if (simulator != null) {
+            plan.robotClockOriginNs(simulator.clockOriginNs()); // the simulator's timestamps are the run's clock
+        }
+        if (simulator != null || options.timeScale() != 1.0) {
+            plan.clock(RecordingPlan.CLOCK_PERIOD_NS);
+        }
         return plan;
     }
 

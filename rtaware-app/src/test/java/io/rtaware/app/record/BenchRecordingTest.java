@@ -35,5 +35,17 @@ class BenchRecordingTest {
         assertEquals(0, inspect.status(), inspect.err());
         assertTrue(inspect.out().contains("rtaware_msgs/msg/TaskCycle"), inspect.out());
         assertTrue(!inspect.out().contains("/ground_truth"), "no channel a bench never writes: " + inspect.out());
+        assertTrue(!inspect.out().contains("/clock"), "no /clock on wall time: " + inspect.out());
+    }
+
+    @Test
+    void aBenchOnScaledTimeRecordsClockTicksThatRosbagsReads() throws Exception {
+        Path file = dir.resolve("scaled.mcap");
+        CliRun run = CliRun.of("bench", "--tasks", "1", "--period", "10ms", "--work", "0", "--duration", "2s",
+                "--time-scale", "4", "--quiet", "--record", file.toString());
+        assertEquals(0, run.status(), run.err());
+        String checked = Ros2ProfileCheck.run(file);
+        assertTrue(checked.contains("/clock ticks, each its log time, increasing"), checked);
+        assertTrue(checked.contains("rosgraph_msgs/msg/Clock"), "rosbags decoded /clock: " + checked);
     }
 }

@@ -14,8 +14,10 @@ import io.rtaware.ros2msg.DiagnosticArrayCodec;
 import io.rtaware.ros2msg.Ros2Header;
 import io.rtaware.ros2msg.Ros2MessageType;
 import io.rtaware.ros2msg.Ros2Types;
+import io.rtaware.ros2msg.TransformMessages;
 import io.rtaware.ros2msg.cdr.CdrReader;
 import io.rtaware.ros2msg.value.DiagnosticArray;
+import io.rtaware.ros2msg.value.PlanarPose;
 import io.rtaware.zenoh.SampleBuffer;
 import io.rtaware.zenoh.ZenohConfig;
 import io.rtaware.zenoh.ZenohLibrary;
@@ -120,11 +122,12 @@ class ExportEndToEndTest {
     }
 
     @Test
-    void runExportsTheKeysWithRos2TypesUnderRtaware() throws Exception {
+    void runExportsTheKeysWithRos2TypesUnderRtawareAndTheRep105Frames() throws Exception {
         List<String> topics = List.of("/rtaware/laser", "/rtaware/odometry", "/rtaware/motor", "/rtaware/map",
-                "/rtaware/path", "/diagnostics");
+                "/rtaware/path", "/diagnostics", "/tf", "/tf_static");
         List<Ros2MessageType> types = List.of(Ros2Types.LASER_SCAN, Ros2Types.ODOMETRY, Ros2Types.TWIST,
-                Ros2Types.OCCUPANCY_GRID, Ros2Types.PATH, new DiagnosticArrayCodec().type());
+                Ros2Types.OCCUPANCY_GRID, Ros2Types.PATH, new DiagnosticArrayCodec().type(), Ros2Types.TF_MESSAGE,
+                Ros2Types.TF_MESSAGE);
         for (int i = 0; i < topics.size(); i++) {
             mailbox.subscribe(Ros2Names.topicKey(0, topics.get(i), types.get(i).ddsTypeName(), types.get(i).typeHash()), i);
         }
@@ -132,6 +135,7 @@ class ExportEndToEndTest {
         PrintStream savedErr = System.err;
         PrintStream savedOut = System.out;
         Set<String> seen = new HashSet<>();
+        Set<String> frames = new HashSet<>();
         int status;
         try {
             System.setErr(new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8));
@@ -143,7 +147,11 @@ class ExportEndToEndTest {
             while (seen.size() < topics.size() && System.nanoTime() < deadline) {
                 ZenohMailbox.Take took = mailbox.take(TimeUnit.MILLISECONDS.toNanos(100), sample);
                 if (took == ZenohMailbox.Take.SAMPLE || took == ZenohMailbox.Take.TOO_LARGE) {
-                    seen.add(topics.get(sample.channel()));
+                    String topic = topics.get(sample.channel());
+                    seen.add(topic);
+                    if (took == ZenohMailbox.Take.SAMPLE && topic.startsWith("/tf")) {
+                        frames.addAll(transforms(topic, sample));
+                    }
                 }
             }
             status = run.get(120, TimeUnit.SECONDS);
@@ -153,5 +161,22 @@ class ExportEndToEndTest {
         }
         assertEquals(0, status);
         assertEquals(Set.copyOf(topics), seen, "the topics the README names, with their ROS 2 types");
+        assertEquals(Set.of("/tf: odom -> base_link", "/tf_static: base_link -> laser", "/tf_static: map -> odom"), frames,
+                "the REP 105 frames of the exported data");
+    }
+
+    /** @return "topic: parent -> child" of each transform of a TFMessage */
+    private static List<String> transforms(String topic, SampleBuffer sample) {
+        byte[] bytes = new byte[sample.payloadLength()];
+        sample.payload().get(0, bytes);
+        CdrReader in = new CdrReader().wrap(bytes, 0, bytes.length);
+        Ros2Header header = new Ros2Header();
+        StringBuilder child = new StringBuilder();
+        List<String> out = new ArrayList<>();
+        for (int i = TransformMessages.count(in); i > 0; i--) {
+            TransformMessages.read(in, header, child, new PlanarPose());
+            out.add(topic + ": " + header.frameId + " -> " + child);
+        }
+        return out;
     }
 }

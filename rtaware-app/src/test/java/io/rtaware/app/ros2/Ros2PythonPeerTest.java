@@ -35,8 +35,9 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * The simulator as a ROS 2 robot against an independent implementation of the same conventions:
  * a Python Zenoh router standing in for rmw_zenohd, and a Python peer built on zenoh-ros2-sdk and
- * rosbags ({@code src/test/resources/ros2/ros2_peer.py}) that decodes /scan and /odom, lists the
- * graph through liveliness tokens and drives the robot on /cmd_vel. The Python interpreter of a
+ * rosbags ({@code src/test/resources/ros2/ros2_peer.py}) that decodes /scan and /odom, checks the
+ * REP 105 frames on /tf and /tf_static, lists the graph through liveliness tokens and drives the
+ * robot on /cmd_vel. The Python interpreter of a
  * virtual environment with those packages is named by {@code RTAWARE_PEER_PYTHON} (.ci/run makes
  * one); without it, or without the native Zenoh layer, the test is skipped, except under CI=true
  * where it fails.
@@ -94,6 +95,17 @@ class Ros2PythonPeerTest {
                 assertEquals(0, peer.exitValue(), "the Python peer's checks: " + seen.path("failures"));
                 assertTrue(seen.path("first_scan").path("beams").asInt() > 100, "LaserScan decoded: " + seen);
                 assertEquals("odom", seen.path("first_odometry").path("frame").asText(), "Odometry decoded: " + seen);
+                assertEquals("base_link", seen.path("first_odometry").path("child").asText(), "odometry's child frame");
+                assertEquals("laser", seen.path("first_scan").path("frame").asText(), "the scan's frame");
+                assertEquals("[[\"odom\",\"base_link\"]]", seen.path("tf").toString(), "/tf as the peer decoded it");
+                assertEquals("[[\"base_link\",\"laser\"]]", seen.path("tf_static").toString(),
+                        "/tf_static as the peer decoded it");
+                assertTrue(seen.path("tf_matched_odometry").asInt() > 0, "/tf stamped as odometry samples: " + seen);
+                assertTrue(seen.path("scan_stamps_ns").size() > 0, "scan stamps: " + seen);
+                for (JsonNode stamp : seen.path("scan_stamps_ns")) {
+                    assertEquals(0, stamp.asLong() % 100_000_000L, "a scan stamped at its first beam, the start of "
+                            + "the URG-04LX's sweep on its 100 ms turn grid (its delivery is 77 ms later): " + stamp);
+                }
                 assertEquals("rtaware_sim", seen.path("scan_publishers").path(0).path("node").asText());
                 assertTrue(robot.commands() > 0, "the simulator obeyed the Python /cmd_vel");
                 Pose2d end = server.groundTruth();

@@ -8,12 +8,24 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.app.RtawareCli;
+import io.rtaware.record.RecordingPlan;
+import io.rtaware.record.mcap.McapChannel;
+import io.rtaware.record.mcap.McapReader;
+import io.rtaware.record.mcap.McapVisitor;
+import io.rtaware.robot.msg.LaserScan;
+import io.rtaware.ros2msg.LaserScanCodec;
+import io.rtaware.ros2msg.Ros2Header;
+import io.rtaware.ros2msg.cdr.CdrReader;
 import io.rtaware.zenoh.ZenohLibrary;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -84,10 +96,49 @@ class Ros2RunEndToEndTest {
     void runRos2DrivesTheBuiltInSimulatorAsARos2Robot() throws Exception {
         requireNativeZenoh();
         Path out = dir.resolve("run");
+        Path recording = dir.resolve("run.mcap");
         int status = quietly("run", "--ros2", "--scenario", shortLeg().toString(), "--time-scale", "10",
-                "--out", out.toString(), "--quiet", "--seed", "7");
+                "--out", out.toString(), "--quiet", "--seed", "7", "--record", recording.toString());
         assertEquals(0, status);
         completedReport(out, "ground_truth");
+        assertScansStampedAtTheirFirstBeam(recording);
+    }
+
+    /**
+     * Every recorded scan's header stamp, back on the simulator's clock, is the start of a sweep of
+     * the URG-04LX (on its 100 ms turn grid), as sim --ros2 stamps it and the data task passes it on.
+     */
+    private static void assertScansStampedAtTheirFirstBeam(Path recording) throws Exception {
+        Map<String, String> run = new HashMap<>();
+        List<Long> stamps = new ArrayList<>();
+        LaserScanCodec codec = new LaserScanCodec();
+        Ros2Header header = new Ros2Header();
+        LaserScan scan = new LaserScan();
+        McapReader.open(recording).read(new McapVisitor() {
+            @Override
+            public void metadata(String name, Map<String, String> entries) {
+                if (name.equals("rtaware.run")) {
+                    run.putAll(entries);
+                }
+            }
+
+            @Override
+            public void message(McapChannel channel, long sequence, long logTimeNs, long publishTimeNs, byte[] data,
+                                int offset, int length) {
+                if (channel.topic().equals("/scan")) {
+                    codec.decode(new CdrReader().wrap(data, offset, length), header, scan);
+                    stamps.add(header.stampNs);
+                }
+            }
+        });
+        assertEquals(RecordingPlan.STAMPS_MEASURED, run.get(RecordingPlan.HEADER_STAMPS), "metadata: " + run);
+        long originNs = Long.parseLong(run.get(RecordingPlan.LOG_TIME_OFFSET_NS))
+                + Long.parseLong(run.get(RecordingPlan.ROBOT_CLOCK_ORIGIN_NS));
+        assertTrue(stamps.size() > 10, "scans recorded: " + stamps.size());
+        for (long stampNs : stamps) {
+            assertEquals(0, (stampNs - originNs) % 100_000_000L, "a scan stamped at the start of its sweep, "
+                    + (stampNs - originNs) + " ns of simulated time");
+        }
     }
 
     @Test

@@ -9,6 +9,8 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.app.CliRun;
 import io.rtaware.app.RtawareCli;
+import io.rtaware.record.RecordingPlan;
+import io.rtaware.record.StateJsonMessage;
 import io.rtaware.record.mcap.McapChannel;
 import io.rtaware.record.mcap.McapReader;
 import io.rtaware.record.mcap.McapSummary;
@@ -75,18 +77,48 @@ class RecordRunTest {
         Ros2Header header = new Ros2Header();
         CdrReader cdr = new CdrReader();
         LaserScanCodec codec = new LaserScanCodec();
+        Map<String, String> run = new HashMap<>();
+        Map<Long, Long> scanStamps = new HashMap<>();
+        Map<Long, Double> scanTimesS = new HashMap<>();
+        long[] measuredBeforeCommit = new long[1];
+        ObjectMapper json = new ObjectMapper();
         reader.read(new McapVisitor() {
+            @Override
+            public void metadata(String name, Map<String, String> entries) {
+                if (name.equals("rtaware.run")) {
+                    run.putAll(entries);
+                }
+            }
+
             @Override
             public void message(McapChannel channel, long sequence, long logTimeNs, long publishTimeNs,
                                 byte[] data, int offset, int length) {
                 counts.merge(channel.topic(), 1, Integer::sum);
                 if (channel.topic().equals("/scan")) {
                     codec.decode(cdr.wrap(data, offset, length), header, scan);
-                    assertEquals(logTimeNs, header.stampNs, "header stamp = log time (Unix-epoch ns of the commit)");
+                    assertTrue(header.stampNs <= logTimeNs, "stamped when measured, by the commit at the latest");
+                    measuredBeforeCommit[0] += header.stampNs < logTimeNs ? 1 : 0;
+                    scanStamps.put(sequence, header.stampNs);
                     assertTrue(scan.count() > 100, "beams: " + scan.count());
+                } else if (channel.topic().equals("/rtaware/state/laser")) {
+                    try {
+                        scanTimesS.put(sequence, json.readTree(StateJsonMessage.json(data, offset, length))
+                                .get("serverTimeS").asDouble());
+                    } catch (IOException e) {
+                        throw new AssertionError(e);
+                    }
                 }
             }
         });
+        assertEquals(RecordingPlan.STAMPS_MEASURED, run.get(RecordingPlan.HEADER_STAMPS), "the simulator's clock is known");
+        long stampOffsetNs = Long.parseLong(run.get(RecordingPlan.LOG_TIME_OFFSET_NS))
+                + Long.parseLong(run.get(RecordingPlan.ROBOT_CLOCK_ORIGIN_NS));
+        assertEquals(scanTimesS.keySet(), scanStamps.keySet(), "a state message per scan");
+        scanStamps.forEach((generation, stampNs) -> assertEquals(
+                stampOffsetNs + Math.round(scanTimesS.get(generation) * 1e9), stampNs,
+                "scan " + generation + " stamped with the simulator's timestamp on the run's clock"));
+        assertTrue(measuredBeforeCommit[0] > 0, "scans measured before their commit");
+        assertTrue(counts.getOrDefault("/clock", 0) > 0, "/clock on the simulator's time: " + counts);
         for (String topic : new String[] {"/scan", "/odom", "/cmd_vel", "/map", "/plan", "/ground_truth",
             "/rtaware/events", "/rtaware/timing/planner", "/rtaware/timing/player", "/rtaware/data/course"}) {
             assertTrue(summary.channels().stream().anyMatch(c -> c.topic().equals(topic)), "channel " + topic);

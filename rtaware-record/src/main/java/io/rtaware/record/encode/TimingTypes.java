@@ -1,6 +1,8 @@
 package io.rtaware.record.encode;
 
 import io.rtaware.ros2msg.MessageDefinition;
+import io.rtaware.ros2msg.Ros2MessageType;
+import io.rtaware.ros2msg.TypeDescriptionHash;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.UncheckedIOException;
@@ -11,7 +13,9 @@ import java.nio.charset.StandardCharsets;
  * are resources of this module, under {@code rtaware_msgs/}, with a package.xml and
  * CMakeLists.txt so a ROS 2 workspace builds them): schema encoding {@code ros2msg}, message
  * encoding {@code cdr}, so that every MCAP ROS 2 reader, Foxglove and rosbags included, decodes
- * them from the definition in the file with no plug-in.
+ * them from the definition in the file with no plug-in. Each type's RIHS01 hash is computed from
+ * its definition as rosidl computes it ({@link TypeDescriptionHash}), so recordings declare
+ * {@code topic_type_hash} for these channels as for the standard types.
  */
 public final class TimingTypes {
 
@@ -27,31 +31,34 @@ public final class TimingTypes {
     public static final String ERROR = "error";
 
     /** One task cycle: {@code /rtaware/timing/<task>}. */
-    public static final MessageDefinition TASK_CYCLE = load("TaskCycle");
+    public static final Ros2MessageType TASK_CYCLE = load("TaskCycle");
 
     /** One monitor event: {@code /rtaware/events}. */
-    public static final MessageDefinition MONITOR_EVENT = load("MonitorEvent");
+    public static final Ros2MessageType MONITOR_EVENT = load("MonitorEvent");
 
     /**
      * One committed value as the JSON of its fields: {@code /rtaware/state/<key>} and
      * {@code /rtaware/data/<key>}.
      */
-    public static final MessageDefinition STATE_JSON = load("StateJson");
+    public static final Ros2MessageType STATE_JSON = load("StateJson");
 
     /** Where the {@code rtaware_msgs} ROS 2 package (package.xml, msg/) lies on the class path. */
     public static final String PACKAGE_RESOURCE = "/rtaware_msgs/";
 
     /**
      * @param type a type of {@code rtaware_msgs}
-     * @return its definition, read from the package's {@code .msg} file shipped with the recorder
+     * @return the type: its definition, read from the package's {@code .msg} file shipped with the
+     *     recorder, and its RIHS01 hash
      */
-    private static MessageDefinition load(String type) {
+    private static Ros2MessageType load(String type) {
         String resource = PACKAGE_RESOURCE + "msg/" + type + ".msg";
         try (InputStream in = TimingTypes.class.getResourceAsStream(resource)) {
             if (in == null) {
                 throw new IllegalStateException("the recorder's class path lacks " + resource);
             }
-            return new MessageDefinition("rtaware_msgs/msg/" + type, new String(in.readAllBytes(), StandardCharsets.UTF_8));
+            MessageDefinition definition = new MessageDefinition("rtaware_msgs/msg/" + type,
+                    new String(in.readAllBytes(), StandardCharsets.UTF_8));
+            return new Ros2MessageType(definition, TypeDescriptionHash.rihs01(definition));
         } catch (IOException e) {
             throw new UncheckedIOException("cannot read " + resource, e);
         }

@@ -7,15 +7,19 @@ import io.rtaware.core.monitor.TaskCounters;
 import io.rtaware.core.monitor.TaskInfo;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.time.EpochClock;
+import io.rtaware.robot.msg.Odometry;
 import io.rtaware.ros2.graph.QosProfile;
 import io.rtaware.ros2.graph.Ros2Context;
 import io.rtaware.ros2.graph.Ros2Node;
 import io.rtaware.ros2.graph.Ros2Publisher;
 import io.rtaware.ros2msg.DiagnosticArrayCodec;
 import io.rtaware.ros2msg.Ros2Header;
+import io.rtaware.ros2msg.Ros2Types;
+import io.rtaware.ros2msg.TransformMessages;
 import io.rtaware.ros2msg.cdr.CdrWriter;
 import io.rtaware.ros2msg.value.DiagnosticArray;
 import io.rtaware.ros2msg.value.DiagnosticStatus;
+import io.rtaware.ros2msg.value.PlanarTransform;
 import io.rtaware.zenoh.ZenohException;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -35,7 +39,12 @@ import java.util.concurrent.locks.LockSupport;
  * (period, releases, misses, miss %, stale runs, errors, execution-time p99 of the latest cycles
  * against the period; WARN when misses grew since the last array, ERROR when errors did) and
  * one per key (commits, rate, producer, and the topic it is published on or that it has no
- * ROS 2 type). Its thread is named {@code ros2-export}, outside the {@code rtaware-*} threads
+ * ROS 2 type). Frames as REP 105 names them: each value of an odometry key that names a
+ * {@link ExportedKey#transformChild()} is also published on {@code /tf} as the transform from
+ * its frame to that child, stamped as its message; the static transforms given are published
+ * on {@code /tf_static} (offered transient local, as tf2's static broadcaster offers them, and,
+ * since this Zenoh layer keeps no history for late subscribers, again with every health
+ * array). Its thread is named {@code ros2-export}, outside the {@code rtaware-*} threads
  * whose allocation {@code bench} measures. Thread-safe: {@link #close()} from any thread.
  */
 public final class MonitorExporter implements AutoCloseable {
@@ -44,6 +53,12 @@ public final class MonitorExporter implements AutoCloseable {
     public static final String NODE_NAME = "rtaware_monitor";
     /** Topic of the health array. */
     public static final String DIAGNOSTICS = "/diagnostics";
+    /** The transforms topic (absolute, as tf2 publishes it). */
+    public static final String TF = "/tf";
+    /** The static transforms topic. */
+    public static final String TF_STATIC = "/tf_static";
+    /** The history depth tf2's broadcaster offers on {@code /tf}. */
+    private static final int TF_DEPTH = 100;
     private static final long DIAGNOSTICS_PERIOD_NS = TimeUnit.SECONDS.toNanos(1);
     private static final int VALUES_PER_STATUS = 10;
     private static final int MAX_MESSAGE_BYTES = 1 << 20;
@@ -54,6 +69,11 @@ public final class MonitorExporter implements AutoCloseable {
     private final List<Slot<?>> slots = new ArrayList<>();
     private final Map<String, String> topicByKey = new HashMap<>();
     private final Ros2Publisher diagnostics;
+    /** {@code /tf}, or null when no key makes transforms. */
+    private final Ros2Publisher tf;
+    /** {@code /tf_static}, or null without static transforms. */
+    private final Ros2Publisher tfStatic;
+    private final List<PlanarTransform> staticTransforms;
     private final DiagnosticArrayCodec diagnosticCodec = new DiagnosticArrayCodec();
     private final DiagnosticArray array;
     private final CdrWriter writer = new CdrWriter(MAX_MESSAGE_BYTES);
@@ -80,18 +100,25 @@ public final class MonitorExporter implements AutoCloseable {
         }
     }
 
-    private MonitorExporter(Monitor monitor, Ros2Context context, List<ExportedKey<?>> keys, long keyPeriodMs)
-            throws ZenohException {
+    private MonitorExporter(Monitor monitor, Ros2Context context, List<ExportedKey<?>> keys,
+                            List<PlanarTransform> staticTransforms, long keyPeriodMs) throws ZenohException {
         this.monitor = monitor;
         this.context = context;
         this.keyPeriodNs = TimeUnit.MILLISECONDS.toNanos(keyPeriodMs);
+        this.staticTransforms = List.copyOf(staticTransforms);
         Ros2Node node = context.createNode("/", NODE_NAME);
+        boolean transforms = false;
         for (ExportedKey<?> k : keys) {
             if (monitor.hasKey(k.key().name())) {
                 slots.add(slot(node, k));
                 topicByKey.put(k.key().name(), k.topic());
+                transforms |= k.transformChild() != null;
             }
         }
+        tf = transforms ? node.createPublisher(TF, Ros2Types.TF_MESSAGE, new QosProfile(true, false, TF_DEPTH),
+                MAX_MESSAGE_BYTES) : null;
+        tfStatic = this.staticTransforms.isEmpty() ? null
+                : node.createPublisher(TF_STATIC, Ros2Types.TF_MESSAGE, new QosProfile(true, true, 1), MAX_MESSAGE_BYTES);
         diagnostics = node.createPublisher(DIAGNOSTICS, diagnosticCodec.type(), QosProfile.defaults(), MAX_MESSAGE_BYTES);
         int statuses = monitor.tasks().size() + monitor.keyNames().size();
         array = new DiagnosticArray(statuses, VALUES_PER_STATUS);
@@ -111,18 +138,20 @@ public final class MonitorExporter implements AutoCloseable {
      * @param monitor the monitor to export (built; started or not)
      * @param context an open context, owned by the exporter from now on
      * @param keys the keys with a ROS 2 type (keys the monitor does not have are left out)
+     * @param staticTransforms what {@code /tf_static} carries (none: no such topic)
      * @param keyPeriodMs how often the keys are looked at, in wall milliseconds
      * @return the running exporter
      * @throws ZenohException if a declaration fails (the context is closed then)
      */
     public static MonitorExporter start(Monitor monitor, Ros2Context context, List<ExportedKey<?>> keys,
-                                        long keyPeriodMs) throws ZenohException {
+                                        List<PlanarTransform> staticTransforms, long keyPeriodMs)
+            throws ZenohException {
         Objects.requireNonNull(monitor, "monitor");
         if (keyPeriodMs <= 0) {
             throw new IllegalArgumentException("key period must be positive, got " + keyPeriodMs + " ms");
         }
         try {
-            MonitorExporter e = new MonitorExporter(monitor, context, keys, keyPeriodMs);
+            MonitorExporter e = new MonitorExporter(monitor, context, keys, staticTransforms, keyPeriodMs);
             e.thread.start();
             return e;
         } catch (ZenohException | RuntimeException e) {
@@ -139,6 +168,7 @@ public final class MonitorExporter implements AutoCloseable {
                     publishIfNew(s);
                 }
                 if (System.nanoTime() - nextDiagnosticsNs >= 0) {
+                    publishStaticTransforms();
                     publishDiagnostics();
                     nextDiagnosticsNs += DIAGNOSTICS_PERIOD_NS;
                 }
@@ -158,6 +188,20 @@ public final class MonitorExporter implements AutoCloseable {
         long nowNs = epoch.epochNanos();
         s.exported.codec().encode(header.set(nowNs, s.exported.frameId()), s.buffer, writer);
         s.publisher.publish(writer.buffer(), writer.size(), nowNs);
+        if (s.exported.transformChild() != null && s.buffer instanceof Odometry odometry) {
+            TransformMessages.begin(writer, 1);
+            TransformMessages.transform(writer, nowNs, s.exported.frameId(), s.exported.transformChild(), odometry.xM,
+                    odometry.yM, odometry.yawRad);
+            tf.publish(writer.buffer(), writer.size(), nowNs);
+        }
+    }
+
+    private void publishStaticTransforms() throws ZenohException {
+        if (tfStatic != null) {
+            long nowNs = epoch.epochNanos();
+            TransformMessages.write(writer, nowNs, staticTransforms);
+            tfStatic.publish(writer.buffer(), writer.size(), nowNs);
+        }
     }
 
     private void publishDiagnostics() throws ZenohException {

@@ -80,7 +80,7 @@ class MonitorExporterTest {
             boolean sawArray = false;
             boolean sawScan = false;
             try (MonitorExporter exporter = MonitorExporter.start(monitor, exporting,
-                    List.of(new ExportedKey<>(RobotKeys.LASER, new LaserScanCodec(), "laser")), 10)) {
+                    List.of(new ExportedKey<>(RobotKeys.LASER, new LaserScanCodec(), "laser")), List.of(), 10)) {
                 assertEquals("/rtaware/laser", exporter.topics().get("laser"));
                 SampleBuffer sample = new SampleBuffer(1 << 16, 64);
                 long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);

@@ -13,9 +13,12 @@ import io.rtaware.ros2.graph.Ros2Publisher;
 import io.rtaware.ros2msg.LaserScanCodec;
 import io.rtaware.ros2msg.OdometryCodec;
 import io.rtaware.ros2msg.Ros2Header;
+import io.rtaware.ros2msg.Ros2Types;
+import io.rtaware.ros2msg.TransformMessages;
 import io.rtaware.ros2msg.TwistCodec;
 import io.rtaware.ros2msg.cdr.CdrReader;
 import io.rtaware.ros2msg.cdr.CdrWriter;
+import io.rtaware.ros2msg.value.PlanarTransform;
 import io.rtaware.sim.server.PlayerSimServer;
 import io.rtaware.sim.world.World;
 import io.rtaware.zenoh.SampleBuffer;
@@ -32,9 +35,19 @@ import java.util.function.Consumer;
  * publishes {@code scan} ({@code sensor_msgs/msg/LaserScan}, sensor-data QoS), {@code odom} and
  * {@code ground_truth} (both {@code nav_msgs/msg/Odometry}) whenever the world has new ones, and
  * drives the robot with the {@code geometry_msgs/msg/Twist} messages it receives on
- * {@code cmd_vel}; topic names are relative to the robot's namespace. Header stamps are world
- * time (the simulator's clock, as ROS's {@code use_sim_time}); attachments carry the wall-clock
- * source timestamp. One thread of its own does all of it; the Player server keeps serving.
+ * {@code cmd_vel}; topic names are relative to the robot's namespace. Frames as REP 105 names
+ * them and a robot driver publishes them: scans in {@value #LASER_FRAME}, odometry in
+ * {@value #ODOM_FRAME} with child {@value #BASE_FRAME}, ground truth in {@code map}; on
+ * {@code /tf} the transform {@value #ODOM_FRAME} to {@value #BASE_FRAME} of every odometry
+ * sample, stamped as the sample; on {@code /tf_static} {@value #BASE_FRAME} to
+ * {@value #LASER_FRAME} (the laser at the robot's centre), offered transient local as tf2's
+ * static broadcaster offers it and, since this Zenoh layer keeps no history for late
+ * subscribers, published again every {@value #STATIC_REPEAT_MS} ms of wall time. Header stamps
+ * are world time (the simulator's clock, as ROS's {@code use_sim_time}) when the data was
+ * measured: a scan's is its first beam's ({@link World#scanFirstBeamNs()}, as ROS 2's
+ * {@code LaserScan} defines it), an odometry sample's its sample time. Attachments carry the
+ * wall-clock source timestamp. One thread of its own does all of it; the Player server keeps
+ * serving.
  *
  * <p>Only the first publisher heard on {@code cmd_vel} drives the robot (told apart by the gid of
  * the rmw_zenoh attachment, {@link FirstPublisherFilter}; another one once the first has been
@@ -55,12 +68,29 @@ public final class Ros2SimRobot implements AutoCloseable {
     public static final String GROUND_TRUTH = "ground_truth";
     /** Velocity command topic. */
     public static final String CMD_VEL = "cmd_vel";
+    /** The transforms topic (absolute, as tf2 publishes it). */
+    public static final String TF = "/tf";
+    /** The static transforms topic (absolute, as tf2 publishes it). */
+    public static final String TF_STATIC = "/tf_static";
+    /** The laser's frame (REP 105). */
+    public static final String LASER_FRAME = "laser";
+    /** The odometry frame (REP 105). */
+    public static final String ODOM_FRAME = "odom";
+    /** The robot's body frame (REP 105). */
+    public static final String BASE_FRAME = "base_link";
+    /** Wall time between two publications of {@code /tf_static}. */
+    public static final long STATIC_REPEAT_MS = 1000;
 
     /** Wall time the followed {@code cmd_vel} publisher may be silent before another drives: 1 s. */
     public static final long COMMANDER_SILENCE_NS = 1_000_000_000L;
 
     private static final long POLL_NS = TimeUnit.MILLISECONDS.toNanos(2);
     private static final int MAX_MESSAGE_BYTES = 64 * 1024;
+    /** {@code /tf_static}: the laser at the robot's centre, as the simulator measures its scans. */
+    private static final List<PlanarTransform> STATIC_TRANSFORMS = List.of(
+            new PlanarTransform(BASE_FRAME, LASER_FRAME, 0, 0, 0));
+    /** The history depth tf2's broadcaster offers on {@code /tf}. */
+    private static final int TF_DEPTH = 100;
 
     private final PlayerSimServer server;
     private final Ros2Context context;
@@ -68,12 +98,14 @@ public final class Ros2SimRobot implements AutoCloseable {
     private final Ros2Publisher scanPub;
     private final Ros2Publisher odomPub;
     private final Ros2Publisher truthPub;
+    private final Ros2Publisher tfPub;
+    private final Ros2Publisher tfStaticPub;
     private final ZenohMailbox mailbox;
     private final Thread thread;
     private final EpochClock epoch = new EpochClock();
 
     private final LaserScanCodec scanCodec = new LaserScanCodec();
-    private final OdometryCodec odomCodec = new OdometryCodec("base_link");
+    private final OdometryCodec odomCodec = new OdometryCodec(BASE_FRAME);
     private final TwistCodec twistCodec = new TwistCodec();
     private final CdrWriter writer = new CdrWriter(MAX_MESSAGE_BYTES);
     private final CdrReader reader = new CdrReader();
@@ -94,6 +126,9 @@ public final class Ros2SimRobot implements AutoCloseable {
     private volatile String failure;
     private double lastScanTimeS = Double.NaN;
     private double lastOdomTimeS = Double.NaN;
+    private long scanFirstBeamNs;
+    private long worldTimeNs;
+    private long nextStaticNs = System.nanoTime();
 
     private Ros2SimRobot(PlayerSimServer server, Ros2Context context, String namespace, Consumer<String> report)
             throws ZenohException {
@@ -108,6 +143,10 @@ public final class Ros2SimRobot implements AutoCloseable {
         this.scanPub = node.createPublisher(SCAN, scanCodec.type(), QosProfile.sensorData(), MAX_MESSAGE_BYTES);
         this.odomPub = node.createPublisher(ODOM, odomCodec.type(), QosProfile.defaults(), MAX_MESSAGE_BYTES);
         this.truthPub = node.createPublisher(GROUND_TRUTH, odomCodec.type(), QosProfile.defaults(), MAX_MESSAGE_BYTES);
+        this.tfPub = node.createPublisher(TF, Ros2Types.TF_MESSAGE, new QosProfile(true, false, TF_DEPTH),
+                MAX_MESSAGE_BYTES);
+        this.tfStaticPub = node.createPublisher(TF_STATIC, Ros2Types.TF_MESSAGE, new QosProfile(true, true, 1),
+                MAX_MESSAGE_BYTES);
         this.mailbox = context.session().newMailbox(16);
         node.subscribe(CMD_VEL, twistCodec.type(), QosProfile.defaults(), mailbox, 0);
         this.thread = new Thread(this::loop, "rtaware-sim-ros2");
@@ -190,24 +229,34 @@ public final class Ros2SimRobot implements AutoCloseable {
         boolean[] fresh = server.withWorld(this::copyNews);
         long nowEpochNs = epoch.epochNanos();
         if (fresh[0]) {
-            scanCodec.encode(header.set(Math.round(scan.serverTimeS * 1e9), "laser"), scan, writer);
+            scanCodec.encode(header.set(scanFirstBeamNs, LASER_FRAME), scan, writer);
             scanPub.publish(writer.buffer(), writer.size(), nowEpochNs);
         }
         if (fresh[1]) {
             long stampNs = Math.round(odom.serverTimeS * 1e9);
-            odomCodec.encode(header.set(stampNs, "odom"), odom, writer);
+            odomCodec.encode(header.set(stampNs, ODOM_FRAME), odom, writer);
             odomPub.publish(writer.buffer(), writer.size(), nowEpochNs);
+            TransformMessages.begin(writer, 1);
+            TransformMessages.transform(writer, stampNs, ODOM_FRAME, BASE_FRAME, odom.xM, odom.yM, odom.yawRad);
+            tfPub.publish(writer.buffer(), writer.size(), nowEpochNs);
             odomCodec.encode(header.set(stampNs, "map"), truth, writer);
             truthPub.publish(writer.buffer(), writer.size(), nowEpochNs);
+        }
+        if (System.nanoTime() - nextStaticNs >= 0) {
+            TransformMessages.write(writer, worldTimeNs, STATIC_TRANSFORMS);
+            tfStaticPub.publish(writer.buffer(), writer.size(), nowEpochNs);
+            nextStaticNs += TimeUnit.MILLISECONDS.toNanos(STATIC_REPEAT_MS);
         }
     }
 
     private boolean[] copyNews(World w) {
+        worldTimeNs = w.timeNs();
         news[0] = w.scan().serverTimeS != lastScanTimeS;
         news[1] = w.odometry().serverTimeS != lastOdomTimeS;
         if (news[0]) {
             scan.copyFrom(w.scan());
             lastScanTimeS = scan.serverTimeS;
+            scanFirstBeamNs = w.scanFirstBeamNs();
         }
         if (news[1]) {
             odom.copyFrom(w.odometry());
@@ -225,7 +274,8 @@ public final class Ros2SimRobot implements AutoCloseable {
 
     /** @return the node's liveliness key and those of its publishers */
     public List<String> tokenKeys() {
-        return List.of(node.nodeToken(), scanPub.tokenKey(), odomPub.tokenKey(), truthPub.tokenKey());
+        return List.of(node.nodeToken(), scanPub.tokenKey(), odomPub.tokenKey(), truthPub.tokenKey(), tfPub.tokenKey(),
+                tfStaticPub.tokenKey());
     }
 
     /** @return Twist messages obeyed so far */

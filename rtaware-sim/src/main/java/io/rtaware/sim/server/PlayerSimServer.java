@@ -11,6 +11,8 @@ import java.net.ServerSocket;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.LockSupport;
 import java.util.function.Function;
 
 /**
@@ -55,6 +57,8 @@ public final class PlayerSimServer implements AutoCloseable {
     public static final String STAGE_DRIVER = "stage";
     /** Driver name reported for laser (as Player's converter on top of Stage's ranger). */
     public static final String LASER_DRIVER = "rangertolaser";
+    /** How long {@link #clockOriginNs()} waits for the sim thread's first clock reading. */
+    private static final long ORIGIN_WAIT_NS = TimeUnit.SECONDS.toNanos(5);
 
     private final SharedWorld world;
     private final ServerConfig config;
@@ -161,6 +165,32 @@ public final class PlayerSimServer implements AutoCloseable {
     /** @return simulation time in seconds (the timestamps the server sends) */
     public double simTimeS() {
         return world.timeS();
+    }
+
+    /**
+     * Where the server's timestamps lie on its clock: the clock's reading at which the world's
+     * time was 0, so that a timestamp of {@code t} seconds was taken at the clock's reading
+     * {@code origin + t * 1e9} (the sim thread keeps world time at the clock's reading minus the
+     * origin, in whole steps). Waits up to 5 s for a just started sim thread to take its
+     * first reading.
+     *
+     * @return the origin in the clock's nanoseconds
+     * @throws IllegalStateException for a server stepped by hand ({@link #startManual}), or if the
+     *     sim thread does not start
+     */
+    public long clockOriginNs() {
+        if (simThread == null) {
+            throw new IllegalStateException("a server stepped by hand follows no clock");
+        }
+        long deadline = System.nanoTime() + ORIGIN_WAIT_NS;
+        long origin;
+        while ((origin = stepper.clockOriginNs()) == Long.MIN_VALUE) {
+            if (System.nanoTime() - deadline > 0) {
+                throw new IllegalStateException("the sim thread did not start within 5 s");
+            }
+            LockSupport.parkNanos(100_000L);
+        }
+        return origin;
     }
 
     /** @return the robot's ground-truth pose */

@@ -1,6 +1,7 @@
 package io.rtaware.sim.server;
 
 import io.rtaware.core.time.Clock;
+import io.rtaware.sim.world.World;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.locks.LockSupport;
@@ -23,6 +24,8 @@ final class WorldStepper {
     private final Iterable<ClientSession> clients;
     private final long stepPeriodNs;
     private volatile boolean running = true;
+    /** The clock reading at which the world's time was 0; {@link Long#MIN_VALUE} until {@link #run} starts. */
+    private volatile long clockOriginNs = Long.MIN_VALUE;
 
     /**
      * @param world the world
@@ -63,6 +66,7 @@ final class WorldStepper {
     /** Steps on {@code clock} until {@link #stop()}. */
     void run(Clock clock) {
         long last = clock.nanos();
+        clockOriginNs = last - world.read(World::timeNs); // from here on, world time = clock - origin, stepped
         while (running) {
             long target = last + stepPeriodNs;
             long now = clock.nanos();
@@ -86,6 +90,15 @@ final class WorldStepper {
             }
             last = now - behind;
         }
+    }
+
+    /**
+     * @return the clock reading at which the world's time was 0 ({@link #run} keeps world time
+     *     at the clock's reading minus this, in whole steps), or {@link Long#MIN_VALUE} before
+     *     {@link #run} has started
+     */
+    long clockOriginNs() {
+        return clockOriginNs;
     }
 
     /** Makes {@link #run} return (within one wait). */

@@ -87,6 +87,8 @@ public final class World {
     private long sweepStartNs;
     private int sweepNextBeam;
     private long sweepDeliveryNs = -1;
+    /** World time at which the latest scan's first beam was measured. */
+    private long scanFirstBeamNs;
     private double odoXM;
     private double odoYM;
     private double odoYawRad;
@@ -450,6 +452,7 @@ public final class World {
                 }
                 laser.finish(timeS(), sweepScan);
                 scan.copyFrom(sweepScan);
+                scanFirstBeamNs = sweepStartNs;
                 scanFresh = true;
                 sweepDeliveryNs = -1;
                 sweepStartNs = nextDue(sweepStartNs, laserPeriodNs);
@@ -556,6 +559,7 @@ public final class World {
 
     private void publishScan() {
         laser.scan(xM, yM, yawRad, timeS(), laserNoise, scan);
+        scanFirstBeamNs = timeNs;
         scanFresh = true;
     }
 
@@ -602,6 +606,15 @@ public final class World {
     /** @return the ground-truth pose (allocates) */
     public Pose2d pose() {
         return new Pose2d(xM, yM, yawRad);
+    }
+
+    /**
+     * @return world time in nanoseconds at which the latest scan's first beam was measured: the
+     *     start of its sweep for a sweeping laser ({@link LaserTiming#sweep()}), else the instant
+     *     of the scan; the scan itself carries its delivery time, as Player stamps it
+     */
+    public long scanFirstBeamNs() {
+        return scanFirstBeamNs;
     }
 
     /** @return ground-truth x in metres */

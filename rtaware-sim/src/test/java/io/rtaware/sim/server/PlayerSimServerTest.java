@@ -257,4 +257,25 @@ class PlayerSimServerTest {
             assertEquals(32, seen.size(), "16 Hz over 2 s of world time");
         }
     }
+
+    @Test
+    void theServersTimestampsLieAtTheClocksOriginPlusTheirValue() throws Exception {
+        ManualClock clock = new ManualClock(7_000 * MS);
+        server = PlayerSimServer.start(world(), clock, ServerConfig.defaults(0));
+        assertEquals(7_000 * MS, server.clockOriginNs(), "world time 0 at the clock's reading when stepping began");
+        clock.advance(500 * MS);
+        long deadline = System.nanoTime() + 10_000 * MS;
+        while (server.simTimeS() < 0.5 && System.nanoTime() < deadline) {
+            Thread.sleep(1);
+        }
+        assertEquals(clock.nanos() - server.clockOriginNs(), Math.round(server.simTimeS() * 1e9),
+                "world time = the clock's reading minus the origin, in whole steps");
+        PlayerSimServer manual = PlayerSimServer.startManual(world(), ServerConfig.defaults(0));
+        try {
+            IllegalStateException e = assertThrows(IllegalStateException.class, manual::clockOriginNs);
+            assertEquals("a server stepped by hand follows no clock", e.getMessage());
+        } finally {
+            manual.close();
+        }
+    }
 }

@@ -208,6 +208,17 @@ class KoalaModelTest {
     }
 
     @Test
+    void anInstantScansFirstBeamIsTheScansOwnTime() {
+        World w = world(RobotModel.ideal(0.1), 1L);
+        long periodNs = LaserConfig.URG_04LX.periodNs();
+        for (long t = 0; t < periodNs + 5 * MS; t += MS) {
+            w.step(MS);
+        }
+        assertEquals(periodNs, w.scanFirstBeamNs(), "the scan taken at the first period, every beam at once");
+        assertEquals(periodNs * 1e-9, w.scan().serverTimeS, 1e-12, "and stamped then");
+    }
+
+    @Test
     void urgScanIsSweptOverTheTurnAndDeliveredTenMillisecondsAfterItsLastBeam() {
         World w = world(RobotModel.koala(0.1), 1L);
         assertTrue(w.scanFresh(), "a scan at time zero");
@@ -221,8 +232,10 @@ class KoalaModelTest {
                 if (firstFresh < 0) {
                     firstFresh = t;
                     assertEquals(t * 1e-9, w.scan().serverTimeS, 1e-12, "stamped at delivery");
+                    assertEquals(0L, w.scanFirstBeamNs(), "the first sweep's first beam at time zero");
                 } else if (secondFresh < 0) {
                     secondFresh = t;
+                    assertEquals(100 * MS, w.scanFirstBeamNs(), "the second sweep starts on the 100 ms turn grid");
                 }
             }
         }
