@@ -21,6 +21,7 @@ import io.rtaware.live.LiveView;
 import io.rtaware.app.output.OutputFile;
 import io.rtaware.app.output.OutputWrites;
 import io.rtaware.app.ros2.ExportMixin;
+import io.rtaware.app.ros2.RosDistroMixin;
 import io.rtaware.app.ros2.ExportOptions;
 import io.rtaware.app.report.ReportSections;
 import io.rtaware.core.monitor.ConsoleReporter;
@@ -216,6 +217,9 @@ public final class BenchCommand implements Callable<Integer> {
     @Mixin
     ExportMixin export;
 
+    @Mixin
+    RosDistroMixin rosDistro;
+
     private final Supplier<MemoryBudget> memory;
 
     /** The command with this JVM's heap as its memory budget. */
@@ -232,6 +236,7 @@ public final class BenchCommand implements Callable<Integer> {
     public Integer call() throws IOException, InterruptedException {
         List<BenchSpec> specs = taskSet();
         live.options(); // a bad --live-port or --live-bind ends the command before anything runs
+        rosDistro.distro(export.requested(), "--export"); // so does a bad --ros-distro
         if (json != null) {
             OutputFile.of("--json", json);
         }
@@ -382,7 +387,7 @@ public final class BenchCommand implements Callable<Integer> {
         } catch (LiveAddressException e) {
             throw new UserError(e.getMessage());
         }
-        MonitorExporter exporter = export.options().map(e -> e.start(monitor, List.of(), System.err)).orElse(null);
+        MonitorExporter exporter = export.options(rosDistro.distro(export.requested(), "--export")).map(e -> e.start(monitor, List.of(), System.err)).orElse(null);
         Thread hook = monitor.installShutdownHook();
         OutputWrites writes = new OutputWrites(System.err);
         monitor.onTermination(report -> finish(monitor, report, console, recorder, recording, out, writes));

@@ -5,6 +5,7 @@ import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.ros2.Ros2Options;
 import io.rtaware.app.ros2.Ros2SimMixin;
+import io.rtaware.app.ros2.RosDistroMixin;
 import io.rtaware.app.ros2.Ros2SimServe;
 import io.rtaware.core.time.Durations;
 import io.rtaware.sim.scenario.ScenarioException;
@@ -62,6 +63,9 @@ public final class SimCommand implements Callable<Integer> {
     @Mixin
     Ros2SimMixin ros2;
 
+    @Mixin
+    RosDistroMixin rosDistro;
+
     @Override
     public Integer call() {
         if (port < 0 || port > 65535) {
@@ -79,7 +83,7 @@ public final class SimCommand implements Callable<Integer> {
         ServerConfig config = ServerConfig.defaults(port).withBindAddress(bind)
                 .withLimits(maxClients, maxRules, messageTimeoutNs);
         try {
-            Optional<Ros2Options> ros2Options = ros2.options();
+            Optional<Ros2Options> ros2Options = ros2.options(rosDistro.distro(ros2.requested(), "--ros2"));
             if (ros2Options.isPresent()) {
                 Ros2SimServe.serveUntilInterrupted(scenario, config, timeScale, seed, robotSeed, ros2Options.get(),
                         System.out);
