@@ -22,6 +22,7 @@ import io.rtaware.live.LiveView;
 import io.rtaware.app.output.OutputFile;
 import io.rtaware.app.output.OutputWrites;
 import io.rtaware.app.ros2.ExportMixin;
+import io.rtaware.app.ros2.RosDistroMixin;
 import io.rtaware.app.ros2.ExportOptions;
 import io.rtaware.app.report.ReportSections;
 import io.rtaware.core.monitor.ConsoleReporter;
@@ -221,6 +222,9 @@ public final class BenchCommand implements Callable<Integer> {
     @Mixin
     ExportMixin export;
 
+    @Mixin
+    RosDistroMixin rosDistro;
+
     private final Supplier<MemoryBudget> memory;
 
     /** The command with this JVM's heap as its memory budget. */
@@ -238,6 +242,7 @@ public final class BenchCommand implements Callable<Integer> {
         List<BenchSpec> specs = taskSet();
         live.options(); // a bad --live-port or --live-bind ends the command before anything runs
         foxglove.address(); // so does a bad --foxglove
+        rosDistro.distro(export.requested(), "--export"); // so does a bad --ros-distro
         if (json != null) {
             OutputFile.of("--json", json);
         }
@@ -399,7 +404,8 @@ public final class BenchCommand implements Callable<Integer> {
         } catch (LiveAddressException e) {
             throw new UserError(e.getMessage());
         }
-        MonitorExporter exporter = export.options().map(e -> e.start(monitor, List.of(), List.of(), System.err)).orElse(null);
+        MonitorExporter exporter = export.options(rosDistro.distro(export.requested(), "--export"))
+                .map(e -> e.start(monitor, List.of(), List.of(), System.err)).orElse(null);
         Thread hook = monitor.installShutdownHook();
         OutputWrites writes = new OutputWrites(System.err);
         monitor.onTermination(report -> finish(monitor, report, console, recorder, recording, foxgloveServer, out,

@@ -1,6 +1,7 @@
 package io.rtaware.app.ros2;
 
 import io.rtaware.app.UserError;
+import io.rtaware.ros2.graph.Ros2Distro;
 import java.util.Optional;
 import picocli.CommandLine.Option;
 
@@ -26,11 +27,12 @@ public final class ExportMixin {
     }
 
     /**
+     * @param distro the distribution whose rmw_zenoh conventions to follow
      * @return the export options when {@code --export} was given
      * @throws UserError for a malformed endpoint, export options without {@code --export}, or a
      *     missing native Zenoh layer
      */
-    public Optional<ExportOptions> options() {
+    public Optional<ExportOptions> options(Ros2Distro distro) {
         if (!enabled) {
             if (router != null || listen != null) {
                 throw new UserError((router != null ? "--export-zenoh" : "--export-listen") + " needs --export");
@@ -40,6 +42,6 @@ public final class ExportMixin {
         String at = router == null ? null : Ros2Wiring.endpoint(router, "--export-zenoh", false);
         String on = listen == null ? null : Ros2Wiring.endpoint(listen, "--export-listen", true);
         Ros2Wiring.requireNativeZenoh();
-        return Optional.of(new ExportOptions(at, on));
+        return Optional.of(new ExportOptions(at, on, distro));
     }
 }

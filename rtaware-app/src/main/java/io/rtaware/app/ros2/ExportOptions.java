@@ -4,6 +4,7 @@ import io.rtaware.core.monitor.Monitor;
 import io.rtaware.ros2.export.ExportedKey;
 import io.rtaware.ros2.export.MonitorExporter;
 import io.rtaware.ros2.graph.Ros2Context;
+import io.rtaware.ros2.graph.Ros2Distro;
 import io.rtaware.zenoh.ZenohException;
 import io.rtaware.ros2msg.value.PlanarTransform;
 import java.io.PrintStream;
@@ -15,8 +16,9 @@ import java.util.List;
  *
  * @param router the router to connect to, or null
  * @param listen where to listen, or null for a free loopback port
+ * @param distro the ROS 2 distribution whose rmw_zenoh conventions to follow
  */
-public record ExportOptions(String router, String listen) {
+public record ExportOptions(String router, String listen, Ros2Distro distro) {
 
     /** Key period of the exporter: keys are looked at ten times a second. */
     private static final long KEY_PERIOD_MS = 100;
@@ -35,7 +37,7 @@ public record ExportOptions(String router, String listen) {
                                  PrintStream err) {
         String at = listen != null ? listen : Ros2Wiring.freeLoopbackEndpoint();
         List<String> connect = router == null ? List.of() : List.of(router);
-        Ros2Context context = Ros2Wiring.open(connect, List.of(at), 0);
+        Ros2Context context = Ros2Wiring.open(connect, List.of(at), 0, distro);
         try {
             MonitorExporter exporter = MonitorExporter.start(monitor, context, keys, staticTransforms, KEY_PERIOD_MS);
             List<String> topics = new ArrayList<>(exporter.topics().values().stream().sorted().toList());
@@ -45,7 +47,8 @@ public record ExportOptions(String router, String listen) {
             if (!staticTransforms.isEmpty()) {
                 topics.add(MonitorExporter.TF_STATIC);
             }
-            err.println("rtaware export: ROS 2 over Zenoh on " + at + (router == null ? "" : " via " + router) + ": "
+            err.println("rtaware export: ROS 2 over Zenoh on " + at + (router == null ? "" : " via " + router)
+                    + " (" + distro.cliName() + " conventions): "
                     + MonitorExporter.DIAGNOSTICS + (topics.isEmpty()
                             ? " (no key of this run has a ROS 2 type: each key's health is a status there)"
                             : " and " + String.join(", ", topics)));

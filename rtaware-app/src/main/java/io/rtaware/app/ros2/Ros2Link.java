@@ -52,7 +52,8 @@ public final class Ros2Link implements AutoCloseable {
         List<String> connect;
         if (options.router() == null) {
             String endpoint = Ros2Wiring.freeLoopbackEndpoint();
-            Ros2Context simContext = Ros2Wiring.open(List.of(), List.of(endpoint), options.topics().domain());
+            Ros2Context simContext = Ros2Wiring.open(List.of(), List.of(endpoint), options.topics().domain(),
+                    options.distro());
             try {
                 // its notices reach the run's summary and report through notices()
                 robot = Ros2SimRobot.start(server, simContext, options.topics().namespace(), line -> { });
@@ -65,7 +66,7 @@ public final class Ros2Link implements AutoCloseable {
         }
         try {
             Ros2Context context = Ros2Wiring.open(connect, List.of(io.rtaware.zenoh.ZenohConfig.LOOPBACK_ANY_PORT),
-                    options.topics().domain());
+                    options.topics().domain(), options.distro());
             return new Ros2Link(options, robot, Ros2DataTask.withDefaults(context, options.topics()));
         } catch (RuntimeException e) {
             closeQuietly(robot);
@@ -126,7 +127,7 @@ public final class Ros2Link implements AutoCloseable {
         Map<String, Double> latencyMs = new LinkedHashMap<>();
         latencyMs.put("p50", Rounding.toDecimals(latencyMs(latency, 50), 3));
         latencyMs.put("p99", Rounding.toDecimals(latencyMs(latency, 99), 3));
-        return new Ros2Section(describe(), s.scans(), s.odometry(), s.commands(), rejected, s.malformed(),
+        return new Ros2Section(describe(), options.distro().cliName(), s.scans(), s.odometry(), s.commands(), rejected, s.malformed(),
                 s.oversized(), s.overflowed(), s.otherPublishers(), s.clockEpochs(), notices(), s.lastProblem(),
                 task.fault(), latencyMs,
                 Rounding.toDecimals(cpuUsPerSample(s), 2), s.droppedBeams());

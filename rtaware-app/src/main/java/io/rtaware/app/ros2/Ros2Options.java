@@ -1,5 +1,6 @@
 package io.rtaware.app.ros2;
 
+import io.rtaware.ros2.graph.Ros2Distro;
 import io.rtaware.ros2.task.Ros2Topics;
 import java.util.Optional;
 
@@ -10,8 +11,9 @@ import java.util.Optional;
  *     built-in simulator in the same process
  * @param listen where the simulator's session listens, or null for a free loopback port
  * @param topics domain, namespace and topic names
+ * @param distro the ROS 2 distribution whose rmw_zenoh conventions to follow
  */
-public record Ros2Options(String router, String listen, Ros2Topics topics) {
+public record Ros2Options(String router, String listen, Ros2Topics topics, Ros2Distro distro) {
 
     /** @return the router endpoint, if one was given */
     public Optional<String> routerEndpoint() {

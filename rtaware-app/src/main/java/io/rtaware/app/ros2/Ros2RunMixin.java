@@ -1,6 +1,7 @@
 package io.rtaware.app.ros2;
 
 import io.rtaware.app.UserError;
+import io.rtaware.ros2.graph.Ros2Distro;
 import io.rtaware.ros2.task.Ros2Topics;
 import java.util.Optional;
 import picocli.CommandLine.Option;
@@ -37,12 +38,18 @@ public final class Ros2RunMixin {
             description = "Twist topic the robot obeys (default: ${DEFAULT-VALUE}).")
     String cmdVel;
 
+    /** @return true if {@code --ros2} was given (nothing is checked) */
+    public boolean requested() {
+        return enabled;
+    }
+
     /**
+     * @param distro the distribution whose rmw_zenoh conventions to follow
      * @return the ROS 2 options when {@code --ros2} was given
      * @throws UserError for a malformed endpoint, name or domain, for ROS 2 options without
      *     {@code --ros2}, or when the native Zenoh layer is missing
      */
-    public Optional<Ros2Options> options() {
+    public Optional<Ros2Options> options(Ros2Distro distro) {
         if (!enabled) {
             if (zenoh != null) {
                 throw new UserError("--zenoh needs --ros2");
@@ -57,6 +64,6 @@ public final class Ros2RunMixin {
             throw new UserError(e.getMessage());
         }
         Ros2Wiring.requireNativeZenoh();
-        return Optional.of(new Ros2Options(router, null, topics));
+        return Optional.of(new Ros2Options(router, null, topics, distro));
     }
 }

@@ -8,6 +8,8 @@ import java.util.Map;
  * ({@code run --ros2}): what the ROS 2 data task received, dropped and sent.
  *
  * @param robot where the robot was, in words
+ * @param rosDistro the ROS 2 distribution whose rmw_zenoh conventions were followed
+ *     ({@code --ros-distro}: {@code humble}, {@code jazzy}, {@code kilted} or {@code rolling})
  * @param scans scans committed
  * @param odometry odometry samples committed
  * @param commands Twist messages published
@@ -29,7 +31,7 @@ import java.util.Map;
  * @param droppedBeams scan readings that said nothing (NaN, beyond the maximum range), dropped
  *     from scans that were kept
  */
-public record Ros2Section(String robot, long scans, long odometry, long commands, Map<String, Long> rejectedSamples,
+public record Ros2Section(String robot, String rosDistro, long scans, long odometry, long commands, Map<String, Long> rejectedSamples,
                           long malformed, long oversized, long overflowed, long otherPublisherSamples,
                           long clockEpochs, List<String> notices, String lastProblem, String fault,
                           Map<String, Double> scanLatencyMs, double cpuUsPerSample, long droppedBeams) {

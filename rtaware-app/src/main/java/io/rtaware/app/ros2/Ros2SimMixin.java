@@ -1,6 +1,7 @@
 package io.rtaware.app.ros2;
 
 import io.rtaware.app.UserError;
+import io.rtaware.ros2.graph.Ros2Distro;
 import io.rtaware.ros2.task.Ros2Topics;
 import java.util.Optional;
 import picocli.CommandLine.Option;
@@ -34,11 +35,12 @@ public final class Ros2SimMixin {
     }
 
     /**
+     * @param distro the distribution whose rmw_zenoh conventions to follow
      * @return the ROS 2 options when {@code --ros2} was given
      * @throws UserError for a malformed endpoint, namespace or domain, for ROS 2 options without
      *     {@code --ros2}, or when the native Zenoh layer is missing
      */
-    public Optional<Ros2Options> options() {
+    public Optional<Ros2Options> options(Ros2Distro distro) {
         if (!enabled) {
             if (zenoh != null || listen != null) {
                 throw new UserError((zenoh != null ? "--zenoh" : "--listen") + " needs --ros2");
@@ -54,6 +56,6 @@ public final class Ros2SimMixin {
             throw new UserError(e.getMessage());
         }
         Ros2Wiring.requireNativeZenoh();
-        return Optional.of(new Ros2Options(router, at, topics));
+        return Optional.of(new Ros2Options(router, at, topics, distro));
     }
 }

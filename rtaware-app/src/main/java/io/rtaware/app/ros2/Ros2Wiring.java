@@ -2,6 +2,7 @@ package io.rtaware.app.ros2;
 
 import io.rtaware.app.UserError;
 import io.rtaware.ros2.graph.Ros2Context;
+import io.rtaware.ros2.graph.Ros2Distro;
 import io.rtaware.zenoh.ZenohConfig;
 import io.rtaware.zenoh.ZenohException;
 import io.rtaware.zenoh.ZenohLibrary;
@@ -48,14 +49,15 @@ public final class Ros2Wiring {
      * @param connect where to connect (empty for nowhere)
      * @param listen where to listen
      * @param domain the ROS domain
+     * @param distro the distribution whose rmw_zenoh conventions the context follows
      * @return the context
      * @throws UserError if the router cannot be reached or the listen endpoint cannot be bound
      */
-    public static Ros2Context open(List<String> connect, List<String> listen, int domain) {
+    public static Ros2Context open(List<String> connect, List<String> listen, int domain, Ros2Distro distro) {
         requireNativeZenoh();
         ZenohConfig config = ZenohConfig.loopbackPeer().withConnect(connect).withListen(listen);
         try {
-            return Ros2Context.open(config, domain);
+            return Ros2Context.open(config, domain, distro);
         } catch (ZenohException e) {
             String where = connect.isEmpty() ? "listen on " + String.join(", ", listen)
                     : "reach the Zenoh router at " + String.join(", ", connect);

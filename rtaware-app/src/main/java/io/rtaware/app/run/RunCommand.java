@@ -10,6 +10,8 @@ import io.rtaware.app.live.LiveMixin;
 import io.rtaware.app.output.OutputFolder;
 import io.rtaware.app.ros2.ExportMixin;
 import io.rtaware.app.ros2.Ros2RunMixin;
+import io.rtaware.app.ros2.RosDistroMixin;
+import io.rtaware.ros2.graph.Ros2Distro;
 import io.rtaware.experiment.ExperimentRunner;
 import io.rtaware.sim.world.RobotModel;
 import java.io.IOException;
@@ -115,6 +117,9 @@ public final class RunCommand implements Callable<Integer> {
     @Mixin
     ExportMixin export;
 
+    @Mixin
+    RosDistroMixin rosDistro;
+
     private final Supplier<MemoryBudget> memory;
 
     /** The command with this JVM's heap as its memory budget. */
@@ -133,8 +138,9 @@ public final class RunCommand implements Callable<Integer> {
         foxglove.address(); // a bad --foxglove ends the command before anything runs
         ExperimentParentWatch.start(System.getenv(ExperimentRunner.PARENT_PID_ENV), System.err, System::exit);
         memory.get().require(trace.heapBytes(), trace.describe());
-        return new RobotRun(options, ros2.options(), export.options(), System.out, System.err).recording(record).foxglove(foxglove)
-                .execute();
+        Ros2Distro distro = rosDistro.distro(ros2.requested() || export.requested(), "--ros2 or --export");
+        return new RobotRun(options, ros2.options(distro), export.options(distro), System.out, System.err).recording(record)
+                .foxglove(foxglove).execute();
     }
 
     RunOptions options() {

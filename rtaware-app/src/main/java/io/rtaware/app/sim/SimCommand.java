@@ -6,6 +6,7 @@ import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.foxglove.FoxgloveMixin;
 import io.rtaware.app.ros2.Ros2Options;
 import io.rtaware.app.ros2.Ros2SimMixin;
+import io.rtaware.app.ros2.RosDistroMixin;
 import io.rtaware.app.ros2.Ros2SimServe;
 import io.rtaware.core.time.Durations;
 import io.rtaware.core.time.ScaledClock;
@@ -71,6 +72,9 @@ public final class SimCommand implements Callable<Integer> {
     @Mixin
     FoxgloveMixin foxglove;
 
+    @Mixin
+    RosDistroMixin rosDistro;
+
     @Override
     public Integer call() {
         if (port < 0 || port > 65535) {
@@ -91,7 +95,7 @@ public final class SimCommand implements Callable<Integer> {
             throw new UserError("--foxglove and --ros2 are not served together yet: give one of them");
         }
         try {
-            Optional<Ros2Options> ros2Options = ros2.options();
+            Optional<Ros2Options> ros2Options = ros2.options(rosDistro.distro(ros2.requested(), "--ros2"));
             if (foxglove.enabled()) {
                 serveWithFoxglove(config);
             } else if (ros2Options.isPresent()) {

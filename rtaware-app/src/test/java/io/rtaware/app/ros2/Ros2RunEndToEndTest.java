@@ -57,6 +57,10 @@ class Ros2RunEndToEndTest {
     }
 
     private static JsonNode completedReport(Path out, String measuredOn) throws Exception {
+        return completedReport(out, measuredOn, "kilted");
+    }
+
+    private static JsonNode completedReport(Path out, String measuredOn, String distro) throws Exception {
         JsonNode report = new ObjectMapper().readTree(out.resolve("report.json").toFile());
         JsonNode run = report.path("run");
         assertEquals("completed", run.path("outcome").asText(), "outcome; run section: " + run);
@@ -69,6 +73,7 @@ class Ros2RunEndToEndTest {
         assertTrue(ros2Task, "the ROS 2 data task ran and is reported");
         JsonNode ros2 = report.path("ros2");
         assertTrue(ros2.isObject(), "a ros2 section: " + report.fieldNames());
+        assertEquals(distro, ros2.path("ros_distro").asText(), "the rmw_zenoh conventions followed: " + ros2);
         assertTrue(report.path("player").isMissingNode(), "no player section for a ROS 2 robot");
         assertTrue(ros2.path("scans").asLong() > 0 && ros2.path("odometry").asLong() > 0, "ros2: " + ros2);
         assertTrue(ros2.path("fault").isNull(), "no fault: " + ros2);
@@ -139,6 +144,16 @@ class Ros2RunEndToEndTest {
             assertEquals(0, (stampNs - originNs) % 100_000_000L, "a scan stamped at the start of its sweep, "
                     + (stampNs - originNs) + " ns of simulated time");
         }
+    }
+
+    @Test
+    void runRos2WithHumbleConventionsDrivesTheBuiltInSimulatorAndSaysSoInTheReport() throws Exception {
+        requireNativeZenoh();
+        Path out = dir.resolve("humble");
+        int status = quietly("run", "--ros2", "--ros-distro", "humble", "--scenario", shortLeg().toString(),
+                "--time-scale", "10", "--out", out.toString(), "--quiet", "--seed", "7");
+        assertEquals(0, status);
+        completedReport(out, "ground_truth", "humble");
     }
 
     @Test
@@ -258,6 +273,26 @@ class Ros2RunEndToEndTest {
         assertEquals(2, quietly("run", "--ros2", "--domain", "300", "--quiet"));
         assertEquals(2, quietly("sim", "--ros2", "--listen", "tcp/0.0.0.0"));
         assertEquals(2, quietly("sim", "--listen", "tcp/127.0.0.1:0"));
+    }
+
+    @Test
+    void anUnknownRosDistroOrOneWithoutRos2IsOneLineAndExitStatusTwo() {
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        PrintStream saved = System.err;
+        try {
+            System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
+            assertEquals(2, quietly("run", "--ros2", "--ros-distro", "iron", "--quiet"), "unknown distribution");
+            assertEquals(2, quietly("sim", "--ros-distro", "jazzy"), "--ros-distro without --ros2");
+            assertEquals(2, quietly("bench", "--ros-distro", "iron", "--export", "--duration", "1s"), "bench --export");
+        } finally {
+            System.setErr(saved);
+        }
+        List<String> lines = err.toString(StandardCharsets.UTF_8).lines().toList();
+        assertEquals(3, lines.size(), "one line each: " + lines);
+        assertTrue(lines.get(0).contains("--ros-distro: unknown ROS 2 distribution 'iron' (expected one of humble, "
+                + "jazzy, kilted, rolling)"), lines.get(0));
+        assertTrue(lines.get(1).contains("--ros-distro needs --ros2"), lines.get(1));
+        assertTrue(lines.get(2).contains("'iron'"), lines.get(2));
     }
 
     @Test

@@ -7,34 +7,52 @@ import java.util.Objects;
 import java.util.concurrent.atomic.AtomicLong;
 
 /**
- * One Zenoh session in the role of an rmw_zenoh context: a ROS domain and the counter from which
- * node and entity ids are drawn (decimal, from 0). Thread-safe; closing it closes the session
- * and with it every node's tokens, publishers and subscribers.
+ * One Zenoh session in the role of an rmw_zenoh context: a ROS domain, the ROS 2 distribution
+ * whose rmw_zenoh conventions it follows, and the counter from which node and entity ids are
+ * drawn (decimal, from 0). Thread-safe; closing it closes the session and with it every node's
+ * tokens, publishers and subscribers.
  */
 public final class Ros2Context implements AutoCloseable {
 
     private final ZenohSession session;
     private final int domain;
+    private final Ros2Distro distro;
     private final AtomicLong nextId = new AtomicLong();
 
     /**
      * @param session an open session, owned by the context from now on
      * @param domain the ROS domain id (0..232 as in ROS 2)
+     * @param distro the distribution whose rmw_zenoh conventions to follow
      */
-    public Ros2Context(ZenohSession session, int domain) {
+    public Ros2Context(ZenohSession session, int domain, Ros2Distro distro) {
         this.session = Objects.requireNonNull(session, "session");
         this.domain = checkDomain(domain);
+        this.distro = Objects.requireNonNull(distro, "distro");
     }
 
     /**
+     * A context in the conventions of {@link Ros2Distro#newest()}.
+     *
      * @param config how to open the session
      * @param domain the ROS domain id
      * @return a context on a new session
      * @throws ZenohException if the session cannot be opened
      */
     public static Ros2Context open(ZenohConfig config, int domain) throws ZenohException {
+        return open(config, domain, Ros2Distro.newest());
+    }
+
+    /**
+     * @param config how to open the session
+     * @param domain the ROS domain id
+     * @param distro the distribution whose rmw_zenoh conventions to follow
+     * @return a context on a new session
+     * @throws ZenohException if the session cannot be opened
+     */
+    public static Ros2Context open(ZenohConfig config, int domain, Ros2Distro distro) throws ZenohException {
         checkDomain(domain);
-        return new Ros2Context(ZenohSession.open(config), domain);
+        Objects.requireNonNull(distro, "distro");
+        return new Ros2Context(ZenohSession.open(config), domain, distro);
     }
 
     /**
@@ -73,6 +91,11 @@ public final class Ros2Context implements AutoCloseable {
     /** @return the ROS domain id */
     public int domain() {
         return domain;
+    }
+
+    /** @return the distribution whose rmw_zenoh conventions this context follows */
+    public Ros2Distro distro() {
+        return distro;
     }
 
     /** Closes the session, and with it everything declared in it. */

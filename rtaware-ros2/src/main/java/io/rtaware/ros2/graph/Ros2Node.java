@@ -60,7 +60,16 @@ public final class Ros2Node {
      */
     String entityToken(long entityId, String kind, String fullTopic, Ros2MessageType type, QosProfile qos) {
         return prefix(entityId, kind) + "/" + Ros2Names.mangle(fullTopic) + "/" + type.ddsTypeName() + "/"
-                + type.typeHash() + "/" + qos.tokenText();
+                + context.distro().typeHash(type) + "/" + qos.tokenText();
+    }
+
+    /**
+     * @param fullTopic a fully qualified topic name
+     * @param type its message type
+     * @return the topic's key expression in the context's distribution
+     */
+    String topicKey(String fullTopic, Ros2MessageType type) {
+        return Ros2Names.topicKey(context.domain(), fullTopic, type.ddsTypeName(), context.distro().typeHash(type));
     }
 
     /**
@@ -85,10 +94,10 @@ public final class Ros2Node {
             throws ZenohException {
         String full = resolve(topic);
         long id = context.nextId();
-        ZenohPublisher p = context.session().declarePublisher(
-                Ros2Names.topicKey(context.domain(), full, type.ddsTypeName(), type.typeHash()));
-        LivelinessToken token = context.session().declareToken(entityToken(id, PUBLISHER, full, type, qos));
-        return new Ros2Publisher(p, token, Ros2Publisher.gid(context.session().zid(), id), maxMessageBytes);
+        ZenohPublisher p = context.session().declarePublisher(topicKey(full, type));
+        String tokenKey = entityToken(id, PUBLISHER, full, type, qos);
+        LivelinessToken token = context.session().declareToken(tokenKey);
+        return new Ros2Publisher(p, token, Ros2Publisher.gid(tokenKey), maxMessageBytes);
     }
 
     /**
@@ -107,7 +116,7 @@ public final class Ros2Node {
                                      int channel) throws ZenohException {
         String full = resolve(topic);
         long id = context.nextId();
-        mailbox.subscribe(Ros2Names.topicKey(context.domain(), full, type.ddsTypeName(), type.typeHash()), channel);
+        mailbox.subscribe(topicKey(full, type), channel);
         return context.session().declareToken(entityToken(id, SUBSCRIPTION, full, type, qos));
     }
 

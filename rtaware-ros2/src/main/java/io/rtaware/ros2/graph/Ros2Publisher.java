@@ -4,10 +4,9 @@ import io.rtaware.zenoh.LivelinessToken;
 import io.rtaware.zenoh.ZenohException;
 import io.rtaware.zenoh.ZenohPublisher;
 import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
-import java.security.MessageDigest;
-import java.security.NoSuchAlgorithmException;
-import java.util.Arrays;
+import net.openhft.hashing.LongTupleHashFunction;
 
 /**
  * A ROS 2 publisher: copies an encoded message into its own direct buffer and publishes it with
@@ -31,17 +30,27 @@ public final class Ros2Publisher implements AutoCloseable {
     }
 
     /**
-     * A gid derived from the session id and the entity id, so that it is unique in the graph
-     * and the same on every run of the same session.
+     * An entity's gid as rmw_zenoh derives it (rmw_zenoh_cpp {@code liveliness::Entity}'s
+     * constructor in {@code src/detail/liveliness_utils.cpp}, the same on the Humble, Jazzy,
+     * Kilted and Rolling branches): XXH3-128 (seed 0, default secret) of the entity's whole
+     * liveliness key expression, its low 64 bits then its high 64 bits, each little endian.
+     * This is the gid a subscriber receives in the attachment and {@code ros2 topic info -v}
+     * shows for the publisher.
+     *
+     * @param livelinessKey the entity's liveliness token key ({@code @ros2_lv/...})
+     * @return the 16-byte gid
      */
-    static byte[] gid(String zid, long entityId) {
-        try {
-            byte[] digest = MessageDigest.getInstance("SHA-256")
-                    .digest((zid + "/" + entityId).getBytes(StandardCharsets.US_ASCII));
-            return Arrays.copyOf(digest, SampleAttachment.GID_BYTES);
-        } catch (NoSuchAlgorithmException e) {
-            throw new IllegalStateException("SHA-256 is part of every JDK", e);
-        }
+    public static byte[] gid(String livelinessKey) {
+        byte[] key = livelinessKey.getBytes(StandardCharsets.UTF_8);
+        long[] hash = LongTupleHashFunction.xx128().hashBytes(key);
+        ByteBuffer gid = ByteBuffer.allocate(SampleAttachment.GID_BYTES).order(ByteOrder.LITTLE_ENDIAN);
+        gid.putLong(hash[0]).putLong(hash[1]);
+        return gid.array();
+    }
+
+    /** @return a copy of this publisher's gid */
+    public byte[] gid() {
+        return gid.clone();
     }
 
     /**

@@ -1,5 +1,6 @@
 package io.rtaware.ros2.graph;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -33,11 +34,13 @@ class Ros2NodeKeysTest {
 
     private Ros2Context robot;
     private Ros2Context watcher;
+    private String endpoint;
+    /** The gid in the attachment of the last sample {@link #arrivesOn} received. */
+    private byte[] lastGid;
 
     @BeforeEach
     void open() throws Exception {
         NativeZenohAssumption.require();
-        String endpoint;
         try (ServerSocket s = new ServerSocket(0)) {
             endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
         }
@@ -69,6 +72,9 @@ class Ros2NodeKeysTest {
             took = mailbox.take(TimeUnit.MILLISECONDS.toNanos(50), sample);
         }
         assertEquals(3, sample.channel());
+        assertTrue(SampleAttachment.valid(sample.attachment(), sample.attachmentLength()), "rmw_zenoh attachment");
+        lastGid = new byte[SampleAttachment.GID_BYTES];
+        sample.attachment().get(SampleAttachment.GID_OFFSET, lastGid);
         mailbox.close();
     }
 
@@ -103,5 +109,24 @@ class Ros2NodeKeysTest {
         assertTrue(tokens.contains("@ros2_lv/7/" + zid + "/1/1/NN/%/%/second"), "root-namespace node in " + tokens);
         assertTrue(tokens.contains("@ros2_lv/7/" + zid + "/1/2/MP/%/%/second/%cmd_vel/" + twist + "/::,10:,:,:,,"),
                 "default-QoS publisher in " + tokens);
+    }
+
+    @Test
+    void aHumbleContextWritesTypeHashNotSupportedAndSendsTheGidOfItsToken() throws Exception {
+        try (Ros2Context humble = Ros2Context.open(ZenohConfig.loopbackPeer().withConnect(
+                List.of(endpoint)), 7,
+                Ros2Distro.HUMBLE)) {
+            Ros2Node node = humble.createNode("/", "old");
+            Ros2Publisher cmdVel = node.createPublisher("cmd_vel", Ros2Types.TWIST, QosProfile.defaults(), 1024);
+            String twist = "geometry_msgs::msg::dds_::Twist_/TypeHashNotSupported";
+            arrivesOn(cmdVel, "7/cmd_vel/" + twist);
+
+            String zid = humble.session().zid();
+            String token = "@ros2_lv/7/" + zid + "/0/1/MP/%/%/old/%cmd_vel/" + twist + "/::,10:,:,:,,";
+            List<String> tokens = watcher.session().livelinessKeys("@ros2_lv/7/" + zid + "/**", 2000);
+            assertTrue(tokens.contains(token), "humble publisher's token in " + tokens);
+            assertEquals(token, cmdVel.tokenKey(), "the token the publisher holds");
+            assertArrayEquals(Ros2Publisher.gid(token), lastGid, "gid in the attachment is XXH3-128 of the token");
+        }
     }
 }
