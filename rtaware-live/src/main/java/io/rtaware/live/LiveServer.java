@@ -31,6 +31,10 @@ import java.util.concurrent.locks.LockSupport;
  * connection fails is removed. Streams get a comment line every {@value #KEEPALIVE_MS} ms when
  * nothing new came, so a closed browser is noticed after the run too.
  *
+ * <p>Its threads are the JDK server's dispatcher and an executor that gives each exchange (an
+ * event stream for its whole life) a thread, not loops of ours, so they are not
+ * {@link io.rtaware.core.agent.AgentThread}s; {@link #close()} stops both.
+ *
  * <p>Thread-safe: {@link #publish} and {@link #putResource} from any thread.
  */
 public final class LiveServer implements AutoCloseable {

@@ -3,7 +3,8 @@ package io.rtaware.record;
 import io.rtaware.core.data.Key;
 import io.rtaware.core.data.StateValue;
 import io.rtaware.record.encode.StateFields;
-import io.rtaware.record.ring.SingleProducerSequence;
+import io.rtaware.record.ring.SingleProducerRing;
+import io.rtaware.record.ring.SlotReader;
 import java.io.IOException;
 
 /**
@@ -13,56 +14,55 @@ import java.io.IOException;
  */
 final class CommitRing implements RecorderRing {
 
-    private final StateValue<?>[] slots;
-    private final long[] times;
-    private final long[] generations;
-    private final SingleProducerSequence sequence;
+    /** One commit: a buffer of the key's type and when it was committed. */
+    private static final class Commit {
+        final StateValue<?> value;
+        long timeNs;
+        long generation;
+
+        Commit(StateValue<?> value) {
+            this.value = value;
+        }
+    }
+
+    private final SingleProducerRing<Commit> ring;
     private final KeyChannels channels;
+    private final SlotReader<Commit, MessageSink, WriterScratch> writer = this::write;
 
     CommitRing(Key<?> key, KeyChannels channels, int mostSlots, long mostBytes) {
         this.channels = channels;
         StateValue<?> first = key.newBuffer();
         long valueBytes = StateFields.of(key.type()).estimateBytes(first);
         int n = (int) Math.max(Math.min(8, mostSlots), Math.min(mostSlots, mostBytes / Math.max(1, valueBytes)));
-        slots = new StateValue<?>[n];
-        slots[0] = first;
-        for (int i = 1; i < n; i++) {
-            slots[i] = key.newBuffer();
-        }
-        times = new long[n];
-        generations = new long[n];
-        sequence = new SingleProducerSequence(n);
+        ring = new SingleProducerRing<>(n, i -> new Commit(i == 0 ? first : key.newBuffer()));
     }
 
     /** Producer: copies a value into a free slot; false (dropped) if none is free. */
     @SuppressWarnings({"unchecked", "rawtypes"})
     boolean offer(StateValue<?> value, long generation, long timeNs) {
-        long h = sequence.claim();
-        if (h < 0) {
+        long position = ring.claim();
+        if (position < 0) {
             return false;
         }
-        int s = sequence.slot(h);
-        ((StateValue) slots[s]).copyFrom(value);
-        times[s] = timeNs;
-        generations[s] = generation;
-        sequence.publish(h);
+        Commit c = ring.slot(position);
+        ((StateValue) c.value).copyFrom(value);
+        c.timeNs = timeNs;
+        c.generation = generation;
+        ring.publish(position);
         return true;
     }
 
     @Override
     public int drain(MessageSink sink, WriterScratch scratch) throws IOException {
-        long t = sequence.consumed();
-        long h = sequence.published();
-        for (long i = t; i < h; i++) {
-            int s = sequence.slot(i);
-            channels.write(slots[s], generations[s], times[s], sink, scratch);
-            sequence.consumedUpTo(i + 1);
-        }
-        return (int) (h - t);
+        return ring.drain(writer, sink, scratch);
+    }
+
+    private void write(Commit c, long position, MessageSink sink, WriterScratch scratch) throws IOException {
+        channels.write(c.value, c.generation, c.timeNs, sink, scratch);
     }
 
     @Override
     public void discard() {
-        sequence.discardAll();
+        ring.discard(c -> { });
     }
 }

@@ -1,6 +1,7 @@
 package io.rtaware.record;
 
-import io.rtaware.record.ring.SingleProducerSequence;
+import io.rtaware.record.ring.SingleProducerRing;
+import io.rtaware.record.ring.SlotReader;
 import java.io.IOException;
 
 /**
@@ -9,69 +10,68 @@ import java.io.IOException;
  */
 final class CycleRing implements RecorderRing {
 
+    /** One cycle record. */
+    private static final class Cycle {
+        final long[] generations;
+        long number;
+        byte outcome;
+        long releaseNs;
+        long startNs;
+        long endNs;
+        long skipped;
+
+        Cycle(int inputs) {
+            generations = new long[inputs];
+        }
+    }
+
     private final int channel;
     private final int inputs;
-    private final byte[] outcome;
-    private final long[] release;
-    private final long[] start;
-    private final long[] end;
-    private final long[] skipped;
-    private final long[] generations;
-    private final long[] numbers;
-    private final SingleProducerSequence sequence;
+    private final SingleProducerRing<Cycle> ring;
+    private final SlotReader<Cycle, MessageSink, WriterScratch> writer = this::write;
     /** Records offered so far, dropped ones included (producer thread only). */
     private long offered;
 
     CycleRing(int channel, int inputs, int slots) {
         this.channel = channel;
         this.inputs = inputs;
-        outcome = new byte[slots];
-        release = new long[slots];
-        start = new long[slots];
-        end = new long[slots];
-        skipped = new long[slots];
-        numbers = new long[slots];
-        generations = new long[slots * Math.max(1, inputs)];
-        sequence = new SingleProducerSequence(slots);
+        ring = new SingleProducerRing<>(slots, i -> new Cycle(inputs));
     }
 
     /** Producer: copies a record into a free slot; false (dropped, still numbered) if none is free. */
     boolean offer(byte what, long releaseNs, long startNs, long endNs, long skips, long[] inputGenerations) {
         long number = offered++;
-        long h = sequence.claim();
-        if (h < 0) {
+        long position = ring.claim();
+        if (position < 0) {
             return false;
         }
-        int s = sequence.slot(h);
-        numbers[s] = number;
-        outcome[s] = what;
-        release[s] = releaseNs;
-        start[s] = startNs;
-        end[s] = endNs;
-        skipped[s] = skips;
+        Cycle c = ring.slot(position);
+        c.number = number;
+        c.outcome = what;
+        c.releaseNs = releaseNs;
+        c.startNs = startNs;
+        c.endNs = endNs;
+        c.skipped = skips;
         for (int i = 0; i < inputs; i++) {
-            generations[s * inputs + i] = inputGenerations == null ? 0 : inputGenerations[i];
+            c.generations[i] = inputGenerations == null ? 0 : inputGenerations[i];
         }
-        sequence.publish(h);
+        ring.publish(position);
         return true;
     }
 
     @Override
     public int drain(MessageSink sink, WriterScratch scratch) throws IOException {
-        long t = sequence.consumed();
-        long h = sequence.published();
-        for (long i = t; i < h; i++) {
-            int s = sequence.slot(i);
-            TimingEncoder.cycle(scratch.cdr, outcome[s], release[s], start[s], end[s], skipped[s], generations,
-                    s * inputs, inputs);
-            sink.write(channel, numbers[s], end[s], end[s], scratch.cdr.buffer(), 0, scratch.cdr.size());
-            sequence.consumedUpTo(i + 1);
-        }
-        return (int) (h - t);
+        return ring.drain(writer, sink, scratch);
+    }
+
+    private void write(Cycle c, long position, MessageSink sink, WriterScratch scratch) throws IOException {
+        TimingEncoder.cycle(scratch.cdr, c.outcome, c.releaseNs, c.startNs, c.endNs, c.skipped, c.generations, 0,
+                inputs);
+        sink.write(channel, c.number, c.endNs, c.endNs, scratch.cdr.buffer(), 0, scratch.cdr.size());
     }
 
     @Override
     public void discard() {
-        sequence.discardAll();
+        ring.discard(c -> { });
     }
 }

@@ -1,6 +1,7 @@
 package io.rtaware.record;
 
-import io.rtaware.record.ring.MultiProducerSequence;
+import io.rtaware.record.ring.MultiProducerRing;
+import io.rtaware.record.ring.SlotReader;
 import java.io.IOException;
 import java.util.List;
 
@@ -10,74 +11,66 @@ import java.util.List;
  */
 final class EventRing implements RecorderRing {
 
+    /** One event; its references are cleared once it is read, so the ring keeps no object alive. */
+    private static final class Event {
+        byte kind;
+        int task;
+        long timeNs;
+        long a;
+        long b;
+        boolean flag;
+        String key;
+        Object detail;
+
+        void clear() {
+            key = null;
+            detail = null;
+        }
+    }
+
     private final int channel;
     private final List<String> taskNames;
-    private final MultiProducerSequence sequence;
-    private final byte[] kind;
-    private final int[] task;
-    private final long[] time;
-    private final long[] a;
-    private final long[] b;
-    private final boolean[] flag;
-    private final String[] key;
-    private final Object[] detail;
+    private final MultiProducerRing<Event> ring;
+    private final SlotReader<Event, MessageSink, WriterScratch> writer = this::write;
 
     EventRing(int channel, List<String> taskNames, int slots) {
         this.channel = channel;
         this.taskNames = taskNames;
-        sequence = new MultiProducerSequence(slots);
-        kind = new byte[slots];
-        task = new int[slots];
-        time = new long[slots];
-        a = new long[slots];
-        b = new long[slots];
-        flag = new boolean[slots];
-        key = new String[slots];
-        detail = new Object[slots];
+        ring = new MultiProducerRing<>(slots, i -> new Event());
     }
 
     /** Producer (any thread): copies an event into a free slot; false (dropped) if none is free. */
     boolean offer(byte k, int t, long timeNs, long x, long y, boolean f, String keyName, Object d) {
-        long c = sequence.claim();
-        if (c < 0) {
+        long position = ring.claim();
+        if (position < 0) {
             return false;
         }
-        int s = sequence.slot(c);
-        kind[s] = k;
-        task[s] = t;
-        time[s] = timeNs;
-        a[s] = x;
-        b[s] = y;
-        flag[s] = f;
-        key[s] = keyName;
-        detail[s] = d;
-        sequence.publish(c);
+        Event e = ring.slot(position);
+        e.kind = k;
+        e.task = t;
+        e.timeNs = timeNs;
+        e.a = x;
+        e.b = y;
+        e.flag = f;
+        e.key = keyName;
+        e.detail = d;
+        ring.publish(position);
         return true;
     }
 
     @Override
     public int drain(MessageSink sink, WriterScratch scratch) throws IOException {
-        int count = 0;
-        for (long p = sequence.nextPublished(); p >= 0; p = sequence.nextPublished()) {
-            int s = sequence.slot(p);
-            TimingEncoder.event(scratch.cdr, kind[s], taskNames.get(task[s]), key[s], time[s], a[s], b[s], flag[s],
-                    detail[s]);
-            sink.write(channel, p, time[s], time[s], scratch.cdr.buffer(), 0, scratch.cdr.size());
-            detail[s] = null;
-            key[s] = null;
-            sequence.consumedOne();
-            count++;
-        }
-        return count;
+        return ring.drain(writer, sink, scratch);
+    }
+
+    private void write(Event e, long position, MessageSink sink, WriterScratch scratch) throws IOException {
+        TimingEncoder.event(scratch.cdr, e.kind, taskNames.get(e.task), e.key, e.timeNs, e.a, e.b, e.flag, e.detail);
+        sink.write(channel, position, e.timeNs, e.timeNs, scratch.cdr.buffer(), 0, scratch.cdr.size());
+        e.clear();
     }
 
     @Override
     public void discard() {
-        for (long p = sequence.nextPublished(); p >= 0; p = sequence.nextPublished()) {
-            int s = sequence.slot(p);
-            detail[s] = null;
-            key[s] = null;
-            sequence.consumedOne();
-        }
+        ring.discard(Event::clear);
     }
 }

@@ -1,59 +1,83 @@
 package io.rtaware.record;
 
+import io.rtaware.core.agent.AgentThread;
 import java.io.IOException;
 import java.util.List;
-import java.util.concurrent.locks.LockSupport;
+import org.agrona.concurrent.Agent;
+import org.agrona.concurrent.SleepingIdleStrategy;
 
 /**
- * The recorder's one writer thread: drains the rings into the sink until stopped, then once
- * more. A write that fails ends the writing (the reason kept for the recording's statistics) and
- * the thread goes on emptying the rings unwritten, so producers only ever drop, never block.
+ * The recorder's one writer thread ({@value #THREAD_NAME}, an {@link AgentThread}): drains the
+ * rings into the sink, idling {@value #IDLE_PARK_NS} ns when they are empty, until closed; then,
+ * in its {@link Agent#onClose()}, drains until a pass writes nothing. A write that fails ends the
+ * writing (the first reason kept for the recording's statistics) and the thread goes on emptying
+ * the rings unwritten, so producers only ever drop, never block. Closing waits as long as the
+ * last writes take and never interrupts the thread (an interrupt would close the file's channel).
  */
 final class RecorderWriterThread {
 
+    /** The name of the writer thread. */
+    static final String THREAD_NAME = "rtaware-recorder";
     private static final long IDLE_PARK_NS = 1_000_000;
 
     private final List<RecorderRing> rings;
     private final MessageSink sink;
     private final WriterScratch scratch = new WriterScratch();
-    private final Thread thread;
-    private volatile boolean stopping;
+    private volatile AgentThread loop;
     private volatile String failure;
 
     RecorderWriterThread(List<RecorderRing> rings, MessageSink sink) {
         this.rings = List.copyOf(rings);
         this.sink = sink;
-        thread = new Thread(this::loop, "rtaware-recorder");
-        thread.setDaemon(true);
     }
 
     void start() {
-        thread.start();
+        loop = AgentThread.start(new Writing(), new SleepingIdleStrategy(IDLE_PARK_NS), this::failed,
+                AgentThread.CloseWait.UNTIL_CLOSED);
     }
 
-    private void loop() {
-        try {
-            while (true) {
-                boolean finishing = stopping;
-                int written = 0;
-                for (RecorderRing ring : rings) {
-                    written += ring.drain(sink, scratch);
-                }
-                if (written == 0) {
-                    if (finishing) {
-                        return;
-                    }
-                    LockSupport.parkNanos(IDLE_PARK_NS);
-                }
-            }
-        } catch (IOException | RuntimeException e) {
-            failure = e.getMessage() == null ? e.toString() : e.getMessage();
-            while (!stopping) {
+    /** The writer's loop: a pass over the rings per duty cycle. */
+    private final class Writing implements Agent {
+        @Override
+        public int doWork() throws IOException {
+            if (failure != null) {
                 for (RecorderRing ring : rings) {
                     ring.discard();
                 }
-                LockSupport.parkNanos(IDLE_PARK_NS);
+                return 0;
             }
+            return drainAll();
+        }
+
+        @Override
+        public void onClose() {
+            try {
+                while (failure == null && drainAll() > 0) {
+                    // every record handed over before the close is written
+                }
+            } catch (IOException | RuntimeException e) {
+                failed(e);
+            }
+        }
+
+        @Override
+        public String roleName() {
+            return THREAD_NAME;
+        }
+    }
+
+    private int drainAll() throws IOException {
+        int written = 0;
+        for (RecorderRing ring : rings) {
+            written += ring.drain(sink, scratch);
+        }
+        return written;
+    }
+
+    /** A write failed: the writing ends; the first reason is kept. */
+    private void failed(Throwable error) {
+        if (failure == null) {
+            failure = error.getMessage() == null ? error.toString() : error.getMessage();
         }
     }
 
@@ -63,13 +87,7 @@ final class RecorderWriterThread {
      * @return why writing failed, or null
      */
     String stopAndJoin() {
-        stopping = true;
-        LockSupport.unpark(thread);
-        try {
-            thread.join();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        loop.close();
         return failure;
     }
 }

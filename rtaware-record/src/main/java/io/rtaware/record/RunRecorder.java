@@ -20,8 +20,8 @@ import java.util.concurrent.atomic.AtomicLong;
 /**
  * Records a run to an MCAP file without slowing the tasks it records: the producers' side of
  * the recorder. Its parts, one job each: the rings ({@link CommitRing}, {@link CycleRing},
- * {@link EventRing}, {@link GroundTruthRing}, with their thread-safety contracts in the types
- * of their positions, {@link io.rtaware.record.ring}), the channel layout and encoding
+ * {@link EventRing}, {@link GroundTruthRing}, thin uses of the rings of
+ * {@link io.rtaware.record.ring} whose types name their producers), the channel layout and encoding
  * ({@link KeyChannels}, {@link TimingEncoder}), and the writer thread ({@link RecorderWriterThread}).
  *
  * <p>Task threads call {@link #commit}, {@link #cycle} and {@link #event}: each copies what it

@@ -1,13 +1,17 @@
 package io.rtaware.app.run;
 
+import io.rtaware.core.agent.AgentThread;
 import io.rtaware.core.time.Clock;
 import io.rtaware.robot.geometry.Point2d;
 import io.rtaware.robot.geometry.Pose2d;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
+import java.util.concurrent.locks.LockSupport;
 import java.util.function.LongSupplier;
 import java.util.function.Supplier;
+import org.agrona.concurrent.Agent;
+import org.agrona.concurrent.NoOpIdleStrategy;
 
 /**
  * Watches the robot from outside the controller, as the paper's ground-truth sensors did: samples
@@ -17,7 +21,11 @@ import java.util.function.Supplier;
  * connection, an impossible pose), the referee records a {@link GroundTruthGap} from the last
  * pose before the failure to the first one after it (or to the end of the run): the distance
  * travelled is summed only between samples without a gap between them, and the report says
- * which time it covers. A sampling thread that merely ran late (a loaded machine) is no gap. Thread-safe: sampled by its own thread, read by any.
+ * which time it covers. A sampling thread that merely ran late (a loaded machine) is no gap.
+ * The sampling thread ({@value #THREAD_NAME}) is an {@link AgentThread}: a sample that throws
+ * (a fault of ours, not of the pose source, whose failures are gaps) is counted, recorded as a
+ * failed sample (a gap, {@link #lastError()}), the first one printed to standard error, and the
+ * sampling goes on. Thread-safe: sampled by its own thread, read by any.
  */
 final class Referee implements AutoCloseable {
 
@@ -44,6 +52,9 @@ final class Referee implements AutoCloseable {
     record Sample(double tS, Pose2d pose, Pose2d believed) {
     }
 
+    /** The name of the sampling thread. */
+    static final String THREAD_NAME = "rtaware-referee";
+
     private final Clock clock;
     private final long startNs;
     private final long samplePeriodNs;
@@ -53,8 +64,8 @@ final class Referee implements AutoCloseable {
     private final List<Sample> samples = new ArrayList<>();
     private final List<Point2d> missMarkers = new ArrayList<>();
     private final List<GroundTruthGap> gaps = new ArrayList<>();
-    private final Thread thread;
-    private volatile boolean running = true;
+    /** The sampling loop, once started. */
+    private volatile AgentThread sampler;
     private double travelledM;
     private long lastMisses;
     private String lastError;
@@ -89,8 +100,6 @@ final class Referee implements AutoCloseable {
         this.samplePeriodNs = samplePeriodNs;
         this.source = Objects.requireNonNull(source, "source");
         this.misses = misses;
-        this.thread = new Thread(this::loop, "rtaware-referee");
-        this.thread.setDaemon(true);
     }
 
     /**
@@ -99,22 +108,64 @@ final class Referee implements AutoCloseable {
      * @return this referee
      */
     Referee start() {
-        thread.start();
+        sampler = AgentThread.start(new Sampler(), NoOpIdleStrategy.INSTANCE, this::samplingFailed);
         return this;
     }
 
-    private void loop() {
-        long next = clock.nanos();
-        while (running) {
-            sample();
-            next += samplePeriodNs;
-            long waitNs = next - clock.nanos();
-            if (waitNs > 0) {
-                java.util.concurrent.locks.LockSupport.parkNanos(clock.toWallNanos(waitNs));
-            } else {
-                next = clock.nanos();
-            }
+    /**
+     * The sampling loop: a sample when the next one is due in world time, else a park of the wall
+     * time left ({@link Clock#toWallNanos}); a loop that fell behind samples at once and goes on
+     * from there.
+     */
+    private final class Sampler implements Agent {
+        /** World time of the next sample (the sampling thread only). */
+        private long nextNs;
+
+        @Override
+        public void onStart() {
+            nextNs = clock.nanos();
         }
+
+        @Override
+        public int doWork() {
+            long nowNs = clock.nanos();
+            long waitNs = nextNs - nowNs;
+            if (waitNs > 0) {
+                LockSupport.parkNanos(clock.toWallNanos(waitNs));
+                return 0;
+            }
+            // The next sample is set before this one is taken, so a sample that throws does not repeat at once.
+            nextNs += samplePeriodNs;
+            if (nextNs - nowNs <= 0) {
+                nextNs = nowNs;
+            }
+            sample();
+            return 1;
+        }
+
+        @Override
+        public String roleName() {
+            return THREAD_NAME;
+        }
+    }
+
+    /** A sample threw: a failed sample (a gap), counted by the sampler; the first one is printed. */
+    private void samplingFailed(Throwable error) {
+        synchronized (this) {
+            lastError = String.valueOf(error);
+            failing = true;
+        }
+        AgentThread loop = sampler;
+        if (loop == null || loop.errors() <= 1) {
+            System.err.println("rtaware run: referee: a ground-truth sample failed: " + error
+                    + " (recorded as a gap; further failures are counted)");
+        }
+    }
+
+    /** @return samples that threw on the sampling thread so far (failures of the pose source are not counted here) */
+    long samplingErrors() {
+        AgentThread loop = sampler;
+        return loop == null ? 0 : loop.errors();
     }
 
     /** Takes one sample now (the sampling thread's step; tests call it on a manual clock). */
@@ -216,17 +267,12 @@ final class Referee implements AutoCloseable {
         return Double.NaN;
     }
 
-    /** Stops sampling, takes a last sample and closes the source. */
+    /** Stops sampling (waking and joining the sampling thread), takes a last sample and closes the source. */
     @Override
     public void close() {
-        running = false;
-        if (thread.isAlive()) {
-            thread.interrupt();
-            try {
-                thread.join(2_000);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
+        AgentThread loop = sampler;
+        if (loop != null) {
+            loop.close();
         }
         sample();
         try {

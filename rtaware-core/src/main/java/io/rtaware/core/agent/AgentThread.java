@@ -2,6 +2,7 @@ package io.rtaware.core.agent;
 
 import java.util.Objects;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.locks.LockSupport;
 import org.agrona.ErrorHandler;
 import org.agrona.concurrent.Agent;
 import org.agrona.concurrent.AgentRunner;
@@ -16,26 +17,47 @@ import org.agrona.concurrent.IdleStrategy;
  * {@link ErrorHandler} and is counted ({@link #errors()}); the loop goes on (an
  * {@link org.agrona.concurrent.AgentTerminationException} ends it).
  *
- * <p>{@link #close()} may be called from any thread, more than once: it stops the loop and waits
- * for the thread, interrupting it every {@value #CLOSE_TIMEOUT_MS} ms while it has not returned
- * (an agent blocked in I/O is interrupted). Called from the agent's own thread it only stops the
- * loop. Thread-safe.
+ * <p>{@link #close()} may be called from any thread, more than once: it stops the loop, wakes the
+ * thread if it is parked (an agent that waits with {@link LockSupport#parkNanos(long)}, in its work
+ * or in an idle strategy such as Agrona's {@link org.agrona.concurrent.SleepingIdleStrategy}, ends
+ * at once, not after its wait) and waits for it as its {@link CloseWait} says: by default
+ * interrupting it every {@value #CLOSE_TIMEOUT_MS} ms while it has not returned (an agent blocked
+ * in I/O is interrupted). Called from the agent's own thread it only stops the loop. Thread-safe.
  */
 public final class AgentThread implements AutoCloseable {
 
     /** How long {@link #close()} waits for the thread before it interrupts it (and waits again), ms. */
     public static final int CLOSE_TIMEOUT_MS = 2_000;
 
-    /** Thrown by the loop itself when {@link #close()} was called on the agent's thread; not an error. */
-    private static final AgentTerminationException STOP = new AgentTerminationException("closed from its own thread");
+    /** How {@link AgentThread#close()} waits for the agent's thread. */
+    public enum CloseWait {
+        /**
+         * Waits {@value AgentThread#CLOSE_TIMEOUT_MS} ms, then interrupts the thread, again every
+         * {@value AgentThread#CLOSE_TIMEOUT_MS} ms until it returns: for loops an interrupt may end
+         * (blocked in a wait or in interruptible I/O).
+         */
+        INTERRUPT_AFTER_TIMEOUT,
+        /**
+         * Waits as long as the agent takes to close, never interrupting it: for an agent whose
+         * {@link Agent#onClose()} finishes work that an interrupt would destroy (an interrupt closes
+         * a {@link java.nio.channels.FileChannel} the thread writes). If the closing thread is
+         * interrupted, {@link AgentThread#close()} returns at once with its interrupt status set.
+         */
+        UNTIL_CLOSED
+    }
+
+    /** Thrown by the loop itself once {@link #close()} was called; not an error. */
+    private static final AgentTerminationException STOP = new AgentTerminationException("closed");
 
     private final AgentRunner runner;
     private final Thread thread;
     private final AtomicLong errors = new AtomicLong();
+    private final CloseWait closeWait;
     private volatile boolean stopRequested;
 
-    private AgentThread(Agent agent, IdleStrategy idle, ErrorHandler errorHandler) {
+    private AgentThread(Agent agent, IdleStrategy idle, ErrorHandler errorHandler, CloseWait closeWait) {
         Objects.requireNonNull(errorHandler, "errorHandler");
+        this.closeWait = Objects.requireNonNull(closeWait, "closeWait");
         ErrorHandler counting = error -> {
             if (error != STOP) {
                 errors.incrementAndGet();
@@ -77,10 +99,23 @@ public final class AgentThread implements AutoCloseable {
      * @param idle what to do after a duty cycle (e.g. Agrona's
      *     {@link org.agrona.concurrent.SleepingMillisIdleStrategy} for a loop that polls)
      * @param errorHandler where every throwable of the agent goes, on the agent's thread
-     * @return the running loop
+     * @return the running loop, closed with {@link CloseWait#INTERRUPT_AFTER_TIMEOUT}
      */
     public static AgentThread start(Agent agent, IdleStrategy idle, ErrorHandler errorHandler) {
-        AgentThread loop = new AgentThread(agent, idle, errorHandler);
+        return start(agent, idle, errorHandler, CloseWait.INTERRUPT_AFTER_TIMEOUT);
+    }
+
+    /**
+     * Starts an agent on a thread of its own.
+     *
+     * @param agent the loop's work; its role name names the thread
+     * @param idle what to do after a duty cycle
+     * @param errorHandler where every throwable of the agent goes, on the agent's thread
+     * @param closeWait how {@link #close()} waits for the thread
+     * @return the running loop
+     */
+    public static AgentThread start(Agent agent, IdleStrategy idle, ErrorHandler errorHandler, CloseWait closeWait) {
+        AgentThread loop = new AgentThread(agent, idle, errorHandler, closeWait);
         loop.thread.start();
         return loop;
     }
@@ -98,8 +133,17 @@ public final class AgentThread implements AutoCloseable {
     /** Stops the loop and waits until the agent has closed on its thread (see the class comment). */
     @Override
     public void close() {
+        stopRequested = true;
         if (Thread.currentThread() == thread) {
-            stopRequested = true;
+            return;
+        }
+        LockSupport.unpark(thread);
+        if (closeWait == CloseWait.UNTIL_CLOSED) {
+            try {
+                thread.join();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
             return;
         }
         runner.close(CLOSE_TIMEOUT_MS, stuck -> System.err.println("rtaware: " + stuck.getName()

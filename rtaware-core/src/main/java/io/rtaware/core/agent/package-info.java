@@ -1,9 +1,11 @@
 /**
  * The one way a background loop of rtaware runs (the console reporter, the live view's
- * publisher, the exporter, the referee, the simulator's loops): an Agrona
+ * publisher, the ROS 2 exporter, the run's referee, the recorder's writer, the simulator's world,
+ * accept and ROS 2 loops): an Agrona
  * {@link org.agrona.concurrent.Agent} on a thread of its own, started and closed by
  * {@link io.rtaware.core.agent.AgentThread}: {@code onStart}, then {@code doWork} and the idle
  * strategy in turn, every error to one handler and a counter, {@code onClose} on the same
- * thread, and a close that joins with a timeout.
+ * thread, and a close that wakes the thread and joins it, with a timeout after which it
+ * interrupts or, for a writer finishing a file, without one.
  */
 package io.rtaware.core.agent;

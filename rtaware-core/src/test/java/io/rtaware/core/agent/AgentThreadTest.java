@@ -1,6 +1,7 @@
 package io.rtaware.core.agent;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
@@ -8,7 +9,9 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import org.agrona.concurrent.Agent;
+import java.util.concurrent.atomic.AtomicBoolean;
 import org.agrona.concurrent.NoOpIdleStrategy;
+import org.agrona.concurrent.SleepingIdleStrategy;
 import org.agrona.concurrent.SleepingMillisIdleStrategy;
 import org.junit.jupiter.api.Test;
 
@@ -116,5 +119,72 @@ class AgentThreadTest {
         assertTrue(loop.isClosed(), "close waited for the agent, interrupted after the timeout");
         assertEquals(null, seen[0], "an interrupt stops the loop, as in Agrona; it is not an error");
         assertEquals(0, loop.errors());
+    }
+
+    @Test
+    void closeWakesAnAgentParkedInItsIdleStrategyInsteadOfInterruptingItAfterTheTimeout() throws Exception {
+        CountDownLatch worked = new CountDownLatch(1);
+        AtomicBoolean interruptedAtClose = new AtomicBoolean(true);
+        Agent agent = new Agent() {
+            @Override
+            public int doWork() {
+                worked.countDown();
+                return 0;
+            }
+
+            @Override
+            public void onClose() {
+                interruptedAtClose.set(Thread.currentThread().isInterrupted());
+            }
+
+            @Override
+            public String roleName() {
+                return "parked";
+            }
+        };
+        // Idles for an hour per duty cycle: only close's wake-up (or, without it, the interrupt after the timeout) ends it.
+        AgentThread loop = AgentThread.start(agent, new SleepingIdleStrategy(TimeUnit.HOURS.toNanos(1)), e -> { });
+        assertTrue(worked.await(10, TimeUnit.SECONDS));
+        loop.close();
+        assertTrue(loop.isClosed(), "close returns once the agent has closed");
+        assertFalse(interruptedAtClose.get(), "woken by close, not interrupted after " + AgentThread.CLOSE_TIMEOUT_MS + " ms");
+        assertEquals(0, loop.errors());
+    }
+
+    @Test
+    void closeUntilClosedWaitsForALongOnCloseAndNeverInterruptsIt() throws Exception {
+        CountDownLatch started = new CountDownLatch(1);
+        AtomicBoolean interrupted = new AtomicBoolean();
+        List<String> steps = new CopyOnWriteArrayList<>();
+        Agent agent = new Agent() {
+            @Override
+            public int doWork() {
+                started.countDown();
+                return 0;
+            }
+
+            @Override
+            public void onClose() {
+                try {
+                    // longer than the timeout after which the default close interrupts
+                    Thread.sleep(AgentThread.CLOSE_TIMEOUT_MS + 1_000);
+                    steps.add("finished its work");
+                } catch (InterruptedException e) {
+                    interrupted.set(true);
+                }
+            }
+
+            @Override
+            public String roleName() {
+                return "finishing";
+            }
+        };
+        AgentThread loop = AgentThread.start(agent, new SleepingIdleStrategy(TimeUnit.MILLISECONDS.toNanos(1)),
+                e -> { }, AgentThread.CloseWait.UNTIL_CLOSED);
+        assertTrue(started.await(10, TimeUnit.SECONDS));
+        loop.close();
+        assertTrue(loop.isClosed(), "close returned only once onClose had returned");
+        assertEquals(List.of("finished its work"), steps, "onClose ran to its end");
+        assertFalse(interrupted.get(), "never interrupted");
     }
 }

@@ -1,5 +1,6 @@
 package io.rtaware.ros2.export;
 
+import io.rtaware.core.agent.AgentThread;
 import io.rtaware.core.data.FeedStats;
 import io.rtaware.core.data.StateValue;
 import io.rtaware.core.monitor.Monitor;
@@ -28,7 +29,9 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.locks.LockSupport;
+import org.agrona.concurrent.Agent;
+import org.agrona.concurrent.AgentTerminationException;
+import org.agrona.concurrent.SleepingIdleStrategy;
 
 /**
  * Publishes a monitor's keys and health over ROS 2 from a thread of its own (never a task's):
@@ -44,8 +47,9 @@ import java.util.concurrent.locks.LockSupport;
  * its frame to that child, stamped as its message; the static transforms given are published
  * on {@code /tf_static} (offered transient local, as tf2's static broadcaster offers them, and,
  * since this Zenoh layer keeps no history for late subscribers, again with every health
- * array). Its thread is named {@code ros2-export}, outside the {@code rtaware-*} threads
- * whose allocation {@code bench} measures. Thread-safe: {@link #close()} from any thread.
+ * array). Its thread, an {@link AgentThread}, is named {@value #THREAD_NAME}, outside the
+ * {@code rtaware-*} threads whose allocation {@code bench} measures; a failing publication ends
+ * it, and {@link #failure()} says why. Thread-safe: {@link #close()} from any thread.
  */
 public final class MonitorExporter implements AutoCloseable {
 
@@ -59,6 +63,8 @@ public final class MonitorExporter implements AutoCloseable {
     public static final String TF_STATIC = "/tf_static";
     /** The history depth tf2's broadcaster offers on {@code /tf}. */
     private static final int TF_DEPTH = 100;
+    /** The name of the exporter's thread. */
+    public static final String THREAD_NAME = "ros2-export";
     private static final long DIAGNOSTICS_PERIOD_NS = TimeUnit.SECONDS.toNanos(1);
     private static final int VALUES_PER_STATUS = 10;
     private static final int MAX_MESSAGE_BYTES = 1 << 20;
@@ -81,8 +87,8 @@ public final class MonitorExporter implements AutoCloseable {
     private final EpochClock epoch = new EpochClock();
     private final long[] lastMisses;
     private final long[] lastErrors;
-    private final Thread thread;
-    private volatile boolean running = true;
+    /** The publishing loop, started once the node and publishers are declared. */
+    private volatile AgentThread loop;
     private volatile String failure;
     private volatile long arraysPublished;
 
@@ -124,8 +130,6 @@ public final class MonitorExporter implements AutoCloseable {
         array = new DiagnosticArray(statuses, VALUES_PER_STATUS);
         lastMisses = new long[monitor.tasks().size()];
         lastErrors = new long[monitor.tasks().size()];
-        thread = new Thread(this::loop, "ros2-export");
-        thread.setDaemon(true);
     }
 
     private static <T extends StateValue<T>> Slot<T> slot(Ros2Node node, ExportedKey<T> k) throws ZenohException {
@@ -152,7 +156,7 @@ public final class MonitorExporter implements AutoCloseable {
         }
         try {
             MonitorExporter e = new MonitorExporter(monitor, context, keys, staticTransforms, keyPeriodMs);
-            e.thread.start();
+            e.loop = AgentThread.start(e.new Publishing(), new SleepingIdleStrategy(e.keyPeriodNs), e::stopped);
             return e;
         } catch (ZenohException | RuntimeException e) {
             context.close();
@@ -160,10 +164,21 @@ public final class MonitorExporter implements AutoCloseable {
         }
     }
 
-    private void loop() {
-        long nextDiagnosticsNs = System.nanoTime();
-        try {
-            while (running) {
+    /**
+     * The exporter's loop: the keys whose generation changed every key period, the health array
+     * once a second; a failing publication ends it ({@link #stopped}).
+     */
+    private final class Publishing implements Agent {
+        private long nextDiagnosticsNs;
+
+        @Override
+        public void onStart() {
+            nextDiagnosticsNs = System.nanoTime();
+        }
+
+        @Override
+        public int doWork() {
+            try {
                 for (Slot<?> s : slots) {
                     publishIfNew(s);
                 }
@@ -172,11 +187,22 @@ public final class MonitorExporter implements AutoCloseable {
                     publishDiagnostics();
                     nextDiagnosticsNs += DIAGNOSTICS_PERIOD_NS;
                 }
-                LockSupport.parkNanos(keyPeriodNs);
+            } catch (ZenohException | RuntimeException e) {
+                throw new AgentTerminationException(e);
             }
-        } catch (ZenohException | RuntimeException e) {
-            failure = e.getMessage();
+            return 0; // always idle a key period: the keys are looked at that often
         }
+
+        @Override
+        public String roleName() {
+            return THREAD_NAME;
+        }
+    }
+
+    /** The loop ended on a failure: kept for {@link #failure()}. */
+    private void stopped(Throwable error) {
+        Throwable cause = error instanceof AgentTerminationException && error.getCause() != null ? error.getCause() : error;
+        failure = cause.getMessage() == null ? cause.toString() : cause.getMessage();
     }
 
     private <T extends StateValue<T>> void publishIfNew(Slot<T> s) throws ZenohException {
@@ -285,15 +311,9 @@ public final class MonitorExporter implements AutoCloseable {
     /** Publishes one last health array, stops the thread, closes the session. */
     @Override
     public void close() throws ZenohException {
-        running = false;
-        LockSupport.unpark(thread);
+        loop.close();
         try {
-            thread.join(TimeUnit.SECONDS.toMillis(2));
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-        try {
-            if (!thread.isAlive() && failure == null) {
+            if (loop.isClosed() && failure == null) {
                 publishDiagnostics();
             }
         } finally {

@@ -1,5 +1,6 @@
 package io.rtaware.sim.ros2;
 
+import io.rtaware.core.agent.AgentThread;
 import io.rtaware.core.time.EpochClock;
 import io.rtaware.robot.msg.LaserScan;
 import io.rtaware.robot.msg.Odometry;
@@ -29,6 +30,9 @@ import java.util.Objects;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
+import org.agrona.concurrent.Agent;
+import org.agrona.concurrent.AgentTerminationException;
+import org.agrona.concurrent.NoOpIdleStrategy;
 
 /**
  * The world of a running {@link PlayerSimServer} as a ROS 2 robot: the node {@value #NODE_NAME}
@@ -46,8 +50,9 @@ import java.util.function.Consumer;
  * are world time (the simulator's clock, as ROS's {@code use_sim_time}) when the data was
  * measured: a scan's is its first beam's ({@link World#scanFirstBeamNs()}, as ROS 2's
  * {@code LaserScan} defines it), an odometry sample's its sample time. Attachments carry the
- * wall-clock source timestamp. One thread of its own does all of it; the Player server keeps
- * serving.
+ * wall-clock source timestamp. One thread of its own ({@value #THREAD_NAME}, an {@link AgentThread})
+ * does all of it, waiting up to {@value #POLL_MS} ms for a command between looks at the world; the
+ * Player server keeps serving. A failure ends the thread, and {@link #failure()} says why.
  *
  * <p>Only the first publisher heard on {@code cmd_vel} drives the robot (told apart by the gid of
  * the rmw_zenoh attachment, {@link FirstPublisherFilter}; another one once the first has been
@@ -80,11 +85,14 @@ public final class Ros2SimRobot implements AutoCloseable {
     public static final String BASE_FRAME = "base_link";
     /** Wall time between two publications of {@code /tf_static}. */
     public static final long STATIC_REPEAT_MS = 1000;
+    /** The name of the robot's thread. */
+    public static final String THREAD_NAME = "rtaware-sim-ros2";
 
     /** Wall time the followed {@code cmd_vel} publisher may be silent before another drives: 1 s. */
     public static final long COMMANDER_SILENCE_NS = 1_000_000_000L;
 
-    private static final long POLL_NS = TimeUnit.MILLISECONDS.toNanos(2);
+    private static final int POLL_MS = 2;
+    private static final long POLL_NS = TimeUnit.MILLISECONDS.toNanos(POLL_MS);
     private static final int MAX_MESSAGE_BYTES = 64 * 1024;
     /** {@code /tf_static}: the laser at the robot's centre, as the simulator measures its scans. */
     private static final List<PlanarTransform> STATIC_TRANSFORMS = List.of(
@@ -101,7 +109,8 @@ public final class Ros2SimRobot implements AutoCloseable {
     private final Ros2Publisher tfPub;
     private final Ros2Publisher tfStaticPub;
     private final ZenohMailbox mailbox;
-    private final Thread thread;
+    /** The robot's loop, started once the node is declared. */
+    private volatile AgentThread loop;
     private final EpochClock epoch = new EpochClock();
 
     private final LaserScanCodec scanCodec = new LaserScanCodec();
@@ -120,7 +129,7 @@ public final class Ros2SimRobot implements AutoCloseable {
     private final List<String> notices = new CopyOnWriteArrayList<>();
     private final FirstPublisherFilter commanders;
 
-    private volatile boolean running = true;
+    private volatile boolean closing;
     private volatile long commands;
     private volatile long badCommands;
     private volatile String failure;
@@ -149,8 +158,6 @@ public final class Ros2SimRobot implements AutoCloseable {
                 MAX_MESSAGE_BYTES);
         this.mailbox = context.session().newMailbox(16);
         node.subscribe(CMD_VEL, twistCodec.type(), QosProfile.defaults(), mailbox, 0);
-        this.thread = new Thread(this::loop, "rtaware-sim-ros2");
-        thread.setDaemon(true);
     }
 
     /**
@@ -170,7 +177,8 @@ public final class Ros2SimRobot implements AutoCloseable {
         Objects.requireNonNull(report, "report");
         try {
             Ros2SimRobot robot = new Ros2SimRobot(server, context, namespace, report);
-            robot.thread.start();
+            // take() waits for a command, so the loop needs no idle strategy of its own
+            robot.loop = AgentThread.start(robot.new Serving(), NoOpIdleStrategy.INSTANCE, robot::stopped);
             return robot;
         } catch (ZenohException | RuntimeException e) {
             context.close();
@@ -178,23 +186,52 @@ public final class Ros2SimRobot implements AutoCloseable {
         }
     }
 
-    private void loop() {
-        try {
-            while (running) {
-                ZenohMailbox.Take took = mailbox.take(POLL_NS, sample);
-                while (took == ZenohMailbox.Take.SAMPLE || took == ZenohMailbox.Take.TOO_LARGE) {
-                    obey(took);
-                    took = mailbox.take(0, sample);
-                }
-                if (took == ZenohMailbox.Take.CLOSED) {
-                    return;
-                }
-                publishNews();
+    /**
+     * The robot's loop: obeys the commands that came (waiting up to {@value #POLL_MS} ms for the
+     * first), then publishes what the world has new; a closed mailbox or a failure ends it.
+     */
+    private final class Serving implements Agent {
+        @Override
+        public int doWork() {
+            int work;
+            try {
+                work = serveOnce();
+            } catch (ZenohException | RuntimeException e) {
+                throw new AgentTerminationException(e);
             }
-        } catch (ZenohException | RuntimeException e) {
-            if (running) {
-                failure = e.getMessage();
+            if (work < 0) {
+                throw new AgentTerminationException("the mailbox closed"); // the session is closing: not a failure
             }
+            return work;
+        }
+
+        @Override
+        public String roleName() {
+            return THREAD_NAME;
+        }
+    }
+
+    /** @return commands obeyed, or -1 when the mailbox has closed */
+    private int serveOnce() throws ZenohException {
+        ZenohMailbox.Take took = mailbox.take(POLL_NS, sample);
+        int work = 0;
+        while (took == ZenohMailbox.Take.SAMPLE || took == ZenohMailbox.Take.TOO_LARGE) {
+            obey(took);
+            work++;
+            took = mailbox.take(0, sample);
+        }
+        if (took == ZenohMailbox.Take.CLOSED) {
+            return -1;
+        }
+        publishNews();
+        return work;
+    }
+
+    /** The loop ended: a failure is kept for {@link #failure()} unless the robot was being closed. */
+    private void stopped(Throwable error) {
+        Throwable cause = error instanceof AgentTerminationException ? error.getCause() : error;
+        if (cause != null && !closing) {
+            failure = cause.getMessage() == null ? cause.toString() : cause.getMessage();
         }
     }
 
@@ -311,12 +348,8 @@ public final class Ros2SimRobot implements AutoCloseable {
     /** Stops the thread, then closes the session (and with it the node's tokens). */
     @Override
     public void close() throws ZenohException {
-        running = false;
-        try {
-            thread.join(TimeUnit.SECONDS.toMillis(2));
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        closing = true;
+        loop.close();
         context.close();
     }
 }

@@ -7,6 +7,7 @@ import java.net.Socket;
 import java.net.SocketException;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
+import org.agrona.concurrent.Agent;
 
 /**
  * The accept loop and client admission. A failing accept (e.g. no file descriptors left) is
@@ -14,9 +15,12 @@ import java.util.concurrent.CopyOnWriteArrayList;
  * {@value #MAX_BACKOFF_NS} ns), logged once when it starts and once when accepting works again.
  * At most {@code maxClients} clients are connected (each costs two threads); a client beyond the
  * limit, or one whose threads cannot be created, is refused: its socket is closed and the next
- * connection is served. Refusals are logged once per episode too. {@link #run()} on one thread.
+ * connection is served. Refusals are logged once per episode too. An {@link Agent} whose duty
+ * cycle accepts one connection, blocking in {@link ServerSocket#accept()} (run by an
+ * {@link io.rtaware.core.agent.AgentThread}); {@link #stop()} and closing the server socket end
+ * it.
  */
-final class ClientAcceptor implements Runnable {
+final class ClientAcceptor implements Agent {
 
     private static final System.Logger LOG = System.getLogger(ClientAcceptor.class.getName());
 
@@ -39,6 +43,8 @@ final class ClientAcceptor implements Runnable {
     private final FailureEpisode refusedFull = new FailureEpisode(LOG);
     private final FailureEpisode refusedNoThreads = new FailureEpisode(LOG);
     private volatile boolean running = true;
+    /** Back-off before the next accept after a failed one, ns (the accepting thread only). */
+    private long backoffNs;
 
     /**
      * @param serverSocket the bound socket
@@ -59,32 +65,38 @@ final class ClientAcceptor implements Runnable {
     }
 
     @Override
-    public void run() {
-        long backoffNs = 0;
-        while (running) {
-            Socket socket;
-            try {
-                socket = env.accept().accept(serverSocket);
-            } catch (IOException e) {
-                if (!running) {
-                    return;
-                }
-                backoffNs = backoffNs == 0 ? FIRST_BACKOFF_NS : Math.min(MAX_BACKOFF_NS, 2 * backoffNs);
-                acceptFailures.failed(() -> "rtaware-sim: accept failed: " + e.getMessage()
-                        + "; retrying with back-off up to " + MAX_BACKOFF_NS / 1_000_000 + " ms (logged again when it works)");
-                try {
-                    env.pause().pause(backoffNs);
-                } catch (InterruptedException stop) {
-                    if (!running) {
-                        return;
-                    }
-                }
-                continue;
-            }
-            backoffNs = 0;
-            acceptFailures.ended(n -> "rtaware-sim: accepting clients again after " + n + " failed accepts");
-            admit(socket);
+    public String roleName() {
+        return "rtaware-sim-accept :" + serverSocket.getLocalPort();
+    }
+
+    /** Accepts one connection and admits or refuses it; a failed accept backs off. */
+    @Override
+    public int doWork() {
+        if (!running) {
+            return 0;
         }
+        Socket socket;
+        try {
+            socket = env.accept().accept(serverSocket);
+        } catch (IOException e) {
+            if (!running) {
+                return 0;
+            }
+            backoffNs = backoffNs == 0 ? FIRST_BACKOFF_NS : Math.min(MAX_BACKOFF_NS, 2 * backoffNs);
+            long pauseNs = backoffNs;
+            acceptFailures.failed(() -> "rtaware-sim: accept failed: " + e.getMessage()
+                    + "; retrying with back-off up to " + MAX_BACKOFF_NS / 1_000_000 + " ms (logged again when it works)");
+            try {
+                env.pause().pause(pauseNs);
+            } catch (InterruptedException stop) {
+                Thread.currentThread().interrupt(); // closing: the loop ends
+            }
+            return 0;
+        }
+        backoffNs = 0;
+        acceptFailures.ended(n -> "rtaware-sim: accepting clients again after " + n + " failed accepts");
+        admit(socket);
+        return 1;
     }
 
     private void admit(Socket socket) {

@@ -22,6 +22,11 @@ import java.util.concurrent.ThreadFactory;
  * the {@link Handler}, a writer thread that writes what the client's {@link ClientQueue} holds.
  * A client sending a malformed message, or part of a message and then nothing more within the
  * message timeout, is disconnected with one log line. Thread-safe.
+ *
+ * <p>Its two threads are plain threads, not {@link io.rtaware.core.agent.AgentThread}s: each
+ * blocks in one socket call or queue wait for the connection's whole life, ends itself (and the
+ * session) when the connection ends, and comes from the server's thread factory, through which
+ * a client whose threads cannot be created is refused.
  */
 final class ClientSession {
 

@@ -1,5 +1,6 @@
 package io.rtaware.sim.server;
 
+import io.rtaware.core.agent.AgentThread;
 import io.rtaware.core.time.Clock;
 import io.rtaware.robot.geometry.Pose2d;
 import io.rtaware.sim.world.World;
@@ -14,6 +15,9 @@ import java.util.Objects;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.Function;
+import org.agrona.concurrent.Agent;
+import org.agrona.concurrent.AgentTerminationException;
+import org.agrona.concurrent.NoOpIdleStrategy;
 
 /**
  * Serves a {@link World} over the Player 3.1 TCP protocol, so a controller cannot tell it from
@@ -27,6 +31,11 @@ import java.util.function.Function;
  * <p>This class wires the parts: {@link ClientAcceptor} (accept loop, client admission),
  * {@link ClientSession} (one client's connection) with its {@link ClientQueue}, {@link RequestRouter}
  * and one {@link DeviceHandler} per device, and {@link WorldStepper} (stepping and publishing).
+ *
+ * <p>The accept loop ({@code rtaware-sim-accept :PORT}) and the sim thread
+ * ({@code rtaware-sim-world :PORT}) are {@link AgentThread}s: an error of the accept loop is
+ * logged and the next client served; one of the sim thread is logged and stops the world. The
+ * clients' reader and writer threads are not: see {@link ClientSession}.
  *
  * <p>Two ways to run the world: {@link #start(World, Clock, ServerConfig)} starts a sim thread
  * that steps the world by the world time the clock shows (aiming at
@@ -65,8 +74,10 @@ public final class PlayerSimServer implements AutoCloseable {
     private final ServerSocket serverSocket;
     private final ClientAcceptor acceptor;
     private final WorldStepper stepper;
-    private final Thread acceptThread;
-    private final Thread simThread;
+    /** The world's stepping loop, or null for a server stepped by {@link #step(long)}. */
+    private final Agent stepping;
+    private volatile AgentThread acceptThread;
+    private volatile AgentThread simThread;
 
     private PlayerSimServer(World world, Clock clock, ServerConfig config, ServerEnvironment env) throws IOException {
         this.world = new SharedWorld(world);
@@ -90,13 +101,17 @@ public final class PlayerSimServer implements AutoCloseable {
         this.acceptor = new ClientAcceptor(serverSocket, env, config.maxClients(),
                 (socket, onClose) -> new ClientSession(socket, session, onClose));
         this.stepper = new WorldStepper(this.world, devices, acceptor.sessions(), config.stepPeriodNs());
-        this.acceptThread = new Thread(acceptor, "rtaware-sim-accept :" + port);
-        acceptThread.setDaemon(true);
-        if (clock != null) {
-            this.simThread = new Thread(() -> stepper.run(clock), "rtaware-sim-world :" + port);
-            simThread.setDaemon(true);
-        } else {
-            this.simThread = null;
+        this.stepping = clock == null ? null : stepper.stepping(clock, "rtaware-sim-world :" + port);
+    }
+
+    /** Starts the accept loop and, for a clocked server, the sim thread. */
+    private void startThreads() {
+        acceptThread = AgentThread.start(acceptor, NoOpIdleStrategy.INSTANCE, error -> LOG.log(Level.WARNING,
+                "rtaware-sim: accepting a client failed: " + error + "; serving the next one"));
+        if (stepping != null) {
+            simThread = AgentThread.start(stepping, NoOpIdleStrategy.INSTANCE, error -> LOG.log(Level.ERROR,
+                    "rtaware-sim: the world stopped: a step failed: "
+                            + (error instanceof AgentTerminationException && error.getCause() != null ? error.getCause() : error)));
         }
     }
 
@@ -121,8 +136,7 @@ public final class PlayerSimServer implements AutoCloseable {
     public static PlayerSimServer start(World world, Clock clock, ServerConfig config) throws IOException {
         PlayerSimServer s = new PlayerSimServer(world, Objects.requireNonNull(clock, "clock"), config,
                 ServerEnvironment.system());
-        s.acceptThread.start();
-        s.simThread.start();
+        s.startThreads();
         LOG.log(Level.INFO, "rtaware-sim: serving Player on " + config.bindAddress() + ":" + s.port()
                 + " (" + clock + ")");
         return s;
@@ -143,7 +157,7 @@ public final class PlayerSimServer implements AutoCloseable {
     /** {@link #startManual(World, ServerConfig)} with parts of the environment replaced (tests). */
     static PlayerSimServer startManual(World world, ServerConfig config, ServerEnvironment env) throws IOException {
         PlayerSimServer s = new PlayerSimServer(world, null, config, env);
-        s.acceptThread.start();
+        s.startThreads();
         return s;
     }
 
@@ -217,7 +231,7 @@ public final class PlayerSimServer implements AutoCloseable {
      * @throws IllegalStateException if a sim thread steps this server
      */
     public void step(long dtNs) {
-        if (simThread != null) {
+        if (stepping != null) {
             throw new IllegalStateException("the sim thread steps this server; step() is for startManual servers");
         }
         stepper.step(dtNs);
@@ -226,21 +240,16 @@ public final class PlayerSimServer implements AutoCloseable {
     /** Stops the sim thread, disconnects every client and closes the port; idempotent. */
     @Override
     public void close() {
-        stepper.stop();
+        AgentThread sim = simThread;
+        if (sim != null) {
+            sim.close();
+        }
         acceptor.stop();
         try {
-            serverSocket.close();
+            serverSocket.close(); // ends the accept the loop is blocked in
         } catch (IOException e) {
             LOG.log(Level.DEBUG, "rtaware-sim: closing the server socket: " + e.getMessage());
         }
-        acceptThread.interrupt();
-        try {
-            acceptThread.join(2000);
-            if (simThread != null) {
-                simThread.join(2000);
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        acceptThread.close();
     }
 }

@@ -6,7 +6,7 @@ import java.io.IOException;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.util.concurrent.ThreadFactory;
-import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.LockSupport;
 
 /**
  * What the server takes from the operating system: accepting a connection, client threads,
@@ -31,8 +31,11 @@ record ServerEnvironment(Accept accept, ThreadFactory clientThreads, Pause pause
         void pause(long nanos) throws InterruptedException;
     }
 
-    /** @return the real thing: {@link ServerSocket#accept()}, plain threads, sleep, the system clock */
+    /**
+     * @return the real thing: {@link ServerSocket#accept()}, plain threads, a park (which closing
+     *     the accept loop's {@link io.rtaware.core.agent.AgentThread} cuts short), the system clock
+     */
     static ServerEnvironment system() {
-        return new ServerEnvironment(ServerSocket::accept, Thread::new, TimeUnit.NANOSECONDS::sleep, new SystemClock());
+        return new ServerEnvironment(ServerSocket::accept, Thread::new, LockSupport::parkNanos, new SystemClock());
     }
 }

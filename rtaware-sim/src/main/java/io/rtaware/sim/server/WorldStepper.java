@@ -5,11 +5,13 @@ import io.rtaware.sim.world.World;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.locks.LockSupport;
+import org.agrona.concurrent.Agent;
+import org.agrona.concurrent.AgentTerminationException;
 
 /**
  * Steps the world and hands what it published to the clients: after each step every device a
  * client subscribes to adds its DATA messages, and every client gets the batch (its queue keeps
- * what it subscribes to). {@link #run(Clock)} follows a clock: it aims at fixed steps of world
+ * what it subscribes to). {@link #stepping} follows a clock: it aims at fixed steps of world
  * time, waits via {@link Clock#toWallNanos(long)} (so with a scaled clock the world runs K times
  * faster), and when it falls behind by more than {@value #MAX_BACKLOG_STEPS} steps takes the
  * excess in one long step. Steps run on one thread at a time.
@@ -23,15 +25,14 @@ final class WorldStepper {
     private final List<DeviceHandler> devices;
     private final Iterable<ClientSession> clients;
     private final long stepPeriodNs;
-    private volatile boolean running = true;
-    /** The clock reading at which the world's time was 0; {@link Long#MIN_VALUE} until {@link #run} starts. */
+    /** The clock reading at which the world's time was 0; {@link Long#MIN_VALUE} until the stepping starts. */
     private volatile long clockOriginNs = Long.MIN_VALUE;
 
     /**
      * @param world the world
      * @param devices the devices that publish data, in the order their data is sent
      * @param clients the connected clients (iterated on every step)
-     * @param stepPeriodNs the world-time step {@link #run} aims at
+     * @param stepPeriodNs the world-time step {@link #stepping} aims at
      */
     WorldStepper(SharedWorld world, List<DeviceHandler> devices, Iterable<ClientSession> clients, long stepPeriodNs) {
         this.world = world;
@@ -63,47 +64,86 @@ final class WorldStepper {
         }
     }
 
-    /** Steps on {@code clock} until {@link #stop()}. */
-    void run(Clock clock) {
-        long last = clock.nanos();
-        clockOriginNs = last - world.read(World::timeNs); // from here on, world time = clock - origin, stepped
-        while (running) {
-            long target = last + stepPeriodNs;
+    /**
+     * The stepping loop on {@code clock}, to run on an {@link io.rtaware.core.agent.AgentThread}:
+     * each duty cycle waits for the next step's world time (a park of the wall time left, which
+     * closing the thread cuts short) or takes the steps that are due. A step that throws ends the
+     * loop (an {@link AgentTerminationException} with the step's error as its cause): the world
+     * stops, as a crashed simulator's would, rather than failing again every step.
+     *
+     * @param clock world time
+     * @param roleName the thread's name
+     * @return the loop
+     */
+    Agent stepping(Clock clock, String roleName) {
+        return new Stepping(clock, roleName);
+    }
+
+    /** Follows a clock: fixed steps of world time, a backlog beyond {@value #MAX_BACKLOG_STEPS} steps in one. */
+    private final class Stepping implements Agent {
+        private final Clock clock;
+        private final String roleName;
+        /** World time up to which the world has been stepped (the stepping thread only). */
+        private long lastNs;
+
+        Stepping(Clock clock, String roleName) {
+            this.clock = clock;
+            this.roleName = roleName;
+        }
+
+        @Override
+        public void onStart() {
+            lastNs = clock.nanos();
+            clockOriginNs = lastNs - world.read(World::timeNs); // from here on, world time = clock - origin, stepped
+        }
+
+        @Override
+        public int doWork() {
+            try {
+                return stepDue();
+            } catch (RuntimeException e) {
+                throw new AgentTerminationException(e);
+            }
+        }
+
+        private int stepDue() {
+            long target = lastNs + stepPeriodNs;
             long now = clock.nanos();
-            while (running && now < target) {
+            if (now < target) {
                 LockSupport.parkNanos(Math.max(1_000L, clock.toWallNanos(target - now)));
-                now = clock.nanos();
+                return 0;
             }
-            if (!running) {
-                return;
-            }
-            long behind = now - last;
+            long behind = now - lastNs;
             long maxBacklogNs = MAX_BACKLOG_STEPS * stepPeriodNs;
+            int steps = 0;
             if (behind > maxBacklogNs) {
                 // cannot keep up (or the clock jumped): take the excess in one long step
                 step(behind - maxBacklogNs);
                 behind = maxBacklogNs;
+                steps++;
             }
             while (behind >= stepPeriodNs) {
                 step(stepPeriodNs);
                 behind -= stepPeriodNs;
+                steps++;
             }
-            last = now - behind;
+            lastNs = now - behind;
+            return steps;
+        }
+
+        @Override
+        public String roleName() {
+            return roleName;
         }
     }
 
     /**
-     * @return the clock reading at which the world's time was 0 ({@link #run} keeps world time
-     *     at the clock's reading minus this, in whole steps), or {@link Long#MIN_VALUE} before
-     *     {@link #run} has started
+     * @return the clock reading at which the world's time was 0 (the stepping keeps world time at
+     *     the clock's reading minus this, in whole steps), or {@link Long#MIN_VALUE} before the
+     *     stepping has started
      */
     long clockOriginNs() {
         return clockOriginNs;
-    }
-
-    /** Makes {@link #run} return (within one wait). */
-    void stop() {
-        running = false;
     }
 
     private boolean anySubscribed(int deviceKey) {

@@ -94,6 +94,30 @@ class ServerLimitsTest {
     }
 
     @Test
+    void anErrorOfTheAcceptLoopIsLoggedAndTheLoopGoesOnToServeTheNextClient() throws Exception {
+        AtomicInteger accepts = new AtomicInteger();
+        ServerEnvironment.Accept firstFails = s -> {
+            Socket socket = s.accept();
+            if (accepts.incrementAndGet() == 1) {
+                socket.close();
+                throw new IllegalStateException("a fault of the accept loop");
+            }
+            return socket;
+        };
+        try (LogCapture log = new LogCapture(PlayerSimServer.class)) {
+            server = PlayerSimServer.startManual(PlayerSimServerTest.world(), ServerConfig.defaults(0),
+                    env(firstFails, Thread::new, ns -> { }));
+            assertEquals(0, bytesUntilClosed(server.port()), "the first client: closed by the fault, nothing sent");
+            try (RawClient c = new RawClient(server.port())) {
+                assertEquals(PlayerSimServer.VERSION, c.banner, "the loop went on: the next client is served");
+            }
+            assertEquals(1, log.matching("accepting a client failed").size(), log.lines().toString());
+            assertTrue(log.matching("accepting a client failed").get(0).contains("a fault of the accept loop"),
+                    log.lines().toString());
+        }
+    }
+
+    @Test
     void aClientWhoseThreadsCannotStartIsRefusedAndTheNextIsServed() throws Exception {
         AtomicInteger calls = new AtomicInteger();
         java.util.concurrent.ThreadFactory secondFails = r -> {
