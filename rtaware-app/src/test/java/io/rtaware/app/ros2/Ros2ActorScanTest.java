@@ -2,8 +2,6 @@ package io.rtaware.app.ros2;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import io.rtaware.robot.geometry.Point2d;
 import io.rtaware.robot.geometry.Pose2d;
@@ -25,7 +23,6 @@ import io.rtaware.sim.world.RobotModel;
 import io.rtaware.sim.world.World;
 import io.rtaware.zenoh.SampleBuffer;
 import io.rtaware.zenoh.ZenohConfig;
-import io.rtaware.zenoh.ZenohLibrary;
 import io.rtaware.zenoh.ZenohMailbox;
 import java.net.ServerSocket;
 import java.util.List;
@@ -47,11 +44,7 @@ class Ros2ActorScanTest {
 
     @Test
     void anObstacleThatAppearsIsInTheRos2ScansFromItsTimeOn() throws Exception {
-        String reason = ZenohLibrary.unavailableReason();
-        if (reason != null && "true".equals(System.getenv("CI")) && !"1".equals(System.getenv("RTAWARE_NO_RUST"))) {
-            fail("CI=true but " + reason);
-        }
-        assumeTrue(reason == null, () -> "skipped: " + reason);
+        Ros2RunEndToEndTest.requireNativeZenoh();
         String endpoint;
         try (ServerSocket s = new ServerSocket(0)) {
             endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
