@@ -2,8 +2,6 @@ package io.rtaware.app.ros2;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import io.rtaware.core.time.SystemClock;
 import io.rtaware.robot.msg.VelocityCommand;
@@ -19,7 +17,6 @@ import io.rtaware.sim.server.PlayerSimServer;
 import io.rtaware.sim.server.ServerConfig;
 import io.rtaware.sim.server.SimCommandSupport;
 import io.rtaware.zenoh.ZenohConfig;
-import io.rtaware.zenoh.ZenohLibrary;
 import java.net.ServerSocket;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -47,11 +44,7 @@ class Ros2SimRobotCommandersTest {
 
     @Test
     void aForeignCmdVelPublisherIsReportedOnceAndDoesNotDriveTheRobot() throws Exception {
-        String reason = ZenohLibrary.unavailableReason();
-        if (reason != null && "true".equals(System.getenv("CI")) && !"1".equals(System.getenv("RTAWARE_NO_RUST"))) {
-            fail("CI=true but " + reason);
-        }
-        assumeTrue(reason == null, () -> "skipped: " + reason);
+        Ros2RunEndToEndTest.requireNativeZenoh();
         String endpoint;
         try (ServerSocket s = new ServerSocket(0)) {
             endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
