@@ -11,6 +11,7 @@
 //! and attachment into direct buffers that Java allocated once, so the Java side allocates
 //! nothing per sample.
 
+mod dds;
 mod handles;
 mod mailbox;
 mod messages;
@@ -62,6 +63,16 @@ fn java_strings(env: &mut JNIEnv, array: &JObjectArray) -> Result<Vec<String>, S
         out.push(java_string(env, &JString::from(element))?);
     }
     Ok(out)
+}
+
+/// A new Java `String[]` holding `values`.
+fn string_array(env: &mut JNIEnv, values: &[String]) -> Result<jobjectArray, String> {
+    let array = env.new_object_array(values.len() as jint, "java/lang/String", JObject::null()).map_err(|e| e.to_string())?;
+    for (i, value) in values.iter().enumerate() {
+        let s = env.new_string(value).map_err(|e| e.to_string())?;
+        env.set_object_array_element(&array, i as jint, s).map_err(|e| e.to_string())?;
+    }
+    Ok(array.into_raw())
 }
 
 fn json_strings(values: &[String]) -> String {
@@ -363,13 +374,61 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_livelinessGet(
                 keys.push(sample.key_expr().as_str().to_string());
             }
         }
-        let array = env.new_object_array(keys.len() as jint, "java/lang/String", JObject::null()).map_err(|e| e.to_string())?;
-        for (i, k) in keys.iter().enumerate() {
-            let s = env.new_string(k).map_err(|e| e.to_string())?;
-            env.set_object_array_element(&array, i as jint, s).map_err(|e| e.to_string())?;
-        }
-        Ok(array.into_raw())
+        string_array(env, &keys)
     })
+}
+
+// ---------------------------------------------------------------------------------------------
+// ROS 2 DDS bridge
+
+/// A bridge as Java holds it: the running bridge and the endpoints it listens on.
+struct BridgeEntry {
+    bridge: dds::DdsBridge,
+    endpoints: Vec<String>,
+}
+
+/// Whether this library was built with the ROS 2 DDS bridge (cargo feature `dds`).
+#[no_mangle]
+pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_ddsAvailable(_env: JNIEnv, _class: JClass) -> jboolean {
+    dds::AVAILABLE as jboolean
+}
+
+/// Starts the ROS 2 DDS bridge ([`dds::start`]); `env` holds names and values in turn.
+#[no_mangle]
+pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_startDdsBridge(
+    mut env: JNIEnv,
+    _class: JClass,
+    listen: JString,
+    plugin_config: JString,
+    variables: JObjectArray,
+) -> jlong {
+    guarded(&mut env, 0, |env| {
+        let listen = java_string(env, &listen)?;
+        let plugin_config = java_string(env, &plugin_config)?;
+        let variables = java_strings(env, &variables)?;
+        if variables.len() % 2 != 0 {
+            return Err(format!("environment for the DDS bridge needs names and values in pairs, got {} strings", variables.len()));
+        }
+        let pairs: Vec<(String, String)> = variables.chunks(2).map(|p| (p[0].clone(), p[1].clone())).collect();
+        let (bridge, endpoints) = dds::start(&listen, &plugin_config, &pairs)?;
+        Ok(HANDLES.insert(BridgeEntry { bridge, endpoints }))
+    })
+}
+
+/// The bridge's Zenoh id, then the endpoints it listens on.
+#[no_mangle]
+pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_ddsBridgeInfo(mut env: JNIEnv, _class: JClass, bridge: jlong) -> jobjectArray {
+    guarded(&mut env, std::ptr::null_mut(), |env| {
+        let entry = HANDLES.get::<BridgeEntry>(bridge, "DDS bridge")?;
+        let mut info = vec![entry.bridge.zid()];
+        info.extend(entry.endpoints.iter().cloned());
+        string_array(env, &info)
+    })
+}
+
+#[no_mangle]
+pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_closeDdsBridge(mut env: JNIEnv, _class: JClass, bridge: jlong) {
+    guarded(&mut env, (), |_| HANDLES.remove::<BridgeEntry>(bridge, "DDS bridge")?.bridge.close())
 }
 
 #[cfg(test)]

@@ -1,7 +1,6 @@
 package io.rtaware.app.bench;
 
 import io.rtaware.app.UserError;
-import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.bench.compare.CompareReport;
 import io.rtaware.app.bench.compare.CompareRun;
 import io.rtaware.app.bench.compare.Goal;
@@ -9,44 +8,47 @@ import io.rtaware.app.bench.compare.PairedRounds;
 import io.rtaware.app.bench.compare.ReleaseStats;
 import io.rtaware.app.bench.compare.RunResult;
 import io.rtaware.app.bench.compare.TaskSweep;
-import io.rtaware.rt.ClockNanosleep;
 import io.rtaware.app.cli.CommandMonitor;
 import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.app.cli.MemoryBudget;
 import io.rtaware.app.cli.RecordOptions;
+import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.foxglove.FoxgloveMixin;
 import io.rtaware.app.live.LiveMixin;
-import io.rtaware.live.LiveAddressException;
-import io.rtaware.live.LiveView;
 import io.rtaware.app.output.OutputFile;
 import io.rtaware.app.output.OutputWrites;
-import io.rtaware.app.ros2.ExportMixin;
-import io.rtaware.app.ros2.RosDistroMixin;
-import io.rtaware.app.ros2.ExportOptions;
 import io.rtaware.app.report.ReportSections;
+import io.rtaware.app.ros2.DdsMixin;
+import io.rtaware.app.ros2.ExportMixin;
+import io.rtaware.app.ros2.ExportOptions;
+import io.rtaware.app.ros2.RosDistroMixin;
+import io.rtaware.core.conditions.Conditions;
+import io.rtaware.core.conditions.ConditionsMeter;
+import io.rtaware.core.monitor.AdaptivePolicy;
 import io.rtaware.core.monitor.ConsoleReporter;
 import io.rtaware.core.monitor.ExecutorKind;
 import io.rtaware.core.monitor.Monitor;
-import io.rtaware.ros2.export.MonitorExporter;
 import io.rtaware.core.report.Report;
-import io.rtaware.core.conditions.Conditions;
-import io.rtaware.core.conditions.ConditionsMeter;
 import io.rtaware.core.report.ReportDocument;
-import io.rtaware.core.report.TaskReport;
 import io.rtaware.core.report.SummaryTable;
-import io.rtaware.rt.CpuLatencyRequest;
-import io.rtaware.rt.RealtimeThreads;
-import io.rtaware.core.monitor.AdaptivePolicy;
-import io.rtaware.core.trace.TraceRecorder;
-import io.rtaware.foxglove.FoxgloveServer;
-import io.rtaware.record.RecordingPlan;
-import io.rtaware.record.RecordingStats;
-import io.rtaware.record.RunRecorder;
+import io.rtaware.core.report.TaskReport;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.Durations;
 import io.rtaware.core.time.MonotonicSleeper;
 import io.rtaware.core.time.SystemClock;
+import io.rtaware.core.trace.TraceRecorder;
+import io.rtaware.foxglove.FoxgloveServer;
+import io.rtaware.live.LiveAddressException;
+import io.rtaware.live.LiveView;
+import io.rtaware.record.RecordingPlan;
+import io.rtaware.record.RecordingStats;
+import io.rtaware.record.RunRecorder;
+import io.rtaware.ros2.export.MonitorExporter;
+import io.rtaware.ros2.graph.Ros2Distro;
+import io.rtaware.rt.ClockNanosleep;
+import io.rtaware.rt.CpuLatencyRequest;
+import io.rtaware.rt.RealtimeThreads;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
@@ -56,6 +58,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import java.util.function.Supplier;
 import picocli.CommandLine.Command;
@@ -225,6 +228,9 @@ public final class BenchCommand implements Callable<Integer> {
     @Mixin
     RosDistroMixin rosDistro;
 
+    @Mixin
+    DdsMixin dds;
+
     private final Supplier<MemoryBudget> memory;
 
     /** The command with this JVM's heap as its memory budget. */
@@ -242,7 +248,7 @@ public final class BenchCommand implements Callable<Integer> {
         List<BenchSpec> specs = taskSet();
         live.options(); // a bad --live-port or --live-bind ends the command before anything runs
         foxglove.address(); // so does a bad --foxglove
-        rosDistro.distro(export.requested(), "--export"); // so does a bad --ros-distro
+        exportOptions(); // so does a bad --ros-distro, --dds or --export option
         if (json != null) {
             OutputFile.of("--json", json);
         }
@@ -404,8 +410,8 @@ public final class BenchCommand implements Callable<Integer> {
         } catch (LiveAddressException e) {
             throw new UserError(e.getMessage());
         }
-        MonitorExporter exporter = export.options(rosDistro.distro(export.requested(), "--export"))
-                .map(e -> e.start(monitor, List.of(), List.of(), System.err)).orElse(null);
+        MonitorExporter exporter = exportOptions().map(e -> e.start(monitor, List.of(), List.of(), System.err))
+                .orElse(null);
         Thread hook = monitor.installShutdownHook();
         OutputWrites writes = new OutputWrites(System.err);
         monitor.onTermination(report -> finish(monitor, report, console, recorder, recording, foxgloveServer, out,
@@ -557,5 +563,24 @@ public final class BenchCommand implements Callable<Integer> {
             specs.add(BenchSpec.of("t" + i, periodNs, workNs));
         }
         return stagger ? BenchSpec.staggered(specs) : specs;
+    }
+
+    /**
+     * @return the export options when {@code --export} was given
+     * @throws io.rtaware.app.UserError for a bad --export, --ros-distro or --dds option
+     */
+    private Optional<ExportOptions> exportOptions() {
+        Ros2Distro distro = rosDistro.distro(export.requested(), "--export");
+        return export.options(distro, dds.settings(export.requested(), "--export", environmentDomain(), distro));
+    }
+
+    /** @return ROS_DOMAIN_ID, else 0: bench has no --domain */
+    private static int environmentDomain() {
+        String id = System.getenv("ROS_DOMAIN_ID");
+        try {
+            return id == null || id.isBlank() ? 0 : Integer.parseInt(id.trim());
+        } catch (NumberFormatException e) {
+            throw new io.rtaware.app.UserError("ROS_DOMAIN_ID must be a number 0..232, got '" + id + "'");
+        }
     }
 }

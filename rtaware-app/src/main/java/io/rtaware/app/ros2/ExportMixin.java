@@ -1,6 +1,7 @@
 package io.rtaware.app.ros2;
 
 import io.rtaware.app.UserError;
+import io.rtaware.ros2.graph.DdsSettings;
 import io.rtaware.ros2.graph.Ros2Distro;
 import java.util.Optional;
 import picocli.CommandLine.Option;
@@ -28,20 +29,24 @@ public final class ExportMixin {
 
     /**
      * @param distro the distribution whose rmw_zenoh conventions to follow
+     * @param dds the settings of {@code --dds}, when given ({@link DdsMixin})
      * @return the export options when {@code --export} was given
      * @throws UserError for a malformed endpoint, export options without {@code --export}, or a
      *     missing native Zenoh layer
      */
-    public Optional<ExportOptions> options(Ros2Distro distro) {
+    public Optional<ExportOptions> options(Ros2Distro distro, Optional<DdsSettings> dds) {
         if (!enabled) {
             if (router != null || listen != null) {
                 throw new UserError((router != null ? "--export-zenoh" : "--export-listen") + " needs --export");
             }
             return Optional.empty();
         }
+        if ((router != null || listen != null) && dds.isPresent()) {
+            throw new UserError((router != null ? "--export-zenoh" : "--export-listen") + " and --dds exclude each other");
+        }
         String at = router == null ? null : Ros2Wiring.endpoint(router, "--export-zenoh", false);
         String on = listen == null ? null : Ros2Wiring.endpoint(listen, "--export-listen", true);
         Ros2Wiring.requireNativeZenoh();
-        return Optional.of(new ExportOptions(at, on, distro));
+        return Optional.of(new ExportOptions(at, on, distro, dds.orElse(null)));
     }
 }

@@ -3,6 +3,7 @@ package io.rtaware.app.ros2;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.ros2.export.ExportedKey;
 import io.rtaware.ros2.export.MonitorExporter;
+import io.rtaware.ros2.graph.DdsSettings;
 import io.rtaware.ros2.graph.Ros2Context;
 import io.rtaware.ros2.graph.Ros2Distro;
 import io.rtaware.zenoh.ZenohException;
@@ -17,8 +18,10 @@ import java.util.List;
  * @param router the router to connect to, or null
  * @param listen where to listen, or null for a free loopback port
  * @param distro the ROS 2 distribution whose rmw_zenoh conventions to follow
+ * @param dds the DDS domain and reach with {@code --dds} (then {@code router} and {@code listen}
+ *     are null), or null for rmw_zenoh
  */
-public record ExportOptions(String router, String listen, Ros2Distro distro) {
+public record ExportOptions(String router, String listen, Ros2Distro distro, DdsSettings dds) {
 
     /** Key period of the exporter: keys are looked at ten times a second. */
     private static final long KEY_PERIOD_MS = 100;
@@ -37,7 +40,7 @@ public record ExportOptions(String router, String listen, Ros2Distro distro) {
                                  PrintStream err) {
         String at = listen != null ? listen : Ros2Wiring.freeLoopbackEndpoint();
         List<String> connect = router == null ? List.of() : List.of(router);
-        Ros2Context context = Ros2Wiring.open(connect, List.of(at), 0, distro);
+        Ros2Context context = dds != null ? Ros2Wiring.openDds(dds) : Ros2Wiring.open(connect, List.of(at), 0, distro);
         try {
             MonitorExporter exporter = MonitorExporter.start(monitor, context, keys, staticTransforms, KEY_PERIOD_MS);
             List<String> topics = new ArrayList<>(exporter.topics().values().stream().sorted().toList());
@@ -47,7 +50,8 @@ public record ExportOptions(String router, String listen, Ros2Distro distro) {
             if (!staticTransforms.isEmpty()) {
                 topics.add(MonitorExporter.TF_STATIC);
             }
-            err.println("rtaware export: ROS 2 over Zenoh on " + at + (router == null ? "" : " via " + router)
+            String where = dds != null ? dds.describe() : "Zenoh on " + at + (router == null ? "" : " via " + router);
+            err.println("rtaware export: ROS 2 over " + where
                     + " (" + distro.cliName() + " conventions): "
                     + MonitorExporter.DIAGNOSTICS + (topics.isEmpty()
                             ? " (no key of this run has a ROS 2 type: each key's health is a status there)"

@@ -5,6 +5,7 @@ import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.TaskSpec;
 import io.rtaware.ros2.graph.Ros2Context;
+import io.rtaware.ros2.graph.Ros2Transport;
 import io.rtaware.ros2.task.Ros2DataTask;
 import io.rtaware.ros2.task.Ros2Stats;
 import io.rtaware.sim.ros2.Ros2SimRobot;
@@ -48,6 +49,10 @@ public final class Ros2Link implements AutoCloseable {
      * @throws io.rtaware.app.UserError if a router cannot be reached
      */
     public static Ros2Link open(Ros2Options options, PlayerSimServer server) {
+        if (options.dds() != null) {
+            Ros2Context context = Ros2Wiring.openDds(options.dds());
+            return new Ros2Link(options, null, Ros2DataTask.withDefaults(context, options.topics()));
+        }
         Ros2SimRobot robot = null;
         List<String> connect;
         if (options.router() == null) {
@@ -81,6 +86,9 @@ public final class Ros2Link implements AutoCloseable {
 
     /** @return where the robot is, for the start line */
     public String describe() {
+        if (options.dds() != null) {
+            return "ROS 2 robot over " + options.dds().describe();
+        }
         return options.router() == null ? "built-in simulator as a ROS 2 robot over Zenoh on loopback"
                 : "ROS 2 robot through Zenoh at " + options.router();
     }
@@ -92,13 +100,15 @@ public final class Ros2Link implements AutoCloseable {
     public String summary() {
         Ros2Stats s = task.stats();
         Histogram latency = task.latencySnapshot();
+        String latencyText = task.latencySource() == null
+                ? "scan latency unknown (no source timestamps: the robot's stamps are not wall-clock times)"
+                : String.format(Locale.ROOT, "scan source-to-commit latency p50 %.2f ms p99 %.2f ms (from the %s)",
+                        latencyMs(latency, 50), latencyMs(latency, 99), task.latencySource());
         StringBuilder text = new StringBuilder(String.format(Locale.ROOT,
-                "ros2: %d scans, %d odometry, %d commands; dropped %d (malformed %d, oversized %d, implausible %d, "
-                        + "behind %d, other publishers %d); clock epochs %d; scan source-to-commit latency p50 %.2f ms "
-                        + "p99 %.2f ms; data task CPU %.1f us/sample",
-                s.scans(), s.odometry(), s.commands(), s.dropped(), s.malformed(), s.oversized(), s.rejected(),
-                s.overflowed(), s.otherPublishers(), s.clockEpochs(), latencyMs(latency, 50), latencyMs(latency, 99),
-                cpuUsPerSample(s)));
+                "ros2 (%s): %d scans, %d odometry, %d commands; dropped %d (malformed %d, oversized %d, implausible %d, "
+                        + "behind %d, other publishers %d); clock epochs %d; %s; data task CPU %.1f us/sample",
+                transport(), s.scans(), s.odometry(), s.commands(), s.dropped(), s.malformed(), s.oversized(), s.rejected(),
+                s.overflowed(), s.otherPublishers(), s.clockEpochs(), latencyText, cpuUsPerSample(s)));
         for (String notice : notices()) {
             text.append(System.lineSeparator()).append("ros2: notice: ").append(notice);
         }
@@ -124,13 +134,21 @@ public final class Ros2Link implements AutoCloseable {
         Map<String, Long> rejected = new LinkedHashMap<>();
         rejected.put(task.topics().qualifiedScan(), s.scanRejected());
         rejected.put(task.topics().qualifiedOdom(), s.odomRejected());
-        Map<String, Double> latencyMs = new LinkedHashMap<>();
-        latencyMs.put("p50", Rounding.toDecimals(latencyMs(latency, 50), 3));
-        latencyMs.put("p99", Rounding.toDecimals(latencyMs(latency, 99), 3));
-        return new Ros2Section(describe(), options.distro().cliName(), s.scans(), s.odometry(), s.commands(), rejected, s.malformed(),
-                s.oversized(), s.overflowed(), s.otherPublishers(), s.clockEpochs(), notices(), s.lastProblem(),
-                task.fault(), latencyMs,
+        Map<String, Double> latencyMs = null;
+        if (task.latencySource() != null) {
+            latencyMs = new LinkedHashMap<>();
+            latencyMs.put("p50", Rounding.toDecimals(latencyMs(latency, 50), 3));
+            latencyMs.put("p99", Rounding.toDecimals(latencyMs(latency, 99), 3));
+        }
+        return new Ros2Section(describe(), transport(), options.distro().cliName(), s.scans(), s.odometry(), s.commands(),
+                rejected, s.malformed(), s.oversized(), s.overflowed(), s.otherPublishers(), s.clockEpochs(), notices(),
+                s.lastProblem(), task.fault(), latencyMs, task.latencySource(),
                 Rounding.toDecimals(cpuUsPerSample(s), 2), s.droppedBeams());
+    }
+
+    /** @return {@code rmw_zenoh} or {@code dds} */
+    private String transport() {
+        return (options.dds() != null ? Ros2Transport.DDS : Ros2Transport.RMW_ZENOH).reportName();
     }
 
     /** @return a percentile of the scan source-to-commit latency, milliseconds */

@@ -41,15 +41,17 @@ public final class Ros2SimServe {
         ScaledClock clock = new ScaledClock(timeScale);
         String listen = ros2.listen() != null ? ros2.listen() : Ros2Wiring.freeLoopbackEndpoint();
         List<String> connect = ros2.routerEndpoint().map(List::of).orElse(List.of());
+        String reached = ros2.dds() != null ? ros2.dds().describe()
+                : "Zenoh listening on " + listen + (connect.isEmpty() ? "" : ", connected to " + connect.get(0));
         try (PlayerSimServer server = SimCommandSupport.start(s, clock, config, seed, robotSeed)) {
-            Ros2Context context = Ros2Wiring.open(connect, List.of(listen), ros2.topics().domain(), ros2.distro());
+            Ros2Context context = ros2.dds() != null ? Ros2Wiring.openDds(ros2.dds())
+                    : Ros2Wiring.open(connect, List.of(listen), ros2.topics().domain(), ros2.distro());
             try (Ros2SimRobot robot = Ros2SimRobot.start(server, context, ros2.topics().namespace(),
                     line -> out.println("rtaware-sim: " + line))) {
                 out.println(SimCommandSupport.startLine(s, config, server.port(), timeScale, seed));
                 out.println("rtaware-sim: ROS 2 robot node " + Ros2SimRobot.NODE_NAME + " in namespace "
-                        + ros2.topics().namespace() + ", domain " + ros2.topics().domain() + ", " + ros2.distro().cliName() + " conventions, Zenoh listening on "
-                        + listen + (connect.isEmpty() ? "" : ", connected to " + connect.get(0))
-                        + " (topics scan, odom, ground_truth, cmd_vel)");
+                        + ros2.topics().namespace() + ", domain " + ros2.topics().domain() + ", " + ros2.distro().cliName()
+                        + " conventions, " + reached + " (topics scan, odom, ground_truth, cmd_vel)");
                 out.flush();
                 SimCommandSupport.waitUntilInterrupted();
             }

@@ -1,6 +1,7 @@
 package io.rtaware.app.ros2;
 
 import io.rtaware.app.UserError;
+import io.rtaware.ros2.graph.DdsSettings;
 import io.rtaware.ros2.graph.Ros2Context;
 import io.rtaware.ros2.graph.Ros2Distro;
 import io.rtaware.zenoh.ZenohConfig;
@@ -62,6 +63,24 @@ public final class Ros2Wiring {
             String where = connect.isEmpty() ? "listen on " + String.join(", ", listen)
                     : "reach the Zenoh router at " + String.join(", ", connect);
             throw new UserError("cannot " + where + ": " + e.getMessage().lines().findFirst().orElse(""));
+        }
+    }
+
+    /** How long a DDS bridge may take to start before the command gives up: 10 s. */
+    private static final long DDS_START_TIMEOUT_MS = 10_000;
+
+    /**
+     * Starts the ROS 2 DDS bridge and opens a context on it.
+     *
+     * @param dds the DDS domain and reach
+     * @return the context (owning the bridge)
+     * @throws UserError if the bridge cannot start
+     */
+    public static Ros2Context openDds(DdsSettings dds) {
+        try {
+            return Ros2Context.openDds(dds, DDS_START_TIMEOUT_MS);
+        } catch (ZenohException e) {
+            throw new UserError("--dds: cannot join " + dds.describe() + ": " + e.getMessage().lines().findFirst().orElse(""));
         }
     }
 

@@ -152,9 +152,9 @@ public final class RobotRun {
         String host = options.playerHost();
         int port = options.playerPort();
         if (ros2.isPresent() && !options.builtInSimulator()) {
-            throw new UserError("--ros2 and --player exclude each other (a ROS 2 robot is reached with --zenoh)");
+            throw new UserError("--ros2 and --player exclude each other (a ROS 2 robot is reached with --zenoh or --dds)");
         }
-        boolean externalRos2 = ros2.isPresent() && ros2.get().router() != null;
+        boolean externalRos2 = ros2.isPresent() && !ros2.get().builtInSimulator();
         if (options.builtInSimulator() && !externalRos2) {
             if (scenario.map().isEmpty()) {
                 throw new UserError("scenario '" + scenario.name() + "' has no map; the built-in simulator needs one (or use --player HOST:PORT)");

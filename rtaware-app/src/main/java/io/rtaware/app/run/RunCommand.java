@@ -2,22 +2,25 @@ package io.rtaware.app.run;
 
 import io.rtaware.app.UserError;
 import io.rtaware.app.cli.MemoryBudget;
-import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.cli.RecordOptions;
+import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.foxglove.FoxgloveMixin;
 import io.rtaware.app.live.LiveMixin;
 import io.rtaware.app.output.OutputFolder;
+import io.rtaware.app.ros2.DdsMixin;
 import io.rtaware.app.ros2.ExportMixin;
 import io.rtaware.app.ros2.Ros2RunMixin;
 import io.rtaware.app.ros2.RosDistroMixin;
-import io.rtaware.ros2.graph.Ros2Distro;
 import io.rtaware.experiment.ExperimentRunner;
+import io.rtaware.ros2.graph.DdsSettings;
+import io.rtaware.ros2.graph.Ros2Distro;
 import io.rtaware.sim.world.RobotModel;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import java.util.function.Supplier;
 import picocli.CommandLine.Command;
@@ -120,6 +123,9 @@ public final class RunCommand implements Callable<Integer> {
     @Mixin
     RosDistroMixin rosDistro;
 
+    @Mixin
+    DdsMixin dds;
+
     private final Supplier<MemoryBudget> memory;
 
     /** The command with this JVM's heap as its memory budget. */
@@ -139,7 +145,10 @@ public final class RunCommand implements Callable<Integer> {
         ExperimentParentWatch.start(System.getenv(ExperimentRunner.PARENT_PID_ENV), System.err, System::exit);
         memory.get().require(trace.heapBytes(), trace.describe());
         Ros2Distro distro = rosDistro.distro(ros2.requested() || export.requested(), "--ros2 or --export");
-        return new RobotRun(options, ros2.options(distro), export.options(distro), System.out, System.err).recording(record)
+        Optional<DdsSettings> ddsSettings = dds.settings(ros2.requested() || export.requested(), "--ros2 or --export",
+                ros2.domain(), distro);
+        return new RobotRun(options, ros2.options(distro, ddsSettings), export.options(distro, ddsSettings), System.out,
+                System.err).recording(record)
                 .foxglove(foxglove).execute();
     }
 

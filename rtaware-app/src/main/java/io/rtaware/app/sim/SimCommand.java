@@ -4,13 +4,15 @@ import io.rtaware.app.UserError;
 import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.foxglove.FoxgloveMixin;
+import io.rtaware.app.ros2.DdsMixin;
 import io.rtaware.app.ros2.Ros2Options;
 import io.rtaware.app.ros2.Ros2SimMixin;
-import io.rtaware.app.ros2.RosDistroMixin;
 import io.rtaware.app.ros2.Ros2SimServe;
+import io.rtaware.app.ros2.RosDistroMixin;
 import io.rtaware.core.time.Durations;
 import io.rtaware.core.time.ScaledClock;
 import io.rtaware.foxglove.FoxgloveServer;
+import io.rtaware.ros2.graph.Ros2Distro;
 import io.rtaware.sim.scenario.Scenario;
 import io.rtaware.sim.scenario.ScenarioException;
 import io.rtaware.sim.scenario.ScenarioLoader;
@@ -75,6 +77,9 @@ public final class SimCommand implements Callable<Integer> {
     @Mixin
     RosDistroMixin rosDistro;
 
+    @Mixin
+    DdsMixin dds;
+
     @Override
     public Integer call() {
         if (port < 0 || port > 65535) {
@@ -95,7 +100,9 @@ public final class SimCommand implements Callable<Integer> {
             throw new UserError("--foxglove and --ros2 are not served together yet: give one of them");
         }
         try {
-            Optional<Ros2Options> ros2Options = ros2.options(rosDistro.distro(ros2.requested(), "--ros2"));
+            Ros2Distro distro = rosDistro.distro(ros2.requested(), "--ros2");
+            Optional<Ros2Options> ros2Options = ros2.options(distro,
+                    dds.settings(ros2.requested(), "--ros2", ros2.domain(), distro));
             if (foxglove.enabled()) {
                 serveWithFoxglove(config);
             } else if (ros2Options.isPresent()) {

@@ -2,8 +2,6 @@ package io.rtaware.app.ros2;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import io.rtaware.app.RtawareCli;
 import io.rtaware.ros2.graph.QosProfile;
@@ -20,7 +18,6 @@ import io.rtaware.ros2msg.value.DiagnosticArray;
 import io.rtaware.ros2msg.value.PlanarPose;
 import io.rtaware.zenoh.SampleBuffer;
 import io.rtaware.zenoh.ZenohConfig;
-import io.rtaware.zenoh.ZenohLibrary;
 import io.rtaware.zenoh.ZenohMailbox;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
@@ -58,11 +55,7 @@ class ExportEndToEndTest {
 
     @BeforeEach
     void listen() throws Exception {
-        String reason = ZenohLibrary.unavailableReason();
-        if (reason != null && "true".equals(System.getenv("CI")) && !"1".equals(System.getenv("RTAWARE_NO_RUST"))) {
-            fail("CI=true but " + reason + " (.ci/run sets RTAWARE_NO_RUST=1 when the machine has no Rust toolchain)");
-        }
-        assumeTrue(reason == null, () -> "skipped: " + reason);
+        Ros2RunEndToEndTest.requireNativeZenoh();
         try (ServerSocket s = new ServerSocket(0)) {
             endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
         }

@@ -13,6 +13,7 @@ import io.rtaware.record.mcap.McapChannel;
 import io.rtaware.record.mcap.McapReader;
 import io.rtaware.record.mcap.McapVisitor;
 import io.rtaware.robot.msg.LaserScan;
+import io.rtaware.ros2.task.Ros2DataTask;
 import io.rtaware.ros2msg.LaserScanCodec;
 import io.rtaware.ros2msg.Ros2Header;
 import io.rtaware.ros2msg.cdr.CdrReader;
@@ -80,6 +81,8 @@ class Ros2RunEndToEndTest {
         assertTrue(ros2.path("rejected_samples").has(measuredOn.equals("odometry") ? "/robot1/scan" : "/scan"),
                 "rejected samples by fully qualified topic: " + ros2);
         assertTrue(ros2.path("scan_latency_ms").has("p50") && ros2.path("scan_latency_ms").has("p99"), "ros2: " + ros2);
+        assertEquals("rmw_zenoh", ros2.path("transport").asText(), "ros2: " + ros2);
+        assertEquals(Ros2DataTask.LATENCY_FROM_ATTACHMENT, ros2.path("scan_latency_from").asText(), "ros2: " + ros2);
         assertTrue(ros2.path("cpu_us_per_sample").asDouble() > 0, "ros2: " + ros2);
         assertEquals(0, ros2.path("clock_epochs").asLong(-1), "one clock, no epochs: " + ros2);
         assertEquals(0, ros2.path("other_publisher_samples").asLong(-1), "one publisher per topic: " + ros2);

@@ -40,6 +40,18 @@ public record QosProfile(boolean reliable, boolean transientLocal, int depth) {
         return new QosProfile(false, false, 5);
     }
 
+    /**
+     * The profile's text in a ROS 2 DDS bridge's route announcement ({@code zenoh-plugin-ros2dds}):
+     * {@code :<reliability>:<durability>:<history>,<depth>} with Cyclone DDS's enumeration values
+     * (best effort 0, reliable 1; volatile 0, transient local 1; keep last 0), the leading empty
+     * field saying the type is keyless, as every ROS 2 message type is.
+     *
+     * @return the text
+     */
+    public String bridgeText() {
+        return ":" + (reliable ? 1 : 0) + ":" + (transientLocal ? 1 : 0) + ":0," + depth;
+    }
+
     /** @return the profile's text in a liveliness token */
     public String tokenText() {
         return (reliable ? "" : Integer.toString(BEST_EFFORT)) + ":" + (transientLocal ? Integer.toString(TRANSIENT_LOCAL) : "")

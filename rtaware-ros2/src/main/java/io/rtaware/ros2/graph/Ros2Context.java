@@ -1,8 +1,10 @@
 package io.rtaware.ros2.graph;
 
+import io.rtaware.zenoh.DdsBridge;
 import io.rtaware.zenoh.ZenohConfig;
 import io.rtaware.zenoh.ZenohException;
 import io.rtaware.zenoh.ZenohSession;
+import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.atomic.AtomicLong;
 
@@ -11,12 +13,18 @@ import java.util.concurrent.atomic.AtomicLong;
  * whose rmw_zenoh conventions it follows, and the counter from which node and entity ids are
  * drawn (decimal, from 0). Thread-safe; closing it closes the session and with it every node's
  * tokens, publishers and subscribers.
+ *
+ * <p>With {@link Ros2Transport#DDS} ({@link #openDds}) the session is connected to a ROS 2 DDS
+ * bridge of its own in this process, which the context owns and closes: topics are the bridge's
+ * keys and routes are announced to it ({@link Ros2Node}).
  */
 public final class Ros2Context implements AutoCloseable {
 
     private final ZenohSession session;
     private final int domain;
     private final Ros2Distro distro;
+    private final Ros2Transport transport;
+    private final DdsBridge bridge;
     private final AtomicLong nextId = new AtomicLong();
 
     /**
@@ -25,9 +33,56 @@ public final class Ros2Context implements AutoCloseable {
      * @param distro the distribution whose rmw_zenoh conventions to follow
      */
     public Ros2Context(ZenohSession session, int domain, Ros2Distro distro) {
+        this(session, domain, distro, Ros2Transport.RMW_ZENOH, null);
+    }
+
+    private Ros2Context(ZenohSession session, int domain, Ros2Distro distro, Ros2Transport transport, DdsBridge bridge) {
         this.session = Objects.requireNonNull(session, "session");
         this.domain = checkDomain(domain);
         this.distro = Objects.requireNonNull(distro, "distro");
+        this.transport = transport;
+        this.bridge = bridge;
+    }
+
+    /**
+     * Starts a ROS 2 DDS bridge in this process on {@code settings}' domain and opens a session
+     * connected to it (and to nothing else). Returns once the bridge's plugin has announced
+     * itself, so that routes declared next reach DDS.
+     *
+     * @param settings the DDS domain and reach
+     * @param startTimeoutMs how long to wait for the plugin to announce itself
+     * @return a context on DDS
+     * @throws ZenohException if the bridge is not in this build, or it or the session cannot start
+     */
+    public static Ros2Context openDds(DdsSettings settings, long startTimeoutMs) throws ZenohException {
+        DdsBridge bridge = DdsBridge.start(ZenohConfig.LOOPBACK_ANY_PORT, settings.pluginConfig(), settings.environment());
+        ZenohSession session = null;
+        try {
+            session = ZenohSession.open(ZenohConfig.loopbackPeer().withListen(List.of()).withConnect(List.of(bridge.endpoint())));
+            awaitPlugin(session, bridge.zid(), startTimeoutMs);
+            return new Ros2Context(session, settings.domain(), settings.distro(), Ros2Transport.DDS, bridge);
+        } catch (ZenohException | RuntimeException e) {
+            try {
+                if (session != null) {
+                    session.close();
+                }
+            } finally {
+                bridge.close();
+            }
+            throw e;
+        }
+    }
+
+    /** Waits until the plugin's liveliness token ({@code @/<zid>/@ros2_lv}) is seen. */
+    private static void awaitPlugin(ZenohSession session, String bridgeZid, long timeoutMs) throws ZenohException {
+        String token = "@/" + bridgeZid + "/@ros2_lv";
+        long deadlineNs = System.nanoTime() + timeoutMs * 1_000_000L;
+        while (!session.livelinessKeys(token, 200).contains(token)) {
+            if (System.nanoTime() - deadlineNs > 0) {
+                throw new ZenohException("the ROS 2 DDS bridge did not start within " + timeoutMs
+                        + " ms (its plugin logs why on stderr with RUST_LOG=zenoh_plugin_ros2dds=debug)");
+            }
+        }
     }
 
     /**
@@ -98,9 +153,20 @@ public final class Ros2Context implements AutoCloseable {
         return distro;
     }
 
-    /** Closes the session, and with it everything declared in it. */
+    /** @return how this context reaches the ROS graph */
+    public Ros2Transport transport() {
+        return transport;
+    }
+
+    /** Closes the session, and with it everything declared in it, then the DDS bridge if any. */
     @Override
     public void close() throws ZenohException {
-        session.close();
+        try {
+            session.close();
+        } finally {
+            if (bridge != null) {
+                bridge.close();
+            }
+        }
     }
 }

@@ -72,6 +72,39 @@ public final class Ros2Names {
     }
 
     /**
+     * The key the ROS 2 DDS bridge ({@code zenoh-plugin-ros2dds}, namespace {@code /}) maps a
+     * topic to: its name without the leading slash ({@code /robot1/scan} is DDS's
+     * {@code rt/robot1/scan} and Zenoh's {@code robot1/scan}).
+     *
+     * @param fullTopic a fully qualified topic name
+     * @return the key expression
+     */
+    public static String bridgeKey(String fullTopic) {
+        return fullTopic.substring(1);
+    }
+
+    /**
+     * A route announcement to the ROS 2 DDS bridge, as one {@code zenoh-plugin-ros2dds} announces its
+     * routes to another: {@code @/<zid>/@ros2_lv/<MP|MS>/<key>/<ROS type>/<QoS>[:typehash=<hash>;]}
+     * with every {@code /} inside the key and the type written {@code §}; the type hash (Iron on) is
+     * the user data ROS 2 puts in DDS's USER_DATA QoS. The bridge answers a publisher's announcement
+     * ({@code MP}) with a DDS writer, a subscription's ({@code MS}) with a DDS reader.
+     *
+     * @param zid the announcing session's Zenoh id
+     * @param kind {@code MP} or {@code MS}
+     * @param fullTopic a fully qualified topic name
+     * @param rosType the ROS type name, e.g. {@code sensor_msgs/msg/LaserScan}
+     * @param qos the QoS profile
+     * @param typeHash the type's {@code RIHS01_...} hash, or null for none (Humble)
+     * @return the liveliness key
+     */
+    public static String bridgeAnnouncement(String zid, String kind, String fullTopic, String rosType, QosProfile qos,
+                                            String typeHash) {
+        return "@/" + zid + "/@ros2_lv/" + kind + "/" + bridgeKey(fullTopic).replace("/", "§") + "/"
+                + rosType.replace("/", "§") + "/" + qos.bridgeText() + (typeHash == null ? "" : ":typehash=" + typeHash + ";");
+    }
+
+    /**
      * A name as a single segment of a liveliness token: every {@code /} becomes {@code %}, and an
      * empty name is a single {@code %}.
      *

@@ -29,7 +29,14 @@ public final class Ros2Node {
         this.namespace = namespace;
         this.name = name;
         this.nodeId = nodeId;
+        if (dds()) {
+            return; // on DDS the bridge is the node the graph sees (BRIDGE_NODE)
+        }
         context.session().declareToken(nodeToken());
+    }
+
+    private boolean dds() {
+        return context.transport() == Ros2Transport.DDS;
     }
 
     /**
@@ -69,7 +76,17 @@ public final class Ros2Node {
      * @return the topic's key expression in the context's distribution
      */
     String topicKey(String fullTopic, Ros2MessageType type) {
-        return Ros2Names.topicKey(context.domain(), fullTopic, type.ddsTypeName(), context.distro().typeHash(type));
+        return dds() ? Ros2Names.bridgeKey(fullTopic)
+                : Ros2Names.topicKey(context.domain(), fullTopic, type.ddsTypeName(), context.distro().typeHash(type));
+    }
+
+    private String bridgeAnnouncement(String kind, String fullTopic, Ros2MessageType type, QosProfile qos) {
+        String typeHash = context.distro() == Ros2Distro.HUMBLE ? null : context.distro().typeHash(type);
+        return Ros2Names.bridgeAnnouncement(context.session().zid(), kind, fullTopic, type.name(), qos, typeHash);
+    }
+
+    private String announce(long entityId, String kind, String fullTopic, Ros2MessageType type, QosProfile qos) {
+        return dds() ? bridgeAnnouncement(kind, fullTopic, type, qos) : entityToken(entityId, kind, fullTopic, type, qos);
     }
 
     /**
@@ -95,9 +112,10 @@ public final class Ros2Node {
         String full = resolve(topic);
         long id = context.nextId();
         ZenohPublisher p = context.session().declarePublisher(topicKey(full, type));
-        String tokenKey = entityToken(id, PUBLISHER, full, type, qos);
+        String tokenKey = announce(id, PUBLISHER, full, type, qos);
         LivelinessToken token = context.session().declareToken(tokenKey);
-        return new Ros2Publisher(p, token, Ros2Publisher.gid(tokenKey), maxMessageBytes);
+        // the bridge forwards payloads only: no attachment, so no gid, on DDS
+        return new Ros2Publisher(p, token, dds() ? null : Ros2Publisher.gid(tokenKey), maxMessageBytes);
     }
 
     /**
@@ -117,7 +135,7 @@ public final class Ros2Node {
         String full = resolve(topic);
         long id = context.nextId();
         mailbox.subscribe(topicKey(full, type), channel);
-        return context.session().declareToken(entityToken(id, SUBSCRIPTION, full, type, qos));
+        return context.session().declareToken(announce(id, SUBSCRIPTION, full, type, qos));
     }
 
     /** @return the namespace */

@@ -10,8 +10,9 @@ import net.openhft.hashing.LongTupleHashFunction;
 
 /**
  * A ROS 2 publisher: copies an encoded message into its own direct buffer and publishes it with
- * the rmw_zenoh attachment (a sequence number from 1, the source timestamp, its gid). Allocates
- * nothing per message. One thread at a time.
+ * the rmw_zenoh attachment (a sequence number from 1, the source timestamp, its gid), or on DDS
+ * without one (the bridge forwards payloads only). Allocates nothing per message. One thread at
+ * a time.
  */
 public final class Ros2Publisher implements AutoCloseable {
 
@@ -48,9 +49,9 @@ public final class Ros2Publisher implements AutoCloseable {
         return gid.array();
     }
 
-    /** @return a copy of this publisher's gid */
+    /** @return a copy of this publisher's gid, or null on DDS (where the bridge writes its own) */
     public byte[] gid() {
-        return gid.clone();
+        return gid == null ? null : gid.clone();
     }
 
     /**
@@ -69,8 +70,13 @@ public final class Ros2Publisher implements AutoCloseable {
         }
         payload.clear();
         payload.put(message, 0, length);
-        SampleAttachment.write(attachment, ++sequence, sourceTimestampNs, gid);
-        publisher.put(payload, length, attachment, SampleAttachment.BYTES);
+        ++sequence;
+        if (gid == null) {
+            publisher.put(payload, length, null, -1);
+        } else {
+            SampleAttachment.write(attachment, sequence, sourceTimestampNs, gid);
+            publisher.put(payload, length, attachment, SampleAttachment.BYTES);
+        }
     }
 
     /** @return the topic key expression */

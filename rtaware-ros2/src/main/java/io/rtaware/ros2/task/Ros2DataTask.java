@@ -79,6 +79,12 @@ public final class Ros2DataTask implements Task {
     private static final int SCAN = 0;
     private static final int ODOM = 1;
     private static final long MAX_LATENCY_NS = TimeUnit.SECONDS.toNanos(60);
+    /** How far ahead of this machine's clock a wall-clock header stamp may be (another machine's clock): 1 s. */
+    private static final long STAMP_AHEAD_NS = TimeUnit.SECONDS.toNanos(1);
+    /** {@link #latencySource()} when scans came with rmw_zenoh's attachment. */
+    public static final String LATENCY_FROM_ATTACHMENT = "source timestamp (rmw_zenoh attachment)";
+    /** {@link #latencySource()} when scans came without one and their header stamps were wall-clock times. */
+    public static final String LATENCY_FROM_HEADER = "header stamp (the driver's acquisition time)";
 
     private final Ros2Context context;
     private final Ros2Topics topics;
@@ -130,6 +136,7 @@ public final class Ros2DataTask implements Task {
     private volatile String lastProblem;
     private volatile long cpuNs;
     private volatile String fault;
+    private volatile String latencySource;
 
     /**
      * @param context an open context, owned by the task from now on (closed by {@link #terminate})
@@ -259,6 +266,11 @@ public final class Ros2DataTask implements Task {
                 scans++;
                 if (SampleAttachment.valid(sample.attachment(), sample.attachmentLength())) {
                     pendingScanSourceNs = SampleAttachment.sourceTimestampNs(sample.attachment());
+                    latencySource = LATENCY_FROM_ATTACHMENT;
+                } else if (wallClockStamp(header.stampNs)) {
+                    // DDS through the bridge carries no source timestamp; a driver's wall-clock stamp stands in
+                    pendingScanSourceNs = header.stampNs;
+                    latencySource = LATENCY_FROM_HEADER;
                 }
             } else {
                 lastProblem = "scan: " + scanValidator.lastRejection();
@@ -271,6 +283,16 @@ public final class Ros2DataTask implements Task {
         } else {
             lastProblem = "odom: " + odomValidator.lastRejection();
         }
+    }
+
+    /**
+     * Whether a header stamp reads as a wall-clock time of now (within the last
+     * {@link #MAX_LATENCY_NS} ns, or at most {@link #STAMP_AHEAD_NS} ns ahead): a driver's
+     * acquisition time, not a simulated clock's.
+     */
+    private boolean wallClockStamp(long stampNs) {
+        long ageNs = epoch.epochNanos() - stampNs;
+        return ageNs >= -STAMP_AHEAD_NS && ageNs <= MAX_LATENCY_NS;
     }
 
     /** Reports a new epoch of the source's clock once; returns the epochs seen now. */
@@ -386,11 +408,20 @@ public final class Ros2DataTask implements Task {
 
     /**
      * @return a copy of the histogram of scan latencies: from a scan's source timestamp (the
-     *     publisher's clock, epoch ns) to the end of the cycle that committed it, in ns; exact
-     *     once the task stopped, approximate while it runs
+     *     publisher's clock, epoch ns; {@link #latencySource()}) to the end of the cycle that
+     *     committed it, in ns; exact once the task stopped, approximate while it runs
      */
     public Histogram latencySnapshot() {
         return scanLatencyNs.copy();
+    }
+
+    /**
+     * @return where the scan latency was measured from ({@link #LATENCY_FROM_ATTACHMENT} or
+     *     {@link #LATENCY_FROM_HEADER}, the last one used), or null when no scan had either (over
+     *     DDS from a robot whose stamps are a simulated clock): then the latency is unknown
+     */
+    public String latencySource() {
+        return latencySource;
     }
 
     /** @return CPU time spent in this task's cycles so far, in ns */

@@ -24,6 +24,23 @@ class Ros2NamesTest {
         assertEquals("/scan", Ros2Names.resolveTopic("/", "scan"));
     }
 
+    /**
+     * The bridge's keys and announcements as zenoh-plugin-ros2dds 1.10.2 writes and parses them
+     * ({@code ros2_utils.rs} {@code ros2_name_to_key_expr}, {@code liveliness_mgt.rs}
+     * {@code ke_liveliness_pub}/{@code ke_liveliness_sub}, {@code escape_slashes}).
+     */
+    @Test
+    void bridgeKeysDropTheLeadingSlashAndAnnouncementsEscapeSlashesWithSectionSigns() {
+        assertEquals("scan", Ros2Names.bridgeKey("/scan"));
+        assertEquals("robot1/scan", Ros2Names.bridgeKey("/robot1/scan"));
+        assertEquals("@/5e1f/@ros2_lv/MP/robot1§scan/sensor_msgs§msg§LaserScan/:0:0:0,5",
+                Ros2Names.bridgeAnnouncement("5e1f", "MP", "/robot1/scan", "sensor_msgs/msg/LaserScan",
+                        QosProfile.sensorData(), null));
+        assertEquals("@/5e1f/@ros2_lv/MS/cmd_vel/geometry_msgs§msg§Twist/:1:0:0,10:typehash=" + Ros2Types.TWIST.typeHash() + ";",
+                Ros2Names.bridgeAnnouncement("5e1f", "MS", "/cmd_vel", Ros2Types.TWIST.name(), QosProfile.defaults(),
+                        Ros2Types.TWIST.typeHash()));
+    }
+
     @Test
     void namesInTokensReplaceSlashesAndMarkEmptyNames() {
         assertEquals("%robot1%cmd_vel", Ros2Names.mangle("/robot1/cmd_vel"));
