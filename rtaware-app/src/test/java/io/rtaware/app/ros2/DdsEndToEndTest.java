@@ -168,6 +168,27 @@ class DdsEndToEndTest {
         }
     }
 
+    /**
+     * Bridge to bridge: the simulator over DDS and the controller over DDS on one domain, no other
+     * node. Each bridge sees the other's readers and writers as a ROS 2 node's (the plugin
+     * announces its own entities on ros_discovery_info), so the routes come up on both sides.
+     */
+    @Test
+    void runRos2DdsDrivesTheSimulatorServedOverDdsOnTheSameDomain() throws Exception {
+        requireDdsBridge();
+        Path out = dir.resolve("bridges");
+        try (PlayerSimServer server = simulator(shortLeg(), 10);
+             Ros2SimRobot robot = Ros2SimRobot.start(server, ddsContext(46), "/", line -> { })) {
+            int status = quietly("run", "--ros2", "--dds", "--domain", "46", "--scenario", shortLeg(), "--time-scale",
+                    "10", "--out", out.toString(), "--quiet");
+            assertEquals(0, status, "run --ros2 --dds exit status");
+            JsonNode report = JSON.readTree(out.resolve("report.json").toFile());
+            assertEquals("completed", report.path("run").path("outcome").asText(), "run: " + report.path("run"));
+            assertTrue(report.path("ros2").path("scans").asLong() > 0, "ros2: " + report.path("ros2"));
+            assertTrue(robot.commands() > 0, "the simulator obeyed the controller over DDS");
+        }
+    }
+
     @Test
     void aCycloneDdsRobotSendingNanPosesIsHaltedWithZeroVelocityAndTheRunEndsAsAnError() throws Exception {
         requireDdsBridge();
