@@ -227,6 +227,7 @@ class DdsEndToEndTest {
             assertTrue(ros2.path("fault").asText().contains("x = NaN"), "ros2: " + ros2);
             assertEquals(Ros2DataTask.LATENCY_FROM_HEADER, ros2.path("scan_latency_from").asText(),
                     "re-stamped scans give the latency from their header stamps: " + ros2);
+            assertTrue(robot.commands() > 0, "the simulator was driven before the halt");
         }
     }
 
