@@ -1,5 +1,6 @@
 package io.rtaware.experiment;
 
+import com.fasterxml.jackson.annotation.JsonIgnore;
 import com.fasterxml.jackson.annotation.JsonProperty;
 import io.rtaware.experiment.stats.RateInterval;
 import io.rtaware.experiment.stats.SampleStats;
@@ -77,6 +78,15 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
                              Double topSpeedMps, int measuredRuns, int runsWithCollisions, Long sweptPeriodMs,
                              Map<String, Long> mediatorCycles, SampleStats minClearanceM, Long nearMisses,
                              int runsWithNearMisses) {
+
+        /**
+         * @return the paper's set with this set's periods at this set's top speed (none given: the
+         *     paper's), or null when the paper has no such set
+         */
+        @JsonIgnore
+        public PaperReference.PaperSet paperSet() {
+            return PaperReference.matching(new PeriodSet(name, periodsMs, topSpeedMps));
+        }
 
         /** @return the share of measured runs with a near miss, 0 to 1, or null with no measured run */
         @JsonProperty("near_miss_rate")

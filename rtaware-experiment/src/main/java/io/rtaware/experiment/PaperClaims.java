@@ -503,7 +503,7 @@ public final class PaperClaims {
         Map<Integer, SetSummary> paper = new TreeMap<>();
         List<PaperReference.PaperSet> published = PaperReference.published().sets();
         for (SetSummary s : sets) {
-            PaperReference.PaperSet match = PaperReference.matching(new PeriodSet(s.name(), s.periodsMs(), s.topSpeedMps()));
+            PaperReference.PaperSet match = s.paperSet();
             if (match != null) {
                 paper.putIfAbsent(published.indexOf(match) + 1, s);
             }

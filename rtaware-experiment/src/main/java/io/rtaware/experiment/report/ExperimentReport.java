@@ -11,7 +11,6 @@ import io.rtaware.experiment.ExperimentSummary.Misses;
 import io.rtaware.experiment.ExperimentSummary.PairTest;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
 import io.rtaware.experiment.PaperClaims;
-import io.rtaware.experiment.PaperReference;
 import io.rtaware.experiment.PaperReference.PaperSet;
 import io.rtaware.experiment.PeriodSet;
 import io.rtaware.experiment.ResultsCsv;
@@ -156,7 +155,7 @@ public final class ExperimentReport {
         b.heading(2, "Table I: periods and run time");
         List<List<String>> rows = new ArrayList<>();
         for (SetSummary set : s.sets()) {
-            PaperSet paper = PaperReference.matching(new PeriodSet(set.name(), set.periodsMs()));
+            PaperSet paper = set.paperSet();
             List<String> row = new ArrayList<>(List.of(set.name()));
             set.periodsMs().values().forEach(v -> row.add(Long.toString(v)));
             row.addAll(List.of(set.completed() + " of " + set.runs(), outcomes(set.outcomes()),
@@ -170,7 +169,7 @@ public final class ExperimentReport {
         b.heading(2, "Table II: distance from the finish position");
         rows = new ArrayList<>();
         for (SetSummary set : s.sets()) {
-            PaperSet paper = PaperReference.matching(new PeriodSet(set.name(), set.periodsMs()));
+            PaperSet paper = set.paperSet();
             SampleStats d = set.distanceToFinishM();
             rows.add(List.of(set.name(), Integer.toString(d.n()), num(d.mean(), 2), num(d.sd(), 2), num(d.min(), 2),
                     num(d.max(), 2), paper == null ? "-" : num(paper.distanceMeanM(), 2),

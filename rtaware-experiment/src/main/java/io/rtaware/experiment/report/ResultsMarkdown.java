@@ -62,8 +62,7 @@ public final class ResultsMarkdown {
             md.append("\n### Table I: run time, s (completed runs)\n\n");
             md.append("| set | periods (ms) | here: mean +- sd (n) | paper: mean +- sd |\n|---|---|---|---|\n");
             for (SetSummary set : s.sets()) {
-                PaperReference.PaperSet paper = PaperReference.matching(new PeriodSet(set.name(), set.periodsMs(),
-                        set.topSpeedMps()));
+                PaperReference.PaperSet paper = set.paperSet();
                 md.append("| ").append(set.name()).append(" | ").append(periods(set)).append(" | ")
                         .append(stats(set.runTimeS())).append(" | ")
                         .append(paper == null ? "-" : num(paper.runTimeMeanS()) + " +- " + num(paper.runTimeSdS()))
@@ -72,8 +71,7 @@ public final class ResultsMarkdown {
             md.append("\n### Table II: distance to the finish, m (runs that ended on the course)\n\n");
             md.append("| set | periods (ms) | here: mean +- sd (n) | paper: mean +- sd |\n|---|---|---|---|\n");
             for (SetSummary set : s.sets()) {
-                PaperReference.PaperSet paper = PaperReference.matching(new PeriodSet(set.name(), set.periodsMs(),
-                        set.topSpeedMps()));
+                PaperReference.PaperSet paper = set.paperSet();
                 md.append("| ").append(set.name()).append(" | ").append(periods(set)).append(" | ")
                         .append(stats(set.distanceToFinishM())).append(" | ")
                         .append(paper == null ? "-" : num(paper.distanceMeanM()) + " +- " + num(paper.distanceSdM()))
