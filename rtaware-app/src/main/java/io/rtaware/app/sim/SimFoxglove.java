@@ -1,6 +1,7 @@
 package io.rtaware.app.sim;
 
 import io.rtaware.app.run.RobotRun;
+import io.rtaware.core.agent.AgentThread;
 import io.rtaware.core.data.Key;
 import io.rtaware.core.time.Clock;
 import io.rtaware.foxglove.FoxgloveServer;
@@ -18,7 +19,8 @@ import io.rtaware.sim.world.World;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.concurrent.locks.LockSupport;
+import org.agrona.concurrent.Agent;
+import org.agrona.concurrent.SleepingMillisIdleStrategy;
 
 /**
  * {@code rtaware sim --foxglove}: the simulated robot as Foxglove sees a ROS 2 robot, through the
@@ -26,12 +28,16 @@ import java.util.concurrent.locks.LockSupport;
  * {@code /scan} (frame {@code laser}), {@code /odom}, {@code /ground_truth}, {@code /tf}
  * ({@code odom} to {@code base_link}, {@code map} to {@code ground_truth}), {@code /tf_static}
  * ({@code map} to {@code odom}, {@code base_link} to {@code laser}) and the scenario's walls on
- * {@code /map} (latched). A sampler thread looks at the world every {@value #SAMPLE_PERIOD_MS}
- * ms of wall time and hands each new scan and odometry sample to the recorder (the world is
- * read under its lock, as the Player server does); the recorder's writer thread encodes and
- * sends them.
+ * {@code /map} (latched). A sampler ({@value #THREAD_NAME}, an {@link AgentThread}) looks at the
+ * world every {@value #SAMPLE_PERIOD_MS} ms of wall time and hands each new scan and odometry
+ * sample to the recorder (the world is read under its lock, as the Player server does); the
+ * recorder's writer thread encodes and sends them. A look that throws is printed once and
+ * counted; the sampler goes on.
  */
-final class SimFoxglove implements AutoCloseable {
+final class SimFoxglove implements AutoCloseable, Agent {
+
+    /** The sampler thread's name. */
+    static final String THREAD_NAME = "rtaware-sim-foxglove";
 
     /** Wall time between two looks at the world. */
     static final long SAMPLE_PERIOD_MS = 5;
@@ -43,7 +49,7 @@ final class SimFoxglove implements AutoCloseable {
     private final PlayerSimServer server;
     private final Clock clock;
     private final RunRecorder recorder;
-    private final Thread sampler;
+    private volatile AgentThread sampler;
     private final LaserScan scan = new LaserScan();
     private final Odometry odometry = new Odometry();
     private final boolean[] news = new boolean[2];
@@ -54,14 +60,11 @@ final class SimFoxglove implements AutoCloseable {
     private double lastOdometryTimeS = Double.NaN;
     private long scans;
     private long samples;
-    private volatile boolean running = true;
 
     private SimFoxglove(PlayerSimServer server, Clock clock, RunRecorder recorder) {
         this.server = server;
         this.clock = clock;
         this.recorder = recorder;
-        this.sampler = new Thread(this::loop, "rtaware-sim-foxglove");
-        sampler.setDaemon(true);
     }
 
     /**
@@ -101,22 +104,37 @@ final class SimFoxglove implements AutoCloseable {
             recorder.commit(MAP, 1, clock.nanos(), walls);
         }
         SimFoxglove feed = new SimFoxglove(server, clock, recorder);
-        feed.sampler.start();
+        feed.sampler = AgentThread.start(feed, new SleepingMillisIdleStrategy(SAMPLE_PERIOD_MS), feed::lookFailed);
         return feed;
     }
 
-    private void loop() {
-        while (running) {
-            boolean[] fresh = server.withWorld(this::copyNews);
-            long nowNs = clock.nanos();
-            if (fresh[0]) {
-                recorder.commit(LASER, ++scans, nowNs, scan);
-            }
-            if (fresh[1]) {
-                recorder.commit(ODOMETRY, ++samples, nowNs, odometry);
-                recorder.groundTruth(nowNs, truthXM, truthYM, truthYawRad);
-            }
-            LockSupport.parkNanos(SAMPLE_PERIOD_MS * 1_000_000L);
+    /** One look at the world: hands a new scan and a new odometry sample to the recorder. */
+    @Override
+    public int doWork() {
+        boolean[] fresh = server.withWorld(this::copyNews);
+        long nowNs = clock.nanos();
+        int work = 0;
+        if (fresh[0]) {
+            recorder.commit(LASER, ++scans, nowNs, scan);
+            work++;
+        }
+        if (fresh[1]) {
+            recorder.commit(ODOMETRY, ++samples, nowNs, odometry);
+            recorder.groundTruth(nowNs, truthXM, truthYM, truthYawRad);
+            work++;
+        }
+        return work;
+    }
+
+    @Override
+    public String roleName() {
+        return THREAD_NAME;
+    }
+
+    private void lookFailed(Throwable error) {
+        if (sampler == null || sampler.errors() <= 1) {
+            System.err.println("rtaware sim: --foxglove: a look at the world failed: " + error
+                    + " (the sampler goes on; further failures are counted)");
         }
     }
 
@@ -140,13 +158,7 @@ final class SimFoxglove implements AutoCloseable {
     /** Stops the sampler and finishes the recorder (its last messages are sent). Idempotent. */
     @Override
     public void close() {
-        running = false;
-        LockSupport.unpark(sampler);
-        try {
-            sampler.join();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        sampler.close();
         recorder.finish();
     }
 }

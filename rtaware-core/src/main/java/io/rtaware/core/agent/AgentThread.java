@@ -41,7 +41,8 @@ public final class AgentThread implements AutoCloseable {
          * Waits as long as the agent takes to close, never interrupting it: for an agent whose
          * {@link Agent#onClose()} finishes work that an interrupt would destroy (an interrupt closes
          * a {@link java.nio.channels.FileChannel} the thread writes). If the closing thread is
-         * interrupted, {@link AgentThread#close()} returns at once with its interrupt status set.
+         * interrupted while it waits, {@link AgentThread#close()} returns at once with its interrupt
+         * status set.
          */
         UNTIL_CLOSED
     }
@@ -130,7 +131,11 @@ public final class AgentThread implements AutoCloseable {
         return runner.isClosed();
     }
 
-    /** Stops the loop and waits until the agent has closed on its thread (see the class comment). */
+    /**
+     * Stops the loop and waits until the agent has closed on its thread (see the class comment).
+     * An interrupt the calling thread already had (how Ctrl-C stops {@code rtaware sim}) does not
+     * cut the wait short: it is cleared while waiting and set again when close returns.
+     */
     @Override
     public void close() {
         stopRequested = true;
@@ -138,15 +143,20 @@ public final class AgentThread implements AutoCloseable {
             return;
         }
         LockSupport.unpark(thread);
-        if (closeWait == CloseWait.UNTIL_CLOSED) {
-            try {
+        boolean interruptedBefore = Thread.interrupted();
+        try {
+            if (closeWait == CloseWait.UNTIL_CLOSED) {
                 thread.join();
-            } catch (InterruptedException e) {
+            } else {
+                runner.close(CLOSE_TIMEOUT_MS, stuck -> System.err.println("rtaware: " + stuck.getName()
+                        + " did not return within " + CLOSE_TIMEOUT_MS + " ms of close; interrupting it"));
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt(); // interrupted while waiting: returns at once
+        } finally {
+            if (interruptedBefore) {
                 Thread.currentThread().interrupt();
             }
-            return;
         }
-        runner.close(CLOSE_TIMEOUT_MS, stuck -> System.err.println("rtaware: " + stuck.getName()
-                + " did not return within " + CLOSE_TIMEOUT_MS + " ms of close; interrupting it"));
     }
 }

@@ -187,4 +187,63 @@ class AgentThreadTest {
         assertEquals(List.of("finished its work"), steps, "onClose ran to its end");
         assertFalse(interrupted.get(), "never interrupted");
     }
+
+    /**
+     * How {@code sim} and {@code run} stop: Ctrl-C interrupts the main thread, which then closes
+     * its loops. A pending interrupt must not cut the wait short (nor be passed on to the agent);
+     * it is there again when close returns.
+     */
+    @Test
+    void closeFromAnInterruptedThreadStillWaitsForOnCloseAndKeepsTheInterrupt() throws Exception {
+        for (AgentThread.CloseWait wait : AgentThread.CloseWait.values()) {
+            CountDownLatch started = new CountDownLatch(1);
+            CountDownLatch mayFinish = new CountDownLatch(1);
+            AtomicBoolean interrupted = new AtomicBoolean();
+            Agent agent = new Agent() {
+                @Override
+                public int doWork() {
+                    started.countDown();
+                    return 0;
+                }
+
+                @Override
+                public void onClose() {
+                    try {
+                        mayFinish.await();
+                    } catch (InterruptedException e) {
+                        interrupted.set(true);
+                    }
+                }
+
+                @Override
+                public String roleName() {
+                    return "closing-" + wait;
+                }
+            };
+            AgentThread loop = AgentThread.start(agent, new SleepingIdleStrategy(TimeUnit.MILLISECONDS.toNanos(1)),
+                    e -> { }, wait);
+            assertTrue(started.await(10, TimeUnit.SECONDS));
+            Thread closer = new Thread(() -> {
+                Thread.currentThread().interrupt();
+                loop.close();
+                if (!Thread.interrupted()) {
+                    throw new AssertionError("close lost the caller's interrupt");
+                }
+            }, "interrupted-closer");
+            List<Throwable> closerFailures = new CopyOnWriteArrayList<>();
+            closer.setUncaughtExceptionHandler((t, e) -> closerFailures.add(e));
+            closer.start();
+            Thread.State state;
+            while ((state = closer.getState()) == Thread.State.NEW || state == Thread.State.RUNNABLE) {
+                Thread.onSpinWait(); // until close waits (for the agent) or has returned
+            }
+            assertFalse(state == Thread.State.TERMINATED, wait + ": close returned while onClose was still running");
+            assertFalse(loop.isClosed(), wait + ": onClose is still waiting");
+            mayFinish.countDown();
+            closer.join();
+            assertEquals(List.of(), closerFailures, wait.toString());
+            assertTrue(loop.isClosed(), wait + ": close returned only once onClose had returned");
+            assertFalse(interrupted.get(), wait + ": the caller's interrupt was not passed to the agent");
+        }
+    }
 }
