@@ -102,7 +102,7 @@ def main(path):
 
         chunks = sorted(summary.chunk_indexes, key=lambda c: c.chunk_start_offset)
         for a, b in zip(chunks, chunks[1:]):
-            check(a.message_end_time <= b.message_start_time, "chunks overlap: %d..%d then %d..%d"
+            check(a.message_end_time < b.message_start_time, "chunks overlap or share an instant: %d..%d then %d..%d"
                   % (a.message_start_time, a.message_end_time, b.message_start_time, b.message_end_time))
         print("ok: %d chunks, none overlapping" % len(chunks))
 

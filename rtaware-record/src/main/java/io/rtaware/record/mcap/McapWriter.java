@@ -26,8 +26,12 @@ import org.apache.commons.compress.compressors.lz4.FramedLZ4CompressorOutputStre
  * section (schemas, channels, chunk indexes, metadata indexes, statistics) with summary offset
  * records, the footer with the summary CRC32, and the closing magic.
  *
- * <p>Messages are appended to the open chunk in memory; a chunk is compressed and written when
- * it reaches the chunk size, and at {@link #close()}. Once the chunk buffers have grown to their
+ * <p>Messages are appended to the open chunk in memory; a chunk is compressed and written once
+ * it has reached the chunk size and a message with another log time comes, and at
+ * {@link #close()}: messages of one log time stay in one chunk, so that chunks written in log-time
+ * order do not share an instant (readers of a time range, and {@code mcap info}'s overlap count,
+ * see chunks that do not overlap). A chunk holding {@value #SHARED_TIME_CHUNK_FACTOR} times the
+ * chunk size of one log time is written all the same. Once the chunk buffers have grown to their
  * working size, {@link #writeMessage} allocates nothing; flushing a chunk allocates its index
  * entry (and, with lz4, its compressed frame). Not thread-safe: one writer thread.
  */
@@ -35,6 +39,9 @@ public final class McapWriter implements Closeable {
 
     /** Default uncompressed chunk size in bytes. */
     public static final int DEFAULT_CHUNK_BYTES = 1 << 20;
+
+    /** A full chunk grows past its size for messages of its last log time up to this many chunk sizes. */
+    public static final int SHARED_TIME_CHUNK_FACTOR = 4;
 
     private static final String LIBRARY = "rtaware";
 
@@ -221,7 +228,8 @@ public final class McapWriter implements Closeable {
     }
 
     /**
-     * Appends a message to the open chunk; writes the chunk when it is full.
+     * Appends a message to the open chunk, first writing the chunk if it is full and the message
+     * does not share its last log time (see the class comment).
      *
      * @param channelId a channel id from {@link #addChannel}
      * @param logTimeNs log time in ns
@@ -258,6 +266,10 @@ public final class McapWriter implements Closeable {
         if (channelId < 1 || channelId > channelCount) {
             throw new IllegalArgumentException("unknown MCAP channel id " + channelId);
         }
+        if (chunk.size() >= chunkBytes
+                && (logTimeNs != chunkEndNs || chunk.size() >= (long) SHARED_TIME_CHUNK_FACTOR * chunkBytes)) {
+            flushChunk();
+        }
         int recordOffset = chunk.size();
         chunk.u8(Opcode.MESSAGE);
         chunk.u64(2 + 4 + 8 + 8 + (long) length);
@@ -283,9 +295,6 @@ public final class McapWriter implements Closeable {
         chunkEndNs = Math.max(chunkEndNs, logTimeNs);
         messageStartNs = Math.min(messageStartNs, logTimeNs);
         messageEndNs = Math.max(messageEndNs, logTimeNs);
-        if (chunk.size() >= chunkBytes) {
-            flushChunk();
-        }
     }
 
     /** @return messages handed to the writer so far (some may still be in the open chunk) */

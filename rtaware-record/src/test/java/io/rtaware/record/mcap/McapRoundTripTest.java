@@ -112,4 +112,68 @@ class McapRoundTripTest {
         Files.write(file, Arrays.copyOf(bytes, bytes.length - 20));
         assertThrows(McapFormatException.class, () -> McapReader.open(file));
     }
+
+    /**
+     * A recording commits several messages at one log time (an odometry sample, its value and its
+     * transform): a chunk that fills up among them is written only after the last of them, so that
+     * no two chunks share an instant ({@code mcap info}: "overlaps: no").
+     */
+    @ParameterizedTest
+    @EnumSource(Compression.class)
+    void messagesOfOneLogTimeStayInOneChunkSoChunksDoNotShareAnInstant(Compression compression) throws IOException {
+        Path file = dir.resolve("same-time-" + compression + ".mcap");
+        int instants = 400;
+        int perInstant = 7;
+        try (McapWriter w = new McapWriter(file, compression, 2048, "")) {
+            int schema = w.addSchema("test/Thing", "jsonschema", "{\"type\":\"object\"}");
+            int a = w.addChannel(schema, "/a", "json", Map.of());
+            for (int t = 0; t < instants; t++) {
+                for (int k = 0; k < perInstant; k++) {
+                    byte[] p = payload(t + k);
+                    w.writeMessage(a, 1_000L * t, 1_000L * t, p, 0, p.length);
+                }
+            }
+        }
+        List<long[]> chunks = new ArrayList<>();
+        long[] messages = {0};
+        McapReader.open(file).read(new McapVisitor() {
+            @Override
+            public void chunk(long fileOffset, long startNs, long endNs) {
+                chunks.add(new long[] {startNs, endNs});
+            }
+
+            @Override
+            public void message(McapChannel channel, long sequence, long logTimeNs, long publishTimeNs,
+                                byte[] bytes, int offset, int length) {
+                messages[0]++;
+            }
+        });
+        assertEquals((long) instants * perInstant, messages[0]);
+        assertTrue(chunks.size() > 10, "small chunks: " + chunks.size());
+        for (int i = 1; i < chunks.size(); i++) {
+            assertTrue(chunks.get(i - 1)[1] < chunks.get(i)[0], "chunk " + (i - 1) + " ends at "
+                    + chunks.get(i - 1)[1] + " ns, chunk " + i + " starts at " + chunks.get(i)[0] + " ns");
+        }
+    }
+
+    /** One instant holding more than {@value McapWriter#SHARED_TIME_CHUNK_FACTOR} chunk sizes is split all the same. */
+    @ParameterizedTest
+    @EnumSource(Compression.class)
+    void anInstantOfManyChunkSizesIsSplitAllTheSame(Compression compression) throws IOException {
+        Path file = dir.resolve("one-instant-" + compression + ".mcap");
+        int messages = 2000;
+        try (McapWriter w = new McapWriter(file, compression, 2048, "")) {
+            int schema = w.addSchema("test/Thing", "jsonschema", "{\"type\":\"object\"}");
+            int a = w.addChannel(schema, "/a", "json", Map.of());
+            for (int i = 0; i < messages; i++) {
+                byte[] p = payload(i);
+                w.writeMessage(a, 5_000L, 5_000L, p, 0, p.length);
+            }
+        }
+        McapReader reader = McapReader.open(file);
+        reader.read((ch, s, l, p, d, o, n) -> { });
+        McapStatistics stats = reader.summary().statistics();
+        assertEquals(messages, stats.messageCount());
+        assertTrue(stats.chunkCount() > 1, "chunks: " + stats.chunkCount());
+    }
 }
