@@ -96,21 +96,11 @@ public final class SimCommand implements Callable<Integer> {
         }
         ServerConfig config = ServerConfig.defaults(port).withBindAddress(bind)
                 .withLimits(maxClients, maxRules, messageTimeoutNs);
-        if (foxglove.enabled() && ros2.requested()) {
-            throw new UserError("--foxglove and --ros2 are not served together yet: give one of them");
-        }
         try {
             Ros2Distro distro = rosDistro.distro(ros2.requested(), "--ros2");
             Optional<Ros2Options> ros2Options = ros2.options(distro,
                     dds.settings(ros2.requested(), "--ros2", ros2.domain(), distro));
-            if (foxglove.enabled()) {
-                serveWithFoxglove(config);
-            } else if (ros2Options.isPresent()) {
-                Ros2SimServe.serveUntilInterrupted(scenario, config, timeScale, seed, robotSeed, ros2Options.get(),
-                        System.out);
-            } else {
-                SimCommandSupport.serveUntilInterrupted(scenario, config, timeScale, seed, robotSeed, System.out);
-            }
+            serveUntilInterrupted(config, ros2Options);
         } catch (ScenarioException e) {
             throw new UserError(e.getMessage());
         } catch (IOException e) {
@@ -119,17 +109,33 @@ public final class SimCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** Serves the world over the Player protocol and to Foxglove until interrupted. */
-    private void serveWithFoxglove(ServerConfig config) throws IOException {
-        foxglove.address(); // a bad --foxglove ends the command before the simulator starts
+    /**
+     * Serves the world over the Player protocol and, as asked, as a ROS 2 robot and to Foxglove,
+     * until the thread is interrupted (Ctrl-C); then closes Foxglove, the ROS 2 robot and the
+     * simulator, in that order.
+     */
+    private void serveUntilInterrupted(ServerConfig config, Optional<Ros2Options> ros2Options) throws IOException {
+        if (foxglove.enabled()) {
+            foxglove.address(); // a bad --foxglove ends the command before the simulator starts
+        }
         Scenario s = ScenarioLoader.load(scenario);
         ScaledClock clock = new ScaledClock(timeScale);
         try (PlayerSimServer server = SimCommandSupport.start(s, clock, config, seed, robotSeed)) {
-            FoxgloveServer foxgloveServer = foxglove.start("sim", System.out);
+            Ros2SimServe robot = null;
+            FoxgloveServer foxgloveServer = null;
             SimFoxglove feed = null;
             try {
-                feed = SimFoxglove.start(s, server, clock, foxgloveServer);
+                if (ros2Options.isPresent()) {
+                    robot = Ros2SimServe.start(server, ros2Options.get(), System.out);
+                }
+                if (foxglove.enabled()) {
+                    foxgloveServer = foxglove.start("sim", System.out);
+                    feed = SimFoxglove.start(s, server, clock, foxgloveServer);
+                }
                 System.out.println(SimCommandSupport.startLine(s, config, server.port(), timeScale, seed));
+                if (robot != null) {
+                    System.out.println(robot.startLine());
+                }
                 System.out.flush();
                 SimCommandSupport.waitUntilInterrupted();
             } finally {
@@ -137,7 +143,12 @@ public final class SimCommand implements Callable<Integer> {
                 if (feed != null) {
                     feed.close();
                 }
-                foxgloveServer.close();
+                if (foxgloveServer != null) {
+                    foxgloveServer.close();
+                }
+                if (robot != null) {
+                    robot.close();
+                }
                 if (interrupted) {
                     Thread.currentThread().interrupt();
                 }

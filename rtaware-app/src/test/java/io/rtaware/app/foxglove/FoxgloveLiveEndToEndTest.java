@@ -7,10 +7,14 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.app.RtawareCli;
+import io.rtaware.app.ros2.Ros2RunEndToEndTest;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
+import java.io.InputStream;
 import java.io.PrintStream;
+import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -121,6 +125,53 @@ class FoxgloveLiveEndToEndTest {
         assertTrue(topics.path("/odom").asLong() > 0 && topics.path("/ground_truth").asLong() > 0
                 && topics.path("/tf").asLong() > 0, "odometry, ground truth, transforms: " + topics);
         assertEquals("rtaware sim", seen.path("server").asText(), seen.toString());
+    }
+
+    /**
+     * {@code sim --ros2 --foxglove}: while Foxglove's client watches the scans, an independent ROS 2
+     * node (ros2_peer.py: eclipse-zenoh and zenoh-ros2-sdk) connected to the simulator's Zenoh
+     * endpoint decodes /scan and /odom, checks the frames and drives the robot on /cmd_vel.
+     */
+    @Test
+    void simServesFoxgloveAndRos2AtOnce() throws Exception {
+        Ros2RunEndToEndTest.requireNativeZenoh();
+        String python = System.getenv("RTAWARE_PEER_PYTHON");
+        if (python == null || !Files.isExecutable(Path.of(python))) {
+            if ("true".equals(System.getenv("CI"))) {
+                throw new AssertionError("CI=true but RTAWARE_PEER_PYTHON does not name the peers' Python");
+            }
+            assumeTrue(false, "SKIPPED: RTAWARE_PEER_PYTHON unset: no ROS 2 peer to check the ROS 2 side with");
+        }
+        Path script = dir.resolve("ros2_peer.py");
+        try (InputStream in = Objects.requireNonNull(getClass().getResourceAsStream("/ros2/ros2_peer.py"))) {
+            Files.copy(in, script);
+        }
+        String endpoint;
+        try (ServerSocket s = new ServerSocket(0)) {
+            endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
+        }
+        Command sim = Command.start("rtaware-sim-under-test", "sim", "--port", "0", "--ros2", "--listen", endpoint,
+                "--foxglove", "0");
+        JsonNode seen;
+        JsonNode ros2Seen;
+        try {
+            String url = awaitUrl(sim);
+            Process peer = new ProcessBuilder(python, script.toString(), "check", "--router", endpoint,
+                    "--timeout", "60").redirectError(ProcessBuilder.Redirect.INHERIT).start();
+            seen = watch(url, "20");
+            String output = new String(peer.getInputStream().readAllBytes(), StandardCharsets.UTF_8).trim();
+            assertTrue(peer.waitFor(90, TimeUnit.SECONDS), "the ROS 2 peer finished");
+            ros2Seen = MAPPER.readTree(output.lines().reduce((a, b) -> b).orElse("{}"));
+            assertEquals(0, peer.exitValue(), "the ROS 2 peer's checks: " + ros2Seen.path("failures")
+                    + "\nsim's output:\n" + stdout);
+        } finally {
+            sim.thread.interrupt();
+        }
+        assertEquals(0, sim.result.get(60, TimeUnit.SECONDS), "sim's exit status; output:\n" + stdout);
+        assertTrue(seen.path("topics").path("/scan").asLong() >= 20, "Foxglove's scans: " + seen);
+        assertTrue(ros2Seen.path("first_scan").path("beams").asInt() > 100, "the ROS 2 peer's scan: " + ros2Seen);
+        assertEquals("rtaware_sim", ros2Seen.path("scan_publishers").path(0).path("node").asText(), ros2Seen.toString());
+        assertTrue(stdout.toString(StandardCharsets.UTF_8).contains("ROS 2 robot node"), "sim said so:\n" + stdout);
     }
 
     /** Asserts that the client saw exactly what the server counted as sent; returns the section. */

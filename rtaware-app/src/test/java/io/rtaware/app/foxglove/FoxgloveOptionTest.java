@@ -44,10 +44,4 @@ class FoxgloveOptionTest {
     void aComparisonHasNoSingleMonitorToServe() {
         CliRun.of("bench", "--compare", "--foxglove", "0").assertOneLineUserError("--foxglove");
     }
-
-    @Test
-    void simServesFoxgloveOrRos2NotBothYet() {
-        CliRun.of("sim", "--port", "0", "--foxglove", "0", "--ros2")
-                .assertOneLineUserError("--foxglove and --ros2 are not served together yet");
-    }
 }

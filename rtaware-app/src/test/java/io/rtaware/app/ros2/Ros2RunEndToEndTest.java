@@ -39,13 +39,13 @@ import org.junit.jupiter.api.io.TempDir;
  * drives the short course through the ROS 2 data task. Checks outcome and report, not timing.
  */
 @Timeout(180)
-class Ros2RunEndToEndTest {
+public class Ros2RunEndToEndTest {
 
     @TempDir
     Path dir;
 
     /** Skips without the native layer, saying why; under CI=true with Rust, its absence fails. */
-    static void requireNativeZenoh() {
+    public static void requireNativeZenoh() {
         String reason = ZenohLibrary.unavailableReason();
         if (reason != null && "true".equals(System.getenv("CI")) && !"1".equals(System.getenv("RTAWARE_NO_RUST"))) {
             fail("CI=true but " + reason + " (.ci/run sets RTAWARE_NO_RUST=1 when the machine has no Rust toolchain)");

@@ -1,20 +1,17 @@
 package io.rtaware.sim.server;
 
 import io.rtaware.core.time.Clock;
-import io.rtaware.core.time.ScaledClock;
 import io.rtaware.sim.map.OccupancyMap;
 import io.rtaware.sim.scenario.Scenario;
-import io.rtaware.sim.scenario.ScenarioLoader;
 import io.rtaware.sim.world.LaserConfig;
 import io.rtaware.sim.world.RobotModel;
 import io.rtaware.sim.world.World;
 import java.io.IOException;
-import java.io.PrintStream;
 
 /**
- * One-call wiring for the command line: {@code rtaware sim} ({@link #serveUntilInterrupted})
- * and an in-process robot for {@code rtaware run} ({@link #start(Scenario, Clock, ServerConfig,
- * long)}). Uses the Koala robot and the URG-04LX laser defaults. Stateless and thread-safe.
+ * One-call wiring for the command line: the simulator {@code rtaware sim} serves and the
+ * in-process robot of {@code rtaware run} ({@link #start(Scenario, Clock, ServerConfig, long, long)}), the
+ * line {@code sim} prints when it listens, and waiting until interrupted. Uses the Koala robot and the URG-04LX laser defaults. Stateless and thread-safe.
  */
 public final class SimCommandSupport {
 
@@ -89,32 +86,6 @@ public final class SimCommandSupport {
         OccupancyMap map = scenario.map().orElseThrow(() -> new IllegalArgumentException(
                 "scenario '" + scenario.name() + "' has no map: the simulator needs one"));
         return new World(map, scenario.start(), model, LaserConfig.URG_04LX, seed, robotSeed, scenario.actors());
-    }
-
-    /**
-     * {@code rtaware sim --scenario S --port P --time-scale K --seed N --bind ADDR --max-clients C
-     * --max-rules R --message-timeout T}: serves until the thread is interrupted (or the JVM
-     * exits), then closes the server.
-     *
-     * @param scenario {@code paper-room} or a scenario file
-     * @param config address (use {@link ServerConfig#LOOPBACK} unless told otherwise), port (0 =
-     *     any free port; the bound port is printed) and limits
-     * @param timeScale world seconds per wall second, positive
-     * @param seed seed of all sensor noise
-     * @param robotSeed seed of the robot's systematic odometry errors
-     * @param out where the one-line start message goes
-     * @throws IOException if the port cannot be bound
-     * @throws io.rtaware.sim.scenario.ScenarioException if the scenario cannot be loaded
-     */
-    public static void serveUntilInterrupted(String scenario, ServerConfig config, double timeScale, long seed,
-                                             long robotSeed, PrintStream out) throws IOException {
-        Scenario s = ScenarioLoader.load(scenario);
-        ScaledClock clock = new ScaledClock(timeScale);
-        try (PlayerSimServer server = start(s, clock, config, seed, robotSeed)) {
-            out.println(startLine(s, config, server.port(), timeScale, seed));
-            out.flush();
-            waitUntilInterrupted();
-        }
     }
 
     /**
