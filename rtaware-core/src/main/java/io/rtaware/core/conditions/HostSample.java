@@ -1,5 +1,7 @@
 package io.rtaware.core.conditions;
 
+import java.util.Map;
+
 /**
  * One reading of the machine's counters, taken at the start and at the end of a span; the
  * difference of two is what happened in between ({@link MeasuredConditions#between}). A
@@ -13,7 +15,16 @@ package io.rtaware.core.conditions;
  * @param stealTicks time the hypervisor gave this machine's CPUs to others, or -1
  * @param selfTicks CPU time of this process (user + system, all its threads), or -1
  * @param involuntarySwitches involuntary context switches of this process's live threads, or -1
+ * @param otherTicks per process id, every other process's and kernel thread's CPU time (user +
+ *     system, plus that of its children it has reaped) by its own counters, or null where the
+ *     process table cannot be read whole (no per-process files, or {@code /proc} mounted with
+ *     {@code hidepid})
  */
 public record HostSample(long nanoTime, double load1, int cpus, long totalTicks, long busyTicks, long stealTicks,
-                         long selfTicks, long involuntarySwitches) {
+                         long selfTicks, long involuntarySwitches, Map<Long, Long> otherTicks) {
+
+    /** Keeps an unmodifiable copy of the process table. */
+    public HostSample {
+        otherTicks = otherTicks == null ? null : Map.copyOf(otherTicks);
+    }
 }

@@ -1,5 +1,7 @@
 package io.rtaware.core.conditions;
 
+import java.util.Map;
+
 /**
  * What happened on the machine and in the JVM over a span (a run, or the check before one),
  * measured from the OS's counters and the JVM's notifications, not estimated. A figure that
@@ -9,8 +11,10 @@ package io.rtaware.core.conditions;
  * @param loadStart the one-minute load average at the start
  * @param loadEnd the one-minute load average at the end
  * @param machineCpus the CPUs the OS counts
- * @param otherCpus CPU used by other processes over the span, in CPUs (machine busy time from
- *     {@code /proc/stat} minus this process's from {@code /proc/self/stat}, over the span)
+ * @param otherCpus CPU used by other processes over the span, in CPUs: the growth of every other
+ *     process's and kernel thread's own CPU counters ({@code /proc/PID/stat}); where the process
+ *     table cannot be read whole, the machine's busy time ({@code /proc/stat}) minus this
+ *     process's ({@code /proc/self/stat})
  * @param stealPct CPU time the hypervisor gave to other guests, percent of the machine's
  * @param gcCount collections that paused the application threads
  * @param gcTotalMs their summed duration, ms
@@ -48,9 +52,13 @@ public record MeasuredConditions(double durationS, double loadStart, double load
         double other = Double.NaN;
         double stealPct = Double.NaN;
         if (total > 0 && cpus > 0) {
-            if (busy >= 0) {
-                // A process's ticks are counted apart from the machine's: at most one tick per
-                // CPU apart at each end, so a small negative difference is zero.
+            long others = othersTicks(start.otherTicks(), end.otherTicks());
+            if (others >= 0) {
+                other = others * (double) cpus / total;
+            } else if (busy >= 0) {
+                // Without the process table: the machine's tick-sampled busy time minus this
+                // process's own, which differ by up to about a tenth of this process's CPU (see
+                // HostReader), so a negative difference is zero.
                 other = Math.max(0, busy - Math.max(0, self)) * (double) cpus / total;
             }
             if (steal >= 0) {
@@ -64,6 +72,27 @@ public record MeasuredConditions(double durationS, double loadStart, double load
                 pauses == null ? null : pauses.maxTimeToSafepointMs(),
                 pauses == null ? "not part of this span" : pauses.safepointNote(), longStopLimitMs,
                 pauses == null || Double.isNaN(longStopLimitMs) ? -1 : pauses.stopsLongerThan(longStopLimitMs), switches);
+    }
+
+    /**
+     * CPU time of the other processes between two process tables: each process's growth, and all
+     * of a process that is new (or whose counters went down: its id was taken by a new one). A
+     * process that ended is counted where its parent reaped it (the parent's children's time); if
+     * it lived before the span, that part is counted too, which errs towards busy.
+     *
+     * @return ticks, or -1 when either table is missing
+     */
+    static long othersTicks(Map<Long, Long> start, Map<Long, Long> end) {
+        if (start == null || end == null) {
+            return -1;
+        }
+        long sum = 0;
+        for (Map.Entry<Long, Long> e : end.entrySet()) {
+            long before = start.getOrDefault(e.getKey(), 0L);
+            long grew = e.getValue() - before;
+            sum += grew >= 0 ? grew : e.getValue();
+        }
+        return sum;
     }
 
     private static long known(long a, long b) {

@@ -46,8 +46,10 @@ class ConditionsMeterTest {
 
         MeasuredConditions m = c.measured();
         assertEquals(10.0, m.durationS(), 1e-12);
-        // 2000 ticks over the span on 2 CPUs; 1800 busy, 200 of them this process's: 1600 * 2 / 2000
-        assertEquals(1.6, m.otherCpus(), 1e-12, "machine busy ticks minus this process's, in CPUs");
+        // 2000 ticks over the span on 2 CPUs. The other processes' own counters grew by 1600: stress-ng
+        // 1400, bash 100 for the cc1 it reaped, make (new) 100; 1600 * 2 / 2000. (The machine's busy
+        // ticks minus this process's happen to agree here: 1800 - 200.)
+        assertEquals(1.6, m.otherCpus(), 1e-12, "the other processes' CPU by their own counters, in CPUs");
         assertEquals(1.0, m.stealPct(), 1e-12, "20 of 2000 ticks stolen");
         assertEquals(14.2, m.loadStart(), 1e-12);
         assertEquals(15.0, m.loadEnd(), 1e-12);
@@ -126,5 +128,26 @@ class ConditionsMeterTest {
         assertTrue(md.get("measured").contains("\"other_cpus\":1.6"), md.get("measured"));
         assertTrue(md.get("setup").contains("\"cpu_model\":\"AMD EPYC 7B13\""), md.get("setup"));
         assertTrue(md.get("setup").contains("\"git_commit\":null"), md.get("setup"));
+    }
+
+    @Test
+    void otherProcessesAreCountedByTheirOwnCountersAndAReusedIdAsANewProcess() {
+        // 1 grew by 100; 2's counters went down, so a new process took its id: all 30 of it;
+        // 3 ended (its parent's reaped time would count it); 4 is new: 7
+        assertEquals(100 + 30 + 7, MeasuredConditions.othersTicks(Map.of(1L, 50L, 2L, 500L, 3L, 9L),
+                Map.of(1L, 150L, 2L, 30L, 4L, 7L)));
+        assertEquals(-1, MeasuredConditions.othersTicks(null, Map.of()), "no table at the start");
+        assertEquals(-1, MeasuredConditions.othersTicks(Map.of(), null), "no table at the end");
+    }
+
+    @Test
+    void withoutAProcessTableTheMachinesBusyTimeMinusThisProcessIsUsed() {
+        HostSample start = new HostSample(0, 1, 2, 1_000, 100, 0, 50, 0, null);
+        HostSample end = new HostSample(10_000_000_000L, 1, 2, 3_000, 700, 0, 250, 0, null);
+        // 600 busy ticks minus 200 of this process's, over 2000 ticks on 2 CPUs
+        assertEquals(0.4, MeasuredConditions.between(start, end, null, Double.NaN).otherCpus(), 1e-12);
+        HostSample withTable = new HostSample(10_000_000_000L, 1, 2, 3_000, 700, 0, 250, 0, Map.of(7L, 20L));
+        assertEquals(0.4, MeasuredConditions.between(start, withTable, null, Double.NaN).otherCpus(), 1e-12,
+                "a table at one end only is no table");
     }
 }

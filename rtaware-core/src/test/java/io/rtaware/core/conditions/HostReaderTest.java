@@ -2,12 +2,14 @@ package io.rtaware.core.conditions;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.net.URISyntaxException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Map;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -50,6 +52,41 @@ class HostReaderTest {
         assertEquals(100, s.stealTicks());
         assertEquals(400, s.selfTicks(), "utime 300 + stime 100, after a command name holding spaces and parentheses");
         assertEquals(10, s.involuntarySwitches(), "summed over the threads in /proc/self/task");
+        assertEquals(Map.of(1L, 110L, 2L, 3L, 100L, 1000L, 200L, 10L, 300L, 40L), s.otherTicks(),
+                "every process but this one (4242), utime + stime + cutime + cstime, kernel threads too");
+    }
+
+    @Test
+    void aProcMountThatHidesOtherUsersProcessesGivesNoProcessTable(@TempDir Path root) throws Exception {
+        copy(fixture("busy-start"), root);
+        Files.writeString(root.resolve("proc/mounts"), "proc /proc proc rw,nosuid,nodev,noexec,relatime,hidepid=invisible 0 0\n");
+        assertNull(new HostReader(new HostFiles(root), () -> 0).sample().otherTicks(),
+                "with hidepid only this user's processes are listed: the table would miss the others");
+        Files.writeString(root.resolve("proc/mounts"), "proc /proc proc rw,relatime,hidepid=0 0 0\n");
+        assertEquals(5, new HostReader(new HostFiles(root), () -> 0).sample().otherTicks().size(), "hidepid=0 hides nothing");
+    }
+
+    @Test
+    void aProcessTableWithoutThisProcessIsNotTrusted(@TempDir Path root) throws Exception {
+        copy(fixture("busy-start"), root);
+        try (var files = Files.walk(root.resolve("proc/4242"))) {
+            files.sorted(java.util.Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
+        }
+        assertNull(new HostReader(new HostFiles(root), () -> 0).sample().otherTicks(),
+                "a /proc that does not list this process is not this machine's process table");
+    }
+
+    private static void copy(Path from, Path to) throws java.io.IOException {
+        try (var files = Files.walk(from)) {
+            for (Path p : files.toList()) {
+                Path target = to.resolve(from.relativize(p).toString());
+                if (Files.isDirectory(p)) {
+                    Files.createDirectories(target);
+                } else {
+                    Files.copy(p, target);
+                }
+            }
+        }
     }
 
     @Test
@@ -84,6 +121,15 @@ class HostReaderTest {
         assertNull(HostReader.countCpuList("0-x"));
         assertArrayEquals(new long[] {-1, -1, -1, -1}, HostReader.cpuTicks("intr 1 2\n"), "no cpu line");
         assertEquals(-1, HostReader.selfTicks("garbage"));
+        assertEquals(4 + 5 + 6 + 7, HostReader.processTicks("9 (a) b) c) S 1 9 9 0 -1 0 0 0 0 0 4 5 6 7 20 0 1 0"),
+                "utime stime cutime cstime after a name with spaces and parentheses");
+        assertEquals(-1, HostReader.processTicks("9 (a) S 1 9"), "too short");
+        assertEquals(-1, HostReader.processTicks("9 (a) S 1 9 9 0 -1 0 0 0 0 0 4 -5 6 7"), "negative");
+        assertEquals(4242, HostReader.pid("4242 (java) S 1"));
+        assertEquals(-1, HostReader.pid("x (java) S 1"));
+        assertTrue(HostReader.procHidesPids("sysfs /sys sysfs rw 0 0\nproc /proc proc rw,hidepid=2 0 0\n"));
+        assertFalse(HostReader.procHidesPids("proc /proc proc rw,relatime 0 0\nproc /mnt proc rw,hidepid=2 0 0\n"),
+                "only the proc at /proc counts");
         assertEquals("/a/b", HostReader.cgroupV2Path("1:cpu:/x\n0::/a/b\n"));
     }
 }
