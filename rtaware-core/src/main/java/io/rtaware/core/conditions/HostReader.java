@@ -50,7 +50,7 @@ public final class HostReader {
      *
      * @param selfPid this process's id, left out
      * @return ticks per process id, or null when {@code /proc} hides other users' processes
-     *     ({@code hidepid}) or lists no process
+     *     ({@code hidepid}) or does not list this process
      */
     private Map<Long, Long> otherTicks(long selfPid) {
         boolean hidden = files.read("/proc/mounts").map(HostReader::procHidesPids).orElse(false);
