@@ -431,6 +431,7 @@ public final class BenchCommand implements Callable<Integer> {
         long releasesBefore = monitor.totalReleases();
         endedEarly |= monitor.awaitTermination(java.time.Duration.ofNanos(wallNs - untilSteadyNs));
         long allocatedBytes = endedEarly ? -1 : allocation.allocatedSince();
+        String allocatingThreads = allocatedBytes > 0 ? allocation.allocatingThreads() : ""; // while they live
         long releases = monitor.totalReleases() - releasesBefore;
         CommandMonitor.stop(monitor, hook);
         liveView.close();
@@ -448,7 +449,7 @@ public final class BenchCommand implements Callable<Integer> {
                 allocation.threads(), releases, releases == 0 ? 0.0 : (double) allocatedBytes / releases);
         if (failOnAlloc && allocatedBytes != 0) {
             System.err.println("rtaware: --fail-on-alloc: the framework allocated " + allocatedBytes
-                    + " bytes in steady state");
+                    + " bytes in steady state (" + allocatingThreads + ")");
             return EXIT_ALLOCATED;
         }
         return writes.exitStatus(0);

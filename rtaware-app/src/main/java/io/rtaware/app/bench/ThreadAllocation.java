@@ -2,6 +2,7 @@ package io.rtaware.app.bench;
 
 import java.lang.management.ManagementFactory;
 import java.util.Arrays;
+import java.util.Comparator;
 import java.util.Set;
 
 /**
@@ -20,11 +21,13 @@ public final class ThreadAllocation {
 
     private final com.sun.management.ThreadMXBean bean;
     private final long[] ids;
+    private final String[] names;
     private final long[] bytes;
 
-    private ThreadAllocation(com.sun.management.ThreadMXBean bean, long[] ids) {
+    private ThreadAllocation(com.sun.management.ThreadMXBean bean, long[] ids, String[] names) {
         this.bean = bean;
         this.ids = ids;
+        this.names = names;
         this.bytes = bean.getThreadAllocatedBytes(ids);
     }
 
@@ -55,10 +58,11 @@ public final class ThreadAllocation {
      */
     public static ThreadAllocation ofFrameworkThreads() {
         com.sun.management.ThreadMXBean bean = bean();
-        long[] ids = Arrays.stream(LiveThreads.all())
+        Thread[] watched = Arrays.stream(LiveThreads.all())
                 .filter(t -> t.getName().startsWith("rtaware-") && !OFF_PATH.contains(t.getName()))
-                .mapToLong(Thread::getId).sorted().toArray();
-        return new ThreadAllocation(bean, ids);
+                .sorted(Comparator.comparingLong(Thread::getId)).toArray(Thread[]::new);
+        return new ThreadAllocation(bean, Arrays.stream(watched).mapToLong(Thread::getId).toArray(),
+                Arrays.stream(watched).map(Thread::getName).toArray(String[]::new));
     }
 
     /** @return how many threads are watched */
@@ -76,6 +80,24 @@ public final class ThreadAllocation {
             }
         }
         return sum;
+    }
+
+    /**
+     * Which watched threads allocated since the snapshot, for the line that reports an
+     * allocation: a task thread points at the task's cycle, the watchdog at the monitor's scan.
+     *
+     * @return e.g. {@code rtaware-t3 80 B, rtaware-monitor 16 B}, or an empty string when none did
+     */
+    public String allocatingThreads() {
+        long[] now = bean.getThreadAllocatedBytes(ids);
+        StringBuilder out = new StringBuilder();
+        for (int i = 0; i < ids.length; i++) {
+            if (bytes[i] >= 0 && now[i] > bytes[i]) {
+                out.append(out.length() == 0 ? "" : ", ").append(names[i]).append(' ').append(now[i] - bytes[i])
+                        .append(" B");
+            }
+        }
+        return out.toString();
     }
 
     @Override
