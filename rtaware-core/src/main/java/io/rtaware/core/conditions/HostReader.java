@@ -254,24 +254,10 @@ public final class HostReader {
 
     /**
      * @param stat the line of {@code /proc/self/stat}
-     * @return utime + stime in clock ticks (fields 14 and 15, counted after the command name in
-     *     parentheses, which may hold spaces), or -1
+     * @return utime + stime in clock ticks (fields 14 and 15), or -1
      */
     static long selfTicks(String stat) {
-        int close = stat.lastIndexOf(')');
-        if (close < 0) {
-            return -1;
-        }
-        String[] f = stat.substring(close + 1).strip().split("\\s+");
-        // f[0] is field 3 (state): utime is field 14 -> f[11], stime field 15 -> f[12]
-        if (f.length < 13) {
-            return -1;
-        }
-        try {
-            return Long.parseLong(f[11]) + Long.parseLong(f[12]);
-        } catch (NumberFormatException e) {
-            return -1;
-        }
+        return statTicks(stat, 14, 15);
     }
 
     /**
@@ -289,18 +275,29 @@ public final class HostReader {
      *     CPU time and that of the children it has reaped), or -1
      */
     static long processTicks(String stat) {
+        return statTicks(stat, 14, 17);
+    }
+
+    /**
+     * @param stat a line of {@code /proc/PID/stat}
+     * @param first the first field summed, numbered as in proc(5) (1 is the process id)
+     * @param last the last field summed
+     * @return the sum of those fields, counted after the command name in parentheses (which may
+     *     hold spaces and parentheses), or -1 if one is missing, not a number or negative
+     */
+    private static long statTicks(String stat, int first, int last) {
         int close = stat.lastIndexOf(')');
         if (close < 0) {
             return -1;
         }
-        String[] f = stat.substring(close + 1).strip().split("\\s+");
-        if (f.length < 15) {
+        String[] f = stat.substring(close + 1).strip().split("\\s+"); // f[0] is field 3 (state)
+        if (f.length < last - 2) {
             return -1;
         }
         try {
             long sum = 0;
-            for (int i = 11; i <= 14; i++) {
-                long v = Long.parseLong(f[i]);
+            for (int field = first; field <= last; field++) {
+                long v = Long.parseLong(f[field - 3]);
                 if (v < 0) {
                     return -1;
                 }

@@ -5,38 +5,24 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.atomic.AtomicLong;
-import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 class ConditionsMeterTest {
 
-    /** Copies a fixture machine over the folder (the state of /proc at that moment). */
-    private static void lay(String fixture, Path root) throws IOException {
-        Path from = HostReaderTest.fixture(fixture);
-        try (Stream<Path> files = Files.walk(from)) {
-            for (Path f : files.filter(Files::isRegularFile).toList()) {
-                Path to = root.resolve(from.relativize(f).toString());
-                Files.createDirectories(to.getParent());
-                Files.copy(f, to, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
-            }
-        }
-    }
-
     @Test
     void aRunBesideOtherProcessesIsBusyWithTheirShareNamed(@TempDir Path root) throws IOException {
-        lay("busy-start", root);
+        HostReaderTest.lay("busy-start", root);
         AtomicLong now = new AtomicLong();
         FakeJvm jvm = new FakeJvm();
         ConditionsMeter meter = new ConditionsMeter(new HostReader(new HostFiles(root), now::get), jvm,
                 new BuildInfo("0.1.0", "abc123"));
         ConditionsMeter.Span span = meter.start(10, "none");
-        lay("busy-end", root);
+        HostReaderTest.lay("busy-end", root);
         now.set(10_000_000_000L);
         jvm.gcCount = 3;
         jvm.gcTotalMs = 0.6;
@@ -80,13 +66,13 @@ class ConditionsMeterTest {
     @Test
     void stopsAreJudgedAgainstThePeriodInWallTime(@TempDir Path root) throws IOException {
         for (double scale : new double[] {1, 10}) {
-            lay("busy-start", root);
+            HostReaderTest.lay("busy-start", root);
             AtomicLong now = new AtomicLong();
             FakeJvm jvm = new FakeJvm();
             ConditionsMeter meter = new ConditionsMeter(new HostReader(new HostFiles(root), now::get), jvm,
                     new BuildInfo("0.1.0", null));
             ConditionsMeter.Span span = meter.start(scale, "none");
-            lay("busy-end", root);
+            HostReaderTest.lay("busy-end", root);
             now.set(10_000_000_000L);
             jvm.gcCount = 20;
             jvm.gcMaxPauseMs = 0.5;
@@ -99,12 +85,12 @@ class ConditionsMeterTest {
             assertEquals(0, slow.longStops());
             assertEquals(10.0 / scale, slow.longStopLimitMs(), 1e-12);
         }
-        lay("busy-start", root);
+        HostReaderTest.lay("busy-start", root);
         FakeJvm jvm = new FakeJvm();
         AtomicLong now = new AtomicLong();
         ConditionsMeter.Span span = new ConditionsMeter(new HostReader(new HostFiles(root), now::get), jvm,
                 new BuildInfo("0.1.0", null)).start(10, "none");
-        lay("busy-end", root);
+        HostReaderTest.lay("busy-end", root);
         now.set(10_000_000_000L);
         jvm.stopsMs = new double[20];
         java.util.Arrays.fill(jvm.stopsMs, 0.5);
@@ -116,12 +102,12 @@ class ConditionsMeterTest {
 
     @Test
     void theMcapMetadataCarriesVerdictSetupAndMeasuredFigures(@TempDir Path root) throws IOException {
-        lay("busy-start", root);
+        HostReaderTest.lay("busy-start", root);
         AtomicLong now = new AtomicLong();
         ConditionsMeter meter = new ConditionsMeter(new HostReader(new HostFiles(root), now::get), new FakeJvm(),
                 new BuildInfo("0.1.0", null));
         ConditionsMeter.Span span = meter.start(1, "none");
-        lay("busy-end", root);
+        HostReaderTest.lay("busy-end", root);
         now.set(10_000_000_000L);
         Map<String, String> md = ConditionsMeter.metadata(span.finish(Double.NaN));
         assertEquals("busy", md.get("machine"));

@@ -6,11 +6,14 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
 import java.net.URISyntaxException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.util.Map;
 import java.util.Optional;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -21,6 +24,18 @@ class HostReaderTest {
             return Path.of(HostReaderTest.class.getResource("/conditions/" + name).toURI());
         } catch (URISyntaxException e) {
             throw new IllegalStateException(e);
+        }
+    }
+
+    /** Copies a fixture machine over the folder (the state of /proc at that moment). */
+    static void lay(String fixture, Path root) throws IOException {
+        Path from = fixture(fixture);
+        try (Stream<Path> files = Files.walk(from)) {
+            for (Path f : files.filter(Files::isRegularFile).toList()) {
+                Path to = root.resolve(from.relativize(f).toString());
+                Files.createDirectories(to.getParent());
+                Files.copy(f, to, StandardCopyOption.REPLACE_EXISTING);
+            }
         }
     }
 
@@ -58,7 +73,7 @@ class HostReaderTest {
 
     @Test
     void aProcMountThatHidesOtherUsersProcessesGivesNoProcessTable(@TempDir Path root) throws Exception {
-        copy(fixture("busy-start"), root);
+        lay("busy-start", root);
         Files.writeString(root.resolve("proc/mounts"), "proc /proc proc rw,nosuid,nodev,noexec,relatime,hidepid=invisible 0 0\n");
         assertNull(new HostReader(new HostFiles(root), () -> 0).sample().otherTicks(),
                 "with hidepid only this user's processes are listed: the table would miss the others");
@@ -68,7 +83,7 @@ class HostReaderTest {
 
     @Test
     void aProcessTableWithoutThisProcessIsNotTrusted(@TempDir Path root) throws Exception {
-        copy(fixture("busy-start"), root);
+        lay("busy-start", root);
         try (var files = Files.walk(root.resolve("proc/4242"))) {
             files.sorted(java.util.Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
         }
@@ -76,18 +91,6 @@ class HostReaderTest {
                 "a /proc that does not list this process is not this machine's process table");
     }
 
-    private static void copy(Path from, Path to) throws java.io.IOException {
-        try (var files = Files.walk(from)) {
-            for (Path p : files.toList()) {
-                Path target = to.resolve(from.relativize(p).toString());
-                if (Files.isDirectory(p)) {
-                    Files.createDirectories(target);
-                } else {
-                    Files.copy(p, target);
-                }
-            }
-        }
-    }
 
     @Test
     void aMachineWithoutTheFilesIsUnknownNotAnError(@TempDir Path empty) {
