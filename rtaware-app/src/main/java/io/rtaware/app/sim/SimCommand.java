@@ -120,39 +120,19 @@ public final class SimCommand implements Callable<Integer> {
         }
         Scenario s = ScenarioLoader.load(scenario);
         ScaledClock clock = new ScaledClock(timeScale);
-        try (PlayerSimServer server = SimCommandSupport.start(s, clock, config, seed, robotSeed)) {
-            Ros2SimServe robot = null;
-            FoxgloveServer foxgloveServer = null;
-            SimFoxglove feed = null;
-            try {
-                if (ros2Options.isPresent()) {
-                    robot = Ros2SimServe.start(server, ros2Options.get(), System.out);
-                }
-                if (foxglove.enabled()) {
-                    foxgloveServer = foxglove.start("sim", System.out);
-                    feed = SimFoxglove.start(s, server, clock, foxgloveServer);
-                }
-                System.out.println(SimCommandSupport.startLine(s, config, server.port(), timeScale, seed));
-                if (robot != null) {
-                    System.out.println(robot.startLine());
-                }
-                System.out.flush();
-                SimCommandSupport.waitUntilInterrupted();
-            } finally {
-                boolean interrupted = Thread.interrupted(); // how sim is stopped; the closes below wait
-                if (feed != null) {
-                    feed.close();
-                }
-                if (foxgloveServer != null) {
-                    foxgloveServer.close();
-                }
-                if (robot != null) {
-                    robot.close();
-                }
-                if (interrupted) {
-                    Thread.currentThread().interrupt();
-                }
+        // Closed in reverse order (the Foxglove feed, its server, the ROS 2 robot, the simulator), each
+        // waiting for its threads even though Ctrl-C has interrupted this one (AgentThread.close).
+        try (PlayerSimServer server = SimCommandSupport.start(s, clock, config, seed, robotSeed);
+             Ros2SimServe robot = ros2Options.isPresent() ? Ros2SimServe.start(server, ros2Options.get(), System.out)
+                     : null;
+             FoxgloveServer foxgloveServer = foxglove.enabled() ? foxglove.start("sim", System.out) : null;
+             SimFoxglove feed = foxgloveServer != null ? SimFoxglove.start(s, server, clock, foxgloveServer) : null) {
+            System.out.println(SimCommandSupport.startLine(s, config, server.port(), timeScale, seed));
+            if (robot != null) {
+                System.out.println(robot.startLine());
             }
+            System.out.flush();
+            SimCommandSupport.waitUntilInterrupted();
         }
     }
 }
