@@ -72,14 +72,21 @@ public final class ThreadAllocation {
 
     /** @return bytes the watched threads allocated since the snapshot (threads gone meanwhile are left out) */
     public long allocatedSince() {
-        long[] now = bean.getThreadAllocatedBytes(ids);
         long sum = 0;
-        for (int i = 0; i < ids.length; i++) {
-            if (bytes[i] >= 0 && now[i] >= 0) {
-                sum += now[i] - bytes[i];
-            }
+        for (long b : perThreadSince()) {
+            sum += b;
         }
         return sum;
+    }
+
+    /** @return per watched thread, bytes allocated since the snapshot (0 for a thread gone meanwhile) */
+    private long[] perThreadSince() {
+        long[] now = bean.getThreadAllocatedBytes(ids);
+        long[] since = new long[ids.length];
+        for (int i = 0; i < ids.length; i++) {
+            since[i] = bytes[i] >= 0 && now[i] >= 0 ? now[i] - bytes[i] : 0;
+        }
+        return since;
     }
 
     /**
@@ -89,12 +96,11 @@ public final class ThreadAllocation {
      * @return e.g. {@code rtaware-t3 80 B, rtaware-monitor 16 B}, or an empty string when none did
      */
     public String allocatingThreads() {
-        long[] now = bean.getThreadAllocatedBytes(ids);
+        long[] since = perThreadSince();
         StringBuilder out = new StringBuilder();
         for (int i = 0; i < ids.length; i++) {
-            if (bytes[i] >= 0 && now[i] > bytes[i]) {
-                out.append(out.length() == 0 ? "" : ", ").append(names[i]).append(' ').append(now[i] - bytes[i])
-                        .append(" B");
+            if (since[i] > 0) {
+                out.append(out.length() == 0 ? "" : ", ").append(names[i]).append(' ').append(since[i]).append(" B");
             }
         }
         return out.toString();

@@ -7,14 +7,13 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.app.RtawareCli;
+import io.rtaware.app.ros2.Ros2PythonPeer;
 import io.rtaware.app.ros2.Ros2RunEndToEndTest;
+import io.rtaware.app.ros2.Ros2Wiring;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.InputStream;
 import java.io.PrintStream;
-import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -135,21 +134,9 @@ class FoxgloveLiveEndToEndTest {
     @Test
     void simServesFoxgloveAndRos2AtOnce() throws Exception {
         Ros2RunEndToEndTest.requireNativeZenoh();
-        String python = System.getenv("RTAWARE_PEER_PYTHON");
-        if (python == null || !Files.isExecutable(Path.of(python))) {
-            if ("true".equals(System.getenv("CI"))) {
-                throw new AssertionError("CI=true but RTAWARE_PEER_PYTHON does not name the peers' Python");
-            }
-            assumeTrue(false, "SKIPPED: RTAWARE_PEER_PYTHON unset: no ROS 2 peer to check the ROS 2 side with");
-        }
-        Path script = dir.resolve("ros2_peer.py");
-        try (InputStream in = Objects.requireNonNull(getClass().getResourceAsStream("/ros2/ros2_peer.py"))) {
-            Files.copy(in, script);
-        }
-        String endpoint;
-        try (ServerSocket s = new ServerSocket(0)) {
-            endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
-        }
+        String python = Ros2PythonPeer.python();
+        Path script = Ros2PythonPeer.script(dir);
+        String endpoint = Ros2Wiring.freeLoopbackEndpoint();
         Command sim = Command.start("rtaware-sim-under-test", "sim", "--port", "0", "--ros2", "--listen", endpoint,
                 "--foxglove", "0");
         JsonNode seen;

@@ -19,14 +19,10 @@ import io.rtaware.zenoh.ZenohConfig;
 import io.rtaware.zenoh.ZenohException;
 import io.rtaware.zenoh.ZenohLibrary;
 import java.io.BufferedReader;
-import java.io.InputStream;
 import java.io.InputStreamReader;
-import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Objects;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -66,18 +62,9 @@ class Ros2PythonPeerTest {
             assumeTrue(false, () -> "skipped: " + reason + " (no Rust toolchain on this machine)");
         }
         require(reason == null, String.valueOf(reason));
-        String python = System.getenv("RTAWARE_PEER_PYTHON");
-        require(python != null && Files.isExecutable(Path.of(python)),
-                "RTAWARE_PEER_PYTHON does not name a Python with eclipse-zenoh, zenoh-ros2-sdk and rosbags "
-                        + "(.ci/run creates one)");
-        Path script = dir.resolve("ros2_peer.py");
-        try (InputStream in = Objects.requireNonNull(getClass().getResourceAsStream("/ros2/ros2_peer.py"))) {
-            Files.copy(in, script);
-        }
-        String endpoint;
-        try (ServerSocket s = new ServerSocket(0)) {
-            endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
-        }
+        String python = Ros2PythonPeer.python();
+        Path script = Ros2PythonPeer.script(dir);
+        String endpoint = Ros2Wiring.freeLoopbackEndpoint();
         Process router = new ProcessBuilder(python, script.toString(), "router", "--listen", endpoint)
                 .redirectError(ProcessBuilder.Redirect.INHERIT).start();
         try (BufferedReader routerOut = new BufferedReader(

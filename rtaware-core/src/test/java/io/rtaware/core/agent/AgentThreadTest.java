@@ -50,6 +50,44 @@ class AgentThreadTest {
         }
     }
 
+    /** An agent whose onClose does work that an interrupt would cut short; says whether one did. */
+    private static final class SlowClosingAgent implements Agent {
+        /** What onClose does. */
+        interface Closing {
+            void run() throws InterruptedException;
+        }
+
+        final CountDownLatch started = new CountDownLatch(1);
+        final AtomicBoolean interrupted = new AtomicBoolean();
+        private final String role;
+        private final Closing closing;
+
+        SlowClosingAgent(String role, Closing closing) {
+            this.role = role;
+            this.closing = closing;
+        }
+
+        @Override
+        public int doWork() {
+            started.countDown();
+            return 0;
+        }
+
+        @Override
+        public void onClose() {
+            try {
+                closing.run();
+            } catch (InterruptedException e) {
+                interrupted.set(true);
+            }
+        }
+
+        @Override
+        public String roleName() {
+            return role;
+        }
+    }
+
     @Test
     void errorsGoToOneHandlerAndACounterAndTheLoopGoesOnUntilClosedOnItsOwnThread() throws Exception {
         Recorder agent = new Recorder();
@@ -153,39 +191,19 @@ class AgentThreadTest {
 
     @Test
     void closeUntilClosedWaitsForALongOnCloseAndNeverInterruptsIt() throws Exception {
-        CountDownLatch started = new CountDownLatch(1);
-        AtomicBoolean interrupted = new AtomicBoolean();
         List<String> steps = new CopyOnWriteArrayList<>();
-        Agent agent = new Agent() {
-            @Override
-            public int doWork() {
-                started.countDown();
-                return 0;
-            }
-
-            @Override
-            public void onClose() {
-                try {
-                    // longer than the timeout after which the default close interrupts
-                    Thread.sleep(AgentThread.CLOSE_TIMEOUT_MS + 1_000);
-                    steps.add("finished its work");
-                } catch (InterruptedException e) {
-                    interrupted.set(true);
-                }
-            }
-
-            @Override
-            public String roleName() {
-                return "finishing";
-            }
-        };
+        SlowClosingAgent agent = new SlowClosingAgent("finishing", () -> {
+            // longer than the timeout after which the default close interrupts
+            Thread.sleep(AgentThread.CLOSE_TIMEOUT_MS + 1_000);
+            steps.add("finished its work");
+        });
         AgentThread loop = AgentThread.start(agent, new SleepingIdleStrategy(TimeUnit.MILLISECONDS.toNanos(1)),
                 e -> { }, AgentThread.CloseWait.UNTIL_CLOSED);
-        assertTrue(started.await(10, TimeUnit.SECONDS));
+        assertTrue(agent.started.await(10, TimeUnit.SECONDS));
         loop.close();
         assertTrue(loop.isClosed(), "close returned only once onClose had returned");
         assertEquals(List.of("finished its work"), steps, "onClose ran to its end");
-        assertFalse(interrupted.get(), "never interrupted");
+        assertFalse(agent.interrupted.get(), "never interrupted");
     }
 
     /**
@@ -196,33 +214,11 @@ class AgentThreadTest {
     @Test
     void closeFromAnInterruptedThreadStillWaitsForOnCloseAndKeepsTheInterrupt() throws Exception {
         for (AgentThread.CloseWait wait : AgentThread.CloseWait.values()) {
-            CountDownLatch started = new CountDownLatch(1);
             CountDownLatch mayFinish = new CountDownLatch(1);
-            AtomicBoolean interrupted = new AtomicBoolean();
-            Agent agent = new Agent() {
-                @Override
-                public int doWork() {
-                    started.countDown();
-                    return 0;
-                }
-
-                @Override
-                public void onClose() {
-                    try {
-                        mayFinish.await();
-                    } catch (InterruptedException e) {
-                        interrupted.set(true);
-                    }
-                }
-
-                @Override
-                public String roleName() {
-                    return "closing-" + wait;
-                }
-            };
+            SlowClosingAgent agent = new SlowClosingAgent("closing-" + wait, mayFinish::await);
             AgentThread loop = AgentThread.start(agent, new SleepingIdleStrategy(TimeUnit.MILLISECONDS.toNanos(1)),
                     e -> { }, wait);
-            assertTrue(started.await(10, TimeUnit.SECONDS));
+            assertTrue(agent.started.await(10, TimeUnit.SECONDS));
             Thread closer = new Thread(() -> {
                 Thread.currentThread().interrupt();
                 loop.close();
@@ -243,7 +239,7 @@ class AgentThreadTest {
             closer.join();
             assertEquals(List.of(), closerFailures, wait.toString());
             assertTrue(loop.isClosed(), wait + ": close returned only once onClose had returned");
-            assertFalse(interrupted.get(), wait + ": the caller's interrupt was not passed to the agent");
+            assertFalse(agent.interrupted.get(), wait + ": the caller's interrupt was not passed to the agent");
         }
     }
 }

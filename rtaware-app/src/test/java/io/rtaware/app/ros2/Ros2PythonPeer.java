@@ -1,0 +1,50 @@
+package io.rtaware.app.ros2;
+
+import static org.junit.jupiter.api.Assertions.fail;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Objects;
+
+/**
+ * The tests' independent ROS 2 node: {@code src/test/resources/ros2/ros2_peer.py} (eclipse-zenoh,
+ * zenoh-ros2-sdk and rosbags) and the Python that runs it, named by {@code RTAWARE_PEER_PYTHON}
+ * (.ci/run makes one).
+ */
+public final class Ros2PythonPeer {
+
+    private Ros2PythonPeer() {
+    }
+
+    /**
+     * @return the peers' Python; skips the test without it, except under {@code CI=true}, where
+     *     its absence fails
+     */
+    public static String python() {
+        String python = System.getenv("RTAWARE_PEER_PYTHON");
+        boolean present = python != null && Files.isExecutable(Path.of(python));
+        String why = "RTAWARE_PEER_PYTHON does not name a Python with eclipse-zenoh, zenoh-ros2-sdk and rosbags "
+                + "(.ci/run creates one)";
+        if (!present && "true".equals(System.getenv("CI"))) {
+            fail("CI=true but " + why);
+        }
+        assumeTrue(present, () -> "skipped: " + why);
+        return python;
+    }
+
+    /**
+     * @param dir a folder of the test's
+     * @return ros2_peer.py, copied into it
+     * @throws IOException if it cannot be copied
+     */
+    public static Path script(Path dir) throws IOException {
+        Path script = dir.resolve("ros2_peer.py");
+        try (InputStream in = Objects.requireNonNull(Ros2PythonPeer.class.getResourceAsStream("/ros2/ros2_peer.py"))) {
+            Files.copy(in, script);
+        }
+        return script;
+    }
+}
