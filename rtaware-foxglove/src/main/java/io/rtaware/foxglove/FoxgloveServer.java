@@ -2,6 +2,7 @@ package io.rtaware.foxglove;
 
 import io.netty.bootstrap.ServerBootstrap;
 import io.netty.buffer.ByteBuf;
+import io.netty.buffer.ByteBufUtil;
 import io.netty.channel.Channel;
 import io.netty.channel.ChannelFuture;
 import io.netty.channel.ChannelFutureListener;
@@ -29,9 +30,11 @@ import io.netty.handler.codec.http.websocketx.WebSocketServerProtocolHandler;
 import io.netty.util.concurrent.DefaultThreadFactory;
 import io.rtaware.record.RecordingTap;
 import io.rtaware.record.TapChannel;
+import java.net.Inet6Address;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.UnknownHostException;
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
@@ -39,8 +42,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
-import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.Semaphore;
+import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
@@ -53,14 +56,32 @@ import java.util.concurrent.atomic.AtomicLong;
  * to each client subscribed to its channel. Latched channels ({@code /map}, {@code /tf_static})
  * give a new subscriber their last message, as a transient-local ROS 2 topic does.
  *
- * <p>Bounded: at most {@code maxClients} clients at once (more are refused when they connect,
- * and counted), client messages of at most {@value #MAX_CLIENT_MESSAGE_BYTES} bytes (fragments
- * included; a larger one closes that connection), and per
- * client at most {@code sendBufferBytes} waiting to be sent (Netty's write-buffer high-water
- * mark): a message that does not fit is not sent to that client and is counted
- * ({@link FoxgloveStats#messagesDropped()}), so a slow client loses messages and never slows the
- * writer thread, let alone a task (the task threads never reach this class: the recorder's rings
- * stand between). One event-loop thread (Netty, daemon, {@code foxglove-server-*}) serves every connection.
+ * <p>Bounded, so that no client can make the server hold more than it was told to:
+ * <ul>
+ *   <li>at most {@code maxClients} clients at once; a slot is taken when a client completes its
+ *       WebSocket handshake, not when it connects, so idle connections cannot lock clients out.
+ *       A client beyond the limit is closed after its handshake (close 1013, try again later) and
+ *       counted ({@link FoxgloveStats#clientsRefused()});</li>
+ *   <li>at most {@value #MAX_PENDING_HANDSHAKES} connections still in their handshake, each of
+ *       which must finish it within {@value #HANDSHAKE_TIMEOUT_MS} ms of connecting (a trickle of
+ *       bytes does not extend it); a new connection beyond that many closes the oldest pending
+ *       one, so a flood of idle or slow connections delays a real client by at most one
+ *       handshake;</li>
+ *   <li>client messages of at most {@value #MAX_CLIENT_MESSAGE_BYTES} bytes (fragments
+ *       included; a larger one closes that connection);</li>
+ *   <li>per client at most {@code sendBufferBytes} waiting to be sent (Netty's write-buffer
+ *       high-water mark), for every frame the server writes, data and control alike. A message
+ *       that does not fit is not sent to that client and counted
+ *       ({@link FoxgloveStats#messagesDropped()}); a status that does not fit likewise
+ *       ({@link FoxgloveStats#statusesDropped()}); a client that cannot take its Server Info or an
+ *       advertisement (it would miss channels for good) is closed and counted
+ *       ({@link FoxgloveStats#clientsClosedSlow()}). While a client's buffer is full the server
+ *       stops reading its requests, so a client that never reads cannot make it write more. A
+ *       request's warnings of the same kind are one status ({@code no channel 5, 6, ...}).</li>
+ * </ul>
+ * So a slow client loses messages and never slows the writer thread, let alone a task (the task
+ * threads never reach this class: the recorder's rings stand between). One event-loop thread
+ * (Netty, daemon, {@code foxglove-server-*}) serves every connection.
  *
  * <p>Thread-safe: {@link #channel} from any thread, {@link #message} from one thread at a time
  * (the recorder's writer thread), {@link #stats} and {@link #close} from any thread.
@@ -73,10 +94,16 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
     public static final int DEFAULT_SEND_BUFFER_BYTES = 8 << 20;
     /** Largest message a client may send (a subscribe of every channel is far smaller). */
     public static final int MAX_CLIENT_MESSAGE_BYTES = 64 << 10;
+    /** Connections that may be in their handshake at once; a new one beyond closes the oldest. */
+    public static final int MAX_PENDING_HANDSHAKES = 32;
+    /** Wall time a connection has, from when it is accepted, to finish the WebSocket handshake. */
+    public static final long HANDSHAKE_TIMEOUT_MS = 10_000;
     /** Largest HTTP upgrade request read. */
     private static final int MAX_HANDSHAKE_BYTES = 16 << 10;
-    /** Wall time a connection has to finish the WebSocket handshake. */
-    private static final long HANDSHAKE_TIMEOUT_MS = 10_000;
+    /** Characters of a status message, at most (a longer one echoes a client's request and is cut). */
+    private static final int MAX_STATUS_CHARS = 256;
+    /** Ids a status names before it says how many more there are. */
+    private static final int IDS_NAMED = 10;
 
     private final FoxgloveProtocol protocol = new FoxgloveProtocol();
     private final int maxClients;
@@ -93,18 +120,28 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
     /** Topics by channel id; replaced (never changed in place) under {@link #advertising}. */
     private volatile Topic[] topics = new Topic[1];
     private final Set<Client> clients = ConcurrentHashMap.newKeySet();
+    /** Connections accepted and still in their handshake, oldest first; the event-loop thread only. */
+    private final ArrayDeque<Channel> pending = new ArrayDeque<>();
 
     private final AtomicLong accepted = new AtomicLong();
     private final AtomicLong refused = new AtomicLong();
     private final AtomicLong sent = new AtomicLong();
     private final AtomicLong sentBytes = new AtomicLong();
     private final AtomicLong dropped = new AtomicLong();
+    private final AtomicLong statusesDropped = new AtomicLong();
+    private final AtomicLong closedSlow = new AtomicLong();
+    private final AtomicLong closedInHandshake = new AtomicLong();
+    private final AtomicLong requests = new AtomicLong();
     private final AtomicBoolean closed = new AtomicBoolean();
 
     /** One advertised channel: its subscribers and, if latched, its last message. */
     private static final class Topic {
         final TapChannel channel;
-        final CopyOnWriteArrayList<Subscriber> subscribers = new CopyOnWriteArrayList<>();
+        /**
+         * Its subscribers, replaced (never changed in place) under this topic's lock, so that the
+         * writer thread walks them by index with no iterator to allocate.
+         */
+        volatile Subscriber[] subscribers = NO_SUBSCRIBERS;
         /** The last message of a latched channel; guarded by this topic. */
         byte[] last = new byte[0];
         int lastLength = -1;
@@ -112,6 +149,24 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
 
         Topic(TapChannel channel) {
             this.channel = channel;
+        }
+
+        synchronized void add(Subscriber subscriber) {
+            Subscriber[] more = Arrays.copyOf(subscribers, subscribers.length + 1);
+            more[subscribers.length] = subscriber;
+            subscribers = more;
+        }
+
+        synchronized void remove(Subscriber subscriber) {
+            Subscriber[] now = subscribers;
+            for (int i = 0; i < now.length; i++) {
+                if (now[i] == subscriber) {
+                    Subscriber[] fewer = Arrays.copyOf(now, now.length - 1);
+                    System.arraycopy(now, i + 1, fewer, i, now.length - i - 1);
+                    subscribers = fewer;
+                    return;
+                }
+            }
         }
 
         /** Keeps a latched channel's message for later subscribers (grows its buffer when needed). */
@@ -124,6 +179,8 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
             lastTimeNs = timeNs;
         }
     }
+
+    private static final Subscriber[] NO_SUBSCRIBERS = new Subscriber[0];
 
     /** One subscription of one client. */
     private record Subscriber(Client client, int id, Topic topic) {
@@ -166,12 +223,12 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
                 .childHandler(new ChannelInitializer<SocketChannel>() {
                     @Override
                     protected void initChannel(SocketChannel ch) {
-                        if (closed.get() || !slots.tryAcquire()) {
+                        if (closed.get()) {
                             refused.incrementAndGet();
                             ch.close();
                             return;
                         }
-                        ch.closeFuture().addListener(f -> slots.release());
+                        admitPending(ch);
                         ch.pipeline().addLast(new HttpServerCodec(), new HttpObjectAggregator(MAX_HANDSHAKE_BYTES),
                                 new WebSocketServerProtocolHandler(websocket),
                                 new WebSocketFrameAggregator(MAX_CLIENT_MESSAGE_BYTES), new ClientHandler());
@@ -219,7 +276,9 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
     }
 
     private static String describe(InetSocketAddress address) {
-        return new FoxgloveAddress(address.getAddress().getHostAddress(), address.getPort()).toString();
+        InetAddress host = address.getAddress();
+        String name = host.isAnyLocalAddress() && host instanceof Inet6Address ? "::" : host.getHostAddress();
+        return new FoxgloveAddress(name, address.getPort()).toString();
     }
 
     /** @return the address listened on (the real port when 0 was asked for) */
@@ -228,8 +287,26 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
     }
 
     /**
-     * @return the URL to open in Foxglove ("Open connection", "Foxglove WebSocket"): the
-     *     loopback address when listening on every address
+     * @return true if the server listens on more than this machine's loopback interface (every
+     *     address, or an address other machines can reach): anyone who reaches it sees the run,
+     *     since the protocol has no authentication
+     */
+    public boolean exposed() {
+        return !bound.getAddress().isLoopbackAddress();
+    }
+
+    /**
+     * @return where it listens, {@code HOST:PORT}, as bound: {@code 0.0.0.0:8765} or
+     *     {@code [::]:8765} when it listens on every address
+     */
+    public String listening() {
+        return describe(bound);
+    }
+
+    /**
+     * @return the URL to open in Foxglove on this machine ("Open connection", "Foxglove
+     *     WebSocket"): the loopback address when listening on every address (which
+     *     {@link #listening} and {@link #exposed} say)
      */
     public String url() {
         InetAddress host = bound.getAddress();
@@ -242,10 +319,31 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
         return clients.size();
     }
 
+    /** @return client requests (text messages after the handshake) handled so far, by all clients */
+    long requestsHandled() {
+        return requests.get();
+    }
+
+    /**
+     * @return the most bytes waiting to be sent to any one client now (Netty's outbound buffer,
+     *     not the kernel's socket buffer)
+     */
+    long mostBytesWaiting() {
+        long most = 0;
+        for (Client c : clients) {
+            Channel ch = c.channel;
+            long waiting = ch.isWritable() ? sendBufferBytes - ch.bytesBeforeUnwritable()
+                    : sendBufferBytes / 2 + ch.bytesBeforeWritable();
+            most = Math.max(most, waiting);
+        }
+        return most;
+    }
+
     /** @return what the server has done so far */
     public FoxgloveStats stats() {
         return new FoxgloveStats(describe(bound), maxClients, sendBufferBytes, accepted.get(), refused.get(),
-                sent.get(), sentBytes.get(), dropped.get());
+                sent.get(), sentBytes.get(), dropped.get(), statusesDropped.get(), closedSlow.get(),
+                closedInHandshake.get());
     }
 
     // ---------------------------------------------------------------- the recorder's side
@@ -262,7 +360,7 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
             channels.add(channel);
             String text = protocol.advertise(List.of(channel));
             for (Client c : clients) {
-                c.channel.writeAndFlush(new TextWebSocketFrame(text));
+                sendRequired(c.channel, text);
             }
         }
     }
@@ -279,14 +377,15 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
                 topic.keep(logTimeNs, data, offset, length);
                 sendToSubscribers(topic, logTimeNs, data, offset, length);
             }
-        } else if (!topic.subscribers.isEmpty()) {
+        } else if (topic.subscribers.length > 0) {
             sendToSubscribers(topic, logTimeNs, data, offset, length);
         }
     }
 
     private void sendToSubscribers(Topic topic, long logTimeNs, byte[] data, int offset, int length) {
-        for (Subscriber s : topic.subscribers) {
-            send(s, logTimeNs, data, offset, length);
+        Subscriber[] subscribers = topic.subscribers;
+        for (int i = 0; i < subscribers.length; i++) {
+            send(subscribers[i], logTimeNs, data, offset, length);
         }
     }
 
@@ -316,12 +415,23 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
         @Override
         public void userEventTriggered(ChannelHandlerContext ctx, Object event) throws Exception {
             if (event instanceof WebSocketServerProtocolHandler.HandshakeComplete) {
-                client = new Client(ctx.channel());
+                Channel ch = ctx.channel();
+                pending.remove(ch);
+                if (closed.get() || !slots.tryAcquire()) {
+                    refused.incrementAndGet();
+                    ch.writeAndFlush(new CloseWebSocketFrame(WebSocketCloseStatus.TRY_AGAIN_LATER,
+                            "rtaware: " + maxClients + " clients are connected, the most it serves"))
+                            .addListener(ChannelFutureListener.CLOSE);
+                    return;
+                }
+                ch.closeFuture().addListener(f -> slots.release());
+                client = new Client(ch);
                 accepted.incrementAndGet();
                 synchronized (advertising) {
                     clients.add(client);
-                    ctx.write(new TextWebSocketFrame(serverInfo));
-                    ctx.writeAndFlush(new TextWebSocketFrame(protocol.advertise(channels)));
+                    if (sendRequired(ch, serverInfo)) {
+                        sendRequired(ch, protocol.advertise(channels));
+                    }
                 }
                 return;
             }
@@ -342,11 +452,19 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
         }
 
         @Override
+        public void channelWritabilityChanged(ChannelHandlerContext ctx) throws Exception {
+            // A client whose buffer is full gets its requests read no further until it drains it:
+            // what a request makes the server write stays within the bound.
+            ctx.channel().config().setAutoRead(ctx.channel().isWritable());
+            super.channelWritabilityChanged(ctx);
+        }
+
+        @Override
         public void channelInactive(ChannelHandlerContext ctx) throws Exception {
             if (client != null) {
                 clients.remove(client);
                 for (Subscriber s : client.subscriptions.values()) {
-                    s.topic().subscribers.remove(s);
+                    s.topic().remove(s);
                 }
                 client.subscriptions.clear();
             }
@@ -360,6 +478,7 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
     }
 
     private void handle(Client client, String text) {
+        requests.incrementAndGet();
         FoxgloveProtocol.Request request;
         try {
             request = protocol.read(text);
@@ -368,29 +487,54 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
             return;
         }
         if (request instanceof FoxgloveProtocol.Subscribe subscribe) {
+            IdList unknown = new IdList();
             for (FoxgloveProtocol.Subscription s : subscribe.subscriptions()) {
-                subscribe(client, s);
+                subscribe(client, s, unknown);
             }
+            unknown.report(client, "no channel");
         } else if (request instanceof FoxgloveProtocol.Unsubscribe unsubscribe) {
+            IdList unknown = new IdList();
             for (Long id : unsubscribe.subscriptionIds()) {
                 Subscriber s = client.subscriptions.remove(id);
                 if (s == null) {
-                    status(client, FoxgloveProtocol.STATUS_WARNING, "rtaware: no subscription " + id);
+                    unknown.add(id);
                 } else {
-                    s.topic().subscribers.remove(s);
+                    s.topic().remove(s);
                 }
             }
+            unknown.report(client, "no subscription");
         } else if (request instanceof FoxgloveProtocol.Unsupported unsupported) {
             status(client, FoxgloveProtocol.STATUS_ERROR, "rtaware: '" + unsupported.op() + "' is not supported: this "
                     + "server only streams (no clientPublish, parameters, services or assets)");
         }
     }
 
-    private void subscribe(Client client, FoxgloveProtocol.Subscription request) {
+    /** The ids one request named that the server does not know, told in one status. */
+    private final class IdList {
+        private final StringBuilder named = new StringBuilder();
+        private int count;
+
+        void add(long id) {
+            if (count < IDS_NAMED) {
+                named.append(count == 0 ? " " : ", ").append(id);
+            }
+            count++;
+        }
+
+        /** Sends one warning naming the first ids and how many there were; nothing if none. */
+        void report(Client client, String what) {
+            if (count > 0) {
+                status(client, FoxgloveProtocol.STATUS_WARNING, "rtaware: " + what + named
+                        + (count > IDS_NAMED ? " and " + (count - IDS_NAMED) + " more (" + count + " ids)" : ""));
+            }
+        }
+    }
+
+    private void subscribe(Client client, FoxgloveProtocol.Subscription request, IdList unknown) {
         Topic[] table = topics;
         Topic topic = request.channelId() < table.length ? table[(int) request.channelId()] : null;
         if (topic == null) {
-            status(client, FoxgloveProtocol.STATUS_WARNING, "rtaware: no channel " + request.channelId());
+            unknown.add(request.channelId());
             return;
         }
         if (client.subscriptions.containsKey(request.id())) {
@@ -411,15 +555,86 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
                 if (topic.lastLength >= 0) {
                     send(subscriber, topic.lastTimeNs, topic.last, 0, topic.lastLength);
                 }
-                topic.subscribers.add(subscriber);
+                topic.add(subscriber);
             }
         } else {
-            topic.subscribers.add(subscriber);
+            topic.add(subscriber);
         }
     }
 
+    /**
+     * Sends a status if the client's buffer has room for it; counts it as dropped if not. A
+     * message echoing more than {@value #MAX_STATUS_CHARS} characters of a client's request is
+     * cut there, so a status is never larger than the request's own words.
+     */
     private void status(Client client, int level, String message) {
-        client.channel.writeAndFlush(new TextWebSocketFrame(protocol.status(level, message)));
+        String text = message.length() <= MAX_STATUS_CHARS ? message : message.substring(0, MAX_STATUS_CHARS) + "...";
+        if (!offerText(client.channel, protocol.status(level, text))) {
+            statusesDropped.incrementAndGet();
+        }
+    }
+
+    /**
+     * Sends what a client must get to follow the protocol (Server Info, an advertisement); a
+     * client whose buffer has no room for it is closed and counted, since it would miss channels
+     * for good.
+     *
+     * @return true if sent
+     */
+    private boolean sendRequired(Channel ch, String json) {
+        if (offerText(ch, json)) {
+            return true;
+        }
+        if (ch.isActive()) {
+            closedSlow.incrementAndGet();
+            ch.close();
+        }
+        return false;
+    }
+
+    /**
+     * Writes a text frame if it fits in the client's send buffer: what waits to be sent to a
+     * client stays under {@code sendBufferBytes}, except that a frame larger than the whole buffer
+     * goes when nothing else waits (an advertisement of many channels to a small buffer).
+     *
+     * @return true if written
+     */
+    private boolean offerText(Channel ch, String json) {
+        if (!ch.isActive()) {
+            return false;
+        }
+        ByteBuf text = ByteBufUtil.writeUtf8(ch.alloc(), json);
+        long room = ch.bytesBeforeUnwritable();
+        if (text.readableBytes() > room && room < sendBufferBytes) {
+            text.release();
+            return false;
+        }
+        ch.writeAndFlush(new TextWebSocketFrame(text), ch.voidPromise());
+        return true;
+    }
+
+    /**
+     * Admits a new connection to its handshake: closes the oldest pending one if
+     * {@value #MAX_PENDING_HANDSHAKES} are pending, and closes this one if its handshake is not
+     * done {@value #HANDSHAKE_TIMEOUT_MS} ms after now. The event-loop thread only.
+     */
+    private void admitPending(Channel ch) {
+        if (pending.size() >= MAX_PENDING_HANDSHAKES) {
+            Channel oldest = pending.poll();
+            closedInHandshake.incrementAndGet();
+            oldest.close();
+        }
+        pending.add(ch);
+        ScheduledFuture<?> deadline = ch.eventLoop().schedule(() -> {
+            if (pending.remove(ch)) {
+                closedInHandshake.incrementAndGet();
+                ch.close();
+            }
+        }, HANDSHAKE_TIMEOUT_MS, TimeUnit.MILLISECONDS);
+        ch.closeFuture().addListener(f -> {
+            deadline.cancel(false);
+            pending.remove(ch);
+        });
     }
 
     /**

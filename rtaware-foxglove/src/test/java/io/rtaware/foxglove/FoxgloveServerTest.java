@@ -11,15 +11,13 @@ import io.rtaware.record.TapChannel;
 import java.io.IOException;
 import java.lang.management.ManagementFactory;
 import java.net.Socket;
-import java.net.URI;
-import java.net.http.HttpClient;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
+import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -203,22 +201,127 @@ class FoxgloveServerTest {
     }
 
     @Test
-    void clientsBeyondTheLimitAreRefusedAndCounted() throws Exception {
+    void clientsBeyondTheLimitAreRefusedAfterTheirHandshakeAndCounted() throws Exception {
         FoxgloveServer server = server(1, 1 << 20);
         connected(server);
-        ExecutionException refused = assertThrows(ExecutionException.class, () -> HttpClient.newHttpClient()
-                .newWebSocketBuilder().subprotocols(FoxgloveProtocol.SUBPROTOCOL)
-                .buildAsync(URI.create(server.url()), new WsClient()).get(20, TimeUnit.SECONDS));
-        assertTrue(refused.getCause() instanceof IOException, "the connection is closed: " + refused.getCause());
-        long before = server.stats().clientsRefused(); // the JDK's client tries its handshake twice
-        assertTrue(before >= 1, "refused and counted: " + server.stats());
-        try (Socket socket = new Socket(server.address().getAddress(), server.address().getPort())) {
-            socket.setSoTimeout(20_000);
-            assertEquals(-1, socket.getInputStream().read(), "closed before a byte is read");
-        }
-        assertEquals(before + 1, server.stats().clientsRefused(), "each refused connection counted once");
+        WsClient second = client(server);
+        assertEquals(1013, second.awaitCloseCode(), "WebSocket close 1013, try again later");
+        assertEquals(1, server.stats().clientsRefused(), server.stats().toString());
         assertEquals(1, server.stats().clientsAccepted());
         assertEquals(1, server.clients());
+    }
+
+    /**
+     * The third red team's lock-out: idle TCP connections (no byte sent, or a trickle) used to
+     * take the client slots when they connected. Now a slot is taken by a finished handshake, and
+     * more idle connections than may wait close the oldest of them.
+     */
+    @Test
+    void idleConnectionsCannotLockClientsOut() throws Exception {
+        FoxgloveServer server = server(2, 1 << 20);
+        int idle = FoxgloveServer.MAX_PENDING_HANDSHAKES + 8;
+        List<Socket> sockets = new ArrayList<>();
+        try {
+            for (int i = 0; i < idle; i++) {
+                Socket s = new Socket(server.address().getAddress(), server.address().getPort());
+                if (i % 2 == 1) {
+                    s.getOutputStream().write("GET / HTTP/1.1\r\n".getBytes(StandardCharsets.US_ASCII)); // a trickle
+                }
+                sockets.add(s);
+            }
+            connected(server);
+            connected(server);
+            FoxgloveStats stats = server.stats();
+            assertEquals(2, stats.clientsAccepted(), stats.toString());
+            assertEquals(0, stats.clientsRefused(), stats.toString());
+            assertTrue(stats.connectionsClosedInHandshake() >= idle - FoxgloveServer.MAX_PENDING_HANDSHAKES,
+                    "the oldest idle connections were closed to make room: " + stats);
+            sockets.get(0).setSoTimeout(20_000);
+            assertEquals(-1, sockets.get(0).getInputStream().read(), "the oldest idle connection was closed");
+        } finally {
+            for (Socket s : sockets) {
+                s.close();
+            }
+        }
+    }
+
+    /**
+     * The third red team's crash: a client that never reads, sending subscribe requests that
+     * name 1 600 unknown channels each, got a status per unknown channel written without a
+     * bound until the heap was full. Now each request gets one status naming the first ids, and
+     * what waits for that client stays under its send buffer.
+     */
+    @Test
+    void aClientThatNeverReadsCannotMakeTheServerHoldMoreThanItsSendBuffer() throws Exception {
+        int bufferBytes = 64 << 10;
+        FoxgloveServer server = server(2, bufferBytes);
+        StringBuilder request = new StringBuilder("{\"op\":\"subscribe\",\"subscriptions\":[");
+        for (int i = 0; i < 1600; i++) {
+            request.append(i == 0 ? "" : ",").append("{\"id\":").append(i).append(",\"channelId\":").append(100_000 + i)
+                    .append('}');
+        }
+        byte[] frame = RawWebSocket.textFrame(request.append("]}").toString());
+        int frames = 300; // 17 MB of requests; 480 000 statuses (about 36 MB) before the fix
+        try (RawWebSocket hostile = RawWebSocket.connect(server.address(), 4096)) {
+            for (int i = 0; i < frames; i++) {
+                hostile.write(frame);
+            }
+            TestWaits.until(() -> server.requestsHandled() == frames || server.stats().statusesDropped() > 0,
+                    "the server read the requests");
+            assertTrue(server.mostBytesWaiting() <= bufferBytes,
+                    server.mostBytesWaiting() + " bytes wait for one client, more than its " + bufferBytes);
+            WsClient other = connected(server);
+            barrier(other);
+        }
+    }
+
+    @Test
+    void aRequestNamingManyUnknownChannelsGetsOneStatus() throws Exception {
+        FoxgloveServer server = server(2, 1 << 20);
+        WsClient c = connected(server);
+        c.send("{\"op\":\"subscribe\",\"subscriptions\":[{\"id\":1,\"channelId\":90},{\"id\":2,\"channelId\":1},"
+                + "{\"id\":3,\"channelId\":91}]}");
+        JsonNode status = c.nextJson();
+        assertEquals("rtaware: no channel 90, 91", status.path("message").asText(), status.toString());
+        StringBuilder many = new StringBuilder("{\"op\":\"unsubscribe\",\"subscriptionIds\":[");
+        for (int i = 0; i < 25; i++) {
+            many.append(i == 0 ? "" : ",").append(100 + i);
+        }
+        c.send(many.append("]}").toString());
+        assertEquals("rtaware: no subscription 100, 101, 102, 103, 104, 105, 106, 107, 108, 109 and 15 more (25 ids)",
+                c.nextJson().path("message").asText());
+        barrier(c);
+        assertEquals(0, c.queued(), "one status a request");
+    }
+
+    /** An advertisement a client cannot take (it does not read) closes that client, counted. */
+    @Test
+    void aClientWithNoRoomForAnAdvertisementIsClosed() throws Exception {
+        int bufferBytes = 64 << 10;
+        FoxgloveServer server = server(2, bufferBytes);
+        WsClient slow = connected(server);
+        slow.pause();
+        String schema = "float32 x\n".repeat(4096); // 40 KB a channel
+        int id = 10;
+        while (server.stats().clientsClosedSlow() == 0 && id < 2_000) { // at most 80 MB
+            server.channel(new TapChannel(id++, "/t" + id, "std_msgs/msg/Float32", schema, false));
+            assertTrue(server.mostBytesWaiting() <= bufferBytes + schema.length() + 1024,
+                    server.mostBytesWaiting() + " bytes wait for the slow client");
+        }
+        assertEquals(1, server.stats().clientsClosedSlow(), server.stats().toString());
+        TestWaits.until(() -> server.clients() == 0, "the slow client is gone");
+    }
+
+    @Test
+    void everyAddressIsSaidToBeExposed() {
+        FoxgloveServer every = FoxgloveServer.start(FoxgloveAddress.parse("0.0.0.0:0"), "t", Map.of(), 1, 1 << 20);
+        servers.add(every);
+        assertTrue(every.exposed());
+        assertTrue(every.listening().equals("0.0.0.0:" + every.address().getPort())
+                || every.listening().equals("[::]:" + every.address().getPort()), every.listening());
+        FoxgloveServer loopback = server(1, 1 << 20);
+        assertTrue(!loopback.exposed());
+        assertEquals("127.0.0.1:" + loopback.address().getPort(), loopback.listening());
     }
 
     @Test

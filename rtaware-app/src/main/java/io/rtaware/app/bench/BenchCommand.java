@@ -394,7 +394,7 @@ public final class BenchCommand implements Callable<Integer> {
         if (timeScale != 1.0) {
             recordingPlan.clock(RecordingPlan.CLOCK_PERIOD_NS); // simulated time: /clock, for consumers that follow it
         }
-        FoxgloveServer foxgloveServer = foxglove.start("bench", out);
+        FoxgloveServer foxgloveServer = foxglove.start("bench", out, System.err);
         RunRecorder recording;
         try {
             recording = record.attach(monitor, recordingPlan.tap(foxgloveServer));

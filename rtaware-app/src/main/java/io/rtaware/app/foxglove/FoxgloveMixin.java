@@ -50,14 +50,16 @@ public final class FoxgloveMixin {
     }
 
     /**
-     * Starts the server, if {@code --foxglove} was given, and prints its URL.
+     * Starts the server, if {@code --foxglove} was given, and prints its URL; where it listens on
+     * more than loopback, says so on that line and warns on {@code err}.
      *
      * @param command the command's name, in the server's name ({@code rtaware run})
      * @param out where the {@code foxglove: URL} line goes
+     * @param err where the warning of an exposed server goes
      * @return the server (close it when the command ends), or null without the flag
      * @throws UserError if the value is bad, the host does not resolve or the port is taken
      */
-    public FoxgloveServer start(String command, PrintStream out) {
+    public FoxgloveServer start(String command, PrintStream out, PrintStream err) {
         FoxgloveAddress where = address();
         if (where == null) {
             return null;
@@ -69,7 +71,15 @@ public final class FoxgloveMixin {
         } catch (FoxgloveAddressException e) {
             throw new UserError("--foxglove: " + e.getMessage());
         }
-        out.println("foxglove: " + server.url() + " (in Foxglove: Open connection, Foxglove WebSocket)");
+        if (server.exposed()) {
+            out.println("foxglove: " + server.url() + " on this machine; listening on " + server.listening()
+                    + ", reachable from other machines (in Foxglove: Open connection, Foxglove WebSocket)");
+            err.println("warning: --foxglove listens on " + server.listening() + ": anyone who can reach this machine "
+                    + "sees the run (the protocol has no authentication); a bare PORT keeps it on this machine");
+            err.flush();
+        } else {
+            out.println("foxglove: " + server.url() + " (in Foxglove: Open connection, Foxglove WebSocket)");
+        }
         out.flush();
         return server;
     }

@@ -247,7 +247,7 @@ public final class RobotRun {
         MonitorExporter exporter = export.map(e -> e.start(monitor, RunExports.keys(nav), RunExports.STATIC_TRANSFORMS, err)).orElse(null);
         ConsoleReporter console = CommandMonitor.console(monitor, options.quiet(), err);
         TraceRecorder trace = options.trace().attach(monitor);
-        FoxgloveServer foxgloveServer = foxglove.start("run", out);
+        FoxgloveServer foxgloveServer = foxglove.start("run", out, err);
         RunRecorder recorder;
         try {
             recorder = record.attach(monitor, RunRecording.plan(scenario, options, navConfig, model.name(), server)

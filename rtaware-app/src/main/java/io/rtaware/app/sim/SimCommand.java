@@ -125,7 +125,7 @@ public final class SimCommand implements Callable<Integer> {
         try (PlayerSimServer server = SimCommandSupport.start(s, clock, config, seed, robotSeed);
              Ros2SimServe robot = ros2Options.isPresent() ? Ros2SimServe.start(server, ros2Options.get(), System.out)
                      : null;
-             FoxgloveServer foxgloveServer = foxglove.enabled() ? foxglove.start("sim", System.out) : null;
+             FoxgloveServer foxgloveServer = foxglove.enabled() ? foxglove.start("sim", System.out, System.err) : null;
              SimFoxglove feed = foxgloveServer != null ? SimFoxglove.start(s, server, clock, foxgloveServer) : null) {
             System.out.println(SimCommandSupport.startLine(s, config, server.port(), timeScale, seed));
             if (robot != null) {
