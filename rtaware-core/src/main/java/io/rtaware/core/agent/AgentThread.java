@@ -13,9 +13,12 @@ import org.agrona.concurrent.IdleStrategy;
  * A background loop on a daemon thread of its own, named for the agent's
  * {@link Agent#roleName() role}, run by Agrona's {@link AgentRunner}: {@link Agent#onStart()},
  * then {@link Agent#doWork()} and {@link IdleStrategy#idle(int)} in turn until closed, then
- * {@link Agent#onClose()}, all on that thread. Every throwable of the agent goes to one
- * {@link ErrorHandler} and is counted ({@link #errors()}); the loop goes on (an
- * {@link org.agrona.concurrent.AgentTerminationException} ends it).
+ * {@link Agent#onClose()}, all on that thread. Every throwable of the agent, {@link Error}s
+ * included, goes to one {@link ErrorHandler} and is counted ({@link #errors()}); the loop goes on
+ * (an {@link org.agrona.concurrent.AgentTerminationException} ends it), and {@link Agent#onClose()}
+ * runs when it ends, whatever was thrown before. (Agrona's runner rethrows an {@code Error} and
+ * skips {@code onClose}; this class hands it to the handler itself, so that, for instance, a
+ * recorder's writer still drains and finishes its file after an {@code OutOfMemoryError}.)
  *
  * <p>{@link #close()} may be called from any thread, more than once: it stops the loop, wakes the
  * thread if it is parked (an agent that waits with {@link LockSupport#parkNanos(long)}, in its work
@@ -68,7 +71,11 @@ public final class AgentThread implements AutoCloseable {
         this.runner = new AgentRunner(idle, counting, null, new Agent() {
             @Override
             public void onStart() {
-                agent.onStart();
+                try {
+                    agent.onStart();
+                } catch (Error e) {
+                    counting.onError(e);
+                }
             }
 
             @Override
@@ -76,7 +83,12 @@ public final class AgentThread implements AutoCloseable {
                 if (stopRequested) {
                     throw STOP;
                 }
-                return agent.doWork();
+                try {
+                    return agent.doWork();
+                } catch (Error e) {
+                    counting.onError(e); // not rethrown: the runner would end the thread without onClose
+                    return 0;
+                }
             }
 
             @Override

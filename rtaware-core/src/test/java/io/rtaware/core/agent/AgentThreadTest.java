@@ -18,7 +18,10 @@ import org.junit.jupiter.api.Test;
 /** The contract of a background loop, on real threads, ordered by latches (no timing). */
 class AgentThreadTest {
 
-    /** Records on which thread each step ran; throws in its second and third duty cycles. */
+    /**
+     * Records on which thread each step ran; throws an {@link Error} in its second duty cycle (as
+     * an {@link OutOfMemoryError} would be) and an exception in its third.
+     */
     private static final class Recorder implements Agent {
         final List<String> steps = new CopyOnWriteArrayList<>();
         final CountDownLatch fiveCycles = new CountDownLatch(5);
@@ -33,8 +36,11 @@ class AgentThreadTest {
         public int doWork() {
             cycles++;
             fiveCycles.countDown();
-            if (cycles == 2 || cycles == 3) {
-                throw new IllegalStateException("cycle " + cycles);
+            if (cycles == 2) {
+                throw new OutOfMemoryError("cycle 2");
+            }
+            if (cycles == 3) {
+                throw new IllegalStateException("cycle 3");
             }
             return 0;
         }
@@ -89,18 +95,18 @@ class AgentThreadTest {
     }
 
     @Test
-    void errorsGoToOneHandlerAndACounterAndTheLoopGoesOnUntilClosedOnItsOwnThread() throws Exception {
+    void errorsAndExceptionsGoToOneHandlerAndACounterAndTheLoopGoesOnUntilClosedOnItsOwnThread() throws Exception {
         Recorder agent = new Recorder();
         List<String> handled = new CopyOnWriteArrayList<>();
         AgentThread loop = AgentThread.start(agent, NoOpIdleStrategy.INSTANCE, e -> handled.add(e.getMessage()));
-        assertTrue(agent.fiveCycles.await(10, TimeUnit.SECONDS), "the loop went on after the errors");
+        assertTrue(agent.fiveCycles.await(10, TimeUnit.SECONDS), "the loop went on after the Error and the exception");
         loop.close();
 
         assertTrue(loop.isClosed(), "close returns once the agent has closed");
         assertEquals(List.of("cycle 2", "cycle 3"), handled, "every error to the one handler, in order");
         assertEquals(2, loop.errors(), "and counted");
         assertEquals(List.of("start on test-agent", "close on test-agent"), agent.steps,
-                "onStart and onClose on the agent's own thread, named for its role");
+                "onStart and onClose on the agent's own thread, named for its role (onClose after an Error too)");
         loop.close(); // a second close does nothing
     }
 
