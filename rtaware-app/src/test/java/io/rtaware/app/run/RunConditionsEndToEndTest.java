@@ -7,10 +7,6 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.app.RtawareCli;
-import io.rtaware.core.conditions.HostFiles;
-import io.rtaware.core.conditions.HostReader;
-import io.rtaware.core.conditions.MachineVerdict;
-import io.rtaware.core.conditions.MeasuredConditions;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
@@ -25,9 +21,10 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * A real run's conditions on the real machine (wall clock, tagged {@code wall-clock}): beside a
  * CPU burner that the test starts and stops, the run is labelled busy with the burner's share
- * named; alone, it is quiet where the machine was quiet before it (other engineers' builds may
- * load this machine: then the quiet half is skipped, saying so). The rule itself is tested
- * exactly on fixtures ({@code MachineVerdictTest}, {@code ConditionsMeterTest}).
+ * named. That a run alone on a quiet machine is quiet cannot be asserted on a machine others may
+ * load (a test that skips unless quiet and then asserts quiet cannot fail, so there is none);
+ * the rule itself is tested exactly on fixtures ({@code MachineVerdictTest},
+ * {@code ConditionsMeterTest}).
  */
 @Tag("wall-clock")
 class RunConditionsEndToEndTest {
@@ -77,25 +74,5 @@ class RunConditionsEndToEndTest {
         assertTrue(conditions.path("setup").path("logical_cpus").asInt() > 0, conditions.toString());
         assertTrue(conditions.path("setup").path("jvm_version").asText().length() > 0, conditions.toString());
         McapMetadataCheck.assertConditionsRecord(dir.resolve("busy.mcap"), "busy");
-    }
-
-    @Test
-    void theSameRunAloneIsQuietWhereTheMachineWasQuietBeforeIt() throws Exception {
-        assumeTrue(Files.isReadable(Path.of("/proc/stat")), "needs Linux's /proc/stat");
-        HostReader host = new HostReader(HostFiles.system(), System::nanoTime);
-        var before = host.sample();
-        Thread.sleep(1000);
-        MeasuredConditions idle = MeasuredConditions.between(before, host.sample(), null, Double.NaN);
-        assumeTrue(idle.otherCpus() <= MachineVerdict.OTHER_CPUS_MAX / 2, "the machine is not quiet now (other "
-                + "processes used " + idle.otherCpus() + " CPUs in the second before the run): the quiet half is skipped");
-        run(dir.resolve("alone"));
-        JsonNode conditions = new ObjectMapper().readTree(dir.resolve("alone/report.json").toFile()).path("conditions");
-        // Another engineer's build may start during the run: then the verdict must name it.
-        if (!"quiet".equals(conditions.path("machine").asText())) {
-            assertTrue(conditions.path("machine_reasons").get(0).asText().length() > 0, conditions.toString());
-        }
-        assumeTrue("quiet".equals(conditions.path("machine").asText()),
-                "the machine got busy during the run: " + conditions.path("machine_reasons"));
-        assertEquals("quiet", conditions.path("machine").asText());
     }
 }

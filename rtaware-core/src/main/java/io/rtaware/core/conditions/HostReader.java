@@ -34,7 +34,8 @@ public final class HostReader {
         long now = nanoTime.getAsLong();
         double load = files.firstLine("/proc/loadavg").map(HostReader::load1).orElse(Double.NaN);
         long[] cpu = files.read("/proc/stat").map(HostReader::cpuTicks).orElse(new long[] {-1, -1, -1, -1});
-        Optional<String> selfStat = files.firstLine("/proc/self/stat");
+        // The whole file, not its first line: a command name may hold a newline.
+        Optional<String> selfStat = files.read("/proc/self/stat");
         long self = selfStat.map(HostReader::selfTicks).orElse(-1L);
         Map<Long, Long> others = selfStat.map(HostReader::pid).filter(pid -> pid > 0).map(this::otherTicks).orElse(null);
         return new HostSample(now, load, (int) cpu[3], cpu[0], cpu[1], cpu[2], self, involuntarySwitches(), others);
@@ -68,7 +69,8 @@ public final class HostReader {
                 sawSelf = true;
                 continue;
             }
-            long t = files.firstLine("/proc/" + name + "/stat").map(HostReader::processTicks).orElse(-1L);
+            // The whole file: a name with a newline puts the counters on a later line.
+            long t = files.read("/proc/" + name + "/stat").map(HostReader::processTicks).orElse(-1L);
             if (t >= 0) {
                 ticks.put(pid, t); // a process that ended between the listing and the read is left out
             }

@@ -63,6 +63,14 @@ public interface JvmProbe {
         /** @return null when the time to safepoint is measured, else why it is not */
         String safepointNote();
 
+        /**
+         * @return the longest the whole process was stopped, ms, as a thread of its own that
+         *     sleeps {@value StallWatch#INTERVAL_MS} ms at a time saw it (how much later than
+         *     asked it woke: a {@code SIGSTOP}, a frozen VM, a swap storm, and also a JVM pause or
+         *     a busy machine); NaN where not measured
+         */
+        double longestStallMs();
+
         /** Stops the counting; idempotent. */
         @Override
         void close();

@@ -18,6 +18,9 @@ import java.util.Locale;
  *       1000 such periods. One such stop can delay one release of each task; a handful in a run
  *       of tens of thousands of releases (ZGC's cycles, the JIT's safepoints, about 0.1-0.5 ms
  *       each on the development VM) cannot explain a miss rate, a steady stream of them can;</li>
+ *   <li>{@code disturbed} too: the whole process was stopped for longer than
+ *       {@link #STALL_MIN_MS} ms and than the shortest period (in wall time), as its own watcher
+ *       thread saw it (a {@code SIGSTOP}, a frozen VM, a swap storm: no CPU counter shows these);</li>
  *   <li>{@code quiet}: none of these;</li>
  *   <li>{@code unknown}: the OS does not expose the CPU counters (not Linux).</li>
  * </ul>
@@ -49,12 +52,16 @@ public record MachineVerdict(String verdict, List<String> reasons, String contex
     /** Long stops (see {@link #PAUSE_PERIOD_FRACTION}) per 1000 shortest periods above which the run is disturbed. */
     public static final double LONG_STOPS_PER_1000_PERIODS_MAX = 1.0;
 
+    /** A stop of the whole process longer than this (and than the shortest period) disturbs the run, ms. */
+    public static final double STALL_MIN_MS = 100;
+
     /** The rule, in words, as written in reports. */
     public static final String RULE = String.format(Locale.ROOT,
             "busy if other processes used more than %.2f of one CPU or steal was above %.0f %%; disturbed if the JVM "
                     + "stopped the threads (a GC pause or a time to safepoint) for longer than %.1f of the shortest period in "
-                    + "wall time more than %.0f times per 1000 such periods; quiet otherwise",
-            OTHER_CPUS_MAX, STEAL_MAX_PCT, PAUSE_PERIOD_FRACTION, LONG_STOPS_PER_1000_PERIODS_MAX);
+                    + "wall time more than %.0f times per 1000 such periods, or if the whole process was stopped for longer "
+                    + "than %.0f ms and the shortest period; quiet otherwise",
+            OTHER_CPUS_MAX, STEAL_MAX_PCT, PAUSE_PERIOD_FRACTION, LONG_STOPS_PER_1000_PERIODS_MAX, STALL_MIN_MS);
 
     /** Copies the list. */
     public MachineVerdict {
@@ -98,6 +105,12 @@ public record MachineVerdict(String verdict, List<String> reasons, String contex
                         LONG_STOPS_PER_1000_PERIODS_MAX, longest));
             }
             stops += " (" + longest + ")";
+        }
+        if (Double.isFinite(m.longestStallMs()) && m.longestStallMs() > STALL_MIN_MS
+                && !(Double.isFinite(shortestPeriodMs) && m.longestStallMs() <= shortestPeriodMs)) {
+            disturbed.add(String.format(Locale.ROOT, "the whole process was stopped for %s ms (its own watcher thread "
+                    + "woke that late; more than %.0f ms%s)", ms(m.longestStallMs()), STALL_MIN_MS,
+                    Double.isFinite(shortestPeriodMs) ? " and the shortest period, " + ms(shortestPeriodMs) + " ms" : ""));
         }
         if (!busy.isEmpty()) {
             List<String> all = new ArrayList<>(busy);

@@ -11,10 +11,15 @@ import java.util.Map;
  * @param loadStart the one-minute load average at the start
  * @param loadEnd the one-minute load average at the end
  * @param machineCpus the CPUs the OS counts
- * @param otherCpus CPU used by other processes over the span, in CPUs: the growth of every other
- *     process's and kernel thread's own CPU counters ({@code /proc/PID/stat}); where the process
- *     table cannot be read whole, the machine's busy time ({@code /proc/stat}) minus this
- *     process's ({@code /proc/self/stat})
+ * @param otherCpus CPU used by other processes over the span, in CPUs, never more than the
+ *     machine's CPUs: the growth of every other process's and kernel thread's own CPU counters
+ *     ({@code /proc/PID/stat}), held within {@link #TICK_NOISE_FRACTION} of this process's CPU (at
+ *     least {@link #TICK_NOISE_MIN_CPUS}) of the machine's busy time ({@code /proc/stat}) minus this
+ *     process's ({@code /proc/self/stat}): the counters of each process are exact but miss
+ *     children reaped where nobody counts them (a parent that ignores {@code SIGCHLD}) and count
+ *     twice a child's whole life when a parent reaps it late, while the machine's busy time
+ *     sees all CPU time but is sampled at the timer tick. Where the process table cannot be read
+ *     whole, the machine's figure alone
  * @param stealPct CPU time the hypervisor gave to other guests, percent of the machine's
  * @param gcCount collections that paused the application threads
  * @param gcTotalMs their summed duration, ms
@@ -27,11 +32,24 @@ import java.util.Map;
  * @param longStops the JVM's stops (a collection's longest pause, a safepoint's time to reach)
  *     longer than {@code longStopLimitMs}, or -1 when not judged
  * @param involuntarySwitches involuntary context switches of this process's threads over the span
+ * @param longestStallMs the longest the whole process was stopped over the span, ms, as its own
+ *     watcher thread saw it ({@link JvmProbe.PauseWatch#longestStallMs()}), or NaN where not measured
  */
 public record MeasuredConditions(double durationS, double loadStart, double loadEnd, int machineCpus,
                                  double otherCpus, double stealPct, long gcCount, double gcTotalMs,
                                  double gcMaxPauseMs, long safepoints, Double timeToSafepointMaxMs, String safepointNote,
-                                 double longStopLimitMs, long longStops, long involuntarySwitches) {
+                                 double longStopLimitMs, long longStops, long involuntarySwitches,
+                                 double longestStallMs) {
+
+    /**
+     * How far, as a share of this process's own CPU, the machine's tick-sampled busy time minus
+     * this process's was seen to stray from the exact per-process counters with nothing else
+     * running (-0.12 to +0.10 CPUs over three paper-course runs of about one CPU, 2-vCPU VM,
+     * 2026-11-26; see {@link HostReader}), with a margin.
+     */
+    public static final double TICK_NOISE_FRACTION = 0.15;
+    /** The least that noise is taken to be, CPUs (a few ticks of a short span). */
+    public static final double TICK_NOISE_MIN_CPUS = 0.05;
 
     /**
      * @param start the counters at the start
@@ -52,15 +70,20 @@ public record MeasuredConditions(double durationS, double loadStart, double load
         double other = Double.NaN;
         double stealPct = Double.NaN;
         if (total > 0 && cpus > 0) {
+            double perTick = (double) cpus / total;
             long others = othersTicks(start.otherTicks(), end.otherTicks());
+            double machine = busy >= 0 ? (busy - Math.max(0, self)) * perTick : Double.NaN;
             if (others >= 0) {
-                other = others * (double) cpus / total;
-            } else if (busy >= 0) {
-                // Without the process table: the machine's tick-sampled busy time minus this
-                // process's own, which differ by up to about a tenth of this process's CPU (see
-                // HostReader), so a negative difference is zero.
-                other = Math.max(0, busy - Math.max(0, self)) * (double) cpus / total;
+                other = others * perTick;
+                if (Double.isFinite(machine)) {
+                    double noise = Math.max(TICK_NOISE_MIN_CPUS, TICK_NOISE_FRACTION * Math.max(0, self) * perTick);
+                    other = Math.min(Math.max(other, machine - noise), machine + noise);
+                }
+            } else {
+                other = machine;
             }
+            // Neither figure can be negative or above the machine's CPUs less nothing.
+            other = Double.isFinite(other) ? Math.min(Math.max(0, other), cpus) : other;
             if (steal >= 0) {
                 stealPct = 100.0 * steal / total;
             }
@@ -71,14 +94,16 @@ public record MeasuredConditions(double durationS, double loadStart, double load
                 pauses == null ? 0 : pauses.gcMaxPauseMs(), pauses == null ? -1 : pauses.safepoints(),
                 pauses == null ? null : pauses.maxTimeToSafepointMs(),
                 pauses == null ? "not part of this span" : pauses.safepointNote(), longStopLimitMs,
-                pauses == null || Double.isNaN(longStopLimitMs) ? -1 : pauses.stopsLongerThan(longStopLimitMs), switches);
+                pauses == null || Double.isNaN(longStopLimitMs) ? -1 : pauses.stopsLongerThan(longStopLimitMs), switches,
+                pauses == null ? Double.NaN : pauses.longestStallMs());
     }
 
     /**
      * CPU time of the other processes between two process tables: each process's growth, and all
      * of a process that is new (or whose counters went down: its id was taken by a new one). A
      * process that ended is counted where its parent reaped it (the parent's children's time); if
-     * it lived before the span, that part is counted too, which errs towards busy.
+     * it lived before the span, that part is counted too, which errs towards busy ({@link #between}
+     * holds the sum near the machine's busy time).
      *
      * @return ticks, or -1 when either table is missing
      */

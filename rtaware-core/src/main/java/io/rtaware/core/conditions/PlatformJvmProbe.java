@@ -88,6 +88,7 @@ public final class PlatformJvmProbe implements JvmProbe {
         private volatile double maxSafepointMs;
         private final List<NotificationEmitter> emitters = new ArrayList<>();
         private final RecordingStream stream;
+        private final StallWatch stalls = StallWatch.start();
         private final String safepointNote;
         private boolean closed;
         /** Every stop, ms, in the order seen (a handful a minute); past {@link #STOPS_KEPT} only counted. */
@@ -236,11 +237,17 @@ public final class PlatformJvmProbe implements JvmProbe {
         }
 
         @Override
+        public double longestStallMs() {
+            return stalls.longestStallMs();
+        }
+
+        @Override
         public synchronized void close() {
             if (closed) {
                 return;
             }
             closed = true;
+            stalls.close();
             for (NotificationEmitter emitter : emitters) {
                 try {
                     emitter.removeNotificationListener(this);

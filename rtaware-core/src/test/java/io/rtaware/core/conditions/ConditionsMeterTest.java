@@ -126,6 +126,31 @@ class ConditionsMeterTest {
         assertEquals(-1, MeasuredConditions.othersTicks(Map.of(), null), "no table at the end");
     }
 
+    /**
+     * The third red team's two ways round the process table: children reaped where nobody counts
+     * them (a parent that ignores SIGCHLD) were invisible, and a late reaper's whole-life
+     * children's time gave "other processes used 9.6 of 2 CPUs".
+     */
+    @Test
+    void theProcessTableIsHeldNearTheMachinesBusyTimeAndNeverAboveItsCpus() {
+        // 2 CPUs, 10 s: 2000 ticks. This process used 200 ticks (0.2 CPU): noise 0.05 CPU.
+        HostSample start = new HostSample(0, 1, 2, 1_000, 100, 0, 50, 0, Map.of(7L, 10L));
+        // The machine was busy 1200 ticks, 1000 of them not this process's (1.0 CPU), the table saw 20.
+        HostSample unseen = new HostSample(10_000_000_000L, 1, 2, 3_000, 1_300, 0, 250, 0, Map.of(7L, 30L));
+        assertEquals(1.0 - 0.05, MeasuredConditions.between(start, unseen, null, Double.NaN).otherCpus(), 1e-12,
+                "auto-reaped children: the machine's busy time less its noise");
+        // A late reaper's cutime: 9 600 ticks in the table, the machine only 300 busy ticks beyond this process.
+        HostSample late = new HostSample(10_000_000_000L, 1, 2, 3_000, 600, 0, 250, 0, Map.of(7L, 9_610L));
+        assertEquals(0.3 + 0.05, MeasuredConditions.between(start, late, null, Double.NaN).otherCpus(), 1e-12,
+                "a whole life reaped at once: the machine's busy time plus its noise");
+        // Within the noise the exact counters stand.
+        HostSample agree = new HostSample(10_000_000_000L, 1, 2, 3_000, 600, 0, 250, 0, Map.of(7L, 290L));
+        assertEquals(0.28, MeasuredConditions.between(start, agree, null, Double.NaN).otherCpus(), 1e-12);
+        // Impossible ticks (a machine counter that ran backwards into nonsense) never give more than the CPUs.
+        HostSample wild = new HostSample(10_000_000_000L, 1, 2, 3_000, 99_000, 0, 250, 0, null);
+        assertEquals(2.0, MeasuredConditions.between(start, wild, null, Double.NaN).otherCpus(), 1e-12);
+    }
+
     @Test
     void withoutAProcessTableTheMachinesBusyTimeMinusThisProcessIsUsed() {
         HostSample start = new HostSample(0, 1, 2, 1_000, 100, 0, 50, 0, null);

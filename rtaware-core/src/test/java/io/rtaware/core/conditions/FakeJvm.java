@@ -10,6 +10,7 @@ final class FakeJvm implements JvmProbe {
     double gcMaxPauseMs;
     Double safepointMaxMs;
     double[] stopsMs = {};
+    double longestStallMs;
     boolean closed;
 
     @Override
@@ -73,6 +74,11 @@ final class FakeJvm implements JvmProbe {
             @Override
             public String safepointNote() {
                 return safepointMaxMs == null ? "not measured in this test" : null;
+            }
+
+            @Override
+            public double longestStallMs() {
+                return longestStallMs;
             }
 
             @Override

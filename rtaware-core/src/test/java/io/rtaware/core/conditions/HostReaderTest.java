@@ -71,6 +71,16 @@ class HostReaderTest {
                 "every process but this one (4242), utime + stime + cutime + cstime, kernel threads too");
     }
 
+    /** The third red team hid load in a process whose name holds a newline: its counters are on the second line. */
+    @Test
+    void aProcessWhoseNameHoldsANewlineIsCounted(@TempDir Path root) throws Exception {
+        lay("busy-start", root);
+        Files.writeString(root.resolve("proc/300/stat"),
+                "300 (hide\nme) R 1 300 300 0 -1 4194304 100 0 0 0 30 10 0 0 20 0 1 0 100 1000 10 0 0\n");
+        assertEquals(40L, new HostReader(new HostFiles(root), () -> 0).sample().otherTicks().get(300L),
+                "utime 30 + stime 10 after the name's newline");
+    }
+
     @Test
     void aProcMountThatHidesOtherUsersProcessesGivesNoProcessTable(@TempDir Path root) throws Exception {
         lay("busy-start", root);

@@ -12,7 +12,11 @@ class MachineVerdictTest {
     private static MeasuredConditions measured(double otherCpus, double stealPct, double gcMaxMs, Double ttspMs,
                                                long longStops) {
         return new MeasuredConditions(10, 0.5, 0.6, 2, otherCpus, stealPct, gcMaxMs > 0 ? 1 : 0, gcMaxMs, gcMaxMs,
-                ttspMs == null ? -1 : 1, ttspMs, null, 1.0, longStops, 5);
+                ttspMs == null ? -1 : 1, ttspMs, null, 1.0, longStops, 5, 0.5);
+    }
+
+    private static MeasuredConditions stalled(double longestStallMs) {
+        return new MeasuredConditions(10, 0.5, 0.6, 2, 0.01, 0, 0, 0, 0, -1, null, null, 1.0, 0, 5, longestStallMs);
     }
 
     private static MeasuredConditions measured(double otherCpus, double stealPct, double gcMaxMs, Double ttspMs) {
@@ -26,6 +30,22 @@ class MachineVerdictTest {
         assertEquals("machine: quiet (other processes used 0.05 of 2 CPUs; steal 0.0 %; 0 JVM stops longer than 1.00 ms"
                 + " (0.1 of the shortest period, 10.0 ms of wall time) in 1000 such periods (longest GC pause 0.20 ms,"
                 + " longest time to safepoint 0.10 ms); load 0.5 at start)", v.text());
+    }
+
+    /**
+     * The third red team stopped the run with SIGSTOP for 5 s: 13.67 % misses, a 50 s late
+     * maximum, judged quiet (no CPU counter moves while the process is stopped).
+     */
+    @Test
+    void aStopOfTheWholeProcessLongerThan100msAndTheShortestPeriodDisturbsTheRun() {
+        MachineVerdict stopped = MachineVerdict.of(stalled(5_012.5), 10);
+        assertEquals(MachineVerdict.DISTURBED, stopped.verdict());
+        assertEquals(List.of("the whole process was stopped for 5012.5 ms (its own watcher thread woke that late; more "
+                + "than 100 ms and the shortest period, 10.0 ms)"), stopped.reasons());
+        assertEquals(MachineVerdict.QUIET, MachineVerdict.of(stalled(99), 10).verdict(), "under 100 ms");
+        assertEquals(MachineVerdict.QUIET, MachineVerdict.of(stalled(150), 200).verdict(), "within the shortest period");
+        assertEquals(MachineVerdict.DISTURBED, MachineVerdict.of(stalled(150), Double.NaN).verdict(), "no period");
+        assertEquals(MachineVerdict.QUIET, MachineVerdict.of(stalled(Double.NaN), 10).verdict(), "not measured");
     }
 
     @Test
