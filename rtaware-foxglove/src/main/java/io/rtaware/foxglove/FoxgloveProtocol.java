@@ -12,17 +12,27 @@ import java.util.List;
 import java.util.Map;
 
 /**
- * The messages of the Foxglove WebSocket protocol v1 (subprotocol {@value #SUBPROTOCOL}) that
- * rtaware's server sends and reads, as foxglove_bridge speaks it: JSON text messages with an
- * {@code op} (server: {@code serverInfo}, {@code advertise}, {@code status}; client:
- * {@code subscribe}, {@code unsubscribe}) and the binary Message Data frame (opcode
+ * The messages of the Foxglove WebSocket protocol that rtaware's server sends and reads, as
+ * foxglove_bridge speaks it under either subprotocol, {@value #SUBPROTOCOL_SDK} (foxglove_bridge
+ * 3.x and the Foxglove SDK, preferred) or {@value #SUBPROTOCOL} (older clients): JSON text
+ * messages with an {@code op} (server: {@code serverInfo}, {@code advertise}, {@code status};
+ * client: {@code subscribe}, {@code unsubscribe}), the binary Message Data frame (opcode
  * {@value #MESSAGE_DATA}, uint32 subscription id, uint64 log time in ns, little-endian, then the
- * payload). Stateless; thread-safe.
+ * payload) and the binary Time frame (opcode {@value #TIME}, uint64 time in ns, little-endian)
+ * of the {@value #CAPABILITY_TIME} capability. Stateless; thread-safe.
  */
 public final class FoxgloveProtocol {
 
-    /** The WebSocket subprotocol the server selects. */
+    /** The WebSocket subprotocol of older clients (Foxglove's ws-protocol packages, Lichtblick). */
     public static final String SUBPROTOCOL = "foxglove.websocket.v1";
+    /** The WebSocket subprotocol of foxglove_bridge 3.x and the Foxglove SDK; selected when offered. */
+    public static final String SUBPROTOCOL_SDK = "foxglove.sdk.v1";
+    /** The capability of a server that broadcasts its time, so the client's timeline follows it. */
+    public static final String CAPABILITY_TIME = "time";
+    /** Opcode of a binary Time frame from the server. */
+    public static final byte TIME = 0x02;
+    /** Bytes of a Time frame: opcode, timestamp. */
+    public static final int TIME_BYTES = 1 + 8;
     /** Opcode of a binary Message Data frame from the server. */
     public static final byte MESSAGE_DATA = 0x01;
     /** Bytes before the payload in a Message Data frame: opcode, subscription id, timestamp. */
@@ -39,8 +49,8 @@ public final class FoxgloveProtocol {
     private final ObjectMapper mapper = new ObjectMapper();
 
     /**
-     * The Server Info message, sent first to every client. rtaware's server has none of the
-     * optional capabilities (no client publishing, parameters, services, time).
+     * The Server Info message, sent first to every client. Of the optional capabilities rtaware's
+     * server has {@value #CAPABILITY_TIME} only (no client publishing, parameters or services).
      *
      * @param name the server's name
      * @param sessionId what tells a reconnection from a new server (e.g. the start time)
@@ -51,7 +61,7 @@ public final class FoxgloveProtocol {
         ObjectNode root = mapper.createObjectNode();
         root.put("op", "serverInfo");
         root.put("name", name);
-        root.putArray("capabilities");
+        root.putArray("capabilities").add(CAPABILITY_TIME);
         root.putArray("supportedEncodings");
         ObjectNode meta = root.putObject("metadata");
         metadata.forEach(meta::put);
@@ -108,6 +118,17 @@ public final class FoxgloveProtocol {
     public static void messageDataHeader(ByteBuf out, int subscriptionId, long timestampNs) {
         out.writeByte(MESSAGE_DATA);
         out.writeIntLE(subscriptionId);
+        out.writeLongLE(timestampNs);
+    }
+
+    /**
+     * Writes a Time frame.
+     *
+     * @param out the frame's buffer, with {@value #TIME_BYTES} bytes of room
+     * @param timestampNs the server's time, ns (the run's log time: Unix epoch plus world time)
+     */
+    public static void time(ByteBuf out, long timestampNs) {
+        out.writeByte(TIME);
         out.writeLongLE(timestampNs);
     }
 

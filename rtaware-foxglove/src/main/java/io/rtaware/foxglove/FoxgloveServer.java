@@ -7,6 +7,7 @@ import io.netty.channel.Channel;
 import io.netty.channel.ChannelFuture;
 import io.netty.channel.ChannelFutureListener;
 import io.netty.channel.ChannelHandlerContext;
+import io.netty.channel.ChannelInboundHandlerAdapter;
 import io.netty.channel.ChannelInitializer;
 import io.netty.channel.ChannelOption;
 import io.netty.channel.EventLoopGroup;
@@ -16,6 +17,8 @@ import io.netty.channel.WriteBufferWaterMark;
 import io.netty.channel.nio.NioIoHandler;
 import io.netty.channel.socket.SocketChannel;
 import io.netty.channel.socket.nio.NioServerSocketChannel;
+import io.netty.handler.codec.http.FullHttpRequest;
+import io.netty.handler.codec.http.HttpHeaderNames;
 import io.netty.handler.codec.http.HttpObjectAggregator;
 import io.netty.handler.codec.http.HttpServerCodec;
 import io.netty.handler.codec.http.websocketx.BinaryWebSocketFrame;
@@ -49,12 +52,16 @@ import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 
 /**
- * A Foxglove WebSocket server (protocol v1, subprotocol {@value FoxgloveProtocol#SUBPROTOCOL}, as
- * foxglove_bridge speaks it) fed by the recorder as its {@link RecordingTap}: every channel of the
- * recording is advertised with its ROS 2 type and {@code ros2msg} schema, and every message the
- * recorder's writer thread encodes is sent, as a Message Data frame stamped with its log time,
- * to each client subscribed to its channel. Latched channels ({@code /map}, {@code /tf_static})
- * give a new subscriber their last message, as a transient-local ROS 2 topic does.
+ * A Foxglove WebSocket server (as foxglove_bridge speaks it: subprotocol
+ * {@value FoxgloveProtocol#SUBPROTOCOL_SDK} when the client offers it, else
+ * {@value FoxgloveProtocol#SUBPROTOCOL}) fed by the recorder as its {@link RecordingTap}: every
+ * channel of the recording is advertised with its ROS 2 type and {@code ros2msg} schema, and every
+ * message the recorder's writer thread encodes is sent, as a Message Data frame stamped with its
+ * log time, to each client subscribed to its channel. Latched channels ({@code /map},
+ * {@code /tf_static}) give a new subscriber their last message, as a transient-local ROS 2 topic
+ * does. With the {@value FoxgloveProtocol#CAPABILITY_TIME} capability it broadcasts the run's time
+ * (the latest log time, at most every {@value #TIME_STEP_MS} ms of it) to every client, so
+ * Foxglove's timeline follows world time at any time scale.
  *
  * <p>Bounded, so that no client can make the server hold more than it was told to:
  * <ul>
@@ -98,6 +105,8 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
     public static final int MAX_PENDING_HANDSHAKES = 32;
     /** Wall time a connection has, from when it is accepted, to finish the WebSocket handshake. */
     public static final long HANDSHAKE_TIMEOUT_MS = 10_000;
+    /** Log time between two Time broadcasts, at least, ms. */
+    public static final long TIME_STEP_MS = 50;
     /** Largest HTTP upgrade request read. */
     private static final int MAX_HANDSHAKE_BYTES = 16 << 10;
     /** Characters of a status message, at most (a longer one echoes a client's request and is cut). */
@@ -132,6 +141,8 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
     private final AtomicLong closedSlow = new AtomicLong();
     private final AtomicLong closedInHandshake = new AtomicLong();
     private final AtomicLong requests = new AtomicLong();
+    /** The log time last broadcast, ns; the writer thread only. */
+    private long timeSentNs = Long.MIN_VALUE;
     private final AtomicBoolean closed = new AtomicBoolean();
 
     /** One advertised channel: its subscribers and, if latched, its last message. */
@@ -206,7 +217,7 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
         WebSocketServerProtocolConfig websocket = WebSocketServerProtocolConfig.newBuilder()
                 .websocketPath("/")
                 .checkStartsWith(true)
-                .subprotocols(FoxgloveProtocol.SUBPROTOCOL)
+                .subprotocols(FoxgloveProtocol.SUBPROTOCOL_SDK + "," + FoxgloveProtocol.SUBPROTOCOL)
                 .handshakeTimeoutMillis(HANDSHAKE_TIMEOUT_MS)
                 .decoderConfig(WebSocketDecoderConfig.newBuilder().maxFramePayloadLength(MAX_CLIENT_MESSAGE_BYTES)
                         .allowExtensions(false).build())
@@ -230,7 +241,7 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
                         }
                         admitPending(ch);
                         ch.pipeline().addLast(new HttpServerCodec(), new HttpObjectAggregator(MAX_HANDSHAKE_BYTES),
-                                new WebSocketServerProtocolHandler(websocket),
+                                new PreferSdkSubprotocol(), new WebSocketServerProtocolHandler(websocket),
                                 new WebSocketFrameAggregator(MAX_CLIENT_MESSAGE_BYTES), new ClientHandler());
                     }
                 });
@@ -367,6 +378,9 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
 
     @Override
     public void message(int channelId, long logTimeNs, byte[] data, int offset, int length) {
+        if (logTimeNs - timeSentNs >= TIME_STEP_MS * 1_000_000L || timeSentNs == Long.MIN_VALUE) {
+            broadcastTime(logTimeNs);
+        }
         Topic[] table = topics;
         Topic topic = channelId > 0 && channelId < table.length ? table[channelId] : null;
         if (topic == null) {
@@ -389,6 +403,22 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
         }
     }
 
+    /**
+     * Sends every client a Time frame (the run's time moved on); a client with no room for it
+     * misses this one, as it would a message.
+     */
+    private void broadcastTime(long logTimeNs) {
+        timeSentNs = logTimeNs;
+        for (Client c : clients) {
+            Channel ch = c.channel;
+            if (ch.isActive() && ch.bytesBeforeUnwritable() >= FoxgloveProtocol.TIME_BYTES) {
+                ByteBuf frame = ch.alloc().buffer(FoxgloveProtocol.TIME_BYTES, FoxgloveProtocol.TIME_BYTES);
+                FoxgloveProtocol.time(frame, logTimeNs);
+                ch.writeAndFlush(new BinaryWebSocketFrame(frame), ch.voidPromise());
+            }
+        }
+    }
+
     /** Sends one Message Data frame, or drops and counts it if the client's send buffer has no room. */
     private void send(Subscriber subscriber, long logTimeNs, byte[] data, int offset, int length) {
         Channel ch = subscriber.client().channel;
@@ -406,6 +436,31 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
     }
 
     // ---------------------------------------------------------------- the clients' side (event loop)
+
+    /**
+     * Puts {@value FoxgloveProtocol#SUBPROTOCOL_SDK} first among the subprotocols a client offers,
+     * so that Netty's handshake (which takes the first offered that the server supports) selects
+     * it whenever it is offered, whatever the client's order.
+     */
+    private static final class PreferSdkSubprotocol extends ChannelInboundHandlerAdapter {
+        @Override
+        public void channelRead(ChannelHandlerContext ctx, Object msg) throws Exception {
+            if (msg instanceof FullHttpRequest request) {
+                String offered = request.headers().get(HttpHeaderNames.SEC_WEBSOCKET_PROTOCOL);
+                if (offered != null) {
+                    List<String> names = new ArrayList<>();
+                    for (String name : offered.split(",")) {
+                        names.add(name.strip());
+                    }
+                    if (names.remove(FoxgloveProtocol.SUBPROTOCOL_SDK)) {
+                        names.add(0, FoxgloveProtocol.SUBPROTOCOL_SDK);
+                        request.headers().set(HttpHeaderNames.SEC_WEBSOCKET_PROTOCOL, String.join(",", names));
+                    }
+                }
+            }
+            ctx.fireChannelRead(msg);
+        }
+    }
 
     /** One connection's protocol handler, after Netty's WebSocket handshake handler. */
     private final class ClientHandler extends SimpleChannelInboundHandler<WebSocketFrame> {

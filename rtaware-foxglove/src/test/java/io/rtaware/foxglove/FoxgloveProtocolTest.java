@@ -39,10 +39,17 @@ class FoxgloveProtocolTest {
     }
 
     @Test
-    void serverInfoDeclaresNoCapabilitiesAndCarriesTheMetadata() {
-        assertEquals("{\"op\":\"serverInfo\",\"name\":\"rtaware run\",\"capabilities\":[],\"supportedEncodings\":[],"
+    void serverInfoDeclaresTheTimeCapabilityAndCarriesTheMetadata() {
+        assertEquals("{\"op\":\"serverInfo\",\"name\":\"rtaware run\",\"capabilities\":[\"time\"],\"supportedEncodings\":[],"
                         + "\"metadata\":{\"ROS_DISTRO\":\"jazzy\"},\"sessionId\":\"1700000000000\"}",
                 protocol.serverInfo("rtaware run", "1700000000000", Map.of("ROS_DISTRO", "jazzy")));
+    }
+
+    @Test
+    void aTimeFrameIsItsOpcodeThenTheTimeLittleEndian() {
+        ByteBuf out = Unpooled.buffer();
+        FoxgloveProtocol.time(out, 0x0102030405060708L);
+        assertArrayEquals(new byte[] {0x02, 8, 7, 6, 5, 4, 3, 2, 1}, ByteBufUtil.getBytes(out));
     }
 
     @Test

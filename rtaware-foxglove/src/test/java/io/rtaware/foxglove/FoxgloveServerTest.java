@@ -95,7 +95,7 @@ class FoxgloveServerTest {
         JsonNode info = c.nextJson();
         assertEquals("serverInfo", info.path("op").asText(), info.toString());
         assertEquals("rtaware test", info.path("name").asText());
-        assertEquals(0, info.path("capabilities").size(), "no optional capability: " + info);
+        assertEquals("[\"time\"]", info.path("capabilities").toString(), "the time capability only: " + info);
         assertEquals("jazzy", info.path("metadata").path("ROS_DISTRO").asText());
         JsonNode advertise = c.nextJson();
         assertEquals("advertise", advertise.path("op").asText(), advertise.toString());
@@ -109,6 +109,38 @@ class FoxgloveServerTest {
         assertEquals("ros2msg", scan.path("schemaEncoding").asText());
         assertEquals(1, server.clients(), "one client connected");
         assertEquals(1, server.stats().clientsAccepted());
+    }
+
+    /** foxglove_bridge 3.x's clients offer foxglove.sdk.v1 (some only it); older ones foxglove.websocket.v1. */
+    @Test
+    void theSdkSubprotocolIsSelectedWheneverOfferedAndTheOlderOneOtherwise() throws Exception {
+        FoxgloveServer server = server(4, 1 << 20);
+        WsClient sdkOnly = WsClient.connect(server.url(), FoxgloveProtocol.SUBPROTOCOL_SDK);
+        clients.add(sdkOnly);
+        assertEquals(FoxgloveProtocol.SUBPROTOCOL_SDK, sdkOnly.socket().getSubprotocol());
+        assertEquals("serverInfo", sdkOnly.nextJson().path("op").asText());
+        WsClient olderFirst = WsClient.connect(server.url(), FoxgloveProtocol.SUBPROTOCOL, FoxgloveProtocol.SUBPROTOCOL_SDK);
+        clients.add(olderFirst);
+        assertEquals(FoxgloveProtocol.SUBPROTOCOL_SDK, olderFirst.socket().getSubprotocol(), "preferred when offered");
+        WsClient older = client(server);
+        assertEquals(FoxgloveProtocol.SUBPROTOCOL, older.socket().getSubprotocol());
+    }
+
+    /** With the time capability every client's timeline follows the run's log time. */
+    @Test
+    void everyClientGetsTheRunsTimeAsItMovesOn() throws Exception {
+        FoxgloveServer server = server(4, 1 << 20);
+        WsClient c = connected(server); // subscribed to nothing: the time is for every client
+        long t0 = 1_700_000_000_000_000_000L;
+        server.message(1, t0, new byte[] {1}, 0, 1);
+        assertEquals(t0, c.nextTime(), "the first message's log time");
+        server.message(2, t0 + 10_000_000L, new byte[] {1}, 0, 1); // 10 ms later: within the step
+        server.message(1, t0 + FoxgloveServer.TIME_STEP_MS * 1_000_000L, new byte[] {1}, 0, 1);
+        assertEquals(t0 + FoxgloveServer.TIME_STEP_MS * 1_000_000L, c.nextTime(), "one step of log time later");
+        server.message(1, t0 + 20_000_000L, new byte[] {1}, 0, 1); // an earlier log time: never back
+        barrier(c);
+        assertEquals(0, c.queuedTimes(), "one Time frame a step, never backwards");
+        assertEquals(0, c.queued(), "no message data: nothing subscribed");
     }
 
     @Test

@@ -7,6 +7,7 @@ import java.net.URI;
 import java.net.http.HttpClient;
 import java.net.http.WebSocket;
 import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletionStage;
 import java.util.concurrent.CountDownLatch;
@@ -16,8 +17,9 @@ import java.util.concurrent.TimeUnit;
 /**
  * A WebSocket client for the tests, on the JDK's own {@link HttpClient} WebSocket (not ours): it
  * offers the Foxglove subprotocol and queues each whole message, text as {@link String}, binary
- * as {@code byte[]}. While paused it asks the JDK for no more messages, so it stops reading the
- * socket: a slow client.
+ * as {@code byte[]}; Time frames (the server's clock) go to a queue of their own, as a client's
+ * timeline takes them apart from the data. While paused it asks the JDK for no more messages, so
+ * it stops reading the socket: a slow client.
  */
 final class WsClient implements WebSocket.Listener, AutoCloseable {
 
@@ -25,6 +27,7 @@ final class WsClient implements WebSocket.Listener, AutoCloseable {
     private static final long WAIT_S = 20;
 
     private final BlockingQueue<Object> messages = new LinkedBlockingQueue<>();
+    private final BlockingQueue<Long> times = new LinkedBlockingQueue<>();
     private final StringBuilder text = new StringBuilder();
     private final ByteArrayOutputStream binary = new ByteArrayOutputStream();
     private volatile boolean paused;
@@ -34,8 +37,13 @@ final class WsClient implements WebSocket.Listener, AutoCloseable {
 
     /** Connects, offering {@value FoxgloveProtocol#SUBPROTOCOL}. */
     static WsClient connect(String url) throws Exception {
+        return connect(url, FoxgloveProtocol.SUBPROTOCOL);
+    }
+
+    /** Connects, offering these subprotocols in this order. */
+    static WsClient connect(String url, String first, String... more) throws Exception {
         WsClient client = new WsClient();
-        client.socket = HttpClient.newHttpClient().newWebSocketBuilder().subprotocols(FoxgloveProtocol.SUBPROTOCOL)
+        client.socket = HttpClient.newHttpClient().newWebSocketBuilder().subprotocols(first, more)
                 .buildAsync(URI.create(url), client).get(WAIT_S, TimeUnit.SECONDS);
         return client;
     }
@@ -86,6 +94,20 @@ final class WsClient implements WebSocket.Listener, AutoCloseable {
         return b;
     }
 
+    /** @return the next Time frame's timestamp, ns */
+    long nextTime() throws InterruptedException {
+        Long t = times.poll(WAIT_S, TimeUnit.SECONDS);
+        if (t == null) {
+            throw new AssertionError("no Time frame within " + WAIT_S + " s");
+        }
+        return t;
+    }
+
+    /** @return Time frames received and not taken yet */
+    int queuedTimes() {
+        return times.size();
+    }
+
     /** @return messages received and not taken yet */
     int queued() {
         return messages.size();
@@ -121,8 +143,13 @@ final class WsClient implements WebSocket.Listener, AutoCloseable {
         data.get(part);
         binary.writeBytes(part);
         if (last) {
-            messages.add(binary.toByteArray());
+            byte[] whole = binary.toByteArray();
             binary.reset();
+            if (whole.length == FoxgloveProtocol.TIME_BYTES && whole[0] == FoxgloveProtocol.TIME) {
+                times.add(ByteBuffer.wrap(whole, 1, 8).order(ByteOrder.LITTLE_ENDIAN).getLong());
+            } else {
+                messages.add(whole);
+            }
         }
         more(webSocket);
         return null;
