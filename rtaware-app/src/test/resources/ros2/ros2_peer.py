@@ -56,7 +56,7 @@ def check(endpoint, namespace, timeout_s):
                 "type_hash": jazzy.hash_rihs01(name), "router_ip": host, "router_port": port}
 
     lock = threading.Lock()
-    scans, odoms, tfs, statics = [], [], [], []
+    scans, odoms, tfs, statics, clocks = [], [], [], [], []
 
     def on_scan(msg):
         with lock:
@@ -73,6 +73,10 @@ def check(endpoint, namespace, timeout_s):
                           "qz": float(p.orientation.z), "qw": float(p.orientation.w),
                           "frame": msg.header.frame_id, "child": msg.child_frame_id,
                           "stamp_ns": msg.header.stamp.sec * 1_000_000_000 + msg.header.stamp.nanosec})
+
+    def on_clock(msg):
+        with lock:
+            clocks.append(msg.clock.sec * 1_000_000_000 + msg.clock.nanosec)
 
     def transforms(into):
         def on_tf(msg):
@@ -95,6 +99,8 @@ def check(endpoint, namespace, timeout_s):
                             **typed("tf2_msgs/msg/TFMessage"))
     tf_static_sub = ROS2Subscriber(topic="/tf_static", callback=transforms(statics), node_name="peer_tf_static",
                                    **typed("tf2_msgs/msg/TFMessage"))
+    clock_sub = ROS2Subscriber(topic="/clock", callback=on_clock, node_name="peer_clock",
+                               **typed("rosgraph_msgs/msg/Clock"))
     cmd_pub = ROS2Publisher(topic=topic(namespace, "cmd_vel"), node_name="peer_driver",
                             **typed("geometry_msgs/msg/Twist"))
     deadline = time.monotonic() + timeout_s
@@ -111,6 +117,20 @@ def check(endpoint, namespace, timeout_s):
         failures.append("fewer than 3 scans and 3 odometry samples arrived")
     if not wait_for(lambda: len(tfs) >= 3 and len(statics) >= 1):
         failures.append("fewer than 3 /tf and 1 /tf_static transforms arrived")
+    if not wait_for(lambda: len(clocks) >= 3):
+        failures.append("fewer than 3 /clock messages arrived")
+    with lock:
+        result["clocks"] = len(clocks)
+        if any(b < a for a, b in zip(clocks, clocks[1:])):
+            failures.append("/clock went back in time")
+        # /clock is the world time the stamps are in: the latest scan stamp is at most one laser
+        # turn (100 ms) and the poll ahead of the clock seen by then, and never far behind it
+        if clocks and scans:
+            gap_ns = clocks[-1] - scans[-1]["stamp_ns"]
+            result["clock_minus_last_scan_ns"] = gap_ns
+            if not -200_000_000 <= gap_ns <= 1_000_000_000:
+                failures.append("/clock %d ns is not the time the scans are stamped in (last scan %d ns)"
+                                % (clocks[-1], scans[-1]["stamp_ns"]))
     with lock:
         result["tf"] = sorted({(t["parent"], t["child"]) for t in tfs})
         result["tf_static"] = sorted({(t["parent"], t["child"]) for t in statics})
@@ -186,7 +206,7 @@ def check(endpoint, namespace, timeout_s):
         if moved < 0.1:
             failures.append("the robot moved only %.3f m while /cmd_vel asked for 0.3 m/s" % moved)
 
-    for entity in (scan_sub, odom_sub, tf_sub, tf_static_sub, cmd_pub):
+    for entity in (scan_sub, odom_sub, tf_sub, tf_static_sub, clock_sub, cmd_pub):
         entity.close()
     print(json.dumps(result), flush=True)
     return 1 if failures else 0

@@ -89,6 +89,7 @@ class Ros2PythonPeerTest {
                         "/tf_static as the peer decoded it");
                 assertTrue(seen.path("tf_matched_odometry").asInt() > 0, "/tf stamped as odometry samples: " + seen);
                 assertTrue(seen.path("scan_stamps_ns").size() > 0, "scan stamps: " + seen);
+                assertTrue(seen.path("clocks").asInt() >= 3, "/clock in the world's time: " + seen);
                 for (JsonNode stamp : seen.path("scan_stamps_ns")) {
                     assertEquals(0, stamp.asLong() % 100_000_000L, "a scan stamped at its first beam, the start of "
                             + "the URG-04LX's sweep on its 100 ms turn grid (its delivery is 77 ms later): " + stamp);

@@ -49,7 +49,10 @@ import org.agrona.concurrent.NoOpIdleStrategy;
  * subscribers, published again every {@value #STATIC_REPEAT_MS} ms of wall time. Header stamps
  * are world time (the simulator's clock, as ROS's {@code use_sim_time}) when the data was
  * measured: a scan's is its first beam's ({@link World#scanFirstBeamNs()}, as ROS 2's
- * {@code LaserScan} defines it), an odometry sample's its sample time. Attachments carry the
+ * {@code LaserScan} defines it), an odometry sample's its sample time; {@value #CLOCK}
+ * ({@code rosgraph_msgs/msg/Clock}, best effort, keep last 1, as ROS 2's clock publishers) carries
+ * that world time whenever it moves on, so a stock node with {@code use_sim_time} reads the stamps
+ * in the time they were made in. Attachments carry the
  * wall-clock source timestamp. One thread of its own ({@value #THREAD_NAME}, an {@link AgentThread})
  * does all of it, waiting up to {@value #POLL_MS} ms for a command between looks at the world; the
  * Player server keeps serving. A failure ends the thread, and {@link #failure()} says why.
@@ -77,6 +80,11 @@ public final class Ros2SimRobot implements AutoCloseable {
     public static final String TF = "/tf";
     /** The static transforms topic (absolute, as tf2 publishes it). */
     public static final String TF_STATIC = "/tf_static";
+    /**
+     * The simulated time topic (absolute, as ROS 2 publishes it): the world's time, which stamps
+     * every message of the robot, so that a node with {@code use_sim_time} follows it.
+     */
+    public static final String CLOCK = "/clock";
     /** The laser's frame (REP 105). */
     public static final String LASER_FRAME = "laser";
     /** The odometry frame (REP 105). */
@@ -108,6 +116,7 @@ public final class Ros2SimRobot implements AutoCloseable {
     private final Ros2Publisher truthPub;
     private final Ros2Publisher tfPub;
     private final Ros2Publisher tfStaticPub;
+    private final Ros2Publisher clockPub;
     private final ZenohMailbox mailbox;
     /** The robot's loop, started once the node is declared. */
     private volatile AgentThread loop;
@@ -137,6 +146,7 @@ public final class Ros2SimRobot implements AutoCloseable {
     private double lastOdomTimeS = Double.NaN;
     private long scanFirstBeamNs;
     private long worldTimeNs;
+    private long clockSentNs = -1;
     private long nextStaticNs = System.nanoTime();
 
     private Ros2SimRobot(PlayerSimServer server, Ros2Context context, String namespace, Consumer<String> report)
@@ -156,6 +166,8 @@ public final class Ros2SimRobot implements AutoCloseable {
                 MAX_MESSAGE_BYTES);
         this.tfStaticPub = node.createPublisher(TF_STATIC, Ros2Types.TF_MESSAGE, new QosProfile(true, true, 1),
                 MAX_MESSAGE_BYTES);
+        // As ROS 2's clock publishers (rclcpp's ClockQoS): best effort, keep last 1.
+        this.clockPub = node.createPublisher(CLOCK, Ros2Types.CLOCK, new QosProfile(false, false, 1), MAX_MESSAGE_BYTES);
         this.mailbox = context.session().newMailbox(16);
         node.subscribe(CMD_VEL, twistCodec.type(), QosProfile.defaults(), mailbox, 0);
     }
@@ -278,6 +290,13 @@ public final class Ros2SimRobot implements AutoCloseable {
             tfPub.publish(writer.buffer(), writer.size(), nowEpochNs);
             odomCodec.encode(header.set(stampNs, "map"), truth, writer);
             truthPub.publish(writer.buffer(), writer.size(), nowEpochNs);
+        }
+        if (worldTimeNs > clockSentNs) {
+            writer.begin();
+            writer.writeInt32((int) (worldTimeNs / 1_000_000_000L));
+            writer.writeInt32((int) (worldTimeNs % 1_000_000_000L));
+            clockPub.publish(writer.buffer(), writer.size(), nowEpochNs);
+            clockSentNs = worldTimeNs;
         }
         if (System.nanoTime() - nextStaticNs >= 0) {
             TransformMessages.write(writer, worldTimeNs, STATIC_TRANSFORMS);
