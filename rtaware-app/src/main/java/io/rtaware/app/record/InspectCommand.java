@@ -206,6 +206,8 @@ public final class InspectCommand implements Callable<Integer> {
                 r.messages(), r.chunks(), r.firstLogTimeNs(), r.lastLogTimeNs(), file, target);
         if (r.problem() == null) {
             out.println("lost: nothing (" + file + " was whole)");
+        } else if (r.lostBytes() == 0) {
+            out.println("lost: no message (every record of " + file + " was read), but " + r.problem());
         } else {
             out.printf(Locale.ROOT, "lost: the last %d of %d bytes, from byte %d: %s%n", r.lostBytes(), r.fileBytes(),
                     r.goodBytes(), r.problem());

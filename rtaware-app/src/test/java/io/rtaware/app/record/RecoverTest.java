@@ -8,6 +8,8 @@ import io.rtaware.record.mcap.Compression;
 import io.rtaware.record.mcap.McapReader;
 import io.rtaware.record.mcap.McapWriter;
 import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -69,6 +71,34 @@ class RecoverTest {
         assertEquals(0, CliRun.of("inspect", recovered.toString()).status(), "the recovered file inspects");
 
         CliRun.of("inspect", "--recover", cut.toString()).assertOneLineUserError("exists; move it away first");
+    }
+
+    /**
+     * A writer killed between two records leaves a file that ends cleanly: after its data end
+     * record but before its summary and footer, or before its data end. Neither is whole.
+     */
+    @Test
+    void aFileCutBetweenRecordsIsNotCalledWhole() throws IOException {
+        Path whole = unfinished(1.0);
+        byte[] bytes = Files.readAllBytes(whole);
+        ByteBuffer footer = ByteBuffer.wrap(bytes, bytes.length - 8 - 29, 29).order(ByteOrder.LITTLE_ENDIAN);
+        assertEquals(0x02, footer.get(), "the footer's opcode");
+        footer.getLong(); // its length
+        long summaryStart = footer.getLong();
+        long dataEnd = (summaryStart == 0 ? bytes.length - 8 - 29 : summaryStart) - 13;
+        assertEquals(0x0F, bytes[(int) dataEnd], "the data end record's opcode");
+        String[] problems = {
+            "the file ends after a complete record, without its data end, summary and footer",
+            "MCAP data section has no data-end record"};
+        long[] cuts = {dataEnd + 13, dataEnd};
+        for (int i = 0; i < cuts.length; i++) {
+            Path cut = Files.write(dir.resolve("killed" + i + ".mcap"), Arrays.copyOf(bytes, (int) cuts[i]));
+            CliRun run = CliRun.of("inspect", "--recover", cut.toString());
+            assertEquals(0, run.status(), run.err());
+            assertTrue(run.out().contains("recovered " + MESSAGES + " messages"), run.out());
+            assertTrue(run.out().contains("lost: no message (every record of " + cut + " was read), but "), run.out());
+            assertTrue(run.out().contains(problems[i]), run.out());
+        }
     }
 
     @Test

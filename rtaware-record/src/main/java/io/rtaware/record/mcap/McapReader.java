@@ -246,7 +246,8 @@ public final class McapReader {
      *
      * @param goodBytes bytes from the start of the file up to the first record that could not be
      *     read (the file's size if every record was read)
-     * @param problem why that record could not be read, or null if the data section was whole
+     * @param problem why that record could not be read, or why the file is not whole though every
+     *     record was read (it ends without its data end, summary and footer); null if it was whole
      */
     public record ReadEnd(long goodBytes, String problem) {
     }
@@ -266,7 +267,8 @@ public final class McapReader {
             Pass pass = new Pass(ch, visitor);
             try {
                 pass.run();
-                return new ReadEnd(size, null);
+                return new ReadEnd(size, finished ? null : "the file ends after a complete record, without its data end, "
+                        + "summary and footer (its writer did not finish it)");
             } catch (McapFormatException e) {
                 return new ReadEnd(pass.recordAt, e.getMessage());
             }
