@@ -1,27 +1,16 @@
 package io.rtaware.record.mcap;
 
-import com.github.luben.zstd.Zstd;
-import java.io.ByteArrayInputStream;
 import java.io.IOException;
-import java.io.InputStream;
-import java.lang.invoke.MethodHandles;
-import java.lang.invoke.VarHandle;
-import java.nio.ByteBuffer;
-import java.nio.ByteOrder;
 import java.nio.channels.FileChannel;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.BasicFileAttributes;
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.HashMap;
-import java.util.LinkedHashMap;
-import java.util.List;
 import java.util.Map;
 import java.util.zip.CRC32;
-import org.apache.commons.compress.compressors.lz4.FramedLZ4CompressorInputStream;
 
 /**
  * Reads MCAP files (spec version 0, https://mcap.dev/spec) as a stream, one record and one chunk
@@ -36,25 +25,22 @@ import org.apache.commons.compress.compressors.lz4.FramedLZ4CompressorInputStrea
  * section before any chunk is decompressed, when the file is finished); a chunk that does not
  * decompress to its declared size or whose CRC differs. Chunks may be uncompressed, zstd or lz4.
  * Files without a summary section are read by scanning their data section.
+ *
+ * <p>Split as foxglove/mcap's own readers are: this class opens the file and lexes the data
+ * section record by record ({@code Pass}); {@link RecordCursor} parses one record's fields;
+ * {@link DataSectionCrc} checks the data section's CRC; {@link ChunkDecompressor} turns a chunk's
+ * stored bytes into its records; {@link SummaryReader} reads the summary section and the header.
+ * Checked against foxglove/mcap's conformance suite ({@code McapConformanceTest}).
  */
 public final class McapReader {
 
     /** The largest record or decompressed chunk, in MiB, that the reader allocates memory for. */
     public static final int MAX_RECORD_MIB = 256;
-    private static final long MAX_RECORD_BYTES = (long) MAX_RECORD_MIB << 20;
-    private static final VarHandle I16 = MethodHandles.byteArrayViewVarHandle(short[].class, ByteOrder.LITTLE_ENDIAN);
-    private static final VarHandle I32 = MethodHandles.byteArrayViewVarHandle(int[].class, ByteOrder.LITTLE_ENDIAN);
-    private static final VarHandle I64 = MethodHandles.byteArrayViewVarHandle(long[].class, ByteOrder.LITTLE_ENDIAN);
-    /** Footer record: opcode, length, summary start, summary offset start, CRC. */
-    static final int FOOTER_BYTES = 1 + 8 + 8 + 8 + 4;
-    /** Data-end record: opcode, length, CRC. */
-    private static final int DATA_END_BYTES = 1 + 8 + 4;
-    /** Opcode and length that start every record. */
-    private static final int RECORD_HEAD = 1 + 8;
+    private static final long MAX_RECORD_BYTES = McapBytes.MAX_RECORD_BYTES;
+    private static final int RECORD_HEAD = McapBytes.RECORD_HEAD;
     /** A chunk's fields before its compression name: start, end, uncompressed size, CRC, name length. */
     private static final int CHUNK_FIXED = 8 + 8 + 8 + 4 + 4;
     private static final int MAX_COMPRESSION_NAME = 64;
-    private static final int CRC_BLOCK = 1 << 20;
 
     private final Path path;
     private final long size;
@@ -105,7 +91,7 @@ public final class McapReader {
                 throw new McapFormatException(path + ": not an MCAP file (no leading magic) at byte 0");
             }
             boolean finished = false;
-            if (size >= 2L * m + FOOTER_BYTES) {
+            if (size >= 2L * m + McapBytes.FOOTER_BYTES) {
                 byte[] tail = new byte[m];
                 finished = readFully(ch, size - m, tail, 0, m) && Arrays.equals(tail, Opcode.MAGIC);
             }
@@ -129,98 +115,19 @@ public final class McapReader {
     }
 
     private McapFormatException error(long at, String what) {
-        return new McapFormatException(path + ": " + what + " at byte " + at);
+        return McapBytes.error(path, at, what);
     }
 
-    /** Reads exactly {@code n} bytes at {@code position}; false if the file ends first. */
     private static boolean readFully(FileChannel ch, long position, byte[] into, int offset, int n) throws IOException {
-        ByteBuffer buffer = ByteBuffer.wrap(into, offset, n);
-        long at = position;
-        while (buffer.hasRemaining()) {
-            int got = ch.read(buffer, at);
-            if (got < 0) {
-                return false;
-            }
-            at += got;
-        }
-        return true;
+        return McapBytes.readFully(ch, position, into, offset, n);
     }
 
     private static long u64(byte[] b, int at) {
-        return (long) I64.get(b, at);
+        return McapBytes.u64(b, at);
     }
 
     private static long u32(byte[] b, int at) {
-        return (int) I32.get(b, at) & 0xffffffffL;
-    }
-
-    /** A bounded cursor over a record's bytes; errors name the record's place in the file. */
-    private final class Cursor {
-        final byte[] data;
-        int at;
-        final int limit;
-        final String where;
-
-        Cursor(byte[] data, int from, int limit, String where) {
-            this.data = data;
-            this.at = from;
-            this.limit = limit;
-            this.where = where;
-        }
-
-        void need(long n) throws McapFormatException {
-            if (n < 0 || n > limit - at) {
-                throw new McapFormatException(path + ": record field of " + n + " bytes overruns its record ("
-                        + (limit - at) + " left) in " + where);
-            }
-        }
-
-        int u8() throws McapFormatException {
-            need(1);
-            return data[at++] & 0xff;
-        }
-
-        int u16() throws McapFormatException {
-            need(2);
-            int v = (short) I16.get(data, at) & 0xffff;
-            at += 2;
-            return v;
-        }
-
-        long u32() throws McapFormatException {
-            need(4);
-            long v = (int) I32.get(data, at) & 0xffffffffL;
-            at += 4;
-            return v;
-        }
-
-        long u64() throws McapFormatException {
-            need(8);
-            long v = (long) I64.get(data, at);
-            at += 8;
-            return v;
-        }
-
-        String string() throws McapFormatException {
-            long n = u32();
-            need(n);
-            String s = new String(data, at, (int) n, StandardCharsets.UTF_8);
-            at += (int) n;
-            return s;
-        }
-
-        Map<String, String> stringMap() throws McapFormatException {
-            long n = u32();
-            need(n);
-            int end = at + (int) n;
-            Map<String, String> map = new LinkedHashMap<>();
-            Cursor inner = new Cursor(data, at, end, where);
-            while (inner.at < end) {
-                map.put(inner.string(), inner.string());
-            }
-            at = end;
-            return map;
-        }
+        return McapBytes.u32(b, at);
     }
 
     /**
@@ -235,7 +142,7 @@ public final class McapReader {
     public void read(McapVisitor visitor) throws IOException {
         try (FileChannel ch = FileChannel.open(path, StandardOpenOption.READ)) {
             if (finished) {
-                checkDataSectionCrc(ch);
+                DataSectionCrc.check(path, ch, size);
             }
             new Pass(ch, visitor).run();
         }
@@ -275,48 +182,6 @@ public final class McapReader {
         }
     }
 
-    /**
-     * Checks the data section's CRC, recorded in the data-end record just before the summary (or
-     * the footer), over the bytes as stored, so a damaged compressed chunk is named before a
-     * decompressor sees it. Skipped when the data-end record is not where a writer puts it or
-     * records no CRC; the sequential pass then checks what it can.
-     */
-    private void checkDataSectionCrc(FileChannel ch) throws IOException {
-        long footerAt = size - Opcode.MAGIC.length - FOOTER_BYTES;
-        byte[] footer = new byte[FOOTER_BYTES];
-        if (!readFully(ch, footerAt, footer, 0, FOOTER_BYTES) || footer[0] != Opcode.FOOTER) {
-            return;
-        }
-        long summaryStart = u64(footer, RECORD_HEAD);
-        long dataEndAt = (summaryStart == 0 ? footerAt : summaryStart) - DATA_END_BYTES;
-        if (dataEndAt < Opcode.MAGIC.length || dataEndAt > footerAt) {
-            return;
-        }
-        byte[] dataEnd = new byte[DATA_END_BYTES];
-        if (!readFully(ch, dataEndAt, dataEnd, 0, DATA_END_BYTES) || dataEnd[0] != Opcode.DATA_END
-                || u64(dataEnd, 1) != 4) {
-            return;
-        }
-        long recorded = u32(dataEnd, RECORD_HEAD);
-        if (recorded == 0) {
-            return;
-        }
-        CRC32 crc = new CRC32();
-        byte[] block = new byte[(int) Math.min(CRC_BLOCK, dataEndAt)];
-        for (long at = 0; at < dataEndAt; ) {
-            int n = (int) Math.min(block.length, dataEndAt - at);
-            if (!readFully(ch, at, block, 0, n)) {
-                throw error(at, "file shrank while being read");
-            }
-            crc.update(block, 0, n);
-            at += n;
-        }
-        if (crc.getValue() != recorded) {
-            throw error(dataEndAt, String.format("data section CRC %08x differs from the recorded %08x (the file"
-                    + " is damaged)", crc.getValue(), recorded));
-        }
-    }
-
     /** One sequential pass over the data section. */
     private final class Pass {
         private final FileChannel ch;
@@ -326,7 +191,7 @@ public final class McapReader {
         private final byte[] head = new byte[RECORD_HEAD];
         private byte[] body = new byte[4096];
         private byte[] stored = new byte[0];
-        private byte[] records = new byte[0];
+        private final ChunkDecompressor decompressor = new ChunkDecompressor(path);
         private long position = Opcode.MAGIC.length;
         /** Where the record being read starts. */
         long recordAt = Opcode.MAGIC.length;
@@ -377,7 +242,7 @@ public final class McapReader {
                 } else {
                     byte[] b = body(length, recordAt);
                     take(b, 0, (int) length, recordAt);
-                    dispatch(opcode, new Cursor(b, 0, (int) length, "the record at byte " + recordAt));
+                    dispatch(opcode, new RecordCursor(path, b, 0, (int) length, "the record at byte " + recordAt));
                 }
             }
         }
@@ -427,8 +292,7 @@ public final class McapReader {
             if (compression.isEmpty() && uncompressed != storedLength) {
                 throw error(chunkAt, "uncompressed chunk sizes differ: " + uncompressed + " vs " + storedLength);
             }
-            if (!compression.isEmpty() && !compression.equals(Compression.ZSTD.mcapName())
-                    && !compression.equals(Compression.LZ4.mcapName())) {
+            if (!ChunkDecompressor.supports(compression)) {
                 throw error(chunkAt, "unsupported chunk compression '" + compression + "' (supported: none, zstd, lz4)");
             }
             if (stored.length < storedLength) {
@@ -439,68 +303,18 @@ public final class McapReader {
             if (padding > 0) {
                 skip(padding, chunkAt);
             }
-            byte[] data;
-            if (compression.isEmpty()) {
-                data = stored;
-            } else {
-                if (records.length < uncompressed) {
-                    records = new byte[(int) uncompressed];
-                }
-                decompress(compression, (int) storedLength, (int) uncompressed, chunkAt);
-                data = records;
-            }
-            if (recordedCrc != 0) {
-                CRC32 actual = new CRC32();
-                actual.update(data, 0, (int) uncompressed);
-                if (actual.getValue() != recordedCrc) {
-                    throw error(chunkAt, String.format("chunk CRC %08x differs from the recorded %08x",
-                            actual.getValue(), recordedCrc));
-                }
-            }
+            byte[] data = decompressor.records(compression, stored, (int) storedLength, (int) uncompressed, recordedCrc,
+                    chunkAt);
             visitor.chunk(chunkAt, startNs, endNs);
-            Cursor c = new Cursor(data, 0, (int) uncompressed, "the chunk at byte " + chunkAt);
+            RecordCursor c = new RecordCursor(path, data, 0, (int) uncompressed, "the chunk at byte " + chunkAt);
             while (c.at < c.limit) {
                 int opcode = c.u8();
                 long recordLength = c.u64();
                 c.need(recordLength);
                 int end = c.at + (int) recordLength;
-                dispatch(opcode, new Cursor(data, c.at, end, c.where));
+                dispatch(opcode, c.inner(end));
                 c.at = end;
             }
-        }
-
-        private void decompress(String compression, int storedLength, int uncompressed, long chunkAt)
-                throws McapFormatException {
-            String problem;
-            try {
-                if (compression.equals(Compression.ZSTD.mcapName())) {
-                    long declared = Zstd.getFrameContentSize(stored, 0, storedLength);
-                    if (declared >= 0 && declared != uncompressed) {
-                        throw error(chunkAt, "zstd chunk's frame says " + declared + " bytes, its record "
-                                + uncompressed);
-                    }
-                    long n = Zstd.decompressByteArray(records, 0, uncompressed, stored, 0, storedLength);
-                    if (!Zstd.isError(n) && n == uncompressed) {
-                        return;
-                    }
-                    problem = Zstd.isError(n) ? Zstd.getErrorName(n) : "got " + n + " bytes";
-                } else {
-                    try (InputStream in = new FramedLZ4CompressorInputStream(
-                            new ByteArrayInputStream(stored, 0, storedLength))) {
-                        int n = in.readNBytes(records, 0, uncompressed);
-                        if (n == uncompressed && in.read() < 0) {
-                            return;
-                        }
-                        problem = n < uncompressed ? "got " + n + " bytes" : "more bytes than declared";
-                    }
-                }
-            } catch (McapFormatException e) {
-                throw e;
-            } catch (IOException | RuntimeException e) {
-                // zstd-jni throws ZstdException on damaged frames; Commons Compress an IOException.
-                problem = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
-            }
-            throw error(chunkAt, compression + " chunk does not decompress to its " + uncompressed + " bytes: " + problem);
         }
 
         private void skip(long n, long recordAt) throws IOException {
@@ -512,11 +326,11 @@ public final class McapReader {
             }
         }
 
-        private void dispatch(int opcode, Cursor r) throws McapFormatException {
+        private void dispatch(int opcode, RecordCursor r) throws McapFormatException {
             switch (opcode) {
-                case Opcode.SCHEMA -> visitor.schema(schema(r));
+                case Opcode.SCHEMA -> visitor.schema(r.schema());
                 case Opcode.CHANNEL -> {
-                    McapChannel channel = channel(r);
+                    McapChannel channel = r.channel();
                     channels.put(channel.id(), channel);
                     visitor.channel(channel);
                 }
@@ -540,20 +354,6 @@ public final class McapReader {
         }
     }
 
-    private static McapSchema schema(Cursor r) throws McapFormatException {
-        int id = r.u16();
-        String name = r.string();
-        String encoding = r.string();
-        long n = r.u32();
-        r.need(n);
-        String data = new String(r.data, r.at, (int) n, StandardCharsets.UTF_8);
-        return new McapSchema(id, name, encoding, data);
-    }
-
-    private static McapChannel channel(Cursor r) throws McapFormatException {
-        return new McapChannel(r.u16(), r.u16(), r.string(), r.string(), r.stringMap());
-    }
-
     /**
      * Reads the summary section through the footer, checking its CRC. A file without a summary
      * section (valid MCAP), or whose summary has no statistics record, is summarized by scanning
@@ -563,73 +363,7 @@ public final class McapReader {
      * @throws IOException if the file is malformed or a CRC differs
      */
     public McapSummary summary() throws IOException {
-        if (!finished) {
-            return scan(readProfile());
-        }
-        long footerAt = size - Opcode.MAGIC.length - FOOTER_BYTES;
-        byte[] footer = new byte[FOOTER_BYTES];
-        String profile = readProfile();
-        try (FileChannel ch = FileChannel.open(path, StandardOpenOption.READ)) {
-            if (!readFully(ch, footerAt, footer, 0, FOOTER_BYTES) || footer[0] != Opcode.FOOTER
-                    || u64(footer, 1) != 20) {
-                throw error(footerAt, "no footer record before the trailing magic");
-            }
-            long summaryStart = u64(footer, RECORD_HEAD);
-            long recordedCrc = u32(footer, RECORD_HEAD + 16);
-            if (summaryStart == 0) {
-                return scan(profile);
-            }
-            if (summaryStart < Opcode.MAGIC.length || summaryStart > footerAt) {
-                throw error(footerAt, "summary start " + Long.toUnsignedString(summaryStart) + " outside the file");
-            }
-            long summaryBytes = footerAt - summaryStart;
-            if (summaryBytes > MAX_RECORD_BYTES) {
-                throw error(summaryStart, "summary section of " + summaryBytes + " bytes is larger than the reader's"
-                        + " limit of " + MAX_RECORD_MIB + " MiB");
-            }
-            byte[] bytes = new byte[(int) summaryBytes + FOOTER_BYTES - 4];
-            if (!readFully(ch, summaryStart, bytes, 0, bytes.length)) {
-                throw error(summaryStart, "file shrank while being read");
-            }
-            if (recordedCrc != 0) {
-                CRC32 actual = new CRC32();
-                actual.update(bytes, 0, bytes.length);
-                if (actual.getValue() != recordedCrc) {
-                    throw error(summaryStart, String.format("summary CRC %08x differs from the recorded %08x",
-                            actual.getValue(), recordedCrc));
-                }
-            }
-            return summary(profile, bytes, (int) summaryBytes, summaryStart);
-        }
-    }
-
-    private McapSummary summary(String profile, byte[] bytes, int length, long summaryStart) throws IOException {
-        List<McapSchema> schemas = new ArrayList<>();
-        List<McapChannel> channels = new ArrayList<>();
-        McapStatistics statistics = null;
-        int chunkIndexes = 0;
-        Cursor c = new Cursor(bytes, 0, length, "the summary at byte " + summaryStart);
-        while (c.at < c.limit) {
-            int opcode = c.u8();
-            long recordLength = c.u64();
-            c.need(recordLength);
-            int end = c.at + (int) recordLength;
-            Cursor r = new Cursor(bytes, c.at, end, c.where);
-            switch (opcode) {
-                case Opcode.SCHEMA -> schemas.add(schema(r));
-                case Opcode.CHANNEL -> channels.add(channel(r));
-                case Opcode.CHUNK_INDEX -> chunkIndexes++;
-                case Opcode.STATISTICS -> statistics = statistics(r);
-                default -> {
-                    // summary offsets, metadata indexes
-                }
-            }
-            c.at = end;
-        }
-        if (statistics == null) {
-            return scan(profile);
-        }
-        return new McapSummary(profile, List.copyOf(schemas), List.copyOf(channels), statistics, chunkIndexes);
+        return new SummaryReader(this).summary();
     }
 
     /**
@@ -637,86 +371,6 @@ public final class McapReader {
      * @throws IOException if the file has no readable header record
      */
     public String profile() throws IOException {
-        return readProfile();
-    }
-
-    private String readProfile() throws IOException {
-        try (FileChannel ch = FileChannel.open(path, StandardOpenOption.READ)) {
-            byte[] head = new byte[RECORD_HEAD];
-            long at = Opcode.MAGIC.length;
-            if (!readFully(ch, at, head, 0, RECORD_HEAD) || head[0] != Opcode.HEADER) {
-                throw error(at, "no header record after the magic");
-            }
-            long length = u64(head, 1);
-            if (length < 0 || length > Math.min(MAX_RECORD_BYTES, size - at - RECORD_HEAD)) {
-                throw error(at, "header record of " + Long.toUnsignedString(length) + " bytes overruns the file");
-            }
-            byte[] body = new byte[(int) length];
-            if (!readFully(ch, at + RECORD_HEAD, body, 0, body.length)) {
-                throw error(at, "file ends inside the header record");
-            }
-            return new Cursor(body, 0, body.length, "the header record").string();
-        }
-    }
-
-    /** A summary made by reading the data section (a file without a summary section). */
-    private McapSummary scan(String profile) throws IOException {
-        List<McapSchema> schemas = new ArrayList<>();
-        List<McapChannel> channels = new ArrayList<>();
-        Map<Integer, Long> counts = new LinkedHashMap<>();
-        long[] totals = {0, Long.MAX_VALUE, Long.MIN_VALUE, 0, 0};
-        read(new McapVisitor() {
-            @Override
-            public void schema(McapSchema schema) {
-                schemas.add(schema);
-            }
-
-            @Override
-            public void channel(McapChannel channel) {
-                channels.add(channel);
-                counts.putIfAbsent(channel.id(), 0L);
-            }
-
-            @Override
-            public void metadata(String name, Map<String, String> entries) {
-                totals[3]++;
-            }
-
-            @Override
-            public void chunk(long fileOffset, long startNs, long endNs) {
-                totals[4]++;
-            }
-
-            @Override
-            public void message(McapChannel channel, long sequence, long logTimeNs, long publishTimeNs,
-                                byte[] data, int offset, int length) {
-                totals[0]++;
-                totals[1] = Math.min(totals[1], logTimeNs);
-                totals[2] = Math.max(totals[2], logTimeNs);
-                counts.merge(channel.id(), 1L, Long::sum);
-            }
-        });
-        McapStatistics statistics = new McapStatistics(totals[0], schemas.size(), channels.size(), totals[3], totals[4],
-                totals[0] == 0 ? 0 : totals[1], totals[0] == 0 ? 0 : totals[2], counts);
-        return new McapSummary(profile, List.copyOf(schemas), List.copyOf(channels), statistics, 0);
-    }
-
-    private static McapStatistics statistics(Cursor r) throws McapFormatException {
-        long messages = r.u64();
-        int schemas = r.u16();
-        long channels = r.u32();
-        r.u32();
-        long metadata = r.u32();
-        long chunks = r.u32();
-        long start = r.u64();
-        long end = r.u64();
-        long n = r.u32();
-        r.need(n);
-        Map<Integer, Long> counts = new LinkedHashMap<>();
-        int stop = r.at + (int) n;
-        while (r.at < stop) {
-            counts.put(r.u16(), r.u64());
-        }
-        return new McapStatistics(messages, schemas, channels, metadata, chunks, start, end, counts);
+        return new SummaryReader(this).profile();
     }
 }
