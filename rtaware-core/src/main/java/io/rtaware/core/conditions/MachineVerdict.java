@@ -56,7 +56,13 @@ public record MachineVerdict(String verdict, List<String> reasons, String contex
                     + "wall time more than %.0f times per 1000 such periods; quiet otherwise",
             OTHER_CPUS_MAX, STEAL_MAX_PCT, PAUSE_PERIOD_FRACTION, LONG_STOPS_PER_1000_PERIODS_MAX);
 
-    /** Copies the list. */
+    /**
+     * Copies the list.
+     *
+     * @param verdict {@link #QUIET}, {@link #BUSY}, {@link #DISTURBED} or {@link #UNKNOWN}
+     * @param reasons each figure that crossed its threshold, with the threshold (copied)
+     * @param context the load average at the start, for the reader
+     */
     public MachineVerdict {
         reasons = List.copyOf(reasons);
     }
