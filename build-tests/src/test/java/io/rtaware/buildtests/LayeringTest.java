@@ -4,12 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
-import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -22,26 +18,14 @@ import org.junit.jupiter.api.io.TempDir;
  */
 class LayeringTest {
 
-    private static final Path ROOT = projectRoot();
-
     @TempDir
     Path dir;
 
-    private static Path projectRoot() {
-        Path root = Path.of("").toAbsolutePath().getParent();
-        if (!Files.isRegularFile(root.resolve("mvnw")) || !Files.isRegularFile(root.resolve("rtaware-core/pom.xml"))) {
-            throw new IllegalStateException("not run from a module of the rtaware project: " + root);
-        }
-        return root;
-    }
+    private Fixture fixture;
 
-    /** A real module's pom, its parent found at the project's parent pom from the fixture. */
-    private String realPom(String module) throws IOException {
-        String pom = Files.readString(ROOT.resolve(module).resolve("pom.xml"), StandardCharsets.UTF_8);
-        String parentEnd = "    <version>0.1.0-SNAPSHOT</version>\n  </parent>";
-        assertTrue(pom.contains(parentEnd), module + "'s pom names its parent as expected");
-        return pom.replace(parentEnd, "    <version>0.1.0-SNAPSHOT</version>\n    <relativePath>"
-                + parentPath(module) + "</relativePath>\n  </parent>");
+    @BeforeEach
+    void fixture() {
+        fixture = new Fixture(dir);
     }
 
     private static String withDependency(String pom, String groupId, String artifactId) {
@@ -49,63 +33,17 @@ class LayeringTest {
                 + "</groupId>\n      <artifactId>" + artifactId + "</artifactId>\n    </dependency>\n");
     }
 
-    /** Maven reads a relative path only: from the fixture's folder {@code at} to the project's parent pom. */
-    private String parentPath(String at) {
-        return dir.resolve(at).relativize(ROOT.resolve("pom.xml")).toString();
-    }
-
-    private String parentedPom(String at, String artifactId, String packaging, String body) {
-        return """
-                <?xml version="1.0" encoding="UTF-8"?>
-                <project xmlns="http://maven.apache.org/POM/4.0.0">
-                  <modelVersion>4.0.0</modelVersion>
-                  <parent>
-                    <groupId>io.rtaware</groupId>
-                    <artifactId>rtaware-parent</artifactId>
-                    <version>0.1.0-SNAPSHOT</version>
-                    <relativePath>%s</relativePath>
-                  </parent>
-                  <artifactId>%s</artifactId>
-                  <packaging>%s</packaging>
-                %s</project>
-                """.formatted(parentPath(at), artifactId, packaging, body);
-    }
-
-    private void write(String relative, String text) throws IOException {
-        Path file = dir.resolve(relative);
-        Files.createDirectories(file.getParent());
-        Files.writeString(file, text, StandardCharsets.UTF_8);
-    }
-
-    /** Runs the wrapper offline on the fixture; returns its exit status and output. */
-    private Result maven(String... goals) throws Exception {
-        Path log = dir.resolve("maven.log");
-        List<String> command = new ArrayList<>(List.of(ROOT.resolve("mvnw").toString(), "-B", "-o",
-                "-f", dir.resolve("pom.xml").toString()));
-        command.addAll(List.of(goals));
-        ProcessBuilder builder = new ProcessBuilder(command).directory(ROOT.toFile()).redirectErrorStream(true)
-                .redirectOutput(log.toFile());
-        // A short-lived Maven starts faster without the optimizing compiler.
-        builder.environment().put("MAVEN_OPTS", "-XX:TieredStopAtLevel=1");
-        Process process = builder.start();
-        assertTrue(process.waitFor(5, TimeUnit.MINUTES), "Maven finished");
-        return new Result(process.exitValue(), Files.readString(log, StandardCharsets.UTF_8));
-    }
-
-    private record Result(int status, String output) {
-    }
-
     @Test
     void aModuleThatDependsOnAModuleAboveItFailsTheBuild() throws Exception {
         // The real core and robot poms; nav a stub above robot. Robot, which may use core only, asks for nav.
-        write("pom.xml", parentedPom("", "layering-fixture", "pom",
+        fixture.write("pom.xml", fixture.parentedPom("", "layering-fixture", "pom",
                 "  <modules>\n    <module>rtaware-core</module>\n    <module>rtaware-nav</module>\n"
                         + "    <module>rtaware-robot</module>\n  </modules>\n"));
-        write("rtaware-core/pom.xml", realPom("rtaware-core"));
-        write("rtaware-nav/pom.xml", parentedPom("rtaware-nav", "rtaware-nav", "jar", ""));
-        write("rtaware-robot/pom.xml", withDependency(realPom("rtaware-robot"), "io.rtaware", "rtaware-nav"));
+        fixture.write("rtaware-core/pom.xml", fixture.realPom("rtaware-core"));
+        fixture.write("rtaware-nav/pom.xml", fixture.parentedPom("rtaware-nav", "rtaware-nav", "jar", ""));
+        fixture.write("rtaware-robot/pom.xml", withDependency(fixture.realPom("rtaware-robot"), "io.rtaware", "rtaware-nav"));
 
-        Result result = maven("validate");
+        Fixture.Result result = fixture.maven("validate");
 
         assertNotEquals(0, result.status(), "the build fails:\n" + result.output());
         assertTrue(result.output().contains("an arrow pointing up: rtaware-robot may depend only on the modules below it"),
@@ -115,12 +53,12 @@ class LayeringTest {
 
     @Test
     void theRealPomsOfCoreAndRobotPassTheSameCheck() throws Exception {
-        write("pom.xml", parentedPom("", "layering-fixture", "pom",
+        fixture.write("pom.xml", fixture.parentedPom("", "layering-fixture", "pom",
                 "  <modules>\n    <module>rtaware-core</module>\n    <module>rtaware-robot</module>\n  </modules>\n"));
-        write("rtaware-core/pom.xml", realPom("rtaware-core"));
-        write("rtaware-robot/pom.xml", realPom("rtaware-robot"));
+        fixture.write("rtaware-core/pom.xml", fixture.realPom("rtaware-core"));
+        fixture.write("rtaware-robot/pom.xml", fixture.realPom("rtaware-robot"));
 
-        Result result = maven("validate");
+        Fixture.Result result = fixture.maven("validate");
 
         assertTrue(result.status() == 0, "the control passes, so the failure above is the rule's:\n" + result.output());
     }
@@ -128,14 +66,14 @@ class LayeringTest {
     @Test
     void theFoxgloveServerMayNotReachTheLiveViewAboveTheRecorder() throws Exception {
         // The real foxglove pom (foxglove -> record only); record and live stubs. Foxglove asks for live.
-        write("pom.xml", parentedPom("", "layering-fixture", "pom",
+        fixture.write("pom.xml", fixture.parentedPom("", "layering-fixture", "pom",
                 "  <modules>\n    <module>rtaware-record</module>\n    <module>rtaware-live</module>\n"
                         + "    <module>rtaware-foxglove</module>\n  </modules>\n"));
-        write("rtaware-record/pom.xml", parentedPom("rtaware-record", "rtaware-record", "jar", ""));
-        write("rtaware-live/pom.xml", parentedPom("rtaware-live", "rtaware-live", "jar", ""));
-        write("rtaware-foxglove/pom.xml", withDependency(realPom("rtaware-foxglove"), "io.rtaware", "rtaware-live"));
+        fixture.write("rtaware-record/pom.xml", fixture.parentedPom("rtaware-record", "rtaware-record", "jar", ""));
+        fixture.write("rtaware-live/pom.xml", fixture.parentedPom("rtaware-live", "rtaware-live", "jar", ""));
+        fixture.write("rtaware-foxglove/pom.xml", withDependency(fixture.realPom("rtaware-foxglove"), "io.rtaware", "rtaware-live"));
 
-        Result result = maven("validate");
+        Fixture.Result result = fixture.maven("validate");
 
         assertNotEquals(0, result.status(), "the build fails:\n" + result.output());
         assertTrue(result.output().contains("an arrow pointing up: rtaware-foxglove may depend only on the modules below it"),
@@ -146,7 +84,7 @@ class LayeringTest {
     @Test
     void aDependencyUsedButNotDeclaredOrDeclaredButNotUsedFailsTheBuild() throws Exception {
         // Declares databind and HdrHistogram; uses jackson-core (only transitive) and not HdrHistogram.
-        write("pom.xml", parentedPom("", "undeclared-fixture", "jar", """
+        fixture.write("pom.xml", fixture.parentedPom("", "undeclared-fixture", "jar", """
                   <dependencies>
                     <dependency>
                       <groupId>com.fasterxml.jackson.core</groupId>
@@ -158,7 +96,7 @@ class LayeringTest {
                     </dependency>
                   </dependencies>
                 """));
-        write("src/main/java/fixture/Parse.java", """
+        fixture.write("src/main/java/fixture/Parse.java", """
                 package fixture;
 
                 import com.fasterxml.jackson.core.JsonFactory;
@@ -176,7 +114,7 @@ class LayeringTest {
                 }
                 """);
 
-        Result result = maven("process-test-classes");
+        Fixture.Result result = fixture.maven("process-test-classes");
 
         assertNotEquals(0, result.status(), "the build fails:\n" + result.output());
         assertTrue(result.output().contains("Used undeclared dependencies found")

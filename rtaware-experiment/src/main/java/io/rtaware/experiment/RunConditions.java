@@ -45,6 +45,8 @@ public record RunConditions(String scenario, double timeScale, long seed, Double
      * @param timeScale world time runs this many times faster than wall time
      * @param seed the seed of run 1; run j uses {@code seed + j - 1} in every set
      * @param gridResolutionM occupancy grid cell size in metres, or null for {@code run}'s default
+     * @param robotSeed the seed of the robot's systematic odometry errors
+     * @param robots how many robots the runs are spread over, at least 1
      */
     public RunConditions {
         Objects.requireNonNull(scenario, "scenario");

@@ -33,6 +33,11 @@ public record ZenohConfig(Mode mode, List<String> connect, List<String> listen, 
     private static final Pattern TCP_ENDPOINT = Pattern.compile("tcp/(\\[[0-9A-Fa-f:.]+]|[A-Za-z0-9.-]+):(\\d{1,5})");
 
     /**
+     * @param mode peer or client
+     * @param connect endpoints to connect to (TCP only)
+     * @param listen endpoints to listen on (TCP only)
+     * @param multicastScouting whether to discover peers by UDP multicast
+     * @param connectTimeoutMs how long opening waits for the connect endpoints, positive
      * @throws IllegalArgumentException naming the first invalid field and its value
      */
     public ZenohConfig {

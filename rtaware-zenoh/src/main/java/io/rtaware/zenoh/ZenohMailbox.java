@@ -67,7 +67,10 @@ public final class ZenohMailbox implements AutoCloseable {
         };
     }
 
-    /** @return samples dropped so far because the reader fell behind */
+    /**
+     * @return samples dropped so far because the reader fell behind
+     * @throws ZenohException if the mailbox is closed
+     */
     public long overflowed() throws ZenohException {
         return NativeZenoh.overflowed(live());
     }

@@ -22,7 +22,15 @@ public record Conditions(String machine, List<String> machineReasons, String rul
     /** The MCAP metadata record that carries them. */
     public static final String MCAP_METADATA = "rtaware.conditions";
 
-    /** Validates the fields. */
+    /**
+     * Validates the fields.
+     *
+     * @param machine the verdict, not null
+     * @param machineReasons the figures behind it (copied)
+     * @param rule the rule, in words
+     * @param setup what does not change during a run
+     * @param measured what was measured over it
+     */
     public Conditions {
         Objects.requireNonNull(machine, "machine");
         machineReasons = List.copyOf(machineReasons);

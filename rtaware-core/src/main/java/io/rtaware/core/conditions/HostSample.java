@@ -23,7 +23,19 @@ import java.util.Map;
 public record HostSample(long nanoTime, double load1, int cpus, long totalTicks, long busyTicks, long stealTicks,
                          long selfTicks, long involuntarySwitches, Map<Long, Long> otherTicks) {
 
-    /** Keeps an unmodifiable copy of the process table. */
+    /**
+     * Keeps an unmodifiable copy of the process table.
+     *
+     * @param nanoTime when it was taken, {@link System#nanoTime()} scale
+     * @param load1 the one-minute load average, or NaN
+     * @param cpus CPUs counted, or -1
+     * @param totalTicks all CPU time of the machine since boot, clock ticks, or -1
+     * @param busyTicks the part of it not idle, not waiting for I/O and not stolen, or -1
+     * @param stealTicks time the hypervisor gave this machine's CPUs to others, or -1
+     * @param selfTicks CPU time of this process, or -1
+     * @param involuntarySwitches involuntary context switches of this process's live threads, or -1
+     * @param otherTicks per process id, every other process's CPU time (copied), or null
+     */
     public HostSample {
         otherTicks = otherTicks == null ? null : Map.copyOf(otherTicks);
     }

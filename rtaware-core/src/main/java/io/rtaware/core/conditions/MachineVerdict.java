@@ -63,7 +63,13 @@ public record MachineVerdict(String verdict, List<String> reasons, String contex
                     + "than %.0f ms and the shortest period; quiet otherwise",
             OTHER_CPUS_MAX, STEAL_MAX_PCT, PAUSE_PERIOD_FRACTION, LONG_STOPS_PER_1000_PERIODS_MAX, STALL_MIN_MS);
 
-    /** Copies the list. */
+    /**
+     * Copies the list.
+     *
+     * @param verdict {@link #QUIET}, {@link #BUSY}, {@link #DISTURBED} or {@link #UNKNOWN}
+     * @param reasons each figure that crossed its threshold, with the threshold (copied)
+     * @param context the load average at the start, for the reader
+     */
     public MachineVerdict {
         reasons = List.copyOf(reasons);
     }

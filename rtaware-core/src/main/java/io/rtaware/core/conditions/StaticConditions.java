@@ -31,7 +31,28 @@ public record StaticConditions(String cpuModel, int logicalCpus, Integer affinit
                                List<String> collectors, long heapMaxMb, String rtawareVersion, String gitCommit,
                                double timeScale, String realtime) {
 
-    /** Copies the lists. */
+    /**
+     * Copies the lists.
+     *
+     * @param cpuModel the CPU's model name
+     * @param logicalCpus CPUs the OS counts
+     * @param affinityCpus CPUs the process's affinity allows, or null if unknown
+     * @param cgroupQuotaCpus the cgroup's CPU quota in CPUs, or null if none
+     * @param usableCpus the CPUs this process may use
+     * @param kernel the kernel's release
+     * @param virtualized true on a virtual machine, null if unknown
+     * @param hypervisor the hypervisor where the kernel names it, else null
+     * @param clockSource the kernel's clock source
+     * @param jvmVendor the JVM's vendor
+     * @param jvmVersion the JVM's version
+     * @param jvmOptions the JVM's start options (copied)
+     * @param collectors the JVM's collectors (copied)
+     * @param heapMaxMb the JVM's maximum heap, MiB, or -1 if unknown
+     * @param rtawareVersion rtaware's version
+     * @param gitCommit the checkout's commit when run from one, else null
+     * @param timeScale world seconds per wall second of the run
+     * @param realtime the real-time settings in use
+     */
     public StaticConditions {
         jvmOptions = List.copyOf(jvmOptions);
         collectors = List.copyOf(collectors);

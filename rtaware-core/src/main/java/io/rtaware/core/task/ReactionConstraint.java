@@ -52,6 +52,8 @@ public record ReactionConstraint(String input, double speedMps, double stoppingD
      *     positive
      * @param inputDelayMs age of the input's data when it is committed (sensor acquisition and delivery),
      *     milliseconds, not negative
+     * @param obstacleSpeedMps how fast what must be reacted to may itself move toward the motion, m/s, not
+     *     negative (0 for things that stand still)
      * @throws IllegalArgumentException naming the field and the value if one is out of range
      */
     public ReactionConstraint {

@@ -36,6 +36,10 @@ public record DdsSettings(int domain, Ros2Distro distro, String networkInterface
     private static final Pattern INTERFACE = Pattern.compile("[A-Za-z0-9_.:@-]{1,15}");
 
     /**
+     * @param domain the DDS domain, 0..232
+     * @param distro the distribution the bridge behaves as
+     * @param networkInterface the one interface DDS uses
+     * @param userCycloneUri the user's {@code CYCLONEDDS_URI}, or null
      * @throws IllegalArgumentException naming the value: a domain outside 0..232, a malformed
      *     interface name, or a {@code CYCLONEDDS_URI} naming a file that cannot be read
      */

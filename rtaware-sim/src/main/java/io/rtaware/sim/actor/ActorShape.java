@@ -33,7 +33,10 @@ public sealed interface ActorShape permits ActorShape.Circle, ActorShape.Box {
      */
     record Circle(double radiusM) implements ActorShape {
 
-        /** @throws IllegalArgumentException if the radius is not positive and finite */
+        /**
+         * @param radiusM radius, positive
+         * @throws IllegalArgumentException if the radius is not positive and finite
+         */
         public Circle {
             if (!(radiusM > 0) || Double.isInfinite(radiusM)) {
                 throw new IllegalArgumentException("radius_m must be positive, got " + radiusM);
@@ -73,7 +76,11 @@ public sealed interface ActorShape permits ActorShape.Circle, ActorShape.Box {
      */
     record Box(double widthM, double heightM) implements ActorShape {
 
-        /** @throws IllegalArgumentException if a side is not positive and finite */
+        /**
+         * @param widthM extent along x, positive
+         * @param heightM extent along y, positive
+         * @throws IllegalArgumentException if a side is not positive and finite
+         */
         public Box {
             if (!(widthM > 0) || Double.isInfinite(widthM) || !(heightM > 0) || Double.isInfinite(heightM)) {
                 throw new IllegalArgumentException("size_m must be two positive numbers, got [" + widthM + ", " + heightM + "]");

@@ -63,7 +63,19 @@ public record ActorSpec(String name, Kind kind, ActorShape shape, List<Point2d> 
         }
     }
 
-    /** @throws IllegalArgumentException naming the field and the value if one is out of range */
+    /**
+     * @param name the actor's name, not null
+     * @param kind body, door or obstacle
+     * @param shape its outline
+     * @param path where it goes: at least one point; a body that moves needs two
+     * @param speedMps speed along the path, m/s, not negative
+     * @param repeat what a body does at the end of its path
+     * @param startAtS world seconds from the start at which a body starts moving, not negative
+     * @param startWithinM if above 0, a body starts when the robot comes this near instead, metres
+     * @param startJitterS a body's start is delayed by a per-run draw from [0, this), seconds
+     * @param appearAtS world seconds from which the actor is there
+     * @throws IllegalArgumentException naming the field and the value if one is out of range
+     */
     public ActorSpec {
         Objects.requireNonNull(name, "name");
         Objects.requireNonNull(kind, "kind");

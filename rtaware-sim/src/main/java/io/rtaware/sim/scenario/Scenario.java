@@ -60,16 +60,17 @@ public record Scenario(String name, Optional<OccupancyMap> map, Pose2d start, Li
     }
 
     /**
-      * @param name the scenario's name
-      * @param map the world map
-      * @param start the start pose
-      * @param waypoints the waypoints in order
-      * @param goalToleranceM waypoint tolerance in metres
-      * @param timeLimitS time limit in seconds
-      * @param robot the robot model the scenario asks for (its {@code robot:} section); empty for the default
-      *     (the Koala at the paper's top speed)
+     * @param name the scenario's name
+     * @param map the world map
+     * @param start the start pose
+     * @param waypoints the waypoints in order
+     * @param goalToleranceM waypoint tolerance in metres
+     * @param timeLimitS time limit in seconds
+     * @param robot the robot model the scenario asks for (its {@code robot:} section); empty for the default
+     *     (the Koala at the paper's top speed)
+     * @param actors what moves, closes or appears in the world; empty for a still world
      * @throws IllegalArgumentException naming the field and value if anything is out of range
-      */
+     */
     public Scenario {
         Objects.requireNonNull(name, "name");
         Objects.requireNonNull(map, "map");

@@ -86,6 +86,7 @@ public record LaserTiming(boolean sweep, long deliveryDelayNs, Link link) {
     /**
      * @param sweep true to measure the beams over the turn of the mirror
      * @param deliveryDelayNs from the last beam to delivery, world nanoseconds, not negative
+     * @param link how the scan travels to the computer, not null
      * @throws IllegalArgumentException if the delay is negative
      */
     public LaserTiming {
