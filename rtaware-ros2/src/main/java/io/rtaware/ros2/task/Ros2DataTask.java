@@ -110,6 +110,16 @@ public final class Ros2DataTask implements Task {
     private final List<String> notices = new CopyOnWriteArrayList<>();
     private final RejectionWatch scanWatch = new RejectionWatch(IMPOSSIBLE_DATA_FAULT_AFTER_NS);
     private final RejectionWatch odomWatch = new RejectionWatch(IMPOSSIBLE_DATA_FAULT_AFTER_NS);
+    /** Per topic (SCAN, ODOM): whether its newest sample was malformed or impossible. */
+    private final boolean[] newestUnusable = new boolean[2];
+    /** Per topic: what the samples since its last usable one were ({@link #IMPOSSIBLE}, {@link #MALFORMED} bits). */
+    private final int[] unusableKinds = new int[2];
+    /** Per topic: malformed samples in all. */
+    private final long[] malformedByTopic = new long[2];
+    /** Per topic: why its newest unusable sample was dropped. */
+    private final String[] unusableWhy = new String[2];
+    private static final int IMPOSSIBLE = 1;
+    private static final int MALFORMED = 2;
     private final Histogram scanLatencyNs = new Histogram(MAX_LATENCY_NS, 3);
     private final ThreadMXBean threads = ManagementFactory.getThreadMXBean();
 
@@ -256,10 +266,14 @@ public final class Ros2DataTask implements Task {
             // Untrusted bytes: whatever the decoder found wrong, the sample is dropped, not the task.
             malformed++;
             lastProblem = (scan ? "scan: " : "odom: ") + e.getMessage();
+            int topic = scan ? SCAN : ODOM;
+            malformedByTopic[topic]++;
+            unusable(topic, MALFORMED, "malformed: " + e.getMessage());
             return;
         }
         if (scan) {
             if (scanValidator.acceptScan(scanScratch)) {
+                usable(SCAN);
                 scanEpochsSeen = noticeEpoch(scanValidator, scanEpochsSeen);
                 laserOut.value().copyFrom(scanScratch);
                 laserOut.publish();
@@ -274,15 +288,31 @@ public final class Ros2DataTask implements Task {
                 }
             } else {
                 lastProblem = "scan: " + scanValidator.lastRejection();
+                unusable(SCAN, IMPOSSIBLE, scanValidator.lastRejection());
             }
         } else if (odomValidator.acceptOdometry(odomScratch)) {
+            usable(ODOM);
             odomEpochsSeen = noticeEpoch(odomValidator, odomEpochsSeen);
             odometryOut.value().copyFrom(odomScratch);
             odometryOut.publish();
             odometry++;
         } else {
             lastProblem = "odom: " + odomValidator.lastRejection();
+            unusable(ODOM, IMPOSSIBLE, odomValidator.lastRejection());
         }
+    }
+
+    /** A topic's newest sample was committed: its streak of unusable ones, if any, is over. */
+    private void usable(int topic) {
+        newestUnusable[topic] = false;
+        unusableKinds[topic] = 0;
+    }
+
+    /** A topic's newest sample was dropped, as {@code kind}, for {@code why}. */
+    private void unusable(int topic, int kind, String why) {
+        newestUnusable[topic] = true;
+        unusableKinds[topic] |= kind;
+        unusableWhy[topic] = why;
     }
 
     /**
@@ -304,18 +334,29 @@ public final class Ros2DataTask implements Task {
         return epochs;
     }
 
+    /**
+     * Halts the robot when a topic has sent only unusable samples, malformed (they do not decode)
+     * or impossible (they decode to values that cannot be true), for
+     * {@link #IMPOSSIBLE_DATA_FAULT_AFTER_NS} of world time: acting on it would mean driving blind.
+     */
     private void watchRejections(long nowNs) throws ZenohException, ImpossibleDataException {
-        boolean scanFault = scanWatch.observe(nowNs, scanValidator.lastRejected());
-        boolean odomFault = odomWatch.observe(nowNs, odomValidator.lastRejected());
+        boolean scanFault = scanWatch.observe(nowNs, newestUnusable[SCAN]);
+        boolean odomFault = odomWatch.observe(nowNs, newestUnusable[ODOM]);
         if (fault != null || !(scanFault || odomFault)) {
             return;
         }
+        int topic = odomFault ? ODOM : SCAN;
         SampleValidator checks = odomFault ? odomValidator : scanValidator;
         long sinceNs = (odomFault ? odomWatch : scanWatch).rejectingSinceNs();
-        fault = String.format(Locale.ROOT, "ROS 2 topic %s sent only impossible samples for %.1f s of world time (%d"
-                        + " rejected in all), latest: %s; robot halted",
-                odomFault ? topics.qualifiedOdom() : topics.qualifiedScan(), (nowNs - sinceNs) / 1e9, checks.rejected(),
-                checks.lastRejection());
+        String kinds = switch (unusableKinds[topic]) {
+            case IMPOSSIBLE -> "impossible";
+            case MALFORMED -> "malformed";
+            default -> "malformed or impossible";
+        };
+        fault = String.format(Locale.ROOT, "ROS 2 topic %s sent only %s samples for %.1f s of world time (%d rejected as"
+                        + " impossible, %d malformed in all), latest: %s; robot halted",
+                odomFault ? topics.qualifiedOdom() : topics.qualifiedScan(), kinds, (nowNs - sinceNs) / 1e9,
+                checks.rejected(), malformedByTopic[topic], unusableWhy[topic]);
         sendVelocity(zero, nowNs);
         throw new ImpossibleDataException(fault);
     }

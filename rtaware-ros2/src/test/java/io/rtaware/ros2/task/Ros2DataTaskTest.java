@@ -418,6 +418,36 @@ class Ros2DataTaskTest {
         assertEquals(0, task.stats().odomRejected());
     }
 
+    /** The third red team sent 216 malformed samples: the run ended as "connection lost", not as a halt. */
+    @Test
+    void scansThatDoNotDecodeForASecondOfWorldTimeHaltTheRobot() throws Exception {
+        firstScan();
+        SampleBuffer sample = new SampleBuffer(1024, 64);
+        assertEquals(0.2, drive(sample).vxMps, 1e-12);
+        String scanKey = Ros2Names.topicKey(0, "/robot1/scan", Ros2Types.LASER_SCAN.ddsTypeName(),
+                Ros2Types.LASER_SCAN.typeHash());
+        try (ZenohPublisher raw = robot.session().declarePublisher(scanKey)) {
+            ByteBuffer bytes = ByteBuffer.allocateDirect(MAX_MESSAGE_BYTES);
+            new LaserScanCodec().encode(header.set(30_000_000_000L, "laser"), scan, writer);
+            bytes.put(0, writer.buffer(), 0, writer.size());
+            Publish truncated = () -> raw.put(bytes, writer.size() - 7, null, 0);
+            long before = task.stats().malformed();
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+            while (task.stats().malformed() == before) {
+                assertTrue(System.nanoTime() < deadline, "no malformed sample counted; " + task.stats());
+                truncated.next();
+                cycle();
+            }
+            long committed = published(RobotKeys.LASER);
+            ImpossibleDataException e = cyclesUntilHalted(nowNs, truncated);
+            assertTrue(e.getMessage().startsWith("ROS 2 topic /robot1/scan sent only malformed samples for 1.0 s of world "
+                    + "time (0 rejected as impossible, "), e.getMessage());
+            assertTrue(e.getMessage().contains("latest: malformed: "), e.getMessage());
+            assertTrue(lastTwistAfterDriving(sample).isStop(), "a zero Twist in the cycle that halted");
+            assertEquals(committed, published(RobotKeys.LASER), "nothing committed");
+        }
+    }
+
     @Test
     void odometryWithANanPoseForASecondOfWorldTimeHaltsTheRobot() throws Exception {
         firstScan();
