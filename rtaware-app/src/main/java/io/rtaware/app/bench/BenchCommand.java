@@ -33,6 +33,7 @@ import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
 import io.rtaware.core.report.SummaryTable;
 import io.rtaware.core.report.TaskReport;
+import io.rtaware.core.testing.ThreadAllocation;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.Durations;
 import io.rtaware.core.time.MonotonicSleeper;

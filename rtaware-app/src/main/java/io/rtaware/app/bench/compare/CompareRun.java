@@ -3,6 +3,7 @@ package io.rtaware.app.bench.compare;
 import io.rtaware.app.bench.BenchSpec;
 import io.rtaware.app.bench.BusyWork;
 import io.rtaware.core.monitor.ExecutorKind;
+import io.rtaware.core.testing.ThreadAllocation;
 import io.rtaware.core.time.MonotonicSleeper;
 import java.io.PrintStream;
 import java.lang.management.GarbageCollectorMXBean;
@@ -23,8 +24,8 @@ import java.util.stream.Collectors;
  * not counted. Each segment starts fresh threads; the {@link #settleNs} after its executor's
  * start has returned are not counted (thread start-up, first releases), and its measurement
  * window is {@code [started + settle, started + segment)}.
- * CPU time and allocation of the executor's threads are read from the
- * {@code com.sun.management.ThreadMXBean} at both ends of the window.
+ * CPU time ({@code com.sun.management.ThreadMXBean}) and allocation ({@link ThreadAllocation}) of the
+ * executor's threads are read at both ends of the window.
  *
  * <p>Not thread-safe: one thread runs the comparison.
  */
@@ -120,9 +121,7 @@ public final class CompareRun {
         if (threads.isThreadCpuTimeSupported()) {
             threads.setThreadCpuTimeEnabled(true);
         }
-        if (threads.isThreadAllocatedMemorySupported()) {
-            threads.setThreadAllocatedMemoryEnabled(true);
-        }
+        ThreadAllocation.prepare();
         Map<String, Supplier<SegmentExecutor>> executors = new LinkedHashMap<>();
         boolean threadPerTask = threadPerTaskFits(specs.size());
         if (!threadPerTask) {
@@ -184,15 +183,15 @@ public final class CompareRun {
         parkUntil(fromNs);
         long[] ids = threadIds(executor, stats);
         long cpu0 = cpuNs(ids);
-        long[] alloc0 = threads.getThreadAllocatedBytes(ids);
+        ThreadAllocation allocation = ThreadAllocation.ofThreadIds(ids);
         parkUntil(untilNs);
         long cpu1 = cpuNs(ids);
-        long[] alloc1 = threads.getThreadAllocatedBytes(ids);
+        long allocatedBytes = allocation.allocatedSince();
         executor.stop();
         if (totals != null) {
             stats.forEach(totals::add);
             totals.endRound();
-            totals.addCost(cpu1 - cpu0, allocatedBetween(alloc0, alloc1));
+            totals.addCost(cpu1 - cpu0, allocatedBytes);
         }
     }
 
@@ -221,17 +220,6 @@ public final class CompareRun {
             long t = threads.getThreadCpuTime(id);
             if (t > 0) {
                 sum += t;
-            }
-        }
-        return sum;
-    }
-
-    /** Sums per-thread differences; a thread gone by the second read (-1) is left out. */
-    static long allocatedBetween(long[] before, long[] after) {
-        long sum = 0;
-        for (int i = 0; i < before.length; i++) {
-            if (before[i] >= 0 && after[i] >= 0) {
-                sum += after[i] - before[i];
             }
         }
         return sum;

@@ -1,6 +1,6 @@
 package io.rtaware.app.bench.compare;
 
-import io.rtaware.app.bench.LiveThreads;
+import io.rtaware.core.testing.LiveThreads;
 import io.rtaware.app.bench.BenchSpec;
 import io.rtaware.app.bench.BusyWork;
 import java.util.ArrayList;

@@ -160,11 +160,6 @@ class CompareReportTest {
     }
 
     @Test
-    void allocationLeavesOutThreadsThatEnded() {
-        assertEquals(30, CompareRun.allocatedBetween(new long[] {10, 5, 7}, new long[] {40, -1, 7}));
-    }
-
-    @Test
     void executorsWithAThreadPerTaskRunUpToAThousandTasksPerCore() {
         int cores = Runtime.getRuntime().availableProcessors();
         assertTrue(CompareRun.threadPerTaskFits(1000), "issue 16's 1000-task comparison keeps every row");

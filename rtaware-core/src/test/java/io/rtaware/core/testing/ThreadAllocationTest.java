@@ -1,5 +1,6 @@
-package io.rtaware.app.bench;
+package io.rtaware.core.testing;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -56,6 +57,42 @@ class ThreadAllocationTest {
             mayEnd.countDown();
             task.join();
             idle.join();
+        }
+    }
+
+    @Test
+    void aThreadGoneByEitherReadCountsNothing() {
+        assertArrayEquals(new long[] {30, 0, 0, 0}, ThreadAllocation.between(new long[] {10, 5, 7, -1},
+                new long[] {40, -1, 7, 9}));
+    }
+
+    @Test
+    void threadsKnownByIdAreNamedByIt() throws Exception {
+        CountDownLatch snapshotTaken = new CountDownLatch(1);
+        CountDownLatch allocated = new CountDownLatch(1);
+        CountDownLatch mayEnd = new CountDownLatch(1);
+        Thread worker = new Thread(() -> {
+            try {
+                snapshotTaken.await();
+                sink = new byte[10_000];
+                allocated.countDown();
+                mayEnd.await();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "any-name");
+        worker.start();
+        try {
+            ThreadAllocation snapshot = ThreadAllocation.ofThreadIds(worker.getId());
+            snapshotTaken.countDown();
+            assertTrue(allocated.await(10, TimeUnit.SECONDS));
+            assertEquals(1, snapshot.threads());
+            assertTrue(snapshot.allocatedSince() >= 10_000, snapshot.allocatingThreads());
+            assertTrue(snapshot.allocatingThreads().startsWith("thread " + worker.getId() + " "),
+                    snapshot.allocatingThreads());
+        } finally {
+            mayEnd.countDown();
+            worker.join();
         }
     }
 }

@@ -1,11 +1,11 @@
-package io.rtaware.app.bench;
+package io.rtaware.core.testing;
 
 import java.util.Arrays;
 
 /**
  * Live threads found with {@link Thread#enumerate}, without the safepoint and stack walk of
  * every thread that {@link Thread#getAllStackTraces()} costs while tasks run (with 1000 task
- * threads: 28 MB and a stall inside the measured window, issue 16's profile).
+ * threads: 28 MB and a stall inside a measured window, issue 16's profile). Stateless.
  */
 public final class LiveThreads {
 
