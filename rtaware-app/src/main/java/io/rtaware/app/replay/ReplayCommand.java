@@ -9,6 +9,7 @@ import io.rtaware.core.report.ReportDocument;
 import io.rtaware.core.report.SummaryTable;
 import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Durations;
+import io.rtaware.nav.ControllerMetadata;
 import io.rtaware.nav.Behavior;
 import io.rtaware.nav.NavConfig;
 import io.rtaware.nav.NavController;

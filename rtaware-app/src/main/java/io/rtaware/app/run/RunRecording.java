@@ -1,6 +1,6 @@
 package io.rtaware.app.run;
 
-import io.rtaware.app.replay.ControllerMetadata;
+import io.rtaware.nav.ControllerMetadata;
 import io.rtaware.core.time.Clock;
 import io.rtaware.nav.NavConfig;
 import io.rtaware.nav.NavKeys;

@@ -1,9 +1,7 @@
-package io.rtaware.app.replay;
+package io.rtaware.nav;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
-import io.rtaware.nav.Behavior;
-import io.rtaware.nav.NavConfig;
 import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
