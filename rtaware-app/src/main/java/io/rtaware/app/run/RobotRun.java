@@ -26,6 +26,7 @@ import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.trace.TraceRecorder;
 import io.rtaware.record.RunRecorder;
+import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.rt.CpuLatencyRequest;
 import io.rtaware.rt.RealtimeThreads;
 import io.rtaware.nav.NavConfig;
@@ -244,7 +245,7 @@ public final class RobotRun {
             CpuLatencyRequest.hold(CpuLatencyRequest.DEVICE, 0, err)
                     .ifPresent(request -> monitor.onTermination(report -> request.close()));
         }
-        MonitorExporter exporter = export.map(e -> e.start(monitor, RunExports.keys(nav), RunExports.STATIC_TRANSFORMS, err)).orElse(null);
+        MonitorExporter exporter = export.map(e -> e.start(monitor, RunExports.keys(nav), RobotTopics.STATIC_TRANSFORMS, err)).orElse(null);
         ConsoleReporter console = CommandMonitor.console(monitor, options.quiet(), err);
         TraceRecorder trace = options.trace().attach(monitor);
         FoxgloveServer foxgloveServer = foxglove.start("run", out);

@@ -5,10 +5,10 @@ import io.rtaware.core.time.Clock;
 import io.rtaware.nav.NavConfig;
 import io.rtaware.nav.NavKeys;
 import io.rtaware.record.RecordingPlan;
-import io.rtaware.record.RosCodecs;
+import io.rtaware.record.RobotRecordingPlan;
 import io.rtaware.record.RunRecorder;
 import io.rtaware.robot.geometry.Pose2d;
-import io.rtaware.robot.msg.RobotKeys;
+import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.sim.scenario.Scenario;
 import io.rtaware.sim.server.PlayerSimServer;
 import java.util.Locale;
@@ -26,9 +26,6 @@ import java.util.Locale;
  */
 final class RunRecording {
 
-    /** The laser's frame (REP 105), a child of {@code base_link} on {@code /tf_static}. */
-    static final String LASER_FRAME = "laser";
-
     /** Metadata: the command that recorded the file. */
     static final String COMMAND = "command";
 
@@ -45,19 +42,10 @@ final class RunRecording {
      */
     static RecordingPlan plan(Scenario scenario, RunOptions options, NavConfig navConfig, String modelName,
                               PlayerSimServer simulator) {
-        RecordingPlan plan = new RecordingPlan()
-                .topic(RobotKeys.LASER.name(), "/scan", LASER_FRAME)
-                .topic(RobotKeys.ODOMETRY.name(), "/odom", "odom")
-                .topic(RobotKeys.MOTOR.name(), "/cmd_vel", RosCodecs.BASE_FRAME)
-                .topic(NavKeys.MAP, "/map", "map")
+        RecordingPlan plan = RobotRecordingPlan.create()
+                .topic(NavKeys.MAP, RobotTopics.MAP, RobotTopics.MAP_FRAME)
                 .latched(NavKeys.MAP)
-                .withGroundTruth()
-                // REP 105: the laser sits at the robot's centre (the simulator's and the paper's Pioneer's
-                // scans are measured from there); the controller's map is its odometry frame.
-                .staticTransform(RosCodecs.BASE_FRAME, LASER_FRAME, 0, 0, 0)
-                .staticTransform("map", "odom", 0, 0, 0)
-                .transformsFrom(RobotKeys.ODOMETRY.name(), "odom", RosCodecs.BASE_FRAME)
-                .topic(NavKeys.PATH, "/plan", "map")
+                .topic(NavKeys.PATH, RobotTopics.PLAN, RobotTopics.MAP_FRAME)
                 .metadata(COMMAND, "run")
                 .metadata("scenario", scenario.name())
                 .metadata("periods", options.periods().toString())

@@ -7,12 +7,13 @@ import io.rtaware.core.time.Clock;
 import io.rtaware.foxglove.FoxgloveServer;
 import io.rtaware.nav.NavKeys;
 import io.rtaware.record.RecordingPlan;
-import io.rtaware.record.RosCodecs;
+import io.rtaware.record.RobotRecordingPlan;
 import io.rtaware.record.RunRecorder;
 import io.rtaware.robot.msg.LaserScan;
 import io.rtaware.robot.msg.OccupancyGrid;
 import io.rtaware.robot.msg.Odometry;
 import io.rtaware.robot.msg.RobotKeys;
+import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.sim.scenario.Scenario;
 import io.rtaware.sim.server.PlayerSimServer;
 import io.rtaware.sim.world.World;
@@ -80,15 +81,9 @@ final class SimFoxglove implements AutoCloseable, Agent {
         OccupancyGrid walls = scenario.map().map(RobotRun::worldGrid).orElse(null);
         int cells = walls == null ? 1 : walls.width() * walls.height();
         Key<OccupancyGrid> mapKey = Key.of(NavKeys.MAP, OccupancyGrid.class, () -> new OccupancyGrid(cells));
-        RecordingPlan plan = new RecordingPlan()
-                .topic(RobotKeys.LASER.name(), "/scan", "laser")
-                .topic(RobotKeys.ODOMETRY.name(), "/odom", "odom")
-                .topic(NavKeys.MAP, "/map", "map")
+        RecordingPlan plan = RobotRecordingPlan.create()
+                .topic(NavKeys.MAP, RobotTopics.MAP, RobotTopics.MAP_FRAME)
                 .latched(NavKeys.MAP)
-                .withGroundTruth()
-                .staticTransform(RosCodecs.BASE_FRAME, "laser", 0, 0, 0)
-                .staticTransform("map", "odom", 0, 0, 0)
-                .transformsFrom(RobotKeys.ODOMETRY.name(), "odom", RosCodecs.BASE_FRAME)
                 .metadata("command", "sim")
                 .metadata("scenario", scenario.name())
                 .startingNow(clock.nanos())
