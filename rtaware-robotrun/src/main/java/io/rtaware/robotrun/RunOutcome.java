@@ -1,4 +1,4 @@
-package io.rtaware.app.run;
+package io.rtaware.robotrun;
 
 /**
  * How a robot run ended. {@link #jsonName()} is the {@code outcome} string in {@code report.json}

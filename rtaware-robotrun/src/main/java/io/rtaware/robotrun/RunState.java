@@ -1,4 +1,4 @@
-package io.rtaware.app.run;
+package io.rtaware.robotrun;
 
 import java.util.Objects;
 import java.util.concurrent.atomic.AtomicReference;
@@ -9,7 +9,7 @@ import java.util.concurrent.atomic.AtomicReference;
  * early (Ctrl-C during start-up, on the shutdown-hook thread) reads the creation instant and no
  * referee, never an unset field. Thread-safe: fields are volatile, the ending is set once.
  */
-final class RunState {
+public final class RunState {
 
     /**
      * How the run ended.
@@ -17,8 +17,9 @@ final class RunState {
      * @param outcome the outcome
      * @param reason why, in words
      */
-    record Ending(RunOutcome outcome, String reason) {
-        Ending {
+    public record Ending(RunOutcome outcome, String reason) {
+        /** Both are required. */
+        public Ending {
             Objects.requireNonNull(outcome, "outcome");
             Objects.requireNonNull(reason, "reason");
         }
@@ -31,7 +32,7 @@ final class RunState {
     private volatile Supervisor supervisor;
 
     /** @param createdNs world time now, the start until {@link #started} says otherwise */
-    RunState(long createdNs) {
+    public RunState(long createdNs) {
         this.startNs = createdNs;
     }
 
@@ -40,25 +41,25 @@ final class RunState {
      * @param referee the run's referee
      * @param supervisor the run's supervisor
      */
-    void started(long startNs, Referee referee, Supervisor supervisor) {
+    public void started(long startNs, Referee referee, Supervisor supervisor) {
         this.startNs = startNs;
         this.referee = referee;
         this.supervisor = supervisor;
     }
 
     /** @return rising edges of the stall flag the supervisor saw (0 before the start) */
-    long stallEdges() {
+    public long stallEdges() {
         Supervisor s = supervisor;
         return s == null ? 0 : s.stallEdges();
     }
 
     /** @return world time of the start (the creation instant before {@link #started}) */
-    long startNs() {
+    public long startNs() {
         return startNs;
     }
 
     /** @return the referee, or null before the start */
-    Referee referee() {
+    public Referee referee() {
         return referee;
     }
 
@@ -70,7 +71,7 @@ final class RunState {
      * @param atNs world time of the ending (when the supervisor saw the finish, the time limit, ...)
      * @return true if this call set it
      */
-    boolean end(RunOutcome outcome, String reason, long atNs) {
+    public boolean end(RunOutcome outcome, String reason, long atNs) {
         if (!ending.compareAndSet(null, new Ending(outcome, reason))) {
             return false;
         }
@@ -86,17 +87,17 @@ final class RunState {
      * @param nowNs world time now, used while no ending is recorded
      * @return world nanoseconds from the start to the ending (or to now)
      */
-    long elapsedNs(long nowNs) {
+    public long elapsedNs(long nowNs) {
         return (ending.get() == null ? nowNs : endedNs) - startNs;
     }
 
     /** @return the ending, or null while the run goes on */
-    Ending ending() {
+    public Ending ending() {
         return ending.get();
     }
 
     /** @return the outcome, or null while the run goes on (for the live view) */
-    RunOutcome outcome() {
+    public RunOutcome outcome() {
         Ending e = ending.get();
         return e == null ? null : e.outcome();
     }

@@ -1,4 +1,4 @@
-package io.rtaware.app.run;
+package io.rtaware.robotrun;
 
 import io.rtaware.robot.geometry.Point2d;
 import io.rtaware.sim.map.OccupancyMap;
@@ -17,7 +17,7 @@ import java.util.Locale;
  * still counts as a way through). Needs the scenario's map; without one there is nothing to check.
  * Stateless.
  */
-final class CourseCheck {
+public final class CourseCheck {
 
     private CourseCheck() {
     }
@@ -26,7 +26,7 @@ final class CourseCheck {
      * @param scenario the course
      * @return one sentence per problem, in course order; empty when the course looks drivable
      */
-    static List<String> warnings(Scenario scenario) {
+    public static List<String> warnings(Scenario scenario) {
         List<String> warnings = new ArrayList<>();
         OccupancyMap map = scenario.map().orElse(null);
         if (map == null) {

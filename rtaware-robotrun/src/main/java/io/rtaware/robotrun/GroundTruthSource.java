@@ -1,4 +1,4 @@
-package io.rtaware.app.run;
+package io.rtaware.robotrun;
 
 import io.rtaware.core.time.Clock;
 import io.rtaware.player.client.PlayerClient;

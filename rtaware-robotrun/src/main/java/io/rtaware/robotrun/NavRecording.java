@@ -1,7 +1,9 @@
-package io.rtaware.app.run;
+package io.rtaware.robotrun;
 
-import io.rtaware.nav.ControllerMetadata;
 import io.rtaware.core.time.Clock;
+import io.rtaware.core.time.Durations;
+import io.rtaware.nav.Behavior;
+import io.rtaware.nav.ControllerMetadata;
 import io.rtaware.nav.NavConfig;
 import io.rtaware.nav.NavKeys;
 import io.rtaware.record.RecordingPlan;
@@ -11,55 +13,55 @@ import io.rtaware.robot.geometry.Pose2d;
 import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.sim.scenario.Scenario;
 import io.rtaware.sim.server.PlayerSimServer;
-import java.util.Locale;
 
 /**
- * What {@code run --record} records where: the robot's keys on the topics ROS 2 tools expect
- * ({@code /scan}, {@code /odom}, {@code /cmd_vel}, {@code /map}, {@code /plan}), the ground truth
- * on {@code /ground_truth}, the REP 105 frames on {@code /tf_static} ({@code map} to {@code odom},
- * {@code base_link} to {@code laser}) and {@code /tf} ({@code odom} to {@code base_link} from
- * odometry, {@code map} to {@code ground_truth}), and the run's settings as the file's {@code rtaware.run} metadata
- * (what {@code rtaware replay} rebuilds the controller from). Against the built-in simulator
- * (over Player or ROS 2), whose clock is the run's, scans and odometry are stamped when the
- * simulator measured them; against another robot, when they were committed. {@code /clock} is
- * recorded when the world runs on simulated time: the simulator, or a time scale other than 1.
+ * What a nav run records where: the robot's keys as {@link RobotRecordingPlan} puts them
+ * ({@code /scan}, {@code /odom}, {@code /cmd_vel}, {@code /ground_truth}, {@code /tf},
+ * {@code /tf_static}), the controller's map and plan on {@code /map} (latched) and
+ * {@code /plan}, and the run's settings as the file's {@code rtaware.run} metadata, with the
+ * controller's configuration ({@link ControllerMetadata}: what {@code rtaware replay} rebuilds
+ * the controller from). Against the built-in simulator (over Player or ROS 2), whose clock is the
+ * run's, scans and odometry are stamped when the simulator measured them; against another robot,
+ * when they were committed. {@code /clock} is recorded when the world runs on simulated time: the
+ * simulator, or a time scale other than 1. Stateless.
  */
-final class RunRecording {
+final class NavRecording {
 
-    /** Metadata: the command that recorded the file. */
-    static final String COMMAND = "command";
-
-    private RunRecording() {
+    private NavRecording() {
     }
 
     /**
      * @param scenario the scenario
-     * @param options the run's options
+     * @param settings the run's settings
      * @param navConfig the controller's configuration (recorded whole, for replay)
      * @param modelName the robot model's name
+     * @param robot where the robot is, in words
      * @param simulator the built-in simulator, stepping on the run's clock, or null for another robot
      * @return the plan
      */
-    static RecordingPlan plan(Scenario scenario, RunOptions options, NavConfig navConfig, String modelName,
-                              PlayerSimServer simulator) {
+    static RecordingPlan plan(Scenario scenario, NavRun.Settings settings, NavConfig navConfig, String modelName,
+                              String robot, PlayerSimServer simulator) {
+        StringBuilder periods = new StringBuilder();
+        for (Behavior b : Behavior.values()) {
+            periods.append(periods.length() == 0 ? "" : ",").append(b.taskName()).append('=')
+                    .append(Durations.format(navConfig.periods().ns(b)));
+        }
         RecordingPlan plan = RobotRecordingPlan.create()
                 .topic(NavKeys.MAP, RobotTopics.MAP, RobotTopics.MAP_FRAME)
                 .latched(NavKeys.MAP)
                 .topic(NavKeys.PATH, RobotTopics.PLAN, RobotTopics.MAP_FRAME)
-                .metadata(COMMAND, "run")
                 .metadata("scenario", scenario.name())
-                .metadata("periods", options.periods().toString())
-                .metadata("time_scale", Double.toString(options.timeScale()))
-                .metadata("seed", Long.toString(options.seed()))
-                .metadata("grid_resolution_m", Double.toString(options.gridResolutionM()))
-                .metadata("robot", options.builtInSimulator() ? "built-in simulator"
-                        : String.format(Locale.ROOT, "player %s:%d", options.playerHost(), options.playerPort()));
+                .metadata("periods", periods.toString())
+                .metadata("time_scale", Double.toString(settings.timeScale()))
+                .metadata("seed", Long.toString(settings.seed()))
+                .metadata("grid_resolution_m", Double.toString(settings.gridResolutionM()))
+                .metadata("robot", robot);
         ControllerMetadata.entries(navConfig, modelName, Runtime.getRuntime().availableProcessors())
                 .forEach(plan::metadata);
         if (simulator != null) {
             plan.robotClockOriginNs(simulator.clockOriginNs()); // the simulator's timestamps are the run's clock
         }
-        if (simulator != null || options.timeScale() != 1.0) {
+        if (simulator != null || settings.timeScale() != 1.0) {
             plan.clock(RecordingPlan.CLOCK_PERIOD_NS);
         }
         return plan;

@@ -1,82 +1,57 @@
-package io.rtaware.app.ros2;
+package io.rtaware.robotrun;
 
 import io.rtaware.core.report.Rounding;
 import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.TaskSpec;
-import io.rtaware.ros2.graph.Ros2Context;
+import io.rtaware.ros2.graph.Ros2Distro;
 import io.rtaware.ros2.graph.Ros2Transport;
 import io.rtaware.ros2.task.Ros2DataTask;
 import io.rtaware.ros2.task.Ros2Stats;
 import io.rtaware.sim.ros2.Ros2SimRobot;
-import io.rtaware.sim.server.PlayerSimServer;
 import io.rtaware.zenoh.ZenohException;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Objects;
 import java.util.concurrent.TimeUnit;
 import org.HdrHistogram.Histogram;
 
 /**
- * The ROS 2 side of one {@code run --ros2}: the controller's Zenoh context and data task and,
- * without {@code --zenoh}, the built-in simulator served as a ROS 2 robot in the same process
- * (its own session listening on a free loopback port, the controller's session connecting to
- * it). Not thread-safe: built and closed by the command's thread.
+ * The ROS 2 side of a run whose robot is a ROS 2 robot: the controller's ROS 2 data task (on a
+ * Zenoh context of its own) and, when the built-in simulator serves as the robot in the same
+ * process, the simulator's ROS 2 robot; the data task's counters as one summary line and as the
+ * report's {@code ros2} section. The caller opens the contexts (a peer session on loopback, a
+ * router's endpoint, or the DDS bridge) and the simulator's robot; the link owns both from then
+ * on. Not thread-safe: built and closed by the run's thread.
  */
 public final class Ros2Link implements AutoCloseable {
 
     /** Task name of the ROS 2 data task in reports. */
     public static final String TASK = "ros2";
 
-    private final Ros2Options options;
-    private final Ros2SimRobot simRobot;
     private final Ros2DataTask task;
-
-    private Ros2Link(Ros2Options options, Ros2SimRobot simRobot, Ros2DataTask task) {
-        this.options = options;
-        this.simRobot = simRobot;
-        this.task = task;
-    }
+    private final Ros2SimRobot simRobot;
+    private final String describe;
+    private final Ros2Transport transport;
+    private final Ros2Distro distro;
 
     /**
-     * Opens the sessions (and starts the simulator's ROS 2 side when there is no router).
-     *
-     * @param options what {@code --ros2} asked for
-     * @param server the built-in simulator, or null when {@code --zenoh} names the robot's router
-     * @return the link
-     * @throws io.rtaware.app.UserError if a router cannot be reached
+     * @param task the controller's data task (it closes its own context when the monitor stops)
+     * @param simRobot the built-in simulator's ROS 2 robot, or null for another robot; closed with the link
+     * @param describe where the robot is, in words (the start line, the report's {@code robot})
+     * @param transport how the robot is reached
+     * @param distro the ROS 2 distribution whose conventions are followed
      */
-    public static Ros2Link open(Ros2Options options, PlayerSimServer server) {
-        if (options.dds() != null) {
-            Ros2Context context = Ros2Wiring.openDds(options.dds());
-            return new Ros2Link(options, null, Ros2DataTask.withDefaults(context, options.topics()));
-        }
-        Ros2SimRobot robot = null;
-        List<String> connect;
-        if (options.router() == null) {
-            String endpoint = Ros2Wiring.freeLoopbackEndpoint();
-            Ros2Context simContext = Ros2Wiring.open(List.of(), List.of(endpoint), options.topics().domain(),
-                    options.distro());
-            try {
-                // its notices reach the run's summary and report through notices()
-                robot = Ros2SimRobot.start(server, simContext, options.topics().namespace(), line -> { });
-            } catch (ZenohException e) {
-                throw new IllegalStateException("the simulator's ROS 2 side did not start: " + e.getMessage(), e);
-            }
-            connect = List.of(endpoint);
-        } else {
-            connect = List.of(options.router());
-        }
-        try {
-            Ros2Context context = Ros2Wiring.open(connect, List.of(io.rtaware.zenoh.ZenohConfig.LOOPBACK_ANY_PORT),
-                    options.topics().domain(), options.distro());
-            return new Ros2Link(options, robot, Ros2DataTask.withDefaults(context, options.topics()));
-        } catch (RuntimeException e) {
-            closeQuietly(robot);
-            throw e;
-        }
+    public Ros2Link(Ros2DataTask task, Ros2SimRobot simRobot, String describe, Ros2Transport transport,
+                    Ros2Distro distro) {
+        this.task = Objects.requireNonNull(task, "task");
+        this.simRobot = simRobot;
+        this.describe = Objects.requireNonNull(describe, "describe");
+        this.transport = Objects.requireNonNull(transport, "transport");
+        this.distro = Objects.requireNonNull(distro, "distro");
     }
 
     /** @return the data task as the monitor runs it */
@@ -86,11 +61,7 @@ public final class Ros2Link implements AutoCloseable {
 
     /** @return where the robot is, for the start line */
     public String describe() {
-        if (options.dds() != null) {
-            return "ROS 2 robot over " + options.dds().describe();
-        }
-        return options.router() == null ? "built-in simulator as a ROS 2 robot over Zenoh on loopback"
-                : "ROS 2 robot through Zenoh at " + options.router();
+        return describe;
     }
 
     /**
@@ -140,7 +111,7 @@ public final class Ros2Link implements AutoCloseable {
             latencyMs.put("p50", Rounding.toDecimals(latencyMs(latency, 50), 3));
             latencyMs.put("p99", Rounding.toDecimals(latencyMs(latency, 99), 3));
         }
-        return new Ros2Section(describe(), transport(), options.distro().cliName(), s.scans(), s.odometry(), s.commands(),
+        return new Ros2Section(describe(), transport(), distro.cliName(), s.scans(), s.odometry(), s.commands(),
                 rejected, s.malformed(), s.oversized(), s.overflowed(), s.otherPublishers(), s.clockEpochs(), notices(),
                 s.lastProblem(), task.fault(), latencyMs, task.latencySource(),
                 Rounding.toDecimals(cpuUsPerSample(s), 2), s.droppedBeams());
@@ -148,7 +119,7 @@ public final class Ros2Link implements AutoCloseable {
 
     /** @return {@code rmw_zenoh} or {@code dds} */
     private String transport() {
-        return (options.dds() != null ? Ros2Transport.DDS : Ros2Transport.RMW_ZENOH).reportName();
+        return transport.reportName();
     }
 
     /** @return a percentile of the scan source-to-commit latency, milliseconds */

@@ -1,12 +1,11 @@
-package io.rtaware.app.sim;
+package io.rtaware.robotrun;
 
-import io.rtaware.app.run.RobotRun;
 import io.rtaware.core.agent.AgentThread;
 import io.rtaware.core.data.Key;
 import io.rtaware.core.time.Clock;
-import io.rtaware.foxglove.FoxgloveServer;
 import io.rtaware.nav.NavKeys;
 import io.rtaware.record.RecordingPlan;
+import io.rtaware.record.RecordingTap;
 import io.rtaware.record.RobotRecordingPlan;
 import io.rtaware.record.RunRecorder;
 import io.rtaware.robot.msg.LaserScan;
@@ -14,6 +13,7 @@ import io.rtaware.robot.msg.OccupancyGrid;
 import io.rtaware.robot.msg.Odometry;
 import io.rtaware.robot.msg.RobotKeys;
 import io.rtaware.ros2msg.RobotTopics;
+import io.rtaware.sim.map.OccupancyMap;
 import io.rtaware.sim.scenario.Scenario;
 import io.rtaware.sim.server.PlayerSimServer;
 import io.rtaware.sim.world.World;
@@ -24,24 +24,25 @@ import org.agrona.concurrent.Agent;
 import org.agrona.concurrent.SleepingMillisIdleStrategy;
 
 /**
- * {@code rtaware sim --foxglove}: the simulated robot as Foxglove sees a ROS 2 robot, through the
- * recorder's channels and encoders (a recorder without a file, its tap the Foxglove server):
+ * The simulated robot as a recording's tap sees a robot (what {@code rtaware sim --foxglove}
+ * shows in Foxglove), through the recorder's channels and encoders (a recorder without a file,
+ * feeding the tap alone) and the robot's plan ({@link RobotRecordingPlan}):
  * {@code /scan} (frame {@code laser}), {@code /odom}, {@code /ground_truth}, {@code /tf}
  * ({@code odom} to {@code base_link}, {@code map} to {@code ground_truth}), {@code /tf_static}
  * ({@code map} to {@code odom}, {@code base_link} to {@code laser}) and the scenario's walls on
  * {@code /map} (latched). A sampler ({@value #THREAD_NAME}, an {@link AgentThread}) looks at the
  * world every {@value #SAMPLE_PERIOD_MS} ms of wall time and hands each new scan and odometry
  * sample to the recorder (the world is read under its lock, as the Player server does); the
- * recorder's writer thread encodes and sends them. A look that throws is printed once and
- * counted; the sampler goes on.
+ * recorder's writer thread encodes and sends them. A look that throws is printed once (to
+ * standard error) and counted; the sampler goes on.
  */
-final class SimFoxglove implements AutoCloseable, Agent {
+public final class SimulatorFeed implements AutoCloseable, Agent {
 
     /** The sampler thread's name. */
-    static final String THREAD_NAME = "rtaware-sim-foxglove";
+    public static final String THREAD_NAME = "rtaware-sim-feed";
 
     /** Wall time between two looks at the world. */
-    static final long SAMPLE_PERIOD_MS = 5;
+    public static final long SAMPLE_PERIOD_MS = 5;
 
     private static final int LASER = 0;
     private static final int ODOMETRY = 1;
@@ -62,23 +63,23 @@ final class SimFoxglove implements AutoCloseable, Agent {
     private long scans;
     private long samples;
 
-    private SimFoxglove(PlayerSimServer server, Clock clock, RunRecorder recorder) {
+    private SimulatorFeed(PlayerSimServer server, Clock clock, RunRecorder recorder) {
         this.server = server;
         this.clock = clock;
         this.recorder = recorder;
     }
 
     /**
-     * Starts feeding the Foxglove server from the simulator.
+     * Starts feeding a tap (the Foxglove server) from the simulator.
      *
      * @param scenario the served scenario (its map becomes {@code /map})
      * @param server the simulator
      * @param clock its world clock
-     * @param foxglove the Foxglove server
+     * @param tap where the recorder's messages go, e.g. a {@code FoxgloveServer}
      * @return the running feed; close it before the simulator
      */
-    static SimFoxglove start(Scenario scenario, PlayerSimServer server, Clock clock, FoxgloveServer foxglove) {
-        OccupancyGrid walls = scenario.map().map(RobotRun::worldGrid).orElse(null);
+    public static SimulatorFeed start(Scenario scenario, PlayerSimServer server, Clock clock, RecordingTap tap) {
+        OccupancyGrid walls = scenario.map().map(OccupancyMap::toGrid).orElse(null);
         int cells = walls == null ? 1 : walls.width() * walls.height();
         Key<OccupancyGrid> mapKey = Key.of(NavKeys.MAP, OccupancyGrid.class, () -> new OccupancyGrid(cells));
         RecordingPlan plan = RobotRecordingPlan.create()
@@ -87,7 +88,7 @@ final class SimFoxglove implements AutoCloseable, Agent {
                 .metadata("command", "sim")
                 .metadata("scenario", scenario.name())
                 .startingNow(clock.nanos())
-                .tap(foxglove);
+                .tap(tap);
         RunRecorder recorder;
         try {
             recorder = new RunRecorder((Path) null, List.of(), List.of(),
@@ -98,7 +99,7 @@ final class SimFoxglove implements AutoCloseable, Agent {
         if (walls != null) {
             recorder.commit(MAP, 1, clock.nanos(), walls);
         }
-        SimFoxglove feed = new SimFoxglove(server, clock, recorder);
+        SimulatorFeed feed = new SimulatorFeed(server, clock, recorder);
         feed.sampler = AgentThread.start(feed, new SleepingMillisIdleStrategy(SAMPLE_PERIOD_MS), feed::lookFailed);
         return feed;
     }
@@ -128,7 +129,7 @@ final class SimFoxglove implements AutoCloseable, Agent {
 
     private void lookFailed(Throwable error) {
         if (sampler == null || sampler.errors() <= 1) {
-            System.err.println("rtaware sim: --foxglove: a look at the world failed: " + error
+            System.err.println(THREAD_NAME + ": a look at the world failed: " + error
                     + " (the sampler goes on; further failures are counted)");
         }
     }

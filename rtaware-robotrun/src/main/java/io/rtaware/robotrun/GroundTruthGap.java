@@ -1,4 +1,4 @@
-package io.rtaware.app.run;
+package io.rtaware.robotrun;
 
 /**
  * A span of a run without ground truth (a lost or restarted server), in the {@code run}

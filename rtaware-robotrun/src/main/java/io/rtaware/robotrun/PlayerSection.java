@@ -1,4 +1,4 @@
-package io.rtaware.app.run;
+package io.rtaware.robotrun;
 
 import io.rtaware.player.task.DeviceSamples;
 import java.util.Map;

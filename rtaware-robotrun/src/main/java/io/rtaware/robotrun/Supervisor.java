@@ -1,4 +1,4 @@
-package io.rtaware.app.run;
+package io.rtaware.robotrun;
 
 import io.rtaware.core.time.Clock;
 import java.util.Locale;
@@ -13,17 +13,17 @@ import java.util.function.LongSupplier;
  * clock, wall time from an injected source, so every rule is tested without sleeping. Not
  * thread-safe: the supervising thread owns it.
  */
-final class Supervisor {
+public final class Supervisor {
 
     /** Least displacement over the stuck window for a commanded robot to count as moving. */
-    static final double STUCK_MIN_MOVE_M = 0.05;
+    public static final double STUCK_MIN_MOVE_M = 0.05;
     /** World time without odometry after which the server counts as lost. */
-    static final double LOST_SERVER_AFTER_S = 5.0;
+    public static final double LOST_SERVER_AFTER_S = 5.0;
     /** Also required, so a loaded machine that stalls the scaled world briefly is not a lost server. */
-    static final double LOST_SERVER_AFTER_WALL_S = 3.0;
+    public static final double LOST_SERVER_AFTER_WALL_S = 3.0;
 
     /** What the supervisor looks at; each call reads the newest state. */
-    interface View {
+    public interface View {
         /** Reads the newest state once per look; the other methods answer from it. */
         void refresh();
 
@@ -69,7 +69,7 @@ final class Supervisor {
      * @param timeLimitS the scenario's time limit in world seconds
      * @param stuckAfterS the stuck window in world seconds
      */
-    Supervisor(View view, Clock clock, LongSupplier wallNanos, long startNs, double timeLimitS, double stuckAfterS) {
+    public Supervisor(View view, Clock clock, LongSupplier wallNanos, long startNs, double timeLimitS, double stuckAfterS) {
         this.view = view;
         this.clock = clock;
         this.wallNanos = wallNanos;
@@ -85,7 +85,7 @@ final class Supervisor {
      *
      * @return how the run ended, or null while it goes on
      */
-    RunState.Ending check() {
+    public RunState.Ending check() {
         long nowNs = clock.nanos();
         long nowWallNs = wallNanos.getAsLong();
         view.refresh();
@@ -125,7 +125,7 @@ final class Supervisor {
     }
 
     /** @return rising edges of the stall flag seen so far (contacts, for a server without a contact count) */
-    long stallEdges() {
+    public long stallEdges() {
         return stallEdges;
     }
 }

@@ -1,4 +1,4 @@
-package io.rtaware.app.run;
+package io.rtaware.robotrun;
 
 import io.rtaware.nav.NavController;
 import io.rtaware.robot.msg.RobotKeys;
@@ -12,14 +12,14 @@ import io.rtaware.ros2msg.TwistCodec;
 import java.util.List;
 
 /**
- * The keys of a robot run that have a ROS 2 type, in their REP 105 frames, for
- * {@code run --export}: odometry also as {@code odom} to {@code base_link} on {@code /tf}; on
+ * The keys of a nav run that have a ROS 2 type, in their REP 105 frames, for the ROS 2 exporter
+ * ({@code run --export}): odometry also as {@code odom} to {@code base_link} on {@code /tf}; on
  * {@code /tf_static} the exporter publishes {@link RobotTopics#STATIC_TRANSFORMS}, as recordings
  * do. Stateless.
  */
-final class RunExports {
+final class NavExports {
 
-    private RunExports() {
+    private NavExports() {
     }
 
     /**

@@ -1,4 +1,4 @@
-package io.rtaware.app.run;
+package io.rtaware.robotrun;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;

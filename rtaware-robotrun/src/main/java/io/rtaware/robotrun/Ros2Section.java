@@ -1,4 +1,4 @@
-package io.rtaware.app.ros2;
+package io.rtaware.robotrun;
 
 import java.util.List;
 import java.util.Map;

@@ -1,4 +1,4 @@
-package io.rtaware.app.run;
+package io.rtaware.robotrun;
 
 import io.rtaware.core.agent.AgentThread;
 import io.rtaware.core.time.Clock;
@@ -27,15 +27,15 @@ import org.agrona.concurrent.NoOpIdleStrategy;
  * failed sample (a gap, {@link #lastError()}), the first one printed to standard error, and the
  * sampling goes on. Thread-safe: sampled by its own thread, read by any.
  */
-final class Referee implements AutoCloseable {
+public final class Referee implements AutoCloseable {
 
     /** Where the true pose comes from. */
-    interface PoseSource extends AutoCloseable {
+    public interface PoseSource extends AutoCloseable {
         /** @return the robot's pose now, or null if none is known yet */
         Pose2d pose() throws Exception;
 
         /** @return {@code ground_truth} or {@code odometry}, as the report says */
-        String kind();
+        public String kind();
 
         @Override
         default void close() throws Exception {
@@ -49,11 +49,11 @@ final class Referee implements AutoCloseable {
      * @param pose the pose
      * @param believed the robot's own estimate of its pose then (its odometry), or null if unknown
      */
-    record Sample(double tS, Pose2d pose, Pose2d believed) {
+    public record Sample(double tS, Pose2d pose, Pose2d believed) {
     }
 
     /** The name of the sampling thread. */
-    static final String THREAD_NAME = "rtaware-referee";
+    public static final String THREAD_NAME = "rtaware-referee";
 
     private final Clock clock;
     private final long startNs;
@@ -79,7 +79,7 @@ final class Referee implements AutoCloseable {
      * @param source the pose source; closed with the referee
      * @param misses the total deadline misses so far; a marker is recorded where it grows
      */
-    Referee(Clock clock, long startNs, long samplePeriodNs, PoseSource source, LongSupplier misses) {
+    public Referee(Clock clock, long startNs, long samplePeriodNs, PoseSource source, LongSupplier misses) {
         this(clock, startNs, samplePeriodNs, source, misses, () -> null);
     }
 
@@ -92,7 +92,7 @@ final class Referee implements AutoCloseable {
      * @param believed the robot's own pose estimate now (its odometry), or null while unknown;
      *     recorded beside each true pose
      */
-    Referee(Clock clock, long startNs, long samplePeriodNs, PoseSource source, LongSupplier misses,
+    public Referee(Clock clock, long startNs, long samplePeriodNs, PoseSource source, LongSupplier misses,
             Supplier<Pose2d> believed) {
         this.believed = Objects.requireNonNull(believed, "believed");
         this.clock = clock;
@@ -107,7 +107,7 @@ final class Referee implements AutoCloseable {
      *
      * @return this referee
      */
-    Referee start() {
+    public Referee start() {
         sampler = AgentThread.start(new Sampler(), NoOpIdleStrategy.INSTANCE, this::samplingFailed);
         return this;
     }
@@ -163,13 +163,13 @@ final class Referee implements AutoCloseable {
     }
 
     /** @return samples that threw on the sampling thread so far (failures of the pose source are not counted here) */
-    long samplingErrors() {
+    public long samplingErrors() {
         AgentThread loop = sampler;
         return loop == null ? 0 : loop.errors();
     }
 
     /** Takes one sample now (the sampling thread's step; tests call it on a manual clock). */
-    void sample() {
+    public void sample() {
         Pose2d pose;
         try {
             pose = source.pose();
@@ -208,12 +208,12 @@ final class Referee implements AutoCloseable {
     }
 
     /** @return {@code ground_truth} or {@code odometry} */
-    String kind() {
+    public String kind() {
         return source.kind();
     }
 
     /** @return the latest pose, or null if none yet */
-    synchronized Pose2d latest() {
+    public synchronized Pose2d latest() {
         return samples.isEmpty() ? null : samples.get(samples.size() - 1).pose();
     }
 
@@ -221,7 +221,7 @@ final class Referee implements AutoCloseable {
      * @param endS world seconds since the start at which the run ended
      * @return the gaps in the measurement, including one still open at {@code endS}
      */
-    synchronized List<GroundTruthGap> gaps(double endS) {
+    public synchronized List<GroundTruthGap> gaps(double endS) {
         List<GroundTruthGap> all = new ArrayList<>(gaps);
         if (failing || samples.isEmpty()) {
             all.add(new GroundTruthGap(samples.isEmpty() ? 0.0 : samples.get(samples.size() - 1).tS(), endS, true));
@@ -230,22 +230,22 @@ final class Referee implements AutoCloseable {
     }
 
     /** @return metres travelled so far, summed over the spans without a gap */
-    synchronized double travelledM() {
+    public synchronized double travelledM() {
         return travelledM;
     }
 
     /** @return a copy of the samples so far */
-    synchronized List<Sample> samples() {
+    public synchronized List<Sample> samples() {
         return new ArrayList<>(samples);
     }
 
     /** @return where deadline misses happened */
-    synchronized List<Point2d> missMarkers() {
+    public synchronized List<Point2d> missMarkers() {
         return new ArrayList<>(missMarkers);
     }
 
     /** @return the last error of the pose source, or null */
-    synchronized String lastError() {
+    public synchronized String lastError() {
         return lastError;
     }
 
@@ -254,7 +254,7 @@ final class Referee implements AutoCloseable {
      * @return how far the robot moved in the last {@code windowS} seconds (straight line), or
      *     {@link Double#NaN} if the run is younger than the window
      */
-    synchronized double displacementOverLastM(double windowS) {
+    public synchronized double displacementOverLastM(double windowS) {
         if (samples.isEmpty()) {
             return Double.NaN;
         }
