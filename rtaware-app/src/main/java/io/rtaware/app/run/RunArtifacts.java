@@ -1,7 +1,7 @@
 package io.rtaware.app.run;
 
 import io.rtaware.app.output.OutputWrites;
-import io.rtaware.app.report.ReportSections;
+import io.rtaware.core.analysis.ReportSections;
 import io.rtaware.core.conditions.Conditions;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;

@@ -15,21 +15,37 @@ class ThreadAllocationTest {
 
     private static volatile byte[] sink;
 
+    /** A thread that allocates 10 000 bytes once let go, then waits until it may end. */
+    private static final class Allocator {
+        final CountDownLatch go = new CountDownLatch(1);
+        final CountDownLatch allocated = new CountDownLatch(1);
+        final Thread thread;
+
+        Allocator(String name, CountDownLatch mayEnd) {
+            thread = new Thread(() -> {
+                try {
+                    go.await();
+                    sink = new byte[10_000];
+                    allocated.countDown();
+                    mayEnd.await();
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }, name);
+            thread.start();
+        }
+
+        /** Lets it allocate and waits until it has. */
+        void allocate() throws InterruptedException {
+            go.countDown();
+            assertTrue(allocated.await(10, TimeUnit.SECONDS));
+        }
+    }
+
     @Test
     void namesTheFrameworkThreadThatAllocatedAndHowMuch() throws Exception {
-        CountDownLatch snapshotTaken = new CountDownLatch(1);
-        CountDownLatch allocated = new CountDownLatch(1);
         CountDownLatch mayEnd = new CountDownLatch(1);
-        Thread task = new Thread(() -> {
-            try {
-                snapshotTaken.await();
-                sink = new byte[10_000];
-                allocated.countDown();
-                mayEnd.await();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }, "rtaware-alloc-test");
+        Allocator task = new Allocator("rtaware-alloc-test", mayEnd);
         Thread idle = new Thread(() -> {
             try {
                 mayEnd.await();
@@ -37,16 +53,14 @@ class ThreadAllocationTest {
                 Thread.currentThread().interrupt();
             }
         }, "rtaware-idle-test");
-        task.start();
         idle.start();
         try {
-            while (idle.getState() != Thread.State.WAITING || task.getState() != Thread.State.WAITING) {
+            while (idle.getState() != Thread.State.WAITING || task.thread.getState() != Thread.State.WAITING) {
                 Thread.onSpinWait(); // both parked in await (which allocates its queue node) before the snapshot
             }
             ThreadAllocation.prepare();
             ThreadAllocation snapshot = ThreadAllocation.ofFrameworkThreads();
-            snapshotTaken.countDown();
-            assertTrue(allocated.await(10, TimeUnit.SECONDS));
+            task.allocate();
             String threads = snapshot.allocatingThreads();
             Matcher m = Pattern.compile("rtaware-alloc-test (\\d+) B").matcher(threads);
             assertTrue(m.find(), threads);
@@ -55,7 +69,7 @@ class ThreadAllocationTest {
             assertEquals(-1, threads.indexOf("rtaware-idle-test"), "a thread that allocated nothing is not named: " + threads);
         } finally {
             mayEnd.countDown();
-            task.join();
+            task.thread.join();
             idle.join();
         }
     }
@@ -68,31 +82,18 @@ class ThreadAllocationTest {
 
     @Test
     void threadsKnownByIdAreNamedByIt() throws Exception {
-        CountDownLatch snapshotTaken = new CountDownLatch(1);
-        CountDownLatch allocated = new CountDownLatch(1);
         CountDownLatch mayEnd = new CountDownLatch(1);
-        Thread worker = new Thread(() -> {
-            try {
-                snapshotTaken.await();
-                sink = new byte[10_000];
-                allocated.countDown();
-                mayEnd.await();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }, "any-name");
-        worker.start();
+        Allocator worker = new Allocator("any-name", mayEnd);
         try {
-            ThreadAllocation snapshot = ThreadAllocation.ofThreadIds(worker.getId());
-            snapshotTaken.countDown();
-            assertTrue(allocated.await(10, TimeUnit.SECONDS));
+            ThreadAllocation snapshot = ThreadAllocation.ofThreadIds(worker.thread.getId());
+            worker.allocate();
             assertEquals(1, snapshot.threads());
             assertTrue(snapshot.allocatedSince() >= 10_000, snapshot.allocatingThreads());
-            assertTrue(snapshot.allocatingThreads().startsWith("thread " + worker.getId() + " "),
+            assertTrue(snapshot.allocatingThreads().startsWith("thread " + worker.thread.getId() + " "),
                     snapshot.allocatingThreads());
         } finally {
             mayEnd.countDown();
-            worker.join();
+            worker.thread.join();
         }
     }
 }

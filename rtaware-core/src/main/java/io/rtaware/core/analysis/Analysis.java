@@ -1,8 +1,5 @@
-package io.rtaware.app.report;
+package io.rtaware.core.analysis;
 
-import io.rtaware.core.analysis.AdviceItem;
-import io.rtaware.core.analysis.AnalysisText;
-import io.rtaware.core.analysis.SchedulabilityReport;
 import java.util.List;
 
 /**

@@ -1,4 +1,4 @@
-package io.rtaware.app.report;
+package io.rtaware.core.analysis;
 
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.PeriodChange;

@@ -1,9 +1,6 @@
-package io.rtaware.app.report;
+package io.rtaware.core.analysis;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import io.rtaware.core.analysis.AdviceItem;
-import io.rtaware.core.analysis.PeriodAdvisor;
-import io.rtaware.core.analysis.Schedulability;
 import io.rtaware.core.conditions.Conditions;
 import io.rtaware.core.conditions.MachineVerdict;
 import io.rtaware.core.report.Report;

@@ -1,10 +1,9 @@
-package io.rtaware.app.report;
+package io.rtaware.core.analysis;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import io.rtaware.core.analysis.AdviceItem;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
