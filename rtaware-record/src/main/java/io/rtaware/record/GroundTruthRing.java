@@ -2,6 +2,7 @@ package io.rtaware.record;
 
 import io.rtaware.record.ring.SingleProducerRing;
 import io.rtaware.record.ring.SlotReader;
+import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.ros2msg.Ros2Codec;
 import io.rtaware.ros2msg.TransformMessages;
 import io.rtaware.ros2msg.value.PlanarPose;
@@ -13,9 +14,6 @@ import java.io.IOException;
  * transforms, as the transform {@code map} to {@code ground_truth} on {@code /tf}.
  */
 final class GroundTruthRing implements RecorderRing {
-
-    /** The frame of the true pose, a child of {@code map} on {@code /tf} (when the recording has transforms). */
-    static final String GROUND_TRUTH_FRAME = "ground_truth";
 
     /** One sampled pose. */
     private static final class Sample {
@@ -65,12 +63,12 @@ final class GroundTruthRing implements RecorderRing {
     @SuppressWarnings("unchecked")
     private void write(Sample s, long position, MessageSink sink, WriterScratch scratch) throws IOException {
         pose.set(s.xM, s.yM, s.yawRad);
-        scratch.header.set(stampOffsetNs + s.timeNs, "map");
+        scratch.header.set(stampOffsetNs + s.timeNs, RobotTopics.MAP_FRAME);
         codec.encode(scratch.header, pose, scratch.cdr);
         sink.write(channel, position, s.timeNs, s.timeNs, scratch.cdr.buffer(), 0, scratch.cdr.size());
         if (tfChannel != 0) {
             TransformMessages.begin(scratch.cdr, 1);
-            TransformMessages.transform(scratch.cdr, stampOffsetNs + s.timeNs, "map", GROUND_TRUTH_FRAME, s.xM, s.yM,
+            TransformMessages.transform(scratch.cdr, stampOffsetNs + s.timeNs, RobotTopics.MAP_FRAME, RobotTopics.GROUND_TRUTH_FRAME, s.xM, s.yM,
                     s.yawRad);
             sink.write(tfChannel, position, s.timeNs, s.timeNs, scratch.cdr.buffer(), 0, scratch.cdr.size());
         }

@@ -6,6 +6,7 @@ import io.rtaware.record.encode.JsonStateCodec;
 import io.rtaware.record.encode.TimingTypes;
 import io.rtaware.robot.msg.LaserScan;
 import io.rtaware.robot.msg.Odometry;
+import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.ros2msg.Ros2Codec;
 import io.rtaware.ros2msg.Ros2Types;
 import io.rtaware.ros2msg.TransformMessages;
@@ -73,7 +74,7 @@ final class KeyChannels {
         if (tf != null && key.type() == Odometry.class) {
             tfParent = tf[0];
             tfChild = tf[1];
-            tfChannel = layout.add(RecordingPlan.TF_TOPIC, Ros2Types.TF_MESSAGE.name(), Ros2Types.TF_MESSAGE.schemaText(),
+            tfChannel = layout.add(RobotTopics.TF, Ros2Types.TF_MESSAGE.name(), Ros2Types.TF_MESSAGE.schemaText(),
                     Ros2Types.TF_MESSAGE.typeHash(), Ros2Channels.Qos.TF, Map.of());
         } else {
             tfParent = null;

@@ -1,6 +1,7 @@
 package io.rtaware.record;
 
 import io.rtaware.record.mcap.Compression;
+import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.ros2msg.value.PlanarTransform;
 import java.time.Instant;
 import java.util.ArrayList;
@@ -25,8 +26,6 @@ public final class RecordingPlan {
     public static final String TIMING_PREFIX = "/rtaware/timing/";
     /** The monitor events topic. */
     public static final String EVENTS_TOPIC = "/rtaware/events";
-    /** The ground-truth topic. */
-    public static final String GROUND_TRUTH_TOPIC = "/ground_truth";
     /**
      * {@code rtaware.run} metadata: what was added to world time to make log times (Unix-epoch
      * ns of world time 0). Absent in recordings made before log times were epoch times (then 0).
@@ -36,12 +35,6 @@ public final class RecordingPlan {
     public static final String WALL_CLOCK_START_NS = "wall_clock_start_unix_ns";
     /** {@code rtaware.run} metadata: the world time at the run's wall-clock start, ns. */
     public static final String WORLD_START_NS = "world_start_ns";
-    /** The transforms topic. */
-    public static final String TF_TOPIC = "/tf";
-    /** The static transforms topic. */
-    public static final String TF_STATIC_TOPIC = "/tf_static";
-    /** The simulated-time topic ({@code rosgraph_msgs/msg/Clock}). */
-    public static final String CLOCK_TOPIC = "/clock";
     /** World time between {@code /clock} ticks the commands record: 10 ms (100 Hz). */
     public static final long CLOCK_PERIOD_NS = 10_000_000L;
     /**
@@ -323,7 +316,7 @@ public final class RecordingPlan {
      * @return its header's frame id ({@code map} unless set)
      */
     public String frameOf(String key) {
-        return frames.getOrDefault(key, "map");
+        return frames.getOrDefault(key, RobotTopics.MAP_FRAME);
     }
 
     /**

@@ -10,15 +10,13 @@ import io.rtaware.ros2msg.OccupancyGridCodec;
 import io.rtaware.ros2msg.OdometryCodec;
 import io.rtaware.ros2msg.PathCodec;
 import io.rtaware.ros2msg.PoseStampedCodec;
+import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.ros2msg.Ros2Codec;
 import io.rtaware.ros2msg.TwistCodec;
 import io.rtaware.ros2msg.value.PlanarPose;
 
 /** Which value classes are recorded as which standard ROS 2 type. */
 public final class RosCodecs {
-
-    /** The child frame of recorded odometry. */
-    public static final String BASE_FRAME = "base_link";
 
     private RosCodecs() {
     }
@@ -31,7 +29,7 @@ public final class RosCodecs {
         if (type == LaserScan.class) {
             return new LaserScanCodec();
         } else if (type == Odometry.class) {
-            return new OdometryCodec(BASE_FRAME);
+            return new OdometryCodec(RobotTopics.BASE_FRAME);
         } else if (type == VelocityCommand.class) {
             return new TwistCodec();
         } else if (type == PlannedPath.class) {

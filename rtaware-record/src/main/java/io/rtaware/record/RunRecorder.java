@@ -5,6 +5,7 @@ import io.rtaware.core.data.StateValue;
 import io.rtaware.record.encode.TimingTypes;
 import io.rtaware.record.mcap.McapWriter;
 import io.rtaware.ros2msg.PoseStampedCodec;
+import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.ros2msg.Ros2Types;
 import io.rtaware.ros2msg.TransformMessages;
 import io.rtaware.ros2msg.cdr.CdrWriter;
@@ -182,12 +183,12 @@ public final class RunRecorder {
             if (plan.hasGroundTruth()) {
                 PoseStampedCodec poseCodec = new PoseStampedCodec();
                 boolean transforms = !plan.staticTransforms().isEmpty();
-                int truthTf = transforms ? layout.add(RecordingPlan.TF_TOPIC, Ros2Types.TF_MESSAGE.name(),
+                int truthTf = transforms ? layout.add(RobotTopics.TF, Ros2Types.TF_MESSAGE.name(),
                         Ros2Types.TF_MESSAGE.schemaText(), Ros2Types.TF_MESSAGE.typeHash(), Ros2Channels.Qos.TF,
                         Map.of()) : 0;
-                truth = new GroundTruthRing(layout.add(RecordingPlan.GROUND_TRUTH_TOPIC, poseCodec.type().name(),
+                truth = new GroundTruthRing(layout.add(RobotTopics.GROUND_TRUTH, poseCodec.type().name(),
                         poseCodec.type().schemaText(), poseCodec.type().typeHash(), Ros2Channels.Qos.RELIABLE_VOLATILE,
-                        Map.of("frame_id", "map")), truthTf, poseCodec, plan.valueSlots() * 8, plan.logTimeOffsetNs());
+                        Map.of("frame_id", RobotTopics.MAP_FRAME)), truthTf, poseCodec, plan.valueSlots() * 8, plan.logTimeOffsetNs());
                 rings.add(truth);
             } else {
                 truth = null;
@@ -201,7 +202,7 @@ public final class RunRecorder {
         sink = plan.tap() == null ? ordered : new TappedSink(plan.tap(), ordered, plan.logTimeOffsetNs());
         try {
             if (plan.clockPeriodNs() > 0 && ordered != null) { // /clock is for files; a tap alone follows live time
-                int clock = layout.add(RecordingPlan.CLOCK_TOPIC, Ros2Types.CLOCK.name(), Ros2Types.CLOCK.schemaText(),
+                int clock = layout.add(RobotTopics.CLOCK, Ros2Types.CLOCK.name(), Ros2Types.CLOCK.schemaText(),
                         Ros2Types.CLOCK.typeHash(), Ros2Channels.Qos.CLOCK, Map.of());
                 ordered.clock(new ClockTicks(writer, clock, plan.worldStartNs(), plan.clockPeriodNs(),
                         plan.logTimeOffsetNs()));
@@ -221,7 +222,7 @@ public final class RunRecorder {
         if (all.isEmpty()) {
             return;
         }
-        int channel = layout.add(RecordingPlan.TF_STATIC_TOPIC, Ros2Types.TF_MESSAGE.name(),
+        int channel = layout.add(RobotTopics.TF_STATIC, Ros2Types.TF_MESSAGE.name(),
                 Ros2Types.TF_MESSAGE.schemaText(), Ros2Types.TF_MESSAGE.typeHash(),
                 Ros2Channels.Qos.RELIABLE_TRANSIENT_LOCAL, Map.of());
         CdrWriter cdr = new CdrWriter(4096);

@@ -13,6 +13,7 @@ import io.rtaware.record.mcap.McapSchema;
 import io.rtaware.record.mcap.McapVisitor;
 import io.rtaware.robot.msg.LaserScan;
 import io.rtaware.robot.msg.MotionRequest;
+import io.rtaware.ros2msg.RobotTopics;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -139,7 +140,7 @@ class RecordingTapTest {
             assertEquals(schema.data(), t.schema(), "ros2msg schema of " + c.topic());
             assertEquals(schema.encoding(), TapChannel.SCHEMA_ENCODING, "schema encoding of " + c.topic());
             assertEquals(c.messageEncoding(), TapChannel.MESSAGE_ENCODING, "message encoding of " + c.topic());
-            assertEquals(c.topic().equals(RecordingPlan.TF_STATIC_TOPIC), t.latched(), "latched: " + c.topic());
+            assertEquals(c.topic().equals(RobotTopics.TF_STATIC), t.latched(), "latched: " + c.topic());
         }
         Comparator<Msg> order = Comparator.comparingLong(Msg::logTimeNs).thenComparingInt(Msg::channel);
         List<Msg> fromTap = new ArrayList<>(tap.messages);

@@ -1,7 +1,7 @@
 package io.rtaware.app.analyze;
 
 import io.rtaware.app.UserError;
-import io.rtaware.app.report.ReportSections;
+import io.rtaware.core.analysis.ReportSections;
 import io.rtaware.core.conditions.MachineVerdict;
 import io.rtaware.core.report.ReportDocument;
 import java.io.IOException;

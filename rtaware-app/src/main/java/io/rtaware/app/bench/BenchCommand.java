@@ -1,13 +1,6 @@
 package io.rtaware.app.bench;
 
 import io.rtaware.app.UserError;
-import io.rtaware.app.bench.compare.CompareReport;
-import io.rtaware.app.bench.compare.CompareRun;
-import io.rtaware.app.bench.compare.Goal;
-import io.rtaware.app.bench.compare.PairedRounds;
-import io.rtaware.app.bench.compare.ReleaseStats;
-import io.rtaware.app.bench.compare.RunResult;
-import io.rtaware.app.bench.compare.TaskSweep;
 import io.rtaware.app.cli.CommandMonitor;
 import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.app.cli.MemoryBudget;
@@ -18,11 +11,24 @@ import io.rtaware.app.foxglove.FoxgloveMixin;
 import io.rtaware.app.live.LiveMixin;
 import io.rtaware.app.output.OutputFile;
 import io.rtaware.app.output.OutputWrites;
-import io.rtaware.app.report.ReportSections;
 import io.rtaware.app.ros2.DdsMixin;
 import io.rtaware.app.ros2.ExportMixin;
 import io.rtaware.app.ros2.ExportOptions;
 import io.rtaware.app.ros2.RosDistroMixin;
+import io.rtaware.bench.compare.CompareReport;
+import io.rtaware.bench.compare.CompareRun;
+import io.rtaware.bench.compare.Goal;
+import io.rtaware.bench.compare.PairedRounds;
+import io.rtaware.bench.compare.ReleaseStats;
+import io.rtaware.bench.compare.RunResult;
+import io.rtaware.bench.compare.TaskSweep;
+import io.rtaware.bench.load.BenchSpec;
+import io.rtaware.bench.load.BenchTask;
+import io.rtaware.bench.load.BusyWork;
+import io.rtaware.bench.load.CpuLoad;
+import io.rtaware.bench.load.GarbageLoad;
+import io.rtaware.bench.load.LatenessHistogram;
+import io.rtaware.core.analysis.ReportSections;
 import io.rtaware.core.conditions.Conditions;
 import io.rtaware.core.conditions.ConditionsMeter;
 import io.rtaware.core.monitor.AdaptivePolicy;
@@ -33,6 +39,7 @@ import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
 import io.rtaware.core.report.SummaryTable;
 import io.rtaware.core.report.TaskReport;
+import io.rtaware.core.testing.ThreadAllocation;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.Durations;
 import io.rtaware.core.time.MonotonicSleeper;
@@ -548,7 +555,12 @@ public final class BenchCommand implements Callable<Integer> {
 
     private List<BenchSpec> taskSet() {
         if (spec != null) {
-            List<BenchSpec> parsed = BenchSpec.parseList(spec);
+            List<BenchSpec> parsed;
+            try {
+                parsed = BenchSpec.parseList(spec);
+            } catch (IllegalArgumentException e) {
+                throw new UserError(e.getMessage());
+            }
             return stagger ? BenchSpec.staggered(parsed) : parsed;
         }
         if (tasks < 1) {
@@ -560,8 +572,12 @@ public final class BenchCommand implements Callable<Integer> {
     /** @return {@code count} tasks t1..tN of --period and --work, staggered with --stagger */
     private List<BenchSpec> uniform(int count) {
         List<BenchSpec> specs = new ArrayList<>();
-        for (int i = 1; i <= count; i++) {
-            specs.add(BenchSpec.of("t" + i, periodNs, workNs));
+        try {
+            for (int i = 1; i <= count; i++) {
+                specs.add(BenchSpec.of("t" + i, periodNs, workNs));
+            }
+        } catch (IllegalArgumentException e) {
+            throw new UserError(e.getMessage());
         }
         return stagger ? BenchSpec.staggered(specs) : specs;
     }

@@ -6,6 +6,7 @@ import io.rtaware.ros2.export.MonitorExporter;
 import io.rtaware.ros2.graph.DdsSettings;
 import io.rtaware.ros2.graph.Ros2Context;
 import io.rtaware.ros2.graph.Ros2Distro;
+import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.zenoh.ZenohException;
 import io.rtaware.ros2msg.value.PlanarTransform;
 import java.io.PrintStream;
@@ -45,10 +46,10 @@ public record ExportOptions(String router, String listen, Ros2Distro distro, Dds
             MonitorExporter exporter = MonitorExporter.start(monitor, context, keys, staticTransforms, KEY_PERIOD_MS);
             List<String> topics = new ArrayList<>(exporter.topics().values().stream().sorted().toList());
             if (keys.stream().anyMatch(k -> k.transformChild() != null)) {
-                topics.add(MonitorExporter.TF);
+                topics.add(RobotTopics.TF);
             }
             if (!staticTransforms.isEmpty()) {
-                topics.add(MonitorExporter.TF_STATIC);
+                topics.add(RobotTopics.TF_STATIC);
             }
             String where = dds != null ? dds.describe() : "Zenoh on " + at + (router == null ? "" : " via " + router);
             err.println("rtaware export: ROS 2 over " + where

@@ -1,9 +1,14 @@
 package io.rtaware.app.ros2;
 
 import io.rtaware.app.UserError;
+import io.rtaware.robotrun.Ros2Link;
 import io.rtaware.ros2.graph.DdsSettings;
 import io.rtaware.ros2.graph.Ros2Context;
 import io.rtaware.ros2.graph.Ros2Distro;
+import io.rtaware.ros2.graph.Ros2Transport;
+import io.rtaware.ros2.task.Ros2DataTask;
+import io.rtaware.sim.ros2.Ros2SimRobot;
+import io.rtaware.sim.server.PlayerSimServer;
 import io.rtaware.zenoh.ZenohConfig;
 import io.rtaware.zenoh.ZenohException;
 import io.rtaware.zenoh.ZenohLibrary;
@@ -13,7 +18,10 @@ import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.util.List;
 
-/** Opening Zenoh sessions for the command line, with user errors for what the user can fix. Stateless. */
+/**
+ * Opening Zenoh sessions, and the ROS 2 side of a run, for the command line, with user errors for
+ * what the user can fix. Stateless.
+ */
 public final class Ros2Wiring {
 
     private Ros2Wiring() {
@@ -81,6 +89,56 @@ public final class Ros2Wiring {
             return Ros2Context.openDds(dds, DDS_START_TIMEOUT_MS);
         } catch (ZenohException e) {
             throw new UserError("--dds: cannot join " + dds.describe() + ": " + e.getMessage().lines().findFirst().orElse(""));
+        }
+    }
+
+    /**
+     * Opens the ROS 2 side of one {@code run --ros2}: the controller's Zenoh context and data task
+     * and, without {@code --zenoh} or {@code --dds}, the built-in simulator served as a ROS 2 robot
+     * in the same process (its own session listening on a free loopback port, the controller's
+     * session connecting to it).
+     *
+     * @param options what {@code --ros2} asked for
+     * @param server the built-in simulator, or null when the robot is reached through a router or over DDS
+     * @return the link
+     * @throws UserError if a router cannot be reached or the DDS bridge cannot start
+     */
+    public static Ros2Link link(Ros2Options options, PlayerSimServer server) {
+        Ros2Transport transport = options.dds() != null ? Ros2Transport.DDS : Ros2Transport.RMW_ZENOH;
+        if (options.dds() != null) {
+            return new Ros2Link(Ros2DataTask.withDefaults(openDds(options.dds()), options.topics()), null,
+                    "ROS 2 robot over " + options.dds().describe(), transport, options.distro());
+        }
+        Ros2SimRobot robot = null;
+        List<String> connect;
+        if (options.router() == null) {
+            String endpoint = freeLoopbackEndpoint();
+            Ros2Context simContext = open(List.of(), List.of(endpoint), options.topics().domain(), options.distro());
+            try {
+                // its notices reach the run's summary and report through Ros2Link.notices()
+                robot = Ros2SimRobot.start(server, simContext, options.topics().namespace(), line -> { });
+            } catch (ZenohException e) {
+                throw new IllegalStateException("the simulator's ROS 2 side did not start: " + e.getMessage(), e);
+            }
+            connect = List.of(endpoint);
+        } else {
+            connect = List.of(options.router());
+        }
+        try {
+            Ros2Context context = open(connect, List.of(ZenohConfig.LOOPBACK_ANY_PORT), options.topics().domain(),
+                    options.distro());
+            return new Ros2Link(Ros2DataTask.withDefaults(context, options.topics()), robot,
+                    options.router() == null ? "built-in simulator as a ROS 2 robot over Zenoh on loopback"
+                            : "ROS 2 robot through Zenoh at " + options.router(), transport, options.distro());
+        } catch (RuntimeException e) {
+            if (robot != null) {
+                try {
+                    robot.close();
+                } catch (ZenohException closing) {
+                    e.addSuppressed(closing);
+                }
+            }
+            throw e;
         }
     }
 

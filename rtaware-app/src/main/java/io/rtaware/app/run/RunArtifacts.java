@@ -1,7 +1,7 @@
 package io.rtaware.app.run;
 
 import io.rtaware.app.output.OutputWrites;
-import io.rtaware.app.report.ReportSections;
+import io.rtaware.core.analysis.ReportSections;
 import io.rtaware.core.conditions.Conditions;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
@@ -10,6 +10,10 @@ import io.rtaware.nav.NavConfig;
 import io.rtaware.nav.map.PgmMapWriter;
 import io.rtaware.robot.geometry.Pose2d;
 import io.rtaware.robot.msg.OccupancyGrid;
+import io.rtaware.robotrun.GroundTruthGap;
+import io.rtaware.robotrun.PlayerSection;
+import io.rtaware.robotrun.Referee;
+import io.rtaware.robotrun.RunSection;
 import io.rtaware.sim.map.OccupancyMap;
 import io.rtaware.sim.render.WorldRenderer;
 import io.rtaware.sim.scenario.Scenario;

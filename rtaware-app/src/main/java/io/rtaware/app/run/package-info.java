@@ -1,2 +1,5 @@
-/** {@code rtaware run}: the paper's waypoint course, driven by the four behaviors over Player. */
+/**
+ * {@code rtaware run}: the options of a robot run of the paper's course, their wiring onto the
+ * library's run ({@link io.rtaware.robotrun.NavRun}), the status line and the output folder.
+ */
 package io.rtaware.app.run;

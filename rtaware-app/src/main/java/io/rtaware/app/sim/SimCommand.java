@@ -12,6 +12,7 @@ import io.rtaware.app.ros2.RosDistroMixin;
 import io.rtaware.core.time.Durations;
 import io.rtaware.core.time.ScaledClock;
 import io.rtaware.foxglove.FoxgloveServer;
+import io.rtaware.robotrun.SimulatorFeed;
 import io.rtaware.ros2.graph.Ros2Distro;
 import io.rtaware.sim.scenario.Scenario;
 import io.rtaware.sim.scenario.ScenarioException;
@@ -126,7 +127,7 @@ public final class SimCommand implements Callable<Integer> {
              Ros2SimServe robot = ros2Options.isPresent() ? Ros2SimServe.start(server, ros2Options.get(), System.out)
                      : null;
              FoxgloveServer foxgloveServer = foxglove.enabled() ? foxglove.start("sim", System.out, System.err) : null;
-             SimFoxglove feed = foxgloveServer != null ? SimFoxglove.start(s, server, clock, foxgloveServer) : null) {
+             SimulatorFeed feed = foxgloveServer != null ? SimulatorFeed.start(s, server, clock, foxgloveServer) : null) {
             System.out.println(SimCommandSupport.startLine(s, config, server.port(), timeScale, seed));
             if (robot != null) {
                 System.out.println(robot.startLine());

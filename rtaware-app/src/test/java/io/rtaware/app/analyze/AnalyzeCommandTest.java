@@ -5,7 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import io.rtaware.app.RtawareCli;
-import io.rtaware.app.report.ReportSections;
+import io.rtaware.core.analysis.ReportSections;
 import io.rtaware.core.report.DataReport;
 import io.rtaware.core.report.Percentiles;
 import io.rtaware.core.report.Report;

@@ -2,7 +2,7 @@ package io.rtaware.app.analyze;
 
 import com.code_intelligence.jazzer.junit.FuzzTest;
 import io.rtaware.app.UserError;
-import io.rtaware.app.report.ReportSections;
+import io.rtaware.core.analysis.ReportSections;
 import io.rtaware.core.report.ReportDocument;
 import java.io.IOException;
 import java.nio.file.Files;

@@ -14,6 +14,7 @@ import io.rtaware.ros2.graph.Ros2Context;
 import io.rtaware.ros2.graph.Ros2Node;
 import io.rtaware.ros2.graph.Ros2Publisher;
 import io.rtaware.ros2msg.DiagnosticArrayCodec;
+import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.ros2msg.Ros2Header;
 import io.rtaware.ros2msg.Ros2Types;
 import io.rtaware.ros2msg.TransformMessages;
@@ -57,10 +58,6 @@ public final class MonitorExporter implements AutoCloseable {
     public static final String NODE_NAME = "rtaware_monitor";
     /** Topic of the health array. */
     public static final String DIAGNOSTICS = "/diagnostics";
-    /** The transforms topic (absolute, as tf2 publishes it). */
-    public static final String TF = "/tf";
-    /** The static transforms topic. */
-    public static final String TF_STATIC = "/tf_static";
     /** The history depth tf2's broadcaster offers on {@code /tf}. */
     private static final int TF_DEPTH = 100;
     /** The name of the exporter's thread. */
@@ -121,10 +118,10 @@ public final class MonitorExporter implements AutoCloseable {
                 transforms |= k.transformChild() != null;
             }
         }
-        tf = transforms ? node.createPublisher(TF, Ros2Types.TF_MESSAGE, new QosProfile(true, false, TF_DEPTH),
+        tf = transforms ? node.createPublisher(RobotTopics.TF, Ros2Types.TF_MESSAGE, new QosProfile(true, false, TF_DEPTH),
                 MAX_MESSAGE_BYTES) : null;
         tfStatic = this.staticTransforms.isEmpty() ? null
-                : node.createPublisher(TF_STATIC, Ros2Types.TF_MESSAGE, new QosProfile(true, true, 1), MAX_MESSAGE_BYTES);
+                : node.createPublisher(RobotTopics.TF_STATIC, Ros2Types.TF_MESSAGE, new QosProfile(true, true, 1), MAX_MESSAGE_BYTES);
         diagnostics = node.createPublisher(DIAGNOSTICS, diagnosticCodec.type(), QosProfile.defaults(), MAX_MESSAGE_BYTES);
         int statuses = monitor.tasks().size() + monitor.keyNames().size();
         array = new DiagnosticArray(statuses, VALUES_PER_STATUS);

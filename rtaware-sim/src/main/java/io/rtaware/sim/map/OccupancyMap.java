@@ -1,5 +1,6 @@
 package io.rtaware.sim.map;
 
+import io.rtaware.robot.msg.OccupancyGrid;
 import java.util.Objects;
 
 /**
@@ -168,6 +169,21 @@ public final class OccupancyMap {
      */
     public boolean isObstacleAt(double xM, double yM) {
         return isObstacle(colOf(xM), rowOf(yM));
+    }
+
+    /**
+     * @return the same walls as the robot's occupancy grid type (the live view's world, a
+     *     simulator's {@code /map}): obstacles occupied, the rest free, same geometry
+     */
+    public OccupancyGrid toGrid() {
+        OccupancyGrid grid = new OccupancyGrid(widthCells * heightCells());
+        grid.setGeometry(widthCells, heightCells(), resolutionM(), originXM(), originYM());
+        for (int row = 0; row < heightCells(); row++) {
+            for (int col = 0; col < widthCells; col++) {
+                grid.cells[row * widthCells + col] = isObstacle(col, row) ? OccupancyGrid.OCCUPIED : OccupancyGrid.FREE;
+            }
+        }
+        return grid;
     }
 
     /**

@@ -13,6 +13,7 @@ import io.rtaware.ros2.graph.Ros2Node;
 import io.rtaware.ros2.graph.Ros2Publisher;
 import io.rtaware.ros2msg.LaserScanCodec;
 import io.rtaware.ros2msg.OdometryCodec;
+import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.ros2msg.Ros2Header;
 import io.rtaware.ros2msg.Ros2Types;
 import io.rtaware.ros2msg.TransformMessages;
@@ -40,11 +41,11 @@ import org.agrona.concurrent.NoOpIdleStrategy;
  * {@code ground_truth} (both {@code nav_msgs/msg/Odometry}) whenever the world has new ones, and
  * drives the robot with the {@code geometry_msgs/msg/Twist} messages it receives on
  * {@code cmd_vel}; topic names are relative to the robot's namespace. Frames as REP 105 names
- * them and a robot driver publishes them: scans in {@value #LASER_FRAME}, odometry in
- * {@value #ODOM_FRAME} with child {@value #BASE_FRAME}, ground truth in {@code map}; on
- * {@code /tf} the transform {@value #ODOM_FRAME} to {@value #BASE_FRAME} of every odometry
- * sample, stamped as the sample; on {@code /tf_static} {@value #BASE_FRAME} to
- * {@value #LASER_FRAME} (the laser at the robot's centre), offered transient local as tf2's
+ * them and a robot driver publishes them: scans in {@value RobotTopics#LASER_FRAME}, odometry in
+ * {@value RobotTopics#ODOM_FRAME} with child {@value RobotTopics#BASE_FRAME}, ground truth in {@code map}; on
+ * {@code /tf} the transform {@value RobotTopics#ODOM_FRAME} to {@value RobotTopics#BASE_FRAME} of every odometry
+ * sample, stamped as the sample; on {@code /tf_static} {@value RobotTopics#BASE_FRAME} to
+ * {@value RobotTopics#LASER_FRAME} (the laser at the robot's centre), offered transient local as tf2's
  * static broadcaster offers it and, since this Zenoh layer keeps no history for late
  * subscribers, published again every {@value #STATIC_REPEAT_MS} ms of wall time. Header stamps
  * are world time (the simulator's clock, as ROS's {@code use_sim_time}) when the data was
@@ -76,21 +77,11 @@ public final class Ros2SimRobot implements AutoCloseable {
     public static final String GROUND_TRUTH = "ground_truth";
     /** Velocity command topic. */
     public static final String CMD_VEL = "cmd_vel";
-    /** The transforms topic (absolute, as tf2 publishes it). */
-    public static final String TF = "/tf";
-    /** The static transforms topic (absolute, as tf2 publishes it). */
-    public static final String TF_STATIC = "/tf_static";
     /**
      * The simulated time topic (absolute, as ROS 2 publishes it): the world's time, which stamps
      * every message of the robot, so that a node with {@code use_sim_time} follows it.
      */
     public static final String CLOCK = "/clock";
-    /** The laser's frame (REP 105). */
-    public static final String LASER_FRAME = "laser";
-    /** The odometry frame (REP 105). */
-    public static final String ODOM_FRAME = "odom";
-    /** The robot's body frame (REP 105). */
-    public static final String BASE_FRAME = "base_link";
     /** Wall time between two publications of {@code /tf_static}. */
     public static final long STATIC_REPEAT_MS = 1000;
     /** The name of the robot's thread. */
@@ -103,8 +94,7 @@ public final class Ros2SimRobot implements AutoCloseable {
     private static final long POLL_NS = TimeUnit.MILLISECONDS.toNanos(POLL_MS);
     private static final int MAX_MESSAGE_BYTES = 64 * 1024;
     /** {@code /tf_static}: the laser at the robot's centre, as the simulator measures its scans. */
-    private static final List<PlanarTransform> STATIC_TRANSFORMS = List.of(
-            new PlanarTransform(BASE_FRAME, LASER_FRAME, 0, 0, 0));
+    private static final List<PlanarTransform> STATIC_TRANSFORMS = List.of(RobotTopics.LASER_MOUNT);
     /** The history depth tf2's broadcaster offers on {@code /tf}. */
     private static final int TF_DEPTH = 100;
 
@@ -123,7 +113,7 @@ public final class Ros2SimRobot implements AutoCloseable {
     private final EpochClock epoch = new EpochClock();
 
     private final LaserScanCodec scanCodec = new LaserScanCodec();
-    private final OdometryCodec odomCodec = new OdometryCodec(BASE_FRAME);
+    private final OdometryCodec odomCodec = new OdometryCodec(RobotTopics.BASE_FRAME);
     private final TwistCodec twistCodec = new TwistCodec();
     private final CdrWriter writer = new CdrWriter(MAX_MESSAGE_BYTES);
     private final CdrReader reader = new CdrReader();
@@ -162,9 +152,9 @@ public final class Ros2SimRobot implements AutoCloseable {
         this.scanPub = node.createPublisher(SCAN, scanCodec.type(), QosProfile.sensorData(), MAX_MESSAGE_BYTES);
         this.odomPub = node.createPublisher(ODOM, odomCodec.type(), QosProfile.defaults(), MAX_MESSAGE_BYTES);
         this.truthPub = node.createPublisher(GROUND_TRUTH, odomCodec.type(), QosProfile.defaults(), MAX_MESSAGE_BYTES);
-        this.tfPub = node.createPublisher(TF, Ros2Types.TF_MESSAGE, new QosProfile(true, false, TF_DEPTH),
+        this.tfPub = node.createPublisher(RobotTopics.TF, Ros2Types.TF_MESSAGE, new QosProfile(true, false, TF_DEPTH),
                 MAX_MESSAGE_BYTES);
-        this.tfStaticPub = node.createPublisher(TF_STATIC, Ros2Types.TF_MESSAGE, new QosProfile(true, true, 1),
+        this.tfStaticPub = node.createPublisher(RobotTopics.TF_STATIC, Ros2Types.TF_MESSAGE, new QosProfile(true, true, 1),
                 MAX_MESSAGE_BYTES);
         // As ROS 2's clock publishers (rclcpp's ClockQoS): best effort, keep last 1.
         this.clockPub = node.createPublisher(CLOCK, Ros2Types.CLOCK, new QosProfile(false, false, 1), MAX_MESSAGE_BYTES);
@@ -278,17 +268,17 @@ public final class Ros2SimRobot implements AutoCloseable {
         boolean[] fresh = server.withWorld(this::copyNews);
         long nowEpochNs = epoch.epochNanos();
         if (fresh[0]) {
-            scanCodec.encode(header.set(scanFirstBeamNs, LASER_FRAME), scan, writer);
+            scanCodec.encode(header.set(scanFirstBeamNs, RobotTopics.LASER_FRAME), scan, writer);
             scanPub.publish(writer.buffer(), writer.size(), nowEpochNs);
         }
         if (fresh[1]) {
             long stampNs = Math.round(odom.serverTimeS * 1e9);
-            odomCodec.encode(header.set(stampNs, ODOM_FRAME), odom, writer);
+            odomCodec.encode(header.set(stampNs, RobotTopics.ODOM_FRAME), odom, writer);
             odomPub.publish(writer.buffer(), writer.size(), nowEpochNs);
             TransformMessages.begin(writer, 1);
-            TransformMessages.transform(writer, stampNs, ODOM_FRAME, BASE_FRAME, odom.xM, odom.yM, odom.yawRad);
+            TransformMessages.transform(writer, stampNs, RobotTopics.ODOM_FRAME, RobotTopics.BASE_FRAME, odom.xM, odom.yM, odom.yawRad);
             tfPub.publish(writer.buffer(), writer.size(), nowEpochNs);
-            odomCodec.encode(header.set(stampNs, "map"), truth, writer);
+            odomCodec.encode(header.set(stampNs, RobotTopics.MAP_FRAME), truth, writer);
             truthPub.publish(writer.buffer(), writer.size(), nowEpochNs);
         }
         if (worldTimeNs > clockSentNs) {

@@ -1,0 +1,39 @@
+package io.rtaware.bench.compare;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.image.BufferedImage;
+import java.nio.file.Path;
+import java.util.List;
+import javax.imageio.ImageIO;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The sweep's table and plot, from fixed rows. */
+class TaskSweepTest {
+
+    private static RunResult row(String executor, long releases, long misses, double p99, double p999) {
+        return new RunResult(executor, new RunResult.Lateness(10, p99, p999, 2 * p999), releases, misses, 0, 1, 0);
+    }
+
+    @Test
+    void tablePrintsMissPercentAndTailPerExecutorAndTaskCount(@TempDir Path dir) throws Exception {
+        TaskSweep sweep = new TaskSweep();
+        sweep.add(10, row("rtaware", 1000, 0, 120, 300));
+        sweep.add(10, row("park-loop", 1000, 0, 110, 250));
+        sweep.add(1000, row("rtaware", 100_000, 2500, 9000, 40_000));
+        sweep.add(1000, row("park-loop", 100_000, 150, 8000, 10_000));
+
+        List<String> lines = sweep.table().lines().toList();
+        assertEquals(5, lines.size(), "a header and one line per executor and count");
+        assertTrue(lines.get(3).matches("rtaware\\s+1000\\s+100000\\s+2\\.50 \\|\\s+9000\\.0us\\s+40000\\.0us"), lines.get(3));
+        assertEquals(2.5, sweep.points().get(2).missPct());
+
+        Path png = dir.resolve("sweep.png");
+        sweep.plot(png, "period 10 ms, work 0");
+        BufferedImage image = ImageIO.read(png.toFile());
+        assertEquals(900, image.getWidth());
+        assertEquals(840, image.getHeight(), "two plots, one above the other");
+    }
+}

@@ -1,0 +1,108 @@
+package io.rtaware.nav;
+
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.util.LinkedHashMap;
+import java.util.Locale;
+import java.util.Map;
+import java.util.stream.Collectors;
+
+/**
+ * The navigation controller's configuration in a recording's {@code rtaware.run} metadata: the
+ * whole {@link NavConfig} as JSON under {@value #NAV_CONFIG} (what replay rebuilds the controller
+ * from, exactly), plus readable entries for people and other tools (robot model, top speed,
+ * inflation margin, grid, waypoints, cores). Stateless and thread-safe.
+ */
+public final class ControllerMetadata {
+
+    /** Metadata entry holding the controller's configuration as JSON. */
+    public static final String NAV_CONFIG = "nav_config";
+    /** Metadata entry holding the recording machine's core count. */
+    public static final String CORES = "cores";
+
+    private static final ObjectMapper JSON = new ObjectMapper();
+
+    private ControllerMetadata() {
+    }
+
+    /**
+     * @param config the controller's configuration
+     * @param robotModel the robot model's name
+     * @param cores the recording machine's core count
+     * @return the metadata entries to add to {@code rtaware.run}
+     */
+    public static Map<String, String> entries(NavConfig config, String robotModel, int cores) {
+        Map<String, String> m = new LinkedHashMap<>();
+        try {
+            m.put(NAV_CONFIG, JSON.writeValueAsString(config));
+        } catch (JsonProcessingException e) {
+            throw new IllegalStateException("NavConfig is not serializable", e);
+        }
+        m.put("robot_model", robotModel);
+        m.put("top_speed_mps", Double.toString(config.robot().topSpeedMps()));
+        m.put("inflation_margin_m", Double.toString(config.planner().inflationMarginM()));
+        m.put("grid", String.format(Locale.ROOT, "%s m cells, origin (%s, %s), %s x %s m",
+                config.grid().resolutionM(), config.grid().originXM(), config.grid().originYM(),
+                config.grid().widthM(), config.grid().heightM()));
+        m.put("waypoints", config.course().waypoints().stream()
+                .map(p -> p.xM() + "," + p.yM()).collect(Collectors.joining(" ")));
+        m.put(CORES, Integer.toString(cores));
+        return m;
+    }
+
+    /**
+     * @param metadata a recording's {@code rtaware.run} entries
+     * @return the controller's configuration as recorded
+     * @throws IllegalArgumentException if the recording has none or it is not readable
+     */
+    public static NavConfig navConfig(Map<String, String> metadata) {
+        String json = metadata.get(NAV_CONFIG);
+        if (json == null) {
+            throw new IllegalArgumentException("its rtaware.run metadata has no " + NAV_CONFIG
+                    + " (recorded by an rtaware without replay, or not by 'rtaware run')");
+        }
+        try {
+            return JSON.readValue(json, NavConfig.class);
+        } catch (JsonProcessingException e) {
+            throw new IllegalArgumentException("its " + NAV_CONFIG + " metadata is not readable: "
+                    + e.getOriginalMessage());
+        }
+    }
+
+    /**
+     * The recorded configuration with other periods, everything derived from the periods (the
+     * mediator's period, its maximum request ages) derived again, as {@code run} derives them.
+     *
+     * @param recorded the recorded configuration
+     * @param periodsNs period of each behavior by task name
+     * @return the configuration to run
+     */
+    public static NavConfig withPeriods(NavConfig recorded, Map<String, Long> periodsNs) {
+        NavConfig.Grid g = recorded.grid();
+        NavConfig.Robot r = recorded.robot();
+        NavConfig.Avoider a = recorded.avoider();
+        NavConfig.Follower f = recorded.follower();
+        NavConfig.Builder b = NavConfig.builder()
+                .grid(g.resolutionM(), g.originXM(), g.originYM(), g.widthM(), g.heightM())
+                .robotRadiusM(r.radiusM())
+                .topSpeedMps(r.topSpeedMps())
+                .maxOmegaRadPerSec(r.maxOmegaRadPerSec())
+                .reactionLimits(r.stoppingDistanceM(), r.laserDelayNs())
+                .laserMinRangeM(r.laserMinRangeM())
+                .obstacleSpeedMps(r.obstacleSpeedMps())
+                .inflationMarginM(recorded.planner().inflationMarginM())
+                .unknownCostFactor(recorded.planner().unknownCostFactor())
+                .lookaheadM(f.lookaheadM())
+                .turnInPlaceRad(f.turnInPlaceRad())
+                .goalToleranceM(f.goalToleranceM())
+                .avoidance(a.rangeM(), a.halfAngleRad(), a.stopRangeM(), a.speedMps())
+                .laserMaxAgeNs(recorded.maxAges().laserNs())
+                .odometryMaxAgeNs(recorded.maxAges().odometryNs())
+                .waypoints(recorded.course().waypoints())
+                .externalWaypoints(recorded.course().external());
+        for (Behavior behavior : Behavior.values()) {
+            b.periodNs(behavior, periodsNs.getOrDefault(behavior.taskName(), recorded.periods().ns(behavior)));
+        }
+        return b.build();
+    }
+}

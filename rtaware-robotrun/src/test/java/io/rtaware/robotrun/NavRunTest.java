@@ -1,0 +1,94 @@
+package io.rtaware.robotrun;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import io.rtaware.core.monitor.Monitor;
+import io.rtaware.core.time.ScaledClock;
+import io.rtaware.nav.ControllerMetadata;
+import io.rtaware.record.RecordingPlan;
+import io.rtaware.robot.geometry.Point2d;
+import io.rtaware.sim.scenario.Scenario;
+import io.rtaware.sim.scenario.ScenarioLoader;
+import io.rtaware.sim.server.ServerConfig;
+import io.rtaware.sim.server.SimCommandSupport;
+import io.rtaware.sim.world.RobotModel;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.atomic.AtomicReference;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The nav controller runs on the built-in simulator from code, without the command line, as
+ * {@link NavRun}'s documentation shows: a course whose far waypoint cannot be reached within a
+ * time limit of one world second ends by the time limit, whatever the machine's speed, and the
+ * termination handler's {@link NavRun#finish()} gives the report's {@code run} section.
+ */
+class NavRunTest {
+
+    private static Scenario oneSecondCourse() {
+        Scenario room = ScenarioLoader.load(ScenarioLoader.PAPER_ROOM);
+        // 3 m away at 0.1 m/s: out of reach in one second of world time.
+        return new Scenario("one-second", room.map(), room.start(),
+                List.of(new Point2d(room.start().xM() + 3, room.start().yM())), 0.3, 1.0);
+    }
+
+    @Test
+    void aRunFromCodeEndsByItsTimeLimitAndReportsIt() throws Exception {
+        Scenario scenario = oneSecondCourse();
+        RobotModel model = RobotModel.koala(RobotModel.PAPER_TOP_SPEED_MPS);
+        ScaledClock clock = new ScaledClock(10);
+        NavRun.Settings settings = new NavRun.Settings(Map.of("obstacle", 40_000_000L), 10, 1, 4, 0.05, 0, 60, "r0");
+        AtomicReference<RunSection> finished = new AtomicReference<>();
+        try (RobotLink robot = RobotLink.simulator(SimCommandSupport.start(scenario, model, clock,
+                ServerConfig.defaults(0), settings.seed(), settings.robotSeed()))) {
+            NavRun run = new NavRun(scenario, model, settings, robot, clock);
+            RecordingPlan plan = run.recordingPlan();
+            Monitor monitor = run.monitorBuilder().build();
+            run.attach(monitor, null);
+            monitor.onTermination(report -> finished.set(run.finish()));
+            monitor.start();
+            run.started();
+
+            RunState.Ending ending = run.superviseUntilEnd(elapsedS -> { });
+            monitor.stop();
+
+            assertEquals(RunOutcome.TIMEOUT, ending.outcome());
+            assertEquals("time limit of 1 s passed", ending.reason());
+            assertEquals(ending, run.state().ending(), "the ending is recorded once");
+            assertEquals("built-in simulator", plan.metadata().get("robot"));
+            assertEquals(run.navConfig(), ControllerMetadata.navConfig(plan.metadata()), "replay can rebuild the controller");
+            assertEquals("/map", plan.topicOf("map"));
+        }
+        RunSection section = finished.get();
+        assertNotNull(section, "the termination handler ran");
+        assertEquals("one-second", section.scenario());
+        assertEquals("timeout", section.outcome());
+        assertTrue(section.runTimeS() >= 1.0, "ran to the limit: " + section.runTimeS());
+        assertEquals(List.of("waypoint", "obstacle", "occupancy", "planner"), List.copyOf(section.periodsMs().keySet()));
+        assertEquals(40.0, section.periodsMs().get("obstacle"));
+        assertEquals("ground_truth", section.measuredOn(), "the simulator's simulation:0 gives the true pose");
+        assertEquals("simulator", section.collisionsFrom());
+        assertEquals(4L, section.robotSeed());
+    }
+
+    @Test
+    void aRunStoppedBeforeItsStartIsInterrupted() throws Exception {
+        Scenario scenario = oneSecondCourse();
+        RobotModel model = RobotModel.koala(RobotModel.PAPER_TOP_SPEED_MPS);
+        ScaledClock clock = new ScaledClock(1);
+        try (RobotLink robot = RobotLink.simulator(SimCommandSupport.start(scenario, model, clock,
+                ServerConfig.defaults(0), 1, 4))) {
+            NavRun run = new NavRun(scenario, model, NavRun.Settings.defaults(), robot, clock);
+            run.attach(run.monitorBuilder().build(), null);
+
+            RunSection section = run.finish();
+
+            assertEquals("interrupted", section.outcome());
+            assertNull(run.referee(), "no referee was started");
+            assertEquals(0, section.waypointsReached());
+        }
+    }
+}
