@@ -94,22 +94,28 @@ class RunUntilStoppedTest {
         return count;
     }
 
-    /** Runs {@code runUntilStopped} on a thread of its own, as a program's main thread would. */
-    private Thread runner(Monitor monitor, AtomicReference<Report> returned, AtomicReference<Boolean> interrupted) {
-        Thread main = new Thread(() -> {
+    /**
+     * A monitor of one task whose {@code runUntilStopped} runs on a thread of its own, as on a
+     * program's main thread; built once the task's first cycle has run.
+     */
+    private final class MainThread {
+        final Monitor monitor = oneTask(now -> { });
+        final AtomicReference<Report> returned = new AtomicReference<>();
+        final AtomicReference<Boolean> interrupted = new AtomicReference<>();
+        final Thread thread = new Thread(() -> {
             returned.set(monitor.runUntilStopped(out, hooks));
             interrupted.set(Thread.currentThread().isInterrupted());
         }, "test-main");
-        main.start();
-        return main;
+
+        MainThread() throws InterruptedException {
+            thread.start();
+            firstCycle.await();
+        }
     }
 
     @Test
     void ctrlCStopsTheRunAndTheHookReturnsOnlyOnceTheSummaryIsPrinted() throws InterruptedException {
-        Monitor monitor = oneTask(now -> { });
-        AtomicReference<Report> returned = new AtomicReference<>();
-        Thread main = runner(monitor, returned, new AtomicReference<>());
-        firstCycle.await();
+        MainThread main = new MainThread();
 
         hooks.ctrlC();
         // The JVM exits once its hooks have returned: the summary must be out by then.
@@ -119,9 +125,9 @@ class RunUntilStoppedTest {
         assertEquals(1, occurrences(atExit, SUMMARY), "the summary, once, before the hook returned: " + atExit);
         assertTrue(atExit.contains("\nt "), "the summary has the task's row: " + atExit);
 
-        main.join();
-        assertSame(monitor.report(), returned.get(), "runUntilStopped returns the report");
-        assertEquals(1, returned.get().task("t").runs(), "the task ran its release at 0 ms");
+        main.thread.join();
+        assertSame(main.monitor.report(), main.returned.get(), "runUntilStopped returns the report");
+        assertEquals(1, main.returned.get().task("t").runs(), "the task ran its release at 0 ms");
         assertEquals(List.of(), hooks.removed, "the hook is not removed while the JVM shuts down (it cannot be)");
     }
 
@@ -141,33 +147,26 @@ class RunUntilStoppedTest {
 
     @Test
     void aStopFromAnotherThreadEndsTheRun() throws InterruptedException {
-        Monitor monitor = oneTask(now -> { });
-        AtomicReference<Report> returned = new AtomicReference<>();
-        Thread main = runner(monitor, returned, new AtomicReference<>());
-        firstCycle.await();
+        MainThread main = new MainThread();
 
-        Report report = monitor.stop();
-        main.join();
+        Report report = main.monitor.stop();
+        main.thread.join();
 
-        assertSame(report, returned.get(), "runUntilStopped returns the report stop() built");
+        assertSame(report, main.returned.get(), "runUntilStopped returns the report stop() built");
         assertEquals(1, occurrences(printed(), SUMMARY), "the summary, once");
         assertEquals(hooks.added, hooks.removed, "the hook is removed");
     }
 
     @Test
     void anInterruptOfTheWaitingThreadStopsTheRunAndStaysSet() throws InterruptedException {
-        Monitor monitor = oneTask(now -> { });
-        AtomicReference<Report> returned = new AtomicReference<>();
-        AtomicReference<Boolean> interrupted = new AtomicReference<>();
-        Thread main = runner(monitor, returned, interrupted);
-        firstCycle.await();
+        MainThread main = new MainThread();
 
-        main.interrupt();
-        main.join();
+        main.thread.interrupt();
+        main.thread.join();
 
-        assertNotNull(returned.get(), "the run was stopped and its report returned");
-        assertTrue(monitor.isTerminated(), "the monitor terminated");
-        assertEquals(Boolean.TRUE, interrupted.get(), "the interrupt stays set for the caller");
+        assertNotNull(main.returned.get(), "the run was stopped and its report returned");
+        assertTrue(main.monitor.isTerminated(), "the monitor terminated");
+        assertEquals(Boolean.TRUE, main.interrupted.get(), "the interrupt stays set for the caller");
         assertEquals(1, occurrences(printed(), SUMMARY), "the summary, once");
         assertEquals(hooks.added, hooks.removed, "the hook is removed");
     }

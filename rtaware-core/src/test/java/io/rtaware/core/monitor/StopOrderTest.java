@@ -31,22 +31,12 @@ class StopOrderTest {
     private final ManualClock clock = new ManualClock();
     private final List<String> terminated = new CopyOnWriteArrayList<>();
 
-    /** A task made of a cycle and a termination, which it logs; stops first if asked. */
-    private final class Probe implements Task {
-        private final String name;
-        private final boolean first;
-        private final boolean blocks;
-        private final Cycle cycle;
-        private final Runnable onTerminate;
-
-        Probe(String name, boolean first, boolean blocks, Cycle cycle, Runnable onTerminate) {
-            this.name = name;
-            this.first = first;
-            this.blocks = blocks;
-            this.cycle = cycle;
-            this.onTerminate = onTerminate;
-        }
-
+    /**
+     * A task made of a cycle and a termination, which it logs; its components answer
+     * {@link Task#stopsFirst()} and {@link Task#blocks()}.
+     */
+    private record Probe(List<String> log, String name, boolean stopsFirst, boolean blocks, Cycle cycle,
+                         Runnable onTerminate) implements Task {
         @Override
         public void initialize(TaskSetup setup) {
         }
@@ -57,18 +47,8 @@ class StopOrderTest {
         }
 
         @Override
-        public boolean stopsFirst() {
-            return first;
-        }
-
-        @Override
-        public boolean blocks() {
-            return blocks;
-        }
-
-        @Override
         public void terminate() {
-            terminated.add(name);
+            log.add(name);
             onTerminate.run();
         }
     }
@@ -80,7 +60,7 @@ class StopOrderTest {
     }
 
     private Probe probe(String name, boolean first) {
-        return new Probe(name, first, false, () -> { }, () -> { });
+        return new Probe(terminated, name, first, false, () -> { }, () -> { });
     }
 
     @Test
@@ -121,7 +101,7 @@ class StopOrderTest {
         CountDownLatch driverStopped = new CountDownLatch(1);
         AtomicReference<String> planner = new AtomicReference<>("planner's cycle never ended");
         Monitor monitor = builder
-                .task("planner", Schedule.periodic(ms(100)), new Probe("planner", false, false, () -> {
+                .task("planner", Schedule.periodic(ms(100)), new Probe(terminated, "planner", false, false, () -> {
                     plannerInCycle.countDown();
                     try {
                         driverStopped.await();
@@ -131,7 +111,7 @@ class StopOrderTest {
                     }
                 }, () -> { }))
                 .task("driver", Schedule.periodic(ms(10)),
-                        new Probe("driver", true, driverBlocks, () -> { }, driverStopped::countDown))
+                        new Probe(terminated, "driver", true, driverBlocks, () -> { }, driverStopped::countDown))
                 .build();
         monitor.start();
         plannerInCycle.await();
@@ -150,7 +130,7 @@ class StopOrderTest {
         AtomicReference<Report> fromTerminate = new AtomicReference<>();
         AtomicReference<Report> fromHandler = new AtomicReference<>();
         Monitor monitor = Monitor.builder(clock).task("t", Schedule.periodic(ms(10)),
-                new Probe("t", false, false, () -> { }, () -> fromTerminate.set(self.get().stop()))).build();
+                new Probe(terminated, "t", false, false, () -> { }, () -> fromTerminate.set(self.get().stop()))).build();
         self.set(monitor);
         monitor.onTermination(report -> fromHandler.set(monitor.stop()));
         monitor.startStepped().runUntil(ms(50));
@@ -175,7 +155,7 @@ class StopOrderTest {
         AtomicReference<Report> fromCycle = new AtomicReference<>();
         AtomicReference<String> cycleEnd = new AtomicReference<>("the cycle never ended");
         Monitor monitor = Monitor.builder(clock)
-                .task("finisher", Schedule.periodic(ms(100)), new Probe("finisher", false, false, () -> {
+                .task("finisher", Schedule.periodic(ms(100)), new Probe(terminated, "finisher", false, false, () -> {
                     inCycle.countDown();
                     terminationBegun.await();
                     fromCycle.set(self.get().stop());
@@ -183,7 +163,7 @@ class StopOrderTest {
                 }, () -> { }))
                 // terminated first, so its termination says that the other thread's stop has begun
                 .task("witness", Schedule.periodic(ms(10)),
-                        new Probe("witness", true, false, () -> { }, terminationBegun::countDown))
+                        new Probe(terminated, "witness", true, false, () -> { }, terminationBegun::countDown))
                 .build();
         self.set(monitor);
         monitor.start();
