@@ -454,21 +454,26 @@ public final class Monitor {
         hooks.add(hook);
         try {
             start();
-            out.println("rtaware: running " + runtimes.size() + (runtimes.size() == 1 ? " task" : " tasks")
-                    + "; Ctrl-C stops them and prints the summary");
-            out.flush();
-        } catch (IllegalStateException stoppedBeforeStart) {
-            if (!isStopping()) {
-                terminationHandlers.remove(summary);
-                hooks.remove(hook);
-                throw stoppedBeforeStart;
-            }
-            // Ctrl-C came before the start: the hook has stopped the monitor, the summary is its.
         } catch (RuntimeException | Error e) {
+            if (e instanceof IllegalStateException && isStopping()) {
+                // Ctrl-C came before the start: the hook has stopped the monitor and printed the summary.
+                return awaitEnd(hooks, hook);
+            }
             terminationHandlers.remove(summary);
             hooks.remove(hook);
             throw e;
         }
+        out.println("rtaware: running " + runtimes.size() + (runtimes.size() == 1 ? " task" : " tasks")
+                + "; Ctrl-C stops them and prints the summary");
+        out.flush();
+        return awaitEnd(hooks, hook);
+    }
+
+    /**
+     * Waits for the termination (an interrupt stops the monitor, and stays set), then removes the
+     * hook unless the JVM is exiting.
+     */
+    private Report awaitEnd(ShutdownHooks hooks, Thread hook) {
         boolean interrupted = false;
         while (!isTerminated()) {
             try {
