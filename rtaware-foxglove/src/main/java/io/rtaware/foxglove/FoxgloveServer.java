@@ -258,6 +258,24 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
     }
 
     /**
+     * Starts serving as {@code --foxglove} does, from a program's own {@code main}: at most
+     * {@value #DEFAULT_MAX_CLIENTS} clients, {@value #DEFAULT_SEND_BUFFER_BYTES} bytes waiting per
+     * client, and the {@code ROS_DISTRO} of the recordings ({@link TapChannel#ROS_DISTRO}) in the
+     * Server Info. Feed it by naming it as the {@code tap} of a recording's plan; close it once the
+     * recorder has finished.
+     *
+     * @param address where to listen ({@code FoxgloveAddress.parse("8765")}: port 8765 of
+     *     127.0.0.1; port 0 for a free one)
+     * @param name the server's name in its Server Info (Foxglove shows it)
+     * @return the server, listening
+     * @throws FoxgloveAddressException if the host does not resolve or the address cannot be bound
+     */
+    public static FoxgloveServer start(FoxgloveAddress address, String name) {
+        return start(address, name, Map.of("ROS_DISTRO", TapChannel.ROS_DISTRO), DEFAULT_MAX_CLIENTS,
+                DEFAULT_SEND_BUFFER_BYTES);
+    }
+
+    /**
      * Starts serving.
      *
      * @param address where to listen (port 0 for a free one)

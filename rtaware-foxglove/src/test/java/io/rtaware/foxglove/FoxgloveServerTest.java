@@ -143,6 +143,21 @@ class FoxgloveServerTest {
         assertEquals(0, c.queued(), "no message data: nothing subscribed");
     }
 
+    /** What a program's own main gets from {@code start(address, name)}: the command line's server. */
+    @Test
+    void theShortStartServesAsTheCommandLineDoes() throws Exception {
+        FoxgloveServer server = FoxgloveServer.start(FoxgloveAddress.parse("0"), "my controller");
+        servers.add(server);
+        JsonNode info = client(server).nextJson();
+        assertEquals("my controller", info.path("name").asText(), info.toString());
+        assertEquals(TapChannel.ROS_DISTRO, info.path("metadata").path("ROS_DISTRO").asText(),
+                "the ROS 2 distribution the recordings' types follow: " + info);
+        assertEquals(FoxgloveServer.DEFAULT_MAX_CLIENTS, server.stats().maxClients(), "the default bound on clients");
+        assertEquals(FoxgloveServer.DEFAULT_SEND_BUFFER_BYTES, server.stats().sendBufferBytes(),
+                "the default send buffer of a client");
+        assertEquals("127.0.0.1", server.address().getAddress().getHostAddress(), "loopback unless told otherwise");
+    }
+
     @Test
     void aChannelDeclaredLaterIsAdvertisedToConnectedClients() throws Exception {
         FoxgloveServer server = server(4, 1 << 20);

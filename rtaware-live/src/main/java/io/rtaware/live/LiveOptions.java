@@ -33,6 +33,17 @@ public record LiveOptions(boolean enabled, String bindAddress, int port, long li
         }
     }
 
+    /**
+     * The live view on this machine only, as a program's own {@code main} serves it.
+     *
+     * @param port TCP port of {@value #LOOPBACK}, 0 for a free one
+     * @return options serving on {@value #LOOPBACK}:{@code port}, not lingering after the run
+     * @throws IllegalArgumentException if the port is not 0..65535
+     */
+    public static LiveOptions loopback(int port) {
+        return new LiveOptions(true, LOOPBACK, port, 0);
+    }
+
     /** @return options with the live view off */
     public static LiveOptions off() {
         return new LiveOptions(false, LOOPBACK, 0, 0);

@@ -60,7 +60,7 @@ class LiveServerTest {
     /** A running two-task chain with a bench view (tasks and keys, no map). */
     private LiveView benchView(Monitor monitor) throws IOException {
         ByteArrayOutputStream printed = new ByteArrayOutputStream();
-        LiveView view = LiveView.start(new LiveOptions(true, LiveOptions.LOOPBACK, 0, 0), monitor,
+        LiveView view = LiveView.start(LiveOptions.loopback(0), monitor,
                 new PrintStream(printed, true, StandardCharsets.UTF_8));
         toClose.add(view);
         assertEquals("live view: http://127.0.0.1:" + view.port() + "/" + System.lineSeparator(),

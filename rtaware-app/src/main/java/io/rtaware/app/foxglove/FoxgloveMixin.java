@@ -4,9 +4,7 @@ import io.rtaware.app.UserError;
 import io.rtaware.foxglove.FoxgloveAddress;
 import io.rtaware.foxglove.FoxgloveAddressException;
 import io.rtaware.foxglove.FoxgloveServer;
-import io.rtaware.record.TapChannel;
 import java.io.PrintStream;
-import java.util.Map;
 import picocli.CommandLine.Option;
 
 /**
@@ -66,8 +64,7 @@ public final class FoxgloveMixin {
         }
         FoxgloveServer server;
         try {
-            server = FoxgloveServer.start(where, "rtaware " + command, Map.of("ROS_DISTRO", TapChannel.ROS_DISTRO),
-                    FoxgloveServer.DEFAULT_MAX_CLIENTS, FoxgloveServer.DEFAULT_SEND_BUFFER_BYTES);
+            server = FoxgloveServer.start(where, "rtaware " + command);
         } catch (FoxgloveAddressException e) {
             throw new UserError("--foxglove: " + e.getMessage());
         }

@@ -1,7 +1,6 @@
 package ${package};
 
 import io.rtaware.core.monitor.Monitor;
-import io.rtaware.core.report.SummaryTable;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.time.SystemClock;
 import java.time.Duration;
@@ -24,9 +23,8 @@ public final class Controller {
      * Runs the controller until Ctrl-C, then prints the summary.
      *
      * @param args none
-     * @throws InterruptedException if the main thread is interrupted while the tasks run
      */
-    public static void main(String[] args) throws InterruptedException {
+    public static void main(String[] args) {
         // A stand-in for a sensor: an obstacle that comes as near as 0.2 m and goes back to 1.8 m.
         RangeSensor sensor = new RangeSensor(nowNs -> 1.0 + 0.8 * Math.sin(nowNs * 1e-9));
         Monitor monitor = Monitor.builder(new SystemClock())
@@ -34,14 +32,7 @@ public final class Controller {
                 .task("guard", Schedule.periodic(GUARD_PERIOD), new SpeedGuard())
                 .build();               // the data graph is checked here, buffers are allocated
 
-        // lifecycle:begin -- start, stop on Ctrl-C, wait for the end, print the summary
-        monitor.onTermination(report -> System.out.print(SummaryTable.format(report)));
-        monitor.start();
-        monitor.installShutdownHook();  // Ctrl-C stops the tasks, then the summary is printed
-        System.out.println("rtaware: running 2 tasks; Ctrl-C stops them and prints the summary");
-        while (!monitor.awaitTermination(Duration.ofHours(1))) {
-            // the run ends on Ctrl-C, or when a task's error policy stops it
-        }
-        // lifecycle:end
+        // Starts the tasks, stops them on Ctrl-C, waits for the end and prints the summary.
+        monitor.runUntilStopped();
     }
 }

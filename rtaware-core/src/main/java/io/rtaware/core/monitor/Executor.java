@@ -1,6 +1,7 @@
 package io.rtaware.core.monitor;
 
 import io.rtaware.core.time.Clock;
+import java.util.Collection;
 
 /**
  * How task cycles get onto threads: the seam between the rules and the waiting.
@@ -56,6 +57,28 @@ interface Executor {
      * @return the start instant: release k of a periodic task is at start + offset + k * period
      */
     long start();
+
+    /**
+     * Stops releasing tasks and wakes the threads that wait, without waiting for them: a release
+     * already taken may still run, then each thread returns. The first step of a stop.
+     */
+    void stopReleasing();
+
+    /**
+     * After {@link #stopReleasing()}: waits until no thread runs a cycle of {@code tasks} any
+     * more (the threads that run them have returned); the other tasks may still be running their
+     * last cycle. For the tasks that stop first ({@link io.rtaware.core.task.Task#stopsFirst()}).
+     *
+     * @param tasks some of the executor's tasks
+     */
+    void joinThreadsOf(Collection<TaskRuntime> tasks);
+
+    /**
+     * @param thread a thread
+     * @return true if it is one of the threads that run the tasks' cycles (a cycle that stops
+     *     the monitor must not wait for its own thread to return)
+     */
+    boolean runsCyclesOn(Thread thread);
 
     /** Stops releasing tasks and waits for every task thread to return. */
     void stopAndJoin();

@@ -4,6 +4,7 @@ import io.rtaware.core.data.FeedStats;
 import io.rtaware.core.data.Key;
 import io.rtaware.core.data.StateValue;
 import io.rtaware.core.report.Report;
+import io.rtaware.core.report.SummaryTable;
 import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.ReactionConstraint;
 import io.rtaware.core.task.Schedule;
@@ -12,6 +13,7 @@ import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.ManualClock;
 import io.rtaware.core.time.MonotonicSleeper;
+import java.io.PrintStream;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -33,10 +35,14 @@ import java.util.stream.Collectors;
  * that lists every violation. {@link #start()} runs the tasks on one named platform thread
  * each, plus a watchdog thread that reports deadline misses at the deadline;
  * {@link #startStepped()} runs them instead on a {@link StepExecutor} for exact tests.
- * {@link #stop()} is the Termination state: tasks stop, {@code terminate()} is called on each,
+ * {@link #stop()} is the Termination state: tasks stop, {@code terminate()} is called on each
+ * (first on the tasks that {@link Task#stopsFirst() stop first}: those that command the robot),
  * and the {@link Report} is built and handed to the termination handlers.
+ * {@link #runUntilStopped()} is all of it for a program's {@code main}: start, stop on Ctrl-C,
+ * wait for the end, print the summary.
  *
- * <p>Thread-safe: {@code stop()} may be called from any thread, any number of times.
+ * <p>Thread-safe: {@code stop()} may be called from any thread, any number of times, from a
+ * task's cycle and from a termination handler too.
  */
 public final class Monitor {
 
@@ -55,9 +61,14 @@ public final class Monitor {
     private final FrameworkFaults faults;
     /** Reaction constraints declared by tasks at initialization, by task name. */
     private final Map<String, ReactionConstraint> reactions;
+    /** The tasks that {@link Task#stopsFirst() stop first}, then the others; each in registration order. */
+    private final List<TaskRuntime> stopFirst;
+    private final List<TaskRuntime> stopAfter;
     private final CountDownLatch terminated = new CountDownLatch(1);
     private final Object lifecycle = new Object();
     private Phase phase = Phase.READY;
+    /** The thread that runs the termination, once it has begun. */
+    private volatile Thread stopping;
     private Executor executor;
     private long startNs;
     private long stopNs;
@@ -78,6 +89,8 @@ public final class Monitor {
         this.events = events;
         this.faults = faults;
         this.reactions = Map.copyOf(reactions);
+        this.stopFirst = runtimes.stream().filter(r -> r.spec().task().stopsFirst()).toList();
+        this.stopAfter = runtimes.stream().filter(r -> !r.spec().task().stopsFirst()).toList();
     }
 
     /**
@@ -319,9 +332,14 @@ public final class Monitor {
     }
 
     /**
-     * Termination: stops releasing tasks, waits for their threads, calls {@code terminate()} on
-     * each in registration order, builds the report and calls the termination handlers. Returns
-     * after all of that; later calls wait for the first to finish.
+     * Termination: stops releasing tasks; waits for the threads of the tasks that
+     * {@link Task#stopsFirst() stop first} and calls {@code terminate()} on them; waits for every
+     * other task thread and calls {@code terminate()} on the rest (each group in registration
+     * order); builds the report and calls the termination handlers. Returns after all of that;
+     * later calls wait for the first to finish, except two that return at once, with the report
+     * once it is built and null before: a call from the thread that is terminating (a task's
+     * {@code terminate()}, a termination handler), and one from a task's cycle while another
+     * thread terminates (the termination waits for that cycle to return).
      *
      * @return the report
      */
@@ -336,25 +354,29 @@ public final class Monitor {
             } else if (first) {
                 phase = Phase.TERMINATED;
             }
+            if (first) {
+                stopping = Thread.currentThread();
+            }
         }
         if (!first) {
-            awaitUninterruptibly();
+            Thread caller = Thread.currentThread();
+            if (stopping != caller && (executor == null || !executor.runsCyclesOn(caller))) {
+                awaitUninterruptibly();
+            }
             return report;
         }
         try {
+            if (executor != null) {
+                executor.stopReleasing();
+                executor.joinThreadsOf(stopFirst);
+            }
+            terminate(stopFirst, clock.nanos());
             if (executor != null) {
                 executor.stopAndJoin();
             }
             tasksStopped = true;
             stopNs = clock.nanos();
-            for (TaskRuntime runtime : runtimes) {
-                try {
-                    runtime.spec().task().terminate();
-                } catch (Exception e) {
-                    System.err.println("rtaware: task '" + runtime.name() + "' failed to terminate: " + e);
-                }
-                runtime.setState(TaskState.TERMINATED, stopNs);
-            }
+            terminate(stopAfter, stopNs);
             report = ReportBuilder.build(clock.timeScale(), stopNs - startNs, runtimes, graph, faults.count(),
                     reactions);
             for (Consumer<Report> handler : terminationHandlers) {
@@ -366,6 +388,108 @@ public final class Monitor {
             }
         } finally {
             terminated.countDown();
+        }
+        return report;
+    }
+
+    private static void terminate(List<TaskRuntime> tasks, long nowNs) {
+        for (TaskRuntime runtime : tasks) {
+            try {
+                runtime.spec().task().terminate();
+            } catch (Exception e) {
+                System.err.println("rtaware: task '" + runtime.name() + "' failed to terminate: " + e);
+            }
+            runtime.setState(TaskState.TERMINATED, nowNs);
+        }
+    }
+
+    /**
+     * Runs the tasks until the run is stopped, printing the summary to standard output: what a
+     * program's {@code main} needs in one call. See {@link #runUntilStopped(PrintStream)}.
+     *
+     * @return the report
+     * @throws IllegalStateException if the monitor has already started
+     */
+    public Report runUntilStopped() {
+        return runUntilStopped(System.out);
+    }
+
+    /**
+     * Runs the tasks until the run is stopped: the lifecycle of a program whose {@code main}
+     * builds a monitor and hands over to it. It installs a JVM shutdown hook that stops the
+     * monitor (Ctrl-C, SIGTERM, {@code System.exit}), starts the tasks, prints one line saying they
+     * run, and waits until the run ends: by the hook, by {@link #stop()} on another thread or in a
+     * task's cycle, by a task's {@link io.rtaware.core.task.ErrorPolicy#STOP_ALL}, or by an
+     * interrupt of the calling thread (which stops the run and stays set). The end is
+     * {@link #stop()}: the tasks that {@link Task#stopsFirst() stop first} are terminated first,
+     * then the others, then the termination handlers registered before this call run, then the
+     * {@link SummaryTable} is printed; the shutdown hook returns only after that, so the JVM exits
+     * after the summary. A run that ended otherwise removes its hook. Call it from the
+     * program's main thread; after Ctrl-C the JVM exits once the summary is printed, so work that
+     * must happen at the end belongs in a termination handler ({@link #onTermination}), not after
+     * this call.
+     *
+     * @param out where the line at the start and the summary go
+     * @return the report
+     * @throws IllegalStateException if the monitor has already started
+     */
+    public Report runUntilStopped(PrintStream out) {
+        return runUntilStopped(out, ShutdownHooks.JVM);
+    }
+
+    /** {@link #runUntilStopped(PrintStream)} with the hook installed in {@code hooks} (a test's). */
+    Report runUntilStopped(PrintStream out, ShutdownHooks hooks) {
+        Objects.requireNonNull(out, "out");
+        synchronized (lifecycle) {
+            if (phase != Phase.READY) {
+                throw new IllegalStateException("runUntilStopped needs a monitor that has not started");
+            }
+        }
+        Consumer<Report> summary = finished -> {
+            out.print(SummaryTable.format(finished));
+            out.flush();
+        };
+        terminationHandlers.add(summary);
+        Thread hook = new Thread(this::stop, "rtaware-shutdown");
+        hooks.add(hook);
+        try {
+            start();
+        } catch (RuntimeException | Error e) {
+            if (e instanceof IllegalStateException && isStopping()) {
+                // Ctrl-C came before the start: the hook has stopped the monitor and printed the summary.
+                return awaitEnd(hooks, hook);
+            }
+            terminationHandlers.remove(summary);
+            hooks.remove(hook);
+            throw e;
+        }
+        out.println("rtaware: running " + runtimes.size() + (runtimes.size() == 1 ? " task" : " tasks")
+                + "; Ctrl-C stops them and prints the summary");
+        out.flush();
+        return awaitEnd(hooks, hook);
+    }
+
+    /**
+     * Waits for the termination (an interrupt stops the monitor, and stays set), then removes the
+     * hook unless the JVM is exiting.
+     */
+    private Report awaitEnd(ShutdownHooks hooks, Thread hook) {
+        boolean interrupted = false;
+        while (!isTerminated()) {
+            try {
+                terminated.await();
+            } catch (InterruptedException e) {
+                interrupted = true;
+                stop();
+            }
+        }
+        try {
+            hooks.remove(hook);
+        } catch (IllegalStateException shuttingDown) {
+            // The JVM is exiting: the hook has stopped the monitor (or waits until it has).
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
         }
         return report;
     }

@@ -2,6 +2,8 @@ package io.rtaware.core.monitor;
 
 import io.rtaware.core.time.Clock;
 import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collection;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ThreadFactory;
@@ -381,13 +383,39 @@ final class PooledExecutor implements Executor {
     }
 
     @Override
-    public void stopAndJoin() {
+    public void stopReleasing() {
         running = false;
         for (Thread worker : workers) {
             if (worker != null) {
                 LockSupport.unpark(worker);
             }
         }
+        if (dedicated != null) {
+            dedicated.stopReleasing();
+        }
+    }
+
+    /** A pooled task may be on any worker: the workers are waited for if one of {@code tasks} is pooled. */
+    @Override
+    public void joinThreadsOf(Collection<TaskRuntime> tasks) {
+        if (dedicated != null) {
+            dedicated.joinThreadsOf(tasks);
+        }
+        if (tasks.stream().anyMatch(PooledExecutor::isPooled)) {
+            for (Thread worker : workers) {
+                Watchdog.joinOrInterrupt(worker);
+            }
+        }
+    }
+
+    @Override
+    public boolean runsCyclesOn(Thread thread) {
+        return Arrays.asList(workers).contains(thread) || dedicated != null && dedicated.runsCyclesOn(thread);
+    }
+
+    @Override
+    public void stopAndJoin() {
+        stopReleasing();
         if (dedicated != null) {
             dedicated.stopWithoutClosing();
         }

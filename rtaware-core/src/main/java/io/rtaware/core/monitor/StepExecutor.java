@@ -1,6 +1,7 @@
 package io.rtaware.core.monitor;
 
 import io.rtaware.core.time.ManualClock;
+import java.util.Collection;
 import java.util.List;
 
 /**
@@ -145,6 +146,22 @@ public final class StepExecutor implements Executor {
         } finally {
             current = null;
         }
+    }
+
+    @Override
+    public void stopReleasing() {
+        stopped = true;
+    }
+
+    /** Nothing to wait for: every cycle runs on the thread that steps this executor, between its steps. */
+    @Override
+    public void joinThreadsOf(Collection<TaskRuntime> tasks) {
+    }
+
+    /** No thread of its own: its cycles run on the thread that steps it. */
+    @Override
+    public boolean runsCyclesOn(Thread thread) {
+        return false;
     }
 
     @Override

@@ -2,6 +2,7 @@ package io.rtaware.core.monitor;
 
 import io.rtaware.core.time.Clock;
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.Comparator;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
@@ -200,10 +201,29 @@ final class ThreadedExecutor implements Executor {
         waiter.close();
     }
 
-    /** Stops and joins the threads, leaving the waiter open (a pool that holds this one closes it). */
-    void stopWithoutClosing() {
+    @Override
+    public void stopReleasing() {
         running = false;
         threads.forEach(LockSupport::unpark);
+    }
+
+    @Override
+    public void joinThreadsOf(Collection<TaskRuntime> tasks) {
+        for (int slot = 0; slot < threads.size(); slot++) {
+            if (tasks.contains(runtimes.get(slot))) {
+                Watchdog.joinOrInterrupt(threads.get(slot));
+            }
+        }
+    }
+
+    @Override
+    public boolean runsCyclesOn(Thread thread) {
+        return threads.contains(thread);
+    }
+
+    /** Stops and joins the threads, leaving the waiter open (a pool that holds this one closes it). */
+    void stopWithoutClosing() {
+        stopReleasing();
         for (Thread thread : threads) {
             Watchdog.joinOrInterrupt(thread);
         }

@@ -9,7 +9,7 @@ package io.rtaware.core.task;
  *   <li><b>Execution</b>: {@link #execute(long)} runs once per release. The framework has just
  *   copied the task's inputs into its buffers; outputs it publishes are committed when the
  *   cycle returns.</li>
- *   <li><b>Termination</b>: {@link #terminate()} releases resources once all task threads have
+ *   <li><b>Termination</b>: {@link #terminate()} releases resources once the task's cycles have
  *   stopped.</li>
  * </ol>
  * A task does not know which thread or executor runs it. Its name and schedule are given when
@@ -48,8 +48,25 @@ public interface Task {
     }
 
     /**
-     * Releases what the task holds. Called once, after every task thread has stopped, in
-     * registration order. The default does nothing.
+     * Whether the monitor must stop this task before the others: a task that commands actuators
+     * (it sends a robot its velocity) returns true, and its {@link #terminate()} puts them in a
+     * safe state (a zero velocity). On stop, no task is released again; then the threads of the
+     * tasks that stop first are waited for and those tasks terminated, in registration order,
+     * while the other tasks may still be finishing their last cycle (a planner in the middle of a
+     * long search holds up no stop of the robot); the others are terminated once every thread
+     * has returned. The default is false.
+     *
+     * @return true to be stopped and terminated before the other tasks
+     */
+    default boolean stopsFirst() {
+        return false;
+    }
+
+    /**
+     * Releases what the task holds. Called once, after the task's cycles have stopped: for the
+     * tasks that {@link #stopsFirst() stop first} as soon as their own threads have returned, for
+     * the others once every task thread has; each group in registration order. The default does
+     * nothing.
      *
      * @throws Exception if cleaning up fails; reported, never propagated
      */

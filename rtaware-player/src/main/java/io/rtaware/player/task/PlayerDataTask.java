@@ -316,6 +316,15 @@ public final class PlayerDataTask implements Task {
     }
 
     /**
+     * @return true: this task commands the robot, so a stop terminates it (the zero velocity
+     *     below) before it waits for the other tasks' last cycles
+     */
+    @Override
+    public boolean stopsFirst() {
+        return true;
+    }
+
+    /**
      * Stops the robot and leaves: sends a zero velocity command first, then unsubscribes from
      * the scan source and position2d, then closes the connection.
      *

@@ -405,6 +405,15 @@ public final class Ros2DataTask implements Task {
     }
 
     /**
+     * @return true: this task commands the robot, so a stop terminates it (the zero Twist below)
+     *     before it waits for the other tasks' last cycles
+     */
+    @Override
+    public boolean stopsFirst() {
+        return true;
+    }
+
+    /**
      * Stops the robot and leaves: publishes a zero Twist, then closes the session (which
      * undeclares the node, its subscriptions and its publisher).
      *
