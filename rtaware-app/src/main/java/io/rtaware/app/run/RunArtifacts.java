@@ -131,9 +131,12 @@ final class RunArtifacts {
                 names.add("trajectory.png");
             }
         }
-        if (builtMap != null && writes.write(dir.resolve("map.pgm"), () -> PgmMapWriter.write(builtMap, dir, "map"))) {
+        // The YAML names the image: written only beside a whole one.
+        if (builtMap != null && writes.writeFile(dir.resolve("map.pgm"), PgmMapWriter.pgm(builtMap))) {
             names.add("map.pgm");
-            names.add("map.yaml");
+            if (writes.writeFile(dir.resolve("map.yaml"), OutputFiles.text(PgmMapWriter.yaml(builtMap, "map.pgm")))) {
+                names.add("map.yaml");
+            }
         }
         if (!names.isEmpty()) {
             out.println("report written to " + dir + " (" + String.join(", ", names) + ")");
