@@ -29,8 +29,13 @@ class ExperimentFolderTest {
 
     /** A finished 1 set x 1 run experiment at time scale 20, seed 5: resuming it runs nothing and re-renders the report. */
     private ExperimentPlan finishedExperiment(boolean withPlanFile) throws Exception {
+        return finishedExperiment(withPlanFile, "paper-room");
+    }
+
+    /** The same on a course given as a scenario file. */
+    private ExperimentPlan finishedExperiment(boolean withPlanFile, String scenario) throws Exception {
         PeriodSet set = ExperimentSets.paper().get(3);
-        ExperimentPlan plan = new ExperimentPlan(List.of(set), 1, new RunConditions("paper-room", 20, 5, null));
+        ExperimentPlan plan = new ExperimentPlan(List.of(set), 1, new RunConditions(scenario, 20, 5, null));
         if (withPlanFile) {
             PlanFile.write(dir, plan);
         }
@@ -131,6 +136,33 @@ class ExperimentFolderTest {
         Files.writeString(csv, good);
         assertEquals(0, CliRun.of("report", dir.toString(), "--include-busy").status(),
                 "the folder as written is fine (its runs predate recorded conditions)");
+    }
+
+    /**
+     * Issue 38: with the documented {@code --scenario /path/to/course.yaml} every run finished and
+     * then no summary or report was written ("no id for claim"); report printed a stack trace.
+     */
+    @Test
+    void aCourseGivenAsAFilePathIsReported() throws Exception {
+        String course = dir.resolve("courses/hall.yaml").toString();
+        finishedExperiment(true, course);
+        CliRun r = CliRun.of("report", dir.toString());
+        assertEquals(0, r.status(), r.toString());
+        String summary = Files.readString(dir.resolve("summary.json"));
+        assertTrue(summary.contains("\"id\" : \"slow-hits-on-hall\""), "the claim's id");
+        assertTrue(summary.contains("robot hits walls and obstacles on " + course), "the claim names the course as given");
+    }
+
+    /** Issue 38: a report that cannot be written is one line that says the runs are kept, not a stack trace. */
+    @Test
+    void aReportThatCannotBeWrittenIsOneLine() throws Exception {
+        finishedExperiment(true);
+        Files.createDirectories(dir.resolve("summary.json"));
+        CliRun r = CliRun.of("report", dir.toString());
+        assertEquals(1, r.status(), r.toString());
+        assertEquals(1, r.err().strip().lines().count(), "one line: " + r.err());
+        assertTrue(r.err().contains("could not write the report of " + dir + ": " + dir.resolve("summary.json")
+                + ": a folder, not a file; the runs are kept in " + dir.resolve("results.csv")), r.err());
     }
 
     /** Issue 24: report merged a folder whose lock named a live process. */
