@@ -109,6 +109,14 @@ public final class ReportCommand implements Callable<Integer> {
         List<ResultsMarkdown.Folder> folders = new ArrayList<>();
         for (Path dir : dirs) {
             OutputFolder.existing("report", dir);
+            try {
+                FolderCheck.rows(dir);
+            } catch (ExperimentInputException e) {
+                throw new UserError(e.getMessage());
+            } catch (IOException e) {
+                System.err.println("rtaware: report: could not read " + dir + ": " + e);
+                return OutputWrites.EXIT_WRITE_FAILED;
+            }
             String scenario = ExperimentProfile.read(dir).map(ExperimentProfile::scenario).orElseGet(() -> firstScenario(dir));
             Optional<ExperimentSummary> summary = ReportRendering.render(dir, scenario, includeBusy, System.err);
             if (summary.isEmpty()) {

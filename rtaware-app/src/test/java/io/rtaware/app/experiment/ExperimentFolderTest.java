@@ -42,7 +42,7 @@ class ExperimentFolderTest {
         ExperimentProfile.of(plan, "test machine").write(dir);
         ResultsCsv.append(dir.resolve(ResultsCsv.FILE_NAME), new RunResult(1, 1, set, plan.conditions(), "completed",
                 12.0, 0.2, 3.0, 0, 4, 4, Map.of()).withMachine(new io.rtaware.experiment.RunMachine("quiet", "", 0.01, 0,
-                0.2, 0.2, 0.1, Double.NaN, "quiet", 0)));
+                0.2, 0.2, 0.1, Double.NaN, "quiet", 0, 2)));
         return plan;
     }
 
@@ -163,6 +163,51 @@ class ExperimentFolderTest {
         assertEquals(1, r.err().strip().lines().count(), "one line: " + r.err());
         assertTrue(r.err().contains("could not write the report of " + dir + ": " + dir.resolve("summary.json")
                 + ": a folder, not a file; the runs are kept in " + dir.resolve("results.csv")), r.err());
+    }
+
+    /** Issue 38: report used a row whose periods were not its set's in plan.json. */
+    @Test
+    void reportRefusesARowWhosePeriodsAreNotThoseOfItsSetInThePlan() throws Exception {
+        twoRunExperiment();
+        Path csv = dir.resolve(ResultsCsv.FILE_NAME);
+        int planner = ResultsCsv.HEADER.indexOf("planner_period_ms");
+        StringBuilder edited = new StringBuilder();
+        for (String line : Files.readAllLines(csv)) {
+            String[] fields = line.split(",", -1);
+            if (!line.startsWith("set,")) {
+                fields[planner] = "7"; // both rows agree, so only the plan can tell
+            }
+            edited.append(String.join(",", fields)).append('\n');
+        }
+        Files.writeString(csv, edited);
+        CliRun.of("report", dir.toString(), "--include-busy").assertOneLineUserError(csv + " line 2: set 1 run 1 is 'Set 4' (");
+        CliRun.of("report", "--include-busy", "--results", dir.resolve("RESULTS.md").toString(), dir.toString())
+                .assertOneLineUserError(csv + " line 2: set 1 run 1 is 'Set 4' (");
+    }
+
+    /**
+     * Issue 38: report used a row labelled quiet whose other processes used 5 CPUs, and a figure
+     * above the machine's CPUs.
+     */
+    @Test
+    void reportRefusesMachineFiguresTheRuleOrTheMachineCannotGive() throws Exception {
+        finishedExperiment(true);
+        Path csv = dir.resolve(ResultsCsv.FILE_NAME);
+        String good = Files.readString(csv);
+        String row = good.lines().skip(1).findFirst().orElseThrow();
+        int other = ResultsCsv.HEADER.indexOf("other_cpus");
+        String[] fields = row.split(",", -1);
+        fields[other] = "1.5";
+        Files.writeString(csv, good.replace(row, String.join(",", fields)));
+        CliRun.of("report", dir.toString()).assertOneLineUserError(csv + " line 2: labelled quiet but other_cpus 1.5");
+        fields[ResultsCsv.HEADER.indexOf("machine")] = "busy";
+        fields[other] = "5.0";
+        Files.writeString(csv, good.replace(row, String.join(",", fields)));
+        CliRun.of("report", dir.toString(), "--include-busy").assertOneLineUserError(
+                csv + " line 2: other_cpus 5.0 is more than the machine's 2 CPUs (machine_cpus)");
+        fields[other] = "1.5";
+        Files.writeString(csv, good.replace(row, String.join(",", fields)));
+        assertEquals(0, CliRun.of("report", dir.toString(), "--include-busy").status(), "busy, and possible");
     }
 
     /** Issue 24: report merged a folder whose lock named a live process. */
