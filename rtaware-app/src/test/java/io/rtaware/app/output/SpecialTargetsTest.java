@@ -53,50 +53,50 @@ class SpecialTargetsTest {
         readers.shutdownNow();
     }
 
+    private static final String[] WORLD = {"world", "--scenario", "paper-room", "--png"};
+
     @Test
     void worldWritesIntoAPipeInPlace() throws Exception {
-        Path fifo = fifo("world.png");
-        CompletableFuture<byte[]> read = CompletableFuture.supplyAsync(() -> readAll(fifo), readers);
-        CliRun r = CliRun.of("world", "--scenario", "paper-room", "--png", fifo.toString());
-        assertEquals(FIFO, type(fifo), "the pipe is still a pipe; " + r);
-        releaseReader(fifo);
-        assertEquals(0, r.status(), r.toString());
-        assertTrue(r.out().contains("world written to " + fifo), r.out());
-        assertArrayEquals(PNG_SIGNATURE, Arrays.copyOf(read.get(), PNG_SIGNATURE.length), "the reader got the PNG");
+        writesIntoAPipeInPlace("world.png", "world written to ", WORLD);
     }
 
     @Test
     void worldRefusesASocketInOneLineAndLeavesIt() throws Exception {
-        Path socket = dir.resolve("world.sock");
-        try (ServerSocketChannel server = ServerSocketChannel.open(StandardProtocolFamily.UNIX)) {
-            server.bind(UnixDomainSocketAddress.of(socket));
-            CliRun.of("world", "--scenario", "paper-room", "--png", socket.toString())
-                    .assertOneLineUserError("--png: " + socket + " is a socket, not a file");
-            assertEquals(SOCKET, type(socket), "the socket is still a socket");
-        }
+        refusesASocketInOneLineAndLeavesIt("world.sock", "--png", WORLD);
     }
 
     @Test
     void benchSweepWritesItsPlotIntoAPipeInPlace() throws Exception {
-        Path fifo = fifo("sweep.png");
-        CompletableFuture<byte[]> read = CompletableFuture.supplyAsync(() -> readAll(fifo), readers);
-        CliRun r = CliRun.of(with(SWEEP, fifo.toString()));
-        assertEquals(FIFO, type(fifo), "the pipe is still a pipe; " + r);
-        releaseReader(fifo);
-        assertEquals(0, r.status(), r.toString());
-        assertTrue(r.out().contains("plot written to " + fifo), r.out());
-        assertArrayEquals(PNG_SIGNATURE, Arrays.copyOf(read.get(), PNG_SIGNATURE.length), "the reader got the PNG");
+        writesIntoAPipeInPlace("sweep.png", "plot written to ", SWEEP);
     }
 
     @Test
     void benchSweepRefusesASocketBeforeItRuns() throws Exception {
-        Path socket = dir.resolve("sweep.sock");
+        assertFalse(refusesASocketInOneLineAndLeavesIt("sweep.sock", "--plot", SWEEP).out().contains("sweep:"),
+                "nothing ran");
+    }
+
+    /** The command, given a pipe with a reader waiting, writes the PNG into it and leaves it a pipe. */
+    private void writesIntoAPipeInPlace(String name, String written, String... command) throws Exception {
+        Path fifo = fifo(name);
+        CompletableFuture<byte[]> read = CompletableFuture.supplyAsync(() -> readAll(fifo), readers);
+        CliRun r = CliRun.of(with(command, fifo.toString()));
+        assertEquals(FIFO, type(fifo), "the pipe is still a pipe; " + r);
+        releaseReader(fifo);
+        assertEquals(0, r.status(), r.toString());
+        assertTrue(r.out().contains(written + fifo), r.out());
+        assertArrayEquals(PNG_SIGNATURE, Arrays.copyOf(read.get(), PNG_SIGNATURE.length), "the reader got the PNG");
+    }
+
+    /** The command, given a listening Unix socket, refuses it in one line and leaves it a socket. */
+    private CliRun refusesASocketInOneLineAndLeavesIt(String name, String option, String... command) throws Exception {
+        Path socket = dir.resolve(name);
         try (ServerSocketChannel server = ServerSocketChannel.open(StandardProtocolFamily.UNIX)) {
             server.bind(UnixDomainSocketAddress.of(socket));
-            CliRun r = CliRun.of(with(SWEEP, socket.toString()));
-            r.assertOneLineUserError("--plot: " + socket + " is a socket, not a file");
-            assertFalse(r.out().contains("sweep:"), "nothing ran: " + r.out());
+            CliRun r = CliRun.of(with(command, socket.toString()));
+            r.assertOneLineUserError(option + ": " + socket + " is a socket, not a file");
             assertEquals(SOCKET, type(socket), "the socket is still a socket");
+            return r;
         }
     }
 
