@@ -66,6 +66,18 @@ class SpecialTargetsTest {
     }
 
     @Test
+    void worldOnAFullDeviceSaysWhyInOneLineAndLeavesTheDevice() throws Exception {
+        Path full = Path.of("/dev/full");
+        org.junit.jupiter.api.Assumptions.assumeTrue(Files.exists(full), "/dev/full (a device whose writes fail with ENOSPC)");
+        Path link = Files.createSymbolicLink(dir.resolve("world.png"), full);
+        CliRun r = CliRun.of(with(WORLD, link.toString()));
+        assertEquals(OutputWrites.EXIT_WRITE_FAILED, r.status(), r.toString());
+        assertEquals("rtaware: could not write " + link + ": No space left on device", r.err().strip());
+        assertTrue(Files.isSymbolicLink(link), "the link stays a link");
+        assertEquals(0020000, type(full), "/dev/full is still a character device");
+    }
+
+    @Test
     void benchSweepWritesItsPlotIntoAPipeInPlace() throws Exception {
         writesIntoAPipeInPlace("sweep.png", "plot written to ", SWEEP);
     }

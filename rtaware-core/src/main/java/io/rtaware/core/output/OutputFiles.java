@@ -2,6 +2,7 @@ package io.rtaware.core.output;
 
 import java.awt.image.RenderedImage;
 import java.io.BufferedOutputStream;
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
@@ -155,14 +156,18 @@ public final class OutputFiles {
                 throw new IOException("this JVM has no PNG writer");
             }
             ImageWriter writer = writers.next();
-            // Cached in memory: ImageIO's default file cache registers a shutdown hook, which
-            // fails for an image written while the JVM shuts down (a run's report after Ctrl-C).
-            try (ImageOutputStream stream = new MemoryCacheImageOutputStream(out)) {
+            // Encoded in memory, then written: a failed write then says why (the PNG writer's own
+            // says "I/O error writing PNG file!" for a full disk), and no ImageIO file cache is
+            // used (its clean-up registers a shutdown hook, which fails for an image written while
+            // the JVM shuts down, as a run's report after Ctrl-C is).
+            ByteArrayOutputStream encoded = new ByteArrayOutputStream();
+            try (ImageOutputStream stream = new MemoryCacheImageOutputStream(encoded)) {
                 writer.setOutput(stream);
                 writer.write(image);
             } finally {
                 writer.dispose();
             }
+            encoded.writeTo(out);
         };
     }
 
