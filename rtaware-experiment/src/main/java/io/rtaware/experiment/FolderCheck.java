@@ -11,7 +11,7 @@ import java.util.OptionalLong;
  * What {@code report} checks of an experiment folder before it reads a number from it: no running
  * experiment is writing into it, its {@code results.csv} holds no impossible value
  * ({@link ResultsCsv#readRows}), and every row is a run of the folder's own plan: a set and run
- * within it, and of the folder's shard. A folder that fails is refused with one line naming the
+ * within it, with the periods and top speed the plan gives that set, and of the folder's shard. A folder that fails is refused with one line naming the
  * file and the line. Stateless.
  */
 public final class FolderCheck {
@@ -47,6 +47,13 @@ public final class FolderCheck {
                     throw new ExperimentInputException(csv + " line " + row.line() + ": set " + set + " run " + run
                             + " is outside the plan of " + dir + " (" + p.sets().size() + " sets x " + p.runsPerSet()
                             + " runs)");
+                }
+                PeriodSet planned = p.sets().get(set - 1);
+                PeriodSet given = row.result().periods();
+                if (!(planned.name().equals(given.name()) && planned.sameRunsAs(given))) {
+                    throw new ExperimentInputException(csv + " line " + row.line() + ": set " + set + " run " + run
+                            + " is '" + given.name() + "' (" + given.label() + ") but set " + set + " of the plan of " + dir
+                            + " is '" + planned.name() + "' (" + planned.label() + ")");
                 }
                 if (!p.shard().includes(set, run)) {
                     throw new ExperimentInputException(csv + " line " + row.line() + ": set " + set + " run " + run

@@ -1,6 +1,5 @@
 package io.rtaware.experiment;
 
-import com.fasterxml.jackson.annotation.JsonProperty;
 import com.fasterxml.jackson.annotation.JsonValue;
 import io.rtaware.experiment.ExperimentSummary.Misses;
 import io.rtaware.experiment.ExperimentSummary.PairTest;
@@ -17,8 +16,6 @@ import java.util.Objects;
 import java.util.Optional;
 import java.util.TreeMap;
 import java.util.function.Function;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import org.apache.commons.math3.stat.correlation.SpearmansCorrelation;
 
 /**
@@ -61,67 +58,55 @@ public final class PaperClaims {
     /**
      * One claim with its verdict.
      *
-     * @param claim what the paper says
+     * @param id the claim's stable id, e.g. {@code table1-set1-faster} or {@code slow-hits@0.5mps},
+     *     by which docs quote its verdict ({@code claim `FOLDER/ID`: VERDICT})
+     * @param claim what the paper says (with the course and top speed it was judged on, when
+     *     they are not the paper's)
      * @param verdict what the results say
      * @param evidence the numbers the verdict rests on
      * @param rule how the verdict follows from the numbers
      */
-    public record Claim(String claim, Verdict verdict, String evidence, String rule) {
-
-        /** @return the claim's stable id ({@link PaperClaims#id(String)}), as quoted in the docs */
-        @JsonProperty("id")
-        public String id() {
-            return PaperClaims.id(claim);
-        }
+    public record Claim(String id, String claim, Verdict verdict, String evidence, String rule) {
     }
 
     /**
      * A claim these results cannot decide.
      *
+     * @param id the claim's stable id, as {@link Claim#id()}
      * @param claim what the paper says
      * @param reason which data is missing
      */
-    public record NotEvaluated(String claim, String reason) {
-
-        /** @return the claim's stable id ({@link PaperClaims#id(String)}) */
-        @JsonProperty("id")
-        public String id() {
-            return PaperClaims.id(claim);
-        }
+    public record NotEvaluated(String id, String claim, String reason) {
     }
 
-    /** What may follow a claim's text: its course, then its top speed. */
-    private static final Pattern SUFFIXES = Pattern.compile("(?: on ([A-Za-z0-9._-]+))?(?: \\(at (.+)\\))?");
-
-    /** Each claim's id, by its text without a course or top-speed suffix. */
+    /** Each claim's id on the paper's course at the paper's top speed, by its text. */
     private static final Map<String, String> IDS = new LinkedHashMap<>();
 
     /**
-     * @param claim a claim's text, possibly with a top-speed suffix such as {@code " (at 0.5 m/s)"}
-     * @return its stable id, e.g. {@code table1-set1-faster} or {@code slow-hits@0.5mps}, by which
-     *     docs quote its verdict ({@code claim `FOLDER/ID`: VERDICT})
+     * What a claim is judged on besides the paper's own course and top speed, in the claim's
+     * words and in its id: {@code " on office"} and {@code "-on-office"}, {@code " (at 0.5 m/s)"}
+     * and {@code "@0.5mps"}. The id is made here, with the words, and never read back from them: a
+     * course named by a path ({@code /data/courses/hall.yaml}) has its file's base name in the id.
      */
-    public static String id(String claim) {
-        for (Map.Entry<String, String> e : IDS.entrySet()) {
-            if (!claim.startsWith(e.getKey())) {
-                continue;
+    private record Scope(String words, String idSuffix) {
+
+        static final Scope PAPER = new Scope("", "");
+
+        /** @return this scope on a course: unchanged on the paper's room (or when none is named) */
+        Scope on(String scenario) {
+            if (scenario == null || PAPER_COURSE.equals(scenario)) {
+                return this;
             }
-            // The text, then optionally " on SCENARIO" (a course other than the paper's room), then
-            // optionally " (at SPEED)" (a top-speed sweep).
-            Matcher m = SUFFIXES.matcher(claim.substring(e.getKey().length()));
-            if (m.matches()) {
-                String id = e.getValue();
-                if (m.group(1) != null) {
-                    id += "-on-" + m.group(1);
-                }
-                if (m.group(2) != null) {
-                    id += "@" + m.group(2).replace(" m/s", "mps").replace("run's default top speed", "default")
-                            .replace(' ', '-');
-                }
-                return id;
-            }
+            String base = scenario.substring(Math.max(scenario.lastIndexOf('/'), scenario.lastIndexOf('\\')) + 1)
+                    .replaceFirst("\\.(ya?ml)$", "").replaceAll("[^A-Za-z0-9._-]", "-");
+            return new Scope(words + " on " + scenario, idSuffix + "-on-" + (base.isEmpty() ? "course" : base));
         }
-        throw new IllegalArgumentException("no id for claim: " + claim);
+
+        /** @return this scope at one top speed, named as in {@code "0.5 m/s"} */
+        Scope at(String speed) {
+            return new Scope(words + " (at " + speed + ")", idSuffix + "@" + speed.replace(" m/s", "mps")
+                    .replace("run's default top speed", "default").replace(' ', '-'));
+        }
     }
 
     /**
@@ -212,6 +197,14 @@ public final class PaperClaims {
         this.tests = tests;
     }
 
+    private void judged(String text, Scope scope, Verdict verdict, String evidence, String rule) {
+        claims.add(new Claim(Objects.requireNonNull(IDS.get(text), text) + scope.idSuffix(), text + scope.words(), verdict, evidence, rule));
+    }
+
+    private void unjudged(String text, Scope scope, String reason) {
+        notEvaluated.add(new NotEvaluated(Objects.requireNonNull(IDS.get(text), text) + scope.idSuffix(), text + scope.words(), reason));
+    }
+
     /**
      * @param sets the experiment's sets, summarized
      * @param tests its Welch tests per quantity
@@ -233,10 +226,11 @@ public final class PaperClaims {
         Map<String, List<SetSummary>> bySpeed = new LinkedHashMap<>();
         sets.forEach(s -> bySpeed.computeIfAbsent(speedLabel(s.topSpeedMps()), k -> new ArrayList<>()).add(s));
         // The paper's claims keep their names on the paper's course; another course is named in them.
-        String on = scenario == null || PAPER_COURSE.equals(scenario) ? "" : " on " + scenario;
-        bySpeed.forEach((speed, group) -> c.slow(group, on + (bySpeed.size() > 1 ? " (at " + speed + ")" : "")));
-        bySpeed.forEach((speed, group) -> c.rule(group, on + (bySpeed.size() > 1 ? " (at " + speed + ")" : "")));
-        bySpeed.forEach((speed, group) -> c.fast(group, bySpeed.size() > 1 ? " (at " + speed + ")" : ""));
+        Scope course = Scope.PAPER.on(scenario);
+        boolean perSpeed = bySpeed.size() > 1;
+        bySpeed.forEach((speed, group) -> c.slow(group, perSpeed ? course.at(speed) : course));
+        bySpeed.forEach((speed, group) -> c.rule(group, perSpeed ? course.at(speed) : course));
+        bySpeed.forEach((speed, group) -> c.fast(group, perSpeed ? Scope.PAPER.at(speed) : Scope.PAPER));
         c.missesFall();
         Map<Integer, SetSummary> paper = c.paperSets();
         c.setOneDiffers(paper);
@@ -247,23 +241,22 @@ public final class PaperClaims {
         c.fig7(paper);
         c.setOneMisses(paper);
         c.spreadTwice(paper);
-        c.notEvaluated.add(new NotEvaluated(CONCLUSION, "a conclusion drawn from the claims above, not a measurement of "
-                + "its own: read it from the t-tests of Table I and II and the miss claims"));
-        c.notEvaluated.add(new NotEvaluated(AVOIDER_FAST, "the paper sets change every period at once; an avoider-only "
+        c.unjudged(CONCLUSION, Scope.PAPER, "a conclusion drawn from the claims above, not a measurement of "
+                + "its own: read it from the t-tests of Table I and II and the miss claims");
+        c.unjudged(AVOIDER_FAST, Scope.PAPER, "the paper sets change every period at once; an avoider-only "
                 + "period sweep with collisions counted per period is the claim 'periods above 100 ms' and the sweep-obstacle "
-                + "folder, and a too-fast avoider has no rule here"));
-        c.notEvaluated.add(new NotEvaluated(SAMPLING, "advice, not a measurement: every run's report.json applies it as "
-                + "the period advice's nyquist rule"));
+                + "folder, and a too-fast avoider has no rule here");
+        c.unjudged(SAMPLING, Scope.PAPER, "advice, not a measurement: every run's report.json applies it as "
+                + "the period advice's nyquist rule");
         return new Verdicts(List.copyOf(c.claims), List.copyOf(c.notEvaluated));
     }
 
-    private void slow(List<SetSummary> group, String suffix) {
-        String claim = SLOW + suffix;
+    private void slow(List<SetSummary> group, Scope scope) {
         List<SetSummary> above = onAxis(group).stream().filter(s -> s.sweptPeriodMs() > SLOW_ABOVE_MS && s.measuredRuns() > 0)
                 .toList();
         if (above.isEmpty()) {
-            notEvaluated.add(new NotEvaluated(claim, "no set with a period above " + SLOW_ABOVE_MS
-                    + " ms and a run that ended on the course" + periodsHere(group)));
+            unjudged(SLOW, scope, "no set with a period above " + SLOW_ABOVE_MS
+                    + " ms and a run that ended on the course" + periodsHere(group));
             return;
         }
         List<SetSummary> below = onAxis(group).stream().filter(s -> s.sweptPeriodMs() <= SLOW_ABOVE_MS).toList();
@@ -282,35 +275,34 @@ public final class PaperClaims {
         String evidence = String.join("; ", parts) + ". At or below " + SLOW_ABOVE_MS + " ms: "
                 + (belowRuns == 0 ? "no runs" : RateInterval.of(belowHits, belowRuns).text() + " runs collided") + ". "
                 + firstCollision(group) + reactionBound(group);
-        claims.add(new Claim(claim, v, evidence, "reproduced if every set above " + SLOW_ABOVE_MS
+        judged(SLOW, scope, v, evidence, "reproduced if every set above " + SLOW_ABOVE_MS
                 + " ms has a collision in at least " + pct(MAJORITY) + " of its runs and the sets at or below "
                 + SLOW_ABOVE_MS + " ms (if any) in fewer than " + pct(MAJORITY) + "; not reproduced if no run above "
-                + SLOW_ABOVE_MS + " ms collided; mixed otherwise"));
+                + SLOW_ABOVE_MS + " ms collided; mixed otherwise");
     }
 
     /**
      * The reaction rule judged by the runs: its largest safe period (mean of the runs' advice)
      * against the shortest swept period at which a run collided.
      */
-    private void rule(List<SetSummary> group, String suffix) {
-        String claim = RULE + suffix;
+    private void rule(List<SetSummary> group, Scope scope) {
         Double bound = ruleBound(group);
         List<SetSummary> axis = onAxis(group).stream().filter(s -> s.measuredRuns() > 0).toList();
         if (bound == null || axis.size() < 2) {
-            notEvaluated.add(new NotEvaluated(claim, bound == null ? "no run reports the reaction rule's largest safe period"
-                    : "fewer than two swept periods with runs on the course" + periodsHere(group)));
+            unjudged(RULE, scope, bound == null ? "no run reports the reaction rule's largest safe period"
+                    : "fewer than two swept periods with runs on the course" + periodsHere(group));
             return;
         }
         var first = axis.stream().filter(s -> s.runsWithCollisions() > 0).min(Comparator.comparingLong(SetSummary::sweptPeriodMs));
         long longest = axis.stream().mapToLong(SetSummary::sweptPeriodMs).max().orElseThrow();
         if (bound <= 0) {
-            noSafePeriod(claim, axis, first);
+            noSafePeriod(scope, axis, first);
             return;
         }
         if (first.isEmpty() && longest < bound) {
-            notEvaluated.add(new NotEvaluated(claim, "no swept period reaches the rule's largest safe period ("
+            unjudged(RULE, scope, "no swept period reaches the rule's largest safe period ("
                     + num(bound, 1) + " ms; the longest is " + longest + " ms) and no run collided: the runs agree with "
-                    + "the rule without testing it"));
+                    + "the rule without testing it");
             return;
         }
         Verdict v;
@@ -326,17 +318,17 @@ public final class PaperClaims {
                     + first.get().sweptPeriodMs() + " ms (" + first.get().name() + ", " + first.get().runsWithCollisions()
                     + " of " + first.get().measuredRuns() + " runs), " + num(ratio, 2) + " x the bound";
         }
-        claims.add(new Claim(claim, v, evidence + ".", "reproduced if the shortest swept period at which a run collided "
+        judged(RULE, scope, v, evidence + ".", "reproduced if the shortest swept period at which a run collided "
                 + "lies between the bound and " + num(RULE_NEAR, 1) + " x the bound; not reproduced if runs collided below "
                 + "the bound (the rule is unsafe) or none collided up to beyond " + num(RULE_NEAR, 1) + " x it (the rule is "
-                + "far too cautious); mixed otherwise"));
+                + "far too cautious); mixed otherwise");
     }
 
     /**
      * The reaction rule found no safe period (its bound is 0 in every run that gave one): it
      * predicts collisions from the shortest period on.
      */
-    private void noSafePeriod(String claim, List<SetSummary> axis, Optional<SetSummary> first) {
+    private void noSafePeriod(Scope scope, List<SetSummary> axis, Optional<SetSummary> first) {
         SetSummary shortest = axis.stream().min(Comparator.comparingLong(SetSummary::sweptPeriodMs)).orElseThrow();
         Verdict v = first.isEmpty() ? Verdict.NOT_REPRODUCED
                 : first.get() == shortest ? Verdict.REPRODUCED : Verdict.MIXED;
@@ -344,10 +336,10 @@ public final class PaperClaims {
         for (SetSummary s : axis) {
             parts.add(s.sweptPeriodMs() + " ms " + s.collisions95().text());
         }
-        claims.add(new Claim(claim, v, "the rule finds no safe period (the input's age and the stopping distance alone "
+        judged(RULE, scope, v, "the rule finds no safe period (the input's age and the stopping distance alone "
                 + "use up the avoider's range); runs with a collision: " + String.join("; ", parts) + ".",
                 "where the rule finds no safe period: reproduced if runs collided already at the shortest swept period; "
-                        + "not reproduced if no run collided at any period; mixed otherwise"));
+                        + "not reproduced if no run collided at any period; mixed otherwise");
     }
 
     /** The reaction rule's largest safe period for one task: the mean over the sets whose runs' advice gave it. */
@@ -413,12 +405,11 @@ public final class PaperClaims {
                 + " x that bound).";
     }
 
-    private void fast(List<SetSummary> group, String suffix) {
-        String claim = FAST + suffix;
+    private void fast(List<SetSummary> group, Scope scope) {
         List<SetSummary> fastSets = onAxis(group).stream().filter(s -> s.sweptPeriodMs() <= FAST_AT_MOST_MS).toList();
         if (fastSets.isEmpty()) {
-            notEvaluated.add(new NotEvaluated(claim, "no set with a period of " + FAST_AT_MOST_MS + " ms or less"
-                    + periodsHere(group)));
+            unjudged(FAST, scope, "no set with a period of " + FAST_AT_MOST_MS + " ms or less"
+                    + periodsHere(group));
             return;
         }
         boolean allMost = fastSets.stream().allMatch(s -> errors(s) >= MAJORITY * s.runs());
@@ -430,11 +421,11 @@ public final class PaperClaims {
         }
         onAxis(group).stream().filter(s -> s.sweptPeriodMs() == SLOW_ABOVE_MS).findFirst()
                 .ifPresent(s -> parts.add("for comparison, " + robot(s)));
-        claims.add(new Claim(claim, v, String.join("; ", parts) + "." + (v == Verdict.NOT_COMPARABLE ? " " + LOCK_UP_MECHANISM
+        judged(FAST, scope, v, String.join("; ", parts) + "." + (v == Verdict.NOT_COMPARABLE ? " " + LOCK_UP_MECHANISM
                 : ""), "a run 'locks up' when its process fails or leaves no report (outcome error); reproduced if at least "
                 + pct(MAJORITY) + " of the runs of every set at " + FAST_AT_MOST_MS + " ms or less lock up; not comparable "
                 + "if none does (the paper's lock-up came from a starved machine that this setup does not have); mixed "
-                + "otherwise"));
+                + "otherwise");
     }
 
     private static String robot(SetSummary s) {
@@ -474,8 +465,8 @@ public final class PaperClaims {
         series.put("all four (against the swept period)", all);
         series.values().removeIf(points -> points.stream().mapToDouble(p -> p[0]).distinct().count() < MIN_PERIODS);
         if (series.isEmpty()) {
-            notEvaluated.add(new NotEvaluated(MISSES_FALL, "no task's period takes " + MIN_PERIODS
-                    + " or more values across the sets"));
+            unjudged(MISSES_FALL, Scope.PAPER, "no task's period takes " + MIN_PERIODS
+                    + " or more values across the sets");
             return;
         }
         List<String> parts = new ArrayList<>();
@@ -493,10 +484,10 @@ public final class PaperClaims {
                     + num(last[1], 2) + "% at " + (long) last[0] + " ms");
         }
         Verdict v = falls == series.size() ? Verdict.REPRODUCED : falls == 0 ? Verdict.NOT_REPRODUCED : Verdict.MIXED;
-        claims.add(new Claim(MISSES_FALL, v, String.join("; ", parts) + ".", "for each task whose period takes at least "
+        judged(MISSES_FALL, Scope.PAPER, v, String.join("; ", parts) + ".", "for each task whose period takes at least "
                 + MIN_PERIODS + " values across the sets (its miss % against its period), and for all four tasks against "
                 + "the swept period: Spearman's rank correlation rho; a series falls if rho <= " + FALLS_RHO
-                + "; reproduced if every series falls, not reproduced if none does, mixed otherwise"));
+                + "; reproduced if every series falls, not reproduced if none does, mixed otherwise");
     }
 
     private Map<Integer, SetSummary> paperSets() {
@@ -519,7 +510,7 @@ public final class PaperClaims {
             WelchTest t = test(paper, pair[0], pair[1], "run_time_s");
             String missing = missing(paper, pair, t);
             if (missing != null) {
-                notEvaluated.add(new NotEvaluated(T_SET1, missing));
+                unjudged(T_SET1, Scope.PAPER, missing);
                 return;
             }
             double a = paper.get(pair[0]).runTimeS().mean();
@@ -529,10 +520,10 @@ public final class PaperClaims {
             parts.add("Set " + pair[0] + " vs Set " + pair[1] + ": " + num(a, 2) + " s vs " + num(b, 2) + " s, p = "
                     + num(t.p(), 4));
         }
-        claims.add(new Claim(T_SET1, verdict(agree, pairs.size()), String.join("; ", parts)
+        judged(T_SET1, Scope.PAPER, verdict(agree, pairs.size()), String.join("; ", parts)
                 + " (paper: 266.95 s vs 276.97 s and 272.68 s, both statistically different).",
                 "Welch's two-sided t-test on the completed runs; a pair agrees if p < " + ALPHA
-                        + " and Set 1's mean is the lower; reproduced if both agree, not reproduced if neither, mixed otherwise"));
+                        + " and Set 1's mean is the lower; reproduced if both agree, not reproduced if neither, mixed otherwise");
     }
 
     private void onTheVerge(Map<Integer, SetSummary> paper) {
@@ -545,17 +536,17 @@ public final class PaperClaims {
             WelchTest t = test(paper, pair[0], pair[1], "run_time_s");
             String missing = missing(paper, pair, t);
             if (missing != null) {
-                notEvaluated.add(new NotEvaluated(T_VERGE, missing));
+                unjudged(T_VERGE, Scope.PAPER, missing);
                 return;
             }
             agree += t.confidence() >= VERGE_MIN && t.confidence() < VERGE_MAX ? 1 : 0;
             parts.add("Set " + pair[0] + " vs Set " + pair[1] + ": confidence " + pct(t.confidence()) + " (paper "
                     + paperConfidence.get(i) + ")");
         }
-        claims.add(new Claim(T_VERGE, verdict(agree, pairs.size()), String.join("; ", parts) + ".",
+        judged(T_VERGE, Scope.PAPER, verdict(agree, pairs.size()), String.join("; ", parts) + ".",
                 "Welch's two-sided t-test on the completed runs, confidence = 1 - p; a pair agrees if its confidence is at least "
                         + pct(VERGE_MIN) + " and below " + pct(VERGE_MAX) + "; reproduced if all three agree, not reproduced "
-                        + "if none does, mixed otherwise"));
+                        + "if none does, mixed otherwise");
     }
 
     private void distancesAlike(Map<Integer, SetSummary> paper) {
@@ -580,10 +571,10 @@ public final class PaperClaims {
             }
         }
         if (tested == 0) {
-            notEvaluated.add(new NotEvaluated(T_DISTANCE, numbers.size() < 2
+            unjudged(T_DISTANCE, Scope.PAPER, numbers.size() < 2
                     ? "fewer than two of the paper's sets (at the paper's top speed) were run"
                     : "no t-test between the paper's sets is defined (" + String.join(", ", skipped)
-                            + ": fewer than two runs, or no variance)"));
+                            + ": fewer than two runs, or no variance)");
             return;
         }
         Verdict v = different == 0 ? Verdict.REPRODUCED : different * 2 >= tested ? Verdict.NOT_REPRODUCED : Verdict.MIXED;
@@ -608,48 +599,48 @@ public final class PaperClaims {
                 + ") differ with p < " + ALPHA + (parts.isEmpty() ? "" : ": " + String.join("; ", parts))
                 + (skipped.isEmpty() ? "" : "; not testable: " + String.join(", ", skipped))
                 + (blind.isEmpty() ? "" : "; too weak to see the paper's differences: " + String.join("; ", blind)) + ".";
-        claims.add(new Claim(T_DISTANCE, v, evidence, "Welch's two-sided t-test between every pair of the paper's sets "
+        judged(T_DISTANCE, Scope.PAPER, v, evidence, "Welch's two-sided t-test between every pair of the paper's sets "
                 + "present, on every run that ended on the course; reproduced if no pair has p < " + ALPHA
                 + " and every test could have detected the paper's difference of the two sets' means (the smallest difference "
                 + "detectable at alpha " + WelchTest.ALPHA + " with " + pct(WelchTest.POWER) + " power, from the observed "
                 + "spread and n, is at most the paper's); inconclusive if no pair differs but a test could not have; not "
                 + "reproduced if at least half the pairs differ, mixed otherwise (no correction for multiple tests, like the "
-                + "paper)"));
+                + "paper)");
     }
 
     private void setThree(Map<Integer, SetSummary> paper) {
         if (paper.size() < 5 || paper.values().stream().anyMatch(s -> s.runTimeS().sd() == null)) {
-            notEvaluated.add(new NotEvaluated(SET3, "needs all five paper sets with at least two completed runs each; have "
-                    + (paper.isEmpty() ? "none" : names(paper, new ArrayList<>(paper.keySet())))));
+            unjudged(SET3, Scope.PAPER, "needs all five paper sets with at least two completed runs each; have "
+                    + (paper.isEmpty() ? "none" : names(paper, new ArrayList<>(paper.keySet()))));
             return;
         }
         int fastest = argBest(paper, s -> -s.runTimeS().mean());
         int widest = argBest(paper, s -> s.runTimeS().sd());
         int agree = (fastest == 3 ? 1 : 0) + (widest == 3 ? 1 : 0);
-        claims.add(new Claim(SET3, verdict(agree, 2), "fastest mean run time: Set " + fastest + " ("
+        judged(SET3, Scope.PAPER, verdict(agree, 2), "fastest mean run time: Set " + fastest + " ("
                 + num(paper.get(fastest).runTimeS().mean(), 2) + " s); highest SD: Set " + widest + " ("
                 + num(paper.get(widest).runTimeS().sd(), 2) + " s); Set 3: " + num(paper.get(3).runTimeS().mean(), 2)
                 + " s +- " + num(paper.get(3).runTimeS().sd(), 2) + " s (paper: 265.89 +- 11.19 s).",
                 "reproduced if Set 3 has both the lowest mean and the highest standard deviation of the run time, "
-                        + "not reproduced if neither, mixed if one"));
+                        + "not reproduced if neither, mixed if one");
     }
 
     private void almostIdentical(Map<Integer, SetSummary> paper) {
         List<SetSummary> withTimes = paper.values().stream().filter(s -> s.runTimeS().mean() != null).toList();
         List<SetSummary> withDistances = paper.values().stream().filter(s -> s.distanceToFinishM().mean() != null).toList();
         if (withTimes.size() < 2 || withDistances.size() < 2) {
-            notEvaluated.add(new NotEvaluated(SAME, "needs at least two of the paper's sets with a mean run time and a mean "
-                    + "distance to the finish; have " + withTimes.size() + " and " + withDistances.size()));
+            unjudged(SAME, Scope.PAPER, "needs at least two of the paper's sets with a mean run time and a mean "
+                    + "distance to the finish; have " + withTimes.size() + " and " + withDistances.size());
             return;
         }
         double time = spread(withTimes, s -> s.runTimeS().mean());
         double distance = spread(withDistances, s -> s.distanceToFinishM().mean());
         int agree = (time <= SAME_RUN_TIME ? 1 : 0) + (distance <= SAME_DISTANCE ? 1 : 0);
-        claims.add(new Claim(SAME, verdict(agree, 2), "over " + names(paper, new ArrayList<>(paper.keySet()))
+        judged(SAME, Scope.PAPER, verdict(agree, 2), "over " + names(paper, new ArrayList<>(paper.keySet()))
                 + ": the set means of the run time span " + pct(time) + " of their mean, those of the distance to the finish "
                 + pct(distance) + " (paper: 4.2% and 13.6%).", "spread = (largest set mean - smallest) / mean of the set "
                 + "means; reproduced if at most " + pct(SAME_RUN_TIME) + " for run time and at most " + pct(SAME_DISTANCE)
-                + " for distance (the paper's own spreads, rounded up), not reproduced if neither, mixed if one"));
+                + " for distance (the paper's own spreads, rounded up), not reproduced if neither, mixed if one");
     }
 
     private void fig7(Map<Integer, SetSummary> paper) {
@@ -674,20 +665,20 @@ public final class PaperClaims {
             parts.add("Set " + n + ": " + String.join(" > ", ranked));
         }
         if (judged == 0) {
-            notEvaluated.add(new NotEvaluated(FIG7, "none of the paper's Sets 1, 4 and 5 (at the paper's top speed) was run"));
+            unjudged(FIG7, Scope.PAPER, "none of the paper's Sets 1, 4 and 5 (at the paper's top speed) was run");
             return;
         }
-        claims.add(new Claim(FIG7, verdict(agree, judged), String.join("; ", parts) + ".",
+        judged(FIG7, Scope.PAPER, verdict(agree, judged), String.join("; ", parts) + ".",
                 "a set agrees if its miss % is strictly ordered planner > occupancy > waypoint > obstacle; reproduced if "
-                        + "every one of Sets 1, 4 and 5 present agrees, not reproduced if none does, mixed otherwise"));
+                        + "every one of Sets 1, 4 and 5 present agrees, not reproduced if none does, mixed otherwise");
     }
 
     private void setOneMisses(Map<Integer, SetSummary> paper) {
         List<SetSummary> withMisses = paper.values().stream()
                 .filter(s -> s.misses().get(ExperimentSummary.ALL_TASKS).missPct() != null).toList();
         if (!paper.containsKey(1) || withMisses.size() < 2 || !withMisses.contains(paper.get(1))) {
-            notEvaluated.add(new NotEvaluated(SET1_MISSES, "needs the paper's Set 1 and another paper set with misses "
-                    + "counted; have " + (paper.isEmpty() ? "none" : names(paper, new ArrayList<>(paper.keySet())))));
+            unjudged(SET1_MISSES, Scope.PAPER, "needs the paper's Set 1 and another paper set with misses "
+                    + "counted; have " + (paper.isEmpty() ? "none" : names(paper, new ArrayList<>(paper.keySet()))));
             return;
         }
         int highest = argBest(paper.entrySet().stream().filter(e -> withMisses.contains(e.getValue()))
@@ -696,9 +687,9 @@ public final class PaperClaims {
         List<String> parts = new ArrayList<>();
         paper.forEach((n, s) -> parts.add("Set " + n + " " + num(s.misses().get(ExperimentSummary.ALL_TASKS).missPct(), 2)
                 + "%"));
-        claims.add(new Claim(SET1_MISSES, highest == 1 ? Verdict.REPRODUCED : Verdict.NOT_REPRODUCED,
+        judged(SET1_MISSES, Scope.PAPER, highest == 1 ? Verdict.REPRODUCED : Verdict.NOT_REPRODUCED,
                 "misses of all four tasks' releases: " + String.join(", ", parts) + "; highest: Set " + highest + ".",
-                "reproduced if Set 1 has the highest miss % of the paper's sets present, not reproduced otherwise"));
+                "reproduced if Set 1 has the highest miss % of the paper's sets present, not reproduced otherwise");
     }
 
     private void spreadTwice(Map<Integer, SetSummary> paper) {
@@ -707,8 +698,8 @@ public final class PaperClaims {
         boolean all = java.util.stream.Stream.concat(wide.stream(), narrow.stream())
                 .allMatch(n -> paper.containsKey(n) && paper.get(n).runTimeS().sd() != null);
         if (!all) {
-            notEvaluated.add(new NotEvaluated(SPREAD, "needs all five paper sets with at least two completed runs each; have "
-                    + (paper.isEmpty() ? "none" : names(paper, new ArrayList<>(paper.keySet())))));
+            unjudged(SPREAD, Scope.PAPER, "needs all five paper sets with at least two completed runs each; have "
+                    + (paper.isEmpty() ? "none" : names(paper, new ArrayList<>(paper.keySet()))));
             return;
         }
         double wideSd = wide.stream().mapToDouble(n -> paper.get(n).runTimeS().sd()).average().orElseThrow();
@@ -719,10 +710,10 @@ public final class PaperClaims {
         List<PaperReference.PaperSet> published = PaperReference.published().sets();
         double paperWide = wide.stream().mapToDouble(n -> published.get(n - 1).runTimeSdS()).average().orElseThrow();
         double paperNarrow = narrow.stream().mapToDouble(n -> published.get(n - 1).runTimeSdS()).average().orElseThrow();
-        claims.add(new Claim(SPREAD, v, "mean SD of the run time: Sets 2 and 3 " + num(wideSd, 2) + " s, Sets 1, 4 and 5 "
+        judged(SPREAD, Scope.PAPER, v, "mean SD of the run time: Sets 2 and 3 " + num(wideSd, 2) + " s, Sets 1, 4 and 5 "
                 + num(narrowSd, 2) + " s, ratio " + num(ratio, 2) + " (paper: " + num(paperWide, 2) + " s and "
                 + num(paperNarrow, 2) + " s, ratio " + num(paperWide / paperNarrow, 2) + ").", "ratio = mean SD of Sets 2 and 3 over mean SD of Sets 1, 4 and 5; reproduced if at "
-                + "least " + SPREAD_RATIO_MIN + ", not reproduced if below " + SPREAD_RATIO_NONE + ", mixed between"));
+                + "least " + SPREAD_RATIO_MIN + ", not reproduced if below " + SPREAD_RATIO_NONE + ", mixed between");
     }
 
     private static Verdict verdict(int agree, int of) {

@@ -30,7 +30,8 @@ import java.util.Map;
  * within the simulator's 0.05 m margin that did not touch),
  * machine, machine_reasons, other_cpus, steal_pct, load_start, load_end, gc_max_pause_ms,
  * time_to_safepoint_max_ms, machine_before_run, waited_for_quiet_s (the run's conditions:
- * {@link RunMachine}; {@code machine} is empty in rows that predate them)
+ * {@link RunMachine}; {@code machine} is empty in rows that predate them), machine_cpus (the CPUs
+ * the run's conditions counted; empty in rows that predate it)
  * </pre>
  *
  * RFC 4180 quoting; an empty field is a value the run did not give (an {@code error} row, or
@@ -48,7 +49,7 @@ public final class ResultsCsv {
 
     private static final List<String> MACHINE_COLUMNS = List.of("machine", "machine_reasons", "other_cpus", "steal_pct",
             "load_start", "load_end", "gc_max_pause_ms", "time_to_safepoint_max_ms", "machine_before_run",
-            "waited_for_quiet_s");
+            "waited_for_quiet_s", "machine_cpus");
 
     /** The header row's column names. */
     public static final List<String> HEADER = header();
@@ -218,6 +219,7 @@ public final class ResultsCsv {
         f.add(number(m.timeToSafepointMaxMs()));
         f.add(quote(m.beforeRun()));
         f.add(recorded ? number(m.waitedS()) : "");
+        f.add(m.machineCpus() > 0 ? Integer.toString(m.machineCpus()) : "");
         return String.join(",", f);
     }
 
@@ -362,7 +364,11 @@ public final class ResultsCsv {
                         decimal(row.get("steal_pct")), decimal(row.get("load_start")), decimal(row.get("load_end")),
                         decimal(row.get("gc_max_pause_ms")), decimal(row.get("time_to_safepoint_max_ms")),
                         row.get("machine_before_run"), row.get("waited_for_quiet_s").isEmpty() ? 0
-                        : Double.parseDouble(row.get("waited_for_quiet_s")));
+                        : Double.parseDouble(row.get("waited_for_quiet_s")),
+                        row.get("machine_cpus").isEmpty() ? 0 : Integer.parseInt(row.get("machine_cpus")));
+        machine.impossible().ifPresent(why -> {
+            throw new IllegalArgumentException(why);
+        });
         return new RunResult(Integer.parseInt(row.get("set")), run, set, conditions,
                 row.get("outcome"), decimal(row.get("run_time_s")), decimal(row.get("distance_to_finish_m")),
                 decimal(row.get("distance_travelled_m")), optionalInt(row.get("collisions")),

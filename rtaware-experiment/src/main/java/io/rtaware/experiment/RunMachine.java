@@ -1,5 +1,7 @@
 package io.rtaware.experiment;
 
+import io.rtaware.core.conditions.MachineVerdict;
+import java.util.Optional;
 import java.util.Set;
 
 /**
@@ -19,10 +21,12 @@ import java.util.Set;
  * @param beforeRun the verdict of the check before the run ({@code quiet}, {@code busy}), or
  *     empty when none was made
  * @param waitedS how long the experiment waited for a quiet machine before the run, s
+ * @param machineCpus the CPUs the OS counted during the run (its conditions' {@code machine_cpus}),
+ *     or 0 where not recorded
  */
 public record RunMachine(String machine, String reasons, double otherCpus, double stealPct, double loadStart,
                          double loadEnd, double gcMaxPauseMs, double timeToSafepointMaxMs, String beforeRun,
-                         double waitedS) {
+                         double waitedS, int machineCpus) {
 
     /** The verdict of a run whose conditions were not recorded. */
     public static final String UNRECORDED = "unrecorded";
@@ -31,7 +35,7 @@ public record RunMachine(String machine, String reasons, double otherCpus, doubl
 
     /** The machine of a run whose conditions were not recorded. */
     public static final RunMachine NOT_RECORDED = new RunMachine(UNRECORDED, "", Double.NaN, Double.NaN, Double.NaN,
-            Double.NaN, Double.NaN, Double.NaN, "", 0);
+            Double.NaN, Double.NaN, Double.NaN, "", 0, 0);
 
     /** Verdicts a summary includes by default. */
     static final Set<String> INCLUDED_BY_DEFAULT = Set.of(QUIET);
@@ -48,6 +52,31 @@ public record RunMachine(String machine, String reasons, double otherCpus, doubl
      */
     public RunMachine withCheck(String beforeRun, double waitedS) {
         return new RunMachine(machine, reasons, otherCpus, stealPct, loadStart, loadEnd, gcMaxPauseMs,
-                timeToSafepointMaxMs, beforeRun, waitedS);
+                timeToSafepointMaxMs, beforeRun, waitedS, machineCpus);
+    }
+
+    /**
+     * @return why these figures cannot be what a run measured, or empty: other processes used
+     *     more CPUs than the machine has, or a figure is negative, or the verdict is not the one
+     *     {@link MachineVerdict}'s rule gives them ({@code quiet} or {@code disturbed} although
+     *     other processes or steal crossed the threshold of {@code busy})
+     */
+    public Optional<String> impossible() {
+        if (machineCpus < 0) {
+            return Optional.of("machine_cpus " + machineCpus + " cannot be negative");
+        }
+        if (otherCpus < 0 || stealPct < 0) {
+            return Optional.of("other_cpus " + otherCpus + " and steal_pct " + stealPct + " cannot be negative");
+        }
+        if (machineCpus > 0 && otherCpus > machineCpus) {
+            return Optional.of("other_cpus " + otherCpus + " is more than the machine's " + machineCpus
+                    + " CPUs (machine_cpus)");
+        }
+        boolean busyByRule = otherCpus > MachineVerdict.OTHER_CPUS_MAX || stealPct > MachineVerdict.STEAL_MAX_PCT;
+        if (busyByRule && (quiet() || MachineVerdict.DISTURBED.equals(machine))) {
+            return Optional.of("labelled " + machine + " but other_cpus " + otherCpus + " and steal_pct " + stealPct
+                    + " make it busy by the rule (" + MachineVerdict.RULE + ")");
+        }
+        return Optional.empty();
     }
 }

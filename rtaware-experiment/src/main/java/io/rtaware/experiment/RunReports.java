@@ -80,7 +80,7 @@ public final class RunReports {
         JsonNode m = c.path("measured");
         return new RunMachine(c.path("machine").asText(), String.join("; ", reasons), number(m, "other_cpus"),
                 number(m, "steal_pct"), number(m, "load_start"), number(m, "load_end"), number(m, "gc_max_pause_ms"),
-                number(m, "time_to_safepoint_max_ms"), "", 0);
+                number(m, "time_to_safepoint_max_ms"), "", 0, m.path("machine_cpus").asInt(0));
     }
 
     /**

@@ -82,7 +82,7 @@ public final class FakeRun {
         conditions.put("machine_reasons", List.of(busy ? "other processes used 1.2 of 2 CPUs (more than 0.10)"
                 : "other processes used 0.02 of 2 CPUs"));
         conditions.put("measured", Map.of("other_cpus", busy ? 1.2 : 0.02, "steal_pct", 0.0, "load_start", busy ? 3.5 : 0.3,
-                "load_end", 0.4, "gc_max_pause_ms", 0.1 * seed));
+                "load_end", 0.4, "gc_max_pause_ms", 0.1 * seed, "machine_cpus", 2));
         new ReportDocument(new Report(Report.SCHEMA, 1.0, runTime, 1.0, tasks, List.of())).section("run", run)
                 .section("advice", advice).section("conditions", conditions).write(out.resolve("report.json"));
         StringBuilder csv = new StringBuilder("t_s,x_m,y_m,yaw_rad\n");

@@ -142,6 +142,29 @@ class PaperClaimsTest {
                 "another course is named in the claim: " + onCorridor.claims());
         assertTrue(claim(onCorridor, PaperClaims.SLOW + " on corridor").evidence().contains("2 with a near miss"),
                 "near misses in the evidence");
+        assertEquals("slow-hits-on-corridor", claim(onCorridor, PaperClaims.SLOW + " on corridor").id());
+    }
+
+    /**
+     * Issue 38: a course named by a path (the documented {@code --scenario FILE}) lost the
+     * experiment's report: claim ids were parsed back from the claim's words, which held the path.
+     */
+    @Test
+    void aCourseNamedByAPathKeepsThePathInItsWordsAndItsFileNameInTheId() throws Exception {
+        String course = "/data/courses/hall v2.yaml";
+        List<RunResult> rows = rows(ExperimentSets.resolve("paper"), 2, (s, p, r) -> completed(230), FALLING).stream()
+                .map(r -> new RunResult(r.set(), r.run(), r.periods(), new RunConditions(course, 10, 1, null),
+                        r.outcome(), r.runTimeS(), r.distanceToFinishM(), r.distanceTravelledM(), r.collisions(),
+                        r.waypointsReached(), r.waypointsTotal(), r.tasks(), r.mediatorCycles())).toList();
+        ExperimentSummary s = summary(rows);
+        Map<String, String> idByWords = new LinkedHashMap<>();
+        s.claims().forEach(c -> idByWords.put(c.claim(), c.id()));
+        s.claimsNotEvaluated().forEach(n -> idByWords.put(n.claim(), n.id()));
+        assertEquals("slow-hits-on-hall-v2", idByWords.get(PaperClaims.SLOW + " on " + course),
+                "the course is named in the claim: " + idByWords);
+        assertEquals("table1-set1-faster", idByWords.get(PaperClaims.T_SET1), "claims without a course keep their ids");
+        String json = io.rtaware.core.report.ReportDocument.mapper().writeValueAsString(s);
+        assertTrue(json.contains("\"id\" : \"slow-hits-on-hall-v2\""), "the summary is written with the ids");
     }
 
     @Test
@@ -330,5 +353,6 @@ class PaperClaimsTest {
         assertEquals(Verdict.NOT_REPRODUCED, claim(s, PaperClaims.SLOW + " (at 0.1 m/s)").verdict());
         assertEquals(Verdict.REPRODUCED, claim(s, PaperClaims.SLOW + " (at 0.5 m/s)").verdict());
         assertEquals(Verdict.NOT_COMPARABLE, claim(s, PaperClaims.FAST + " (at 0.5 m/s)").verdict());
+        assertEquals("slow-hits@0.5mps", claim(s, PaperClaims.SLOW + " (at 0.5 m/s)").id());
     }
 }

@@ -43,6 +43,8 @@ class QuietRunsTest {
             assertEquals(r.run() == 2 ? "busy" : "quiet", r.machine().machine(), "set " + r.set() + " run " + r.run());
         }
         assertEquals(1.2, rows.stream().filter(r -> r.run() == 2).findFirst().orElseThrow().machine().otherCpus());
+        assertEquals(2, ResultsCsv.read(dir.resolve(ResultsCsv.FILE_NAME)).get(0).machine().machineCpus(),
+                "the machine's CPUs from the run's conditions, through results.csv");
         assertTrue(Files.readString(dir.resolve(ResultsCsv.FILE_NAME)).contains(
                 ",busy,other processes used 1.2 of 2 CPUs (more than 0.10),1.2,0,3.5,0.4,"), "results.csv columns");
 

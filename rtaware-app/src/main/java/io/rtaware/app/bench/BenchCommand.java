@@ -35,6 +35,7 @@ import io.rtaware.core.monitor.AdaptivePolicy;
 import io.rtaware.core.monitor.ConsoleReporter;
 import io.rtaware.core.monitor.ExecutorKind;
 import io.rtaware.core.monitor.Monitor;
+import io.rtaware.core.output.OutputFiles;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
 import io.rtaware.core.report.SummaryTable;
@@ -58,7 +59,6 @@ import io.rtaware.rt.CpuLatencyRequest;
 import io.rtaware.rt.RealtimeThreads;
 import java.io.IOException;
 import java.io.PrintStream;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -287,6 +287,7 @@ public final class BenchCommand implements Callable<Integer> {
             if (sweepTasks.isEmpty() || sweepTasks.stream().anyMatch(n -> n == null || n < 1)) {
                 throw new UserError("--sweep-tasks needs task counts of at least 1, got " + sweepTasks);
             }
+            OutputFile.of("--plot", plot); // before the sweep runs: an empty name, a folder, a socket, ...
             compare = true;
         }
         if (compare && (spec != null || chain || timeScale != 1.0 || live.options().enabled() || record.enabled()
@@ -335,10 +336,12 @@ public final class BenchCommand implements Callable<Integer> {
                 Durations.format(periodNs), Durations.format(workNs), Durations.format(durationNs),
                 System.getProperty("java.vm.version"), CompareRun.collectors());
         out.print(sweep.table());
-        sweep.plot(plot, "period " + Durations.format(periodNs) + ", work " + Durations.format(workNs) + ", "
-                + Runtime.getRuntime().availableProcessors() + " cores");
-        out.println("plot written to " + plot);
-        return 0;
+        OutputWrites writes = new OutputWrites(System.err);
+        if (writes.writeFile(plot, OutputFiles.png(sweep.plot("period " + Durations.format(periodNs) + ", work "
+                + Durations.format(workNs) + ", " + Runtime.getRuntime().availableProcessors() + " cores")))) {
+            out.println("plot written to " + plot);
+        }
+        return writes.exitStatus(0);
     }
 
     private int compare(List<BenchSpec> specs, BusyWork work) throws IOException, InterruptedException {
@@ -356,10 +359,7 @@ public final class BenchCommand implements Callable<Integer> {
         out.print(report.table());
         out.println(measured.summaryLine());
         OutputWrites writes = new OutputWrites(System.err);
-        if (json != null && writes.write(json, () -> {
-            Files.createDirectories(json.toAbsolutePath().getParent());
-            report.write(json);
-        })) {
+        if (json != null && writes.writeFile(json, report::write)) {
             out.println("comparison written to " + json);
         }
         return writes.exitStatus(0);

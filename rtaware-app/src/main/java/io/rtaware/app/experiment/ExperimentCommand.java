@@ -32,6 +32,7 @@ import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -191,9 +192,9 @@ public final class ExperimentCommand implements Callable<Integer> {
             if (rows.isEmpty()) {
                 return runner.interrupted() ? 130 : 0;
             }
-            ExperimentSummary summary = ExperimentReport.render(dir, CourseBackgrounds.forScenario(scenario), includeBusy);
-            printSummary(summary, dir);
-            return runner.interrupted() ? 130 : 0;
+            Optional<ExperimentSummary> summary = ReportRendering.render(dir, scenario, includeBusy, System.err);
+            summary.ifPresent(s -> printSummary(s, dir));
+            return runner.interrupted() ? 130 : summary.isPresent() ? 0 : OutputWrites.EXIT_WRITE_FAILED;
         } catch (ExperimentInputException e) {
             throw new UserError(e.getMessage());
         } finally {

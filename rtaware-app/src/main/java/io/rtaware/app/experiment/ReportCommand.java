@@ -1,11 +1,14 @@
 package io.rtaware.app.experiment;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.output.OutputFile;
 import io.rtaware.app.output.OutputFolder;
+import io.rtaware.app.output.OutputWrites;
 import io.rtaware.experiment.ExperimentInputException;
 import io.rtaware.experiment.ExperimentMerge;
 import io.rtaware.experiment.FolderCheck;
 import io.rtaware.experiment.ExperimentProfile;
+import io.rtaware.experiment.ExperimentSummary;
 import io.rtaware.experiment.ResultsCsv;
 import io.rtaware.experiment.report.ExperimentReport;
 import io.rtaware.experiment.report.ResultsMarkdown;
@@ -14,6 +17,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -50,7 +54,7 @@ public final class ReportCommand implements Callable<Integer> {
     Path results;
 
     @Override
-    public Integer call() throws IOException {
+    public Integer call() {
         if (results != null) {
             return results();
         }
@@ -69,6 +73,7 @@ public final class ReportCommand implements Callable<Integer> {
         }
         System.setProperty("java.awt.headless", "true");
         Path dir = out == null ? dirs.get(0) : out;
+        String scenario;
         try {
             if (out == null) {
                 FolderCheck.rows(dir);
@@ -76,43 +81,60 @@ public final class ReportCommand implements Callable<Integer> {
                 int runs = ExperimentMerge.merge(dirs, out).size();
                 System.out.println("merged " + runs + " run(s) from " + dirs.size() + " folder(s) into " + out);
             }
-            String scenario = ExperimentProfile.read(dir).map(ExperimentProfile::scenario)
+            scenario = ExperimentProfile.read(dir).map(ExperimentProfile::scenario)
                     .orElseGet(() -> firstScenario(dir));
             ResultsCsv.tornLastLine(dir.resolve(ResultsCsv.FILE_NAME))
                     .ifPresent(note -> System.err.println("rtaware: note: " + note));
-            ExperimentReport.render(dir, CourseBackgrounds.forScenario(scenario), includeBusy);
         } catch (ExperimentInputException e) {
             throw new UserError(e.getMessage());
+        } catch (IOException e) {
+            System.err.println("rtaware: report: " + (out == null ? "could not read " + dir : "could not merge into " + out)
+                    + ": " + e);
+            return OutputWrites.EXIT_WRITE_FAILED;
+        }
+        if (ReportRendering.render(dir, scenario, includeBusy, System.err).isEmpty()) {
+            return OutputWrites.EXIT_WRITE_FAILED;
         }
         System.out.println("report written to " + dir.resolve(ExperimentReport.MARKDOWN_FILE) + " and "
                 + dir.resolve(ExperimentReport.HTML_FILE));
         return 0;
     }
 
-    private int results() throws IOException {
+    private int results() {
         if (out != null) {
             throw new UserError("report: --results reports each folder on its own; it does not merge into --out");
         }
+        OutputFile.of("--results", results);
         System.setProperty("java.awt.headless", "true");
         List<ResultsMarkdown.Folder> folders = new ArrayList<>();
         for (Path dir : dirs) {
             OutputFolder.existing("report", dir);
-            String scenario = ExperimentProfile.read(dir).map(ExperimentProfile::scenario).orElseGet(() -> firstScenario(dir));
             try {
-                folders.add(new ResultsMarkdown.Folder(dir.toAbsolutePath().normalize().getFileName().toString(),
-                        ExperimentReport.render(dir, CourseBackgrounds.forScenario(scenario), includeBusy)));
+                FolderCheck.rows(dir);
             } catch (ExperimentInputException e) {
                 throw new UserError(e.getMessage());
+            } catch (IOException e) {
+                System.err.println("rtaware: report: could not read " + dir + ": " + e);
+                return OutputWrites.EXIT_WRITE_FAILED;
             }
+            String scenario = ExperimentProfile.read(dir).map(ExperimentProfile::scenario).orElseGet(() -> firstScenario(dir));
+            Optional<ExperimentSummary> summary = ReportRendering.render(dir, scenario, includeBusy, System.err);
+            if (summary.isEmpty()) {
+                return OutputWrites.EXIT_WRITE_FAILED;
+            }
+            folders.add(new ResultsMarkdown.Folder(dir.toAbsolutePath().normalize().getFileName().toString(),
+                    summary.get()));
         }
         StringBuilder command = new StringBuilder("rtaware report --results ").append(results);
         if (includeBusy) {
             command.append(" --include-busy");
         }
         dirs.forEach(d -> command.append(' ').append(d)); // as typed: run it from the checkout with relative paths
-        ResultsMarkdown.write(results, folders, command.toString());
-        System.out.println("results written to " + results + " (" + folders.size() + " experiment(s))");
-        return 0;
+        OutputWrites writes = new OutputWrites(System.err);
+        if (writes.write(results, () -> ResultsMarkdown.write(results, folders, command.toString()))) {
+            System.out.println("results written to " + results + " (" + folders.size() + " experiment(s))");
+        }
+        return writes.exitStatus(0);
     }
 
     private static String firstScenario(Path dir) {

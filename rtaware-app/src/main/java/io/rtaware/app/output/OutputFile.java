@@ -1,6 +1,7 @@
 package io.rtaware.app.output;
 
 import io.rtaware.app.UserError;
+import io.rtaware.core.output.OutputFiles;
 import java.io.IOException;
 import java.nio.file.FileSystemException;
 import java.nio.file.Files;
@@ -11,8 +12,10 @@ import java.util.Objects;
  * One output file named on the command line ({@code --json FILE}, {@code --trace FILE}, and any
  * later option such as {@code --record FILE.mcap}), checked before the command runs, without
  * creating anything: the name is not empty, it is not a folder, its folder accepts a new file (or
- * can be created, see {@link OutputFolder}), and an existing file is writable. An existing non-folder (a regular file to replace, or a device
- * such as {@code /dev/null}) is accepted. A failure is a {@link UserError} naming the option, the
+ * can be created, see {@link OutputFolder}), and an existing file is writable. What may stand at
+ * the path is what {@link OutputFiles} writes: a regular file (replaced whole once the new one is
+ * complete), a pipe or a character device such as {@code /dev/null} (written in place); a socket or
+ * a block device is refused. A failure is a {@link UserError} naming the option, the
  * path and the reason. Immutable.
  */
 public final class OutputFile {
@@ -42,6 +45,13 @@ public final class OutputFile {
         Path parent = path.toAbsolutePath().getParent();
         if (parent != null) {
             OutputFolder.of(option, parent, "the folder of " + path);
+        }
+        try {
+            OutputFiles.refusal(path).ifPresent(what -> {
+                throw new UserError(option + ": " + path + " is " + what);
+            });
+        } catch (IOException e) {
+            throw new UserError(option + ": cannot write " + path + ": " + reason(e));
         }
         if (Files.exists(path) && !Files.isWritable(path)) {
             throw new UserError(option + ": cannot write " + path + ": permission denied");

@@ -1,12 +1,10 @@
 package io.rtaware.app.output;
 
+import io.rtaware.core.output.OutputFiles;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.io.UncheckedIOException;
-import java.nio.file.Files;
-import java.nio.file.LinkOption;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
@@ -30,16 +28,6 @@ public final class OutputWrites {
          * @throws IOException if writing fails
          */
         void run() throws IOException;
-    }
-
-    /** A write of one file's content to the path it is given (a temporary name beside the file). */
-    @FunctionalInterface
-    public interface FileWrite {
-        /**
-         * @param target where to write the content
-         * @throws IOException if writing fails
-         */
-        void to(Path target) throws IOException;
     }
 
     private final PrintStream err;
@@ -72,44 +60,18 @@ public final class OutputWrites {
     }
 
     /**
-     * Writes a file under a temporary name in its folder ({@code .NAME.partial.EXT}, so that a
-     * writer that appends the extension keeps it) and renames it to its name once complete, so
-     * the file is either whole or, after a failed or interrupted write, absent (an older version
-     * stays as it was). A name that is a link or a device (e.g. {@code /dev/full},
-     * {@code /dev/null}) is written in place: the user chose what stands there, and a rename
-     * would replace it. A failure deletes the temporary file and is reported as by {@link #write}.
+     * Writes a file through {@link OutputFiles#write}: a regular file whole or not at all (a
+     * temporary name beside it, renamed once complete; after a failure an older version stays as
+     * it was and nothing half-written is left), a pipe or a character device (e.g.
+     * {@code /dev/stdout}, {@code /dev/null}) in place, never deleted or replaced; a folder, a
+     * socket or a block device is refused. A failure is reported as by {@link #write}.
      *
      * @param file the file to write
-     * @param write writes the content to the path it is given
-     * @return true if the file was written (and renamed)
+     * @param content its content
+     * @return true if the file was written
      */
-    public boolean writeFile(Path file, FileWrite write) {
-        boolean replaceable = !Files.exists(file, LinkOption.NOFOLLOW_LINKS)
-                || Files.isRegularFile(file, LinkOption.NOFOLLOW_LINKS);
-        if (!replaceable) {
-            return write(file, () -> write.to(file));
-        }
-        Path temporary = partialName(file);
-        return write(file, () -> {
-            try {
-                write.to(temporary);
-                Files.move(temporary, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-            } finally {
-                Files.deleteIfExists(temporary);
-            }
-        });
-    }
-
-    /**
-     * @param file a file
-     * @return the temporary name {@link #writeFile} writes it under
-     */
-    public static Path partialName(Path file) {
-        String name = file.getFileName().toString();
-        int dot = name.lastIndexOf('.');
-        String partial = dot > 0 ? "." + name.substring(0, dot) + ".partial" + name.substring(dot)
-                : "." + name + ".partial";
-        return file.resolveSibling(partial);
+    public boolean writeFile(Path file, OutputFiles.Content content) {
+        return write(file, () -> OutputFiles.write(file, content));
     }
 
     /**

@@ -166,9 +166,7 @@ public final class InspectCommand implements Callable<Integer> {
             }
             OutputWrites writes = new OutputWrites(System.err);
             byte[] png = plotPng(tasks);
-            Path folder = plot.toAbsolutePath().getParent();
-            if (writes.write(plot, () -> Files.createDirectories(folder))
-                    && writes.writeFile(plot, target -> Files.write(target, png))) {
+            if (writes.writeFile(plot, stream -> stream.write(png))) {
                 out.println();
                 out.println("lateness plot written to " + plot);
             }

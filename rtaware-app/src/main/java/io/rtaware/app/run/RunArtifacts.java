@@ -3,6 +3,7 @@ package io.rtaware.app.run;
 import io.rtaware.app.output.OutputWrites;
 import io.rtaware.core.analysis.ReportSections;
 import io.rtaware.core.conditions.Conditions;
+import io.rtaware.core.output.OutputFiles;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
 import io.rtaware.core.report.SummaryTable;
@@ -17,7 +18,6 @@ import io.rtaware.robotrun.RunSection;
 import io.rtaware.sim.map.OccupancyMap;
 import io.rtaware.sim.render.WorldRenderer;
 import io.rtaware.sim.scenario.Scenario;
-import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -117,12 +117,12 @@ final class RunArtifacts {
         if (writes.writeFile(dir.resolve("report.json"), doc::write)) {
             names.add("report.json");
         }
-        if (writes.writeFile(dir.resolve("report.md"), target -> Files.writeString(target,
-                markdown(table, runText, analysis, worldMap != null)))) {
+        if (writes.writeFile(dir.resolve("report.md"), OutputFiles.text(markdown(table, runText, analysis,
+                worldMap != null)))) {
             names.add("report.md");
         }
         List<Referee.Sample> samples = referee == null ? List.of() : referee.samples();
-        if (writes.writeFile(dir.resolve("trajectory.csv"), target -> writeTrajectoryCsv(target, samples))) {
+        if (writes.writeFile(dir.resolve("trajectory.csv"), OutputFiles.text(trajectoryCsv(samples)))) {
             names.add("trajectory.csv");
         }
         if (worldMap != null) {
@@ -130,14 +130,17 @@ final class RunArtifacts {
             // The believed path only beside a measured true one (with odometry as the referee's source they are the same).
             List<Pose2d> believed = referee == null || !"ground_truth".equals(referee.kind()) ? List.of()
                     : samples.stream().map(Referee.Sample::believed).filter(java.util.Objects::nonNull).toList();
-            if (writes.writeFile(dir.resolve("trajectory.png"), target -> new WorldRenderer().writePng(scenario, worldMap,
-                    poses, believed, referee == null ? List.of() : referee.missMarkers(), target))) {
+            if (writes.writeFile(dir.resolve("trajectory.png"), OutputFiles.png(new WorldRenderer().render(scenario,
+                    worldMap, poses, believed, referee == null ? List.of() : referee.missMarkers())))) {
                 names.add("trajectory.png");
             }
         }
-        if (builtMap != null && writes.write(dir.resolve("map.pgm"), () -> PgmMapWriter.write(builtMap, dir, "map"))) {
+        // The YAML names the image: written only beside a whole one.
+        if (builtMap != null && writes.writeFile(dir.resolve("map.pgm"), PgmMapWriter.pgm(builtMap))) {
             names.add("map.pgm");
-            names.add("map.yaml");
+            if (writes.writeFile(dir.resolve("map.yaml"), OutputFiles.text(PgmMapWriter.yaml(builtMap, "map.pgm")))) {
+                names.add("map.yaml");
+            }
         }
         if (!names.isEmpty()) {
             out.println("report written to " + dir + " (" + String.join(", ", names) + ")");
@@ -205,7 +208,7 @@ final class RunArtifacts {
                 + (withTrajectoryPng ? "![trajectory](trajectory.png)\n" : "");
     }
 
-    private static void writeTrajectoryCsv(Path file, List<Referee.Sample> samples) throws IOException {
+    private static String trajectoryCsv(List<Referee.Sample> samples) {
         StringBuilder sb = new StringBuilder("t_s,x_m,y_m,yaw_rad,odom_x_m,odom_y_m,odom_yaw_rad\n");
         for (Referee.Sample s : samples) {
             sb.append(String.format(Locale.ROOT, "%.3f,%.4f,%.4f,%.4f", s.tS(), s.pose().xM(), s.pose().yM(),
@@ -214,6 +217,6 @@ final class RunArtifacts {
             sb.append(b == null ? ",,," : String.format(Locale.ROOT, ",%.4f,%.4f,%.4f", b.xM(), b.yM(), b.yawRad()));
             sb.append('\n');
         }
-        Files.writeString(file, sb);
+        return sb.toString();
     }
 }

@@ -2,12 +2,14 @@ package io.rtaware.app.sim;
 
 import io.rtaware.app.UserError;
 import io.rtaware.app.output.OutputFile;
+import io.rtaware.app.output.OutputWrites;
+import io.rtaware.core.output.OutputFiles;
 import io.rtaware.sim.render.WorldRenderer;
 import io.rtaware.sim.scenario.Scenario;
 import io.rtaware.sim.scenario.ScenarioException;
 import io.rtaware.sim.scenario.ScenarioLoader;
-import java.io.UncheckedIOException;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -36,12 +38,10 @@ public final class WorldCommand implements Callable<Integer> {
         if (s.map().isEmpty()) {
             throw new UserError("scenario '" + s.name() + "' has no map to draw");
         }
-        try {
-            new WorldRenderer().writePng(s, s.map().get(), java.util.List.of(), java.util.List.of(), png);
-        } catch (UncheckedIOException e) {
-            throw new UserError("cannot write " + png + ": " + e.getCause().getMessage());
+        OutputWrites writes = new OutputWrites(System.err);
+        if (writes.writeFile(png, OutputFiles.png(new WorldRenderer().render(s, s.map().get(), List.of(), List.of())))) {
+            System.out.println("world written to " + png);
         }
-        System.out.println("world written to " + png);
-        return 0;
+        return writes.exitStatus(0);
     }
 }

@@ -29,15 +29,20 @@ class ExperimentFolderTest {
 
     /** A finished 1 set x 1 run experiment at time scale 20, seed 5: resuming it runs nothing and re-renders the report. */
     private ExperimentPlan finishedExperiment(boolean withPlanFile) throws Exception {
+        return finishedExperiment(withPlanFile, "paper-room");
+    }
+
+    /** The same on a course given as a scenario file. */
+    private ExperimentPlan finishedExperiment(boolean withPlanFile, String scenario) throws Exception {
         PeriodSet set = ExperimentSets.paper().get(3);
-        ExperimentPlan plan = new ExperimentPlan(List.of(set), 1, new RunConditions("paper-room", 20, 5, null));
+        ExperimentPlan plan = new ExperimentPlan(List.of(set), 1, new RunConditions(scenario, 20, 5, null));
         if (withPlanFile) {
             PlanFile.write(dir, plan);
         }
         ExperimentProfile.of(plan, "test machine").write(dir);
         ResultsCsv.append(dir.resolve(ResultsCsv.FILE_NAME), new RunResult(1, 1, set, plan.conditions(), "completed",
                 12.0, 0.2, 3.0, 0, 4, 4, Map.of()).withMachine(new io.rtaware.experiment.RunMachine("quiet", "", 0.01, 0,
-                0.2, 0.2, 0.1, Double.NaN, "quiet", 0)));
+                0.2, 0.2, 0.1, Double.NaN, "quiet", 0, 2)));
         return plan;
     }
 
@@ -131,6 +136,78 @@ class ExperimentFolderTest {
         Files.writeString(csv, good);
         assertEquals(0, CliRun.of("report", dir.toString(), "--include-busy").status(),
                 "the folder as written is fine (its runs predate recorded conditions)");
+    }
+
+    /**
+     * Issue 38: with the documented {@code --scenario /path/to/course.yaml} every run finished and
+     * then no summary or report was written ("no id for claim"); report printed a stack trace.
+     */
+    @Test
+    void aCourseGivenAsAFilePathIsReported() throws Exception {
+        String course = dir.resolve("courses/hall.yaml").toString();
+        finishedExperiment(true, course);
+        CliRun r = CliRun.of("report", dir.toString());
+        assertEquals(0, r.status(), r.toString());
+        String summary = Files.readString(dir.resolve("summary.json"));
+        assertTrue(summary.contains("\"id\" : \"slow-hits-on-hall\""), "the claim's id");
+        assertTrue(summary.contains("robot hits walls and obstacles on " + course), "the claim names the course as given");
+    }
+
+    /** Issue 38: a report that cannot be written is one line that says the runs are kept, not a stack trace. */
+    @Test
+    void aReportThatCannotBeWrittenIsOneLine() throws Exception {
+        finishedExperiment(true);
+        Files.createDirectories(dir.resolve("summary.json"));
+        CliRun r = CliRun.of("report", dir.toString());
+        assertEquals(1, r.status(), r.toString());
+        assertEquals(1, r.err().strip().lines().count(), "one line: " + r.err());
+        assertTrue(r.err().contains("could not write the report of " + dir + ": " + dir.resolve("summary.json")
+                + ": a folder, not a file; the runs are kept in " + dir.resolve("results.csv")), r.err());
+    }
+
+    /** Issue 38: report used a row whose periods were not its set's in plan.json. */
+    @Test
+    void reportRefusesARowWhosePeriodsAreNotThoseOfItsSetInThePlan() throws Exception {
+        twoRunExperiment();
+        Path csv = dir.resolve(ResultsCsv.FILE_NAME);
+        int planner = ResultsCsv.HEADER.indexOf("planner_period_ms");
+        StringBuilder edited = new StringBuilder();
+        for (String line : Files.readAllLines(csv)) {
+            String[] fields = line.split(",", -1);
+            if (!line.startsWith("set,")) {
+                fields[planner] = "7"; // both rows agree, so only the plan can tell
+            }
+            edited.append(String.join(",", fields)).append('\n');
+        }
+        Files.writeString(csv, edited);
+        CliRun.of("report", dir.toString(), "--include-busy").assertOneLineUserError(csv + " line 2: set 1 run 1 is 'Set 4' (");
+        CliRun.of("report", "--include-busy", "--results", dir.resolve("RESULTS.md").toString(), dir.toString())
+                .assertOneLineUserError(csv + " line 2: set 1 run 1 is 'Set 4' (");
+    }
+
+    /**
+     * Issue 38: report used a row labelled quiet whose other processes used 5 CPUs, and a figure
+     * above the machine's CPUs.
+     */
+    @Test
+    void reportRefusesMachineFiguresTheRuleOrTheMachineCannotGive() throws Exception {
+        finishedExperiment(true);
+        Path csv = dir.resolve(ResultsCsv.FILE_NAME);
+        String good = Files.readString(csv);
+        String row = good.lines().skip(1).findFirst().orElseThrow();
+        int other = ResultsCsv.HEADER.indexOf("other_cpus");
+        String[] fields = row.split(",", -1);
+        fields[other] = "1.5";
+        Files.writeString(csv, good.replace(row, String.join(",", fields)));
+        CliRun.of("report", dir.toString()).assertOneLineUserError(csv + " line 2: labelled quiet but other_cpus 1.5");
+        fields[ResultsCsv.HEADER.indexOf("machine")] = "busy";
+        fields[other] = "5.0";
+        Files.writeString(csv, good.replace(row, String.join(",", fields)));
+        CliRun.of("report", dir.toString(), "--include-busy").assertOneLineUserError(
+                csv + " line 2: other_cpus 5.0 is more than the machine's 2 CPUs (machine_cpus)");
+        fields[other] = "1.5";
+        Files.writeString(csv, good.replace(row, String.join(",", fields)));
+        assertEquals(0, CliRun.of("report", dir.toString(), "--include-busy").status(), "busy, and possible");
     }
 
     /** Issue 24: report merged a folder whose lock named a live process. */

@@ -4,7 +4,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.core.conditions.Conditions;
 import io.rtaware.core.report.ReportDocument;
 import java.io.IOException;
-import java.nio.file.Path;
+import java.io.OutputStream;
 import java.util.List;
 import java.util.Locale;
 
@@ -63,11 +63,11 @@ public record CompareReport(String schema, int tasks, double periodMs, double wo
     private static final ObjectMapper MAPPER = ReportDocument.mapper();
 
     /**
-     * @param file where to write the JSON
+     * @param out where to write the JSON (the stream is not closed)
      * @throws IOException if it cannot be written
      */
-    public void write(Path file) throws IOException {
-        MAPPER.writeValue(file.toFile(), this);
+    public void write(OutputStream out) throws IOException {
+        out.write(MAPPER.writeValueAsBytes(this));
     }
 
     /** @return the JSON text */

@@ -8,15 +8,12 @@ import java.awt.Color;
 import java.awt.Font;
 import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;
-import java.io.IOException;
 import java.io.PrintStream;
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import javax.imageio.ImageIO;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
@@ -126,13 +123,13 @@ public final class TaskSweep {
     }
 
     /**
-     * Writes the two plots, one above the other, as one PNG.
+     * Draws the two plots, one above the other, as one image (write it with
+     * {@code OutputFiles.png}).
      *
-     * @param file the PNG
      * @param subtitle what was run (period, work, machine), shown in the titles
-     * @throws IOException if it cannot be written
+     * @return the image
      */
-    public void plot(Path file, String subtitle) throws IOException {
+    public BufferedImage plot(String subtitle) {
         Map<String, List<Point>> byExecutor = new LinkedHashMap<>();
         for (Point p : points) {
             byExecutor.computeIfAbsent(p.run().executor(), k -> new ArrayList<>()).add(p);
@@ -155,7 +152,7 @@ public final class TaskSweep {
         g.translate(0, HEIGHT);
         lateness.paint(g, WIDTH, HEIGHT);
         g.dispose();
-        ImageIO.write(image, "png", file.toFile());
+        return image;
     }
 
     private static final Color[] COLOURS = {new Color(0x1f77b4), new Color(0xd62728), new Color(0x2ca02c),

@@ -6,9 +6,11 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.PropertyNamingStrategies;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import io.rtaware.core.output.OutputFiles;
 import java.io.IOException;
+import java.io.OutputStream;
 import java.io.UncheckedIOException;
-import java.nio.file.Files;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.Collections;
 import java.util.LinkedHashMap;
@@ -76,15 +78,20 @@ public final class ReportDocument {
     }
 
     /**
-     * @param file where to write the JSON (parent folders are created)
+     * @param file where to write the JSON (parent folders are created), whole or not at all
+     *     ({@link OutputFiles#write})
      * @throws IOException if writing fails
      */
     public void write(Path file) throws IOException {
-        Path parent = file.toAbsolutePath().getParent();
-        if (parent != null) {
-            Files.createDirectories(parent);
-        }
-        Files.writeString(file, toJsonString() + "\n");
+        OutputFiles.write(file, this::write);
+    }
+
+    /**
+     * @param out where to write the JSON, with a line end (the stream is not closed)
+     * @throws IOException if writing fails
+     */
+    public void write(OutputStream out) throws IOException {
+        out.write((toJsonString() + "\n").getBytes(StandardCharsets.UTF_8));
     }
 
     /**

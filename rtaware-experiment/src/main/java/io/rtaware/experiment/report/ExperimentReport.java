@@ -1,6 +1,7 @@
 package io.rtaware.experiment.report;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
+import io.rtaware.core.output.OutputFiles;
 import io.rtaware.core.report.ReportDocument;
 import io.rtaware.experiment.ExperimentConditions;
 import io.rtaware.experiment.ExperimentInputException;
@@ -89,7 +90,7 @@ public final class ExperimentReport {
         ExperimentProfile profile = ExperimentProfile.read(dir).orElse(ExperimentProfile.fromResults(rows));
         ExperimentSummary summary = ExperimentSummary.of(rows, profile, conditions);
         ObjectMapper mapper = ReportDocument.mapper();
-        Files.writeString(dir.resolve(SUMMARY_FILE), mapper.writeValueAsString(summary) + "\n");
+        OutputFiles.write(dir.resolve(SUMMARY_FILE), OutputFiles.text(mapper.writeValueAsString(summary) + "\n"));
 
         Figures.taskMisses(summary, dir);
         Figures.setMisses(summary, dir);
@@ -108,8 +109,8 @@ public final class ExperimentReport {
         SweepFigures.write(summary, dir);
 
         Blocks blocks = content(summary, rows.get(rows.size() - 1).conditions());
-        Files.writeString(dir.resolve(MARKDOWN_FILE), blocks.markdown());
-        Files.writeString(dir.resolve(HTML_FILE), blocks.html("rtaware experiment report", dir));
+        OutputFiles.write(dir.resolve(MARKDOWN_FILE), OutputFiles.text(blocks.markdown()));
+        OutputFiles.write(dir.resolve(HTML_FILE), OutputFiles.text(blocks.html("rtaware experiment report", dir)));
         return summary;
     }
 

@@ -1,5 +1,6 @@
 package io.rtaware.experiment.report;
 
+import io.rtaware.core.output.OutputFiles;
 import io.rtaware.experiment.ExperimentSummary;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
 import io.rtaware.experiment.PeriodSet;
@@ -15,7 +16,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import javax.imageio.ImageIO;
 import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.BoxChart;
 import org.knowm.xchart.BoxChartBuilder;
@@ -190,7 +190,7 @@ public final class Figures {
         }
         drawScaleBar(g, chart, frame);
         g.dispose();
-        ImageIO.write(out, "png", dir.resolve(TRAJECTORIES + ".png").toFile());
+        OutputFiles.write(dir.resolve(TRAJECTORIES + ".png"), OutputFiles.png(out));
     }
 
     /** A 1 m scale bar in the plot's lower left corner, at the chart's own scale. */
@@ -294,7 +294,7 @@ public final class Figures {
     }
 
     static void save(Chart<?, ?> chart, Path dir, String name) throws IOException {
-        BitmapEncoder.saveBitmap(chart, dir.resolve(name + ".png").toString(), BitmapEncoder.BitmapFormat.PNG);
+        OutputFiles.write(dir.resolve(name + ".png"), OutputFiles.png(BitmapEncoder.getBufferedImage(chart)));
         saveSvg(chart, dir, name);
     }
 
@@ -305,7 +305,8 @@ public final class Figures {
     private static void saveSvg(Chart<?, ?> chart, Path dir, String name) throws IOException {
         Path svg = dir.resolve(name + ".svg");
         try {
-            VectorGraphicsEncoder.saveVectorGraphic(chart, svg.toString(), VectorGraphicsEncoder.VectorGraphicsFormat.SVG);
+            OutputFiles.write(svg, out -> VectorGraphicsEncoder.saveVectorGraphic(chart, out,
+                    VectorGraphicsEncoder.VectorGraphicsFormat.SVG));
         } catch (IOException | RuntimeException | LinkageError e) {
             java.nio.file.Files.deleteIfExists(svg);
             System.err.println("rtaware: " + svg.getFileName() + " not written (" + e + "); the PNG has the same figure");
@@ -324,7 +325,7 @@ public final class Figures {
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 14));
         g.drawString("No data to plot (see report.md for why).", 20, 120);
         g.dispose();
-        ImageIO.write(img, "png", dir.resolve(name + ".png").toFile());
+        OutputFiles.write(dir.resolve(name + ".png"), OutputFiles.png(img));
         java.nio.file.Files.deleteIfExists(dir.resolve(name + ".svg"));
     }
 }

@@ -1,5 +1,6 @@
 package io.rtaware.experiment.report;
 
+import io.rtaware.core.output.OutputFiles;
 import io.rtaware.experiment.ExperimentProfile;
 import io.rtaware.experiment.ExperimentSummary;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
@@ -8,7 +9,6 @@ import io.rtaware.experiment.PaperReference;
 import io.rtaware.experiment.PeriodSet;
 import io.rtaware.experiment.stats.SampleStats;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
@@ -97,11 +97,7 @@ public final class ResultsMarkdown {
      * @throws IOException if writing fails
      */
     public static void write(Path file, List<Folder> folders, String command) throws IOException {
-        Path parent = file.toAbsolutePath().getParent();
-        if (parent != null) {
-            Files.createDirectories(parent);
-        }
-        Files.writeString(file, render(folders, command));
+        OutputFiles.write(file, OutputFiles.text(render(folders, command)));
     }
 
     private static String periods(SetSummary set) {

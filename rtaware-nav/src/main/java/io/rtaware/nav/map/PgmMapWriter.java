@@ -1,10 +1,9 @@
 package io.rtaware.nav.map;
 
+import io.rtaware.core.output.OutputFiles;
 import io.rtaware.robot.msg.OccupancyGrid;
 import java.io.IOException;
-import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 
@@ -29,7 +28,8 @@ public final class PgmMapWriter {
 
     /**
      * Writes {@code <baseName>.pgm} and {@code <baseName>.yaml} into a directory, creating it
-     * if needed.
+     * if needed, each whole or not at all ({@link OutputFiles#write}: a write that fails, e.g. on
+     * a full disk, leaves no partial file and an older map as it was).
      *
      * @param map the grid; must not be empty
      * @param directory the folder
@@ -39,15 +39,26 @@ public final class PgmMapWriter {
      * @throws IllegalArgumentException if the grid is empty
      */
     public static Path write(OccupancyGrid map, Path directory, String baseName) throws IOException {
+        OutputFiles.Content image = pgm(map);
+        Path pgm = directory.resolve(baseName + ".pgm");
+        Path yaml = directory.resolve(baseName + ".yaml");
+        OutputFiles.write(pgm, image);
+        OutputFiles.write(yaml, OutputFiles.text(yaml(map, pgm.getFileName().toString())));
+        return yaml;
+    }
+
+    /**
+     * @param map the grid; must not be empty
+     * @return the grid as a binary PGM, the top image row the grid's highest y
+     * @throws IllegalArgumentException if the grid is empty
+     */
+    public static OutputFiles.Content pgm(OccupancyGrid map) {
         if (map.isEmpty()) {
             throw new IllegalArgumentException("map is empty: nothing was published");
         }
-        Files.createDirectories(directory);
-        Path pgm = directory.resolve(baseName + ".pgm");
-        Path yaml = directory.resolve(baseName + ".yaml");
-        int w = map.width();
-        int h = map.height();
-        try (OutputStream out = Files.newOutputStream(pgm)) {
+        return out -> {
+            int w = map.width();
+            int h = map.height();
             out.write(("P5\n# rtaware occupancy grid, " + map.resolutionM + " m/pixel\n" + w + " " + h + "\n255\n")
                     .getBytes(StandardCharsets.US_ASCII));
             byte[] row = new byte[w];
@@ -59,11 +70,17 @@ public final class PgmMapWriter {
                 }
                 out.write(row);
             }
-        }
-        String text = String.format(Locale.ROOT,
+        };
+    }
+
+    /**
+     * @param map the grid
+     * @param imageName the PGM's file name, as the YAML names it (beside the YAML)
+     * @return the map_server YAML of the grid
+     */
+    public static String yaml(OccupancyGrid map, String imageName) {
+        return String.format(Locale.ROOT,
                 "image: %s%nresolution: %s%norigin: [%s, %s, 0.0]%nnegate: 0%noccupied_thresh: 0.65%nfree_thresh: 0.196%n",
-                pgm.getFileName(), map.resolutionM, map.originXM, map.originYM);
-        Files.writeString(yaml, text, StandardCharsets.UTF_8);
-        return yaml;
+                imageName, map.resolutionM, map.originXM, map.originYM);
     }
 }

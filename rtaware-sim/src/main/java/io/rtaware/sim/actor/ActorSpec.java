@@ -23,7 +23,7 @@ import java.util.Objects;
  * @param kind body, door or obstacle
  * @param shape its outline
  * @param path where it goes: at least one point; a body that moves needs two
- * @param speedMps speed along the path, m/s, not negative (0 for doors and obstacles)
+ * @param speedMps speed along the path, m/s, 0 to {@link #MAX_SPEED_MPS} (0 for doors and obstacles)
  * @param repeat what a body does at the end of its path
  * @param startAtS world seconds from the start at which a body starts moving, not negative
  * @param startWithinM if above 0, a body starts when the robot comes this near instead, metres
@@ -32,6 +32,13 @@ import java.util.Objects;
  */
 public record ActorSpec(String name, Kind kind, ActorShape shape, List<Point2d> path, double speedMps,
                         Repeat repeat, double startAtS, double startWithinM, double startJitterS, double appearAtS) {
+
+    /**
+     * The fastest an actor may move, m/s: faster than anything that shares a floor with a mobile
+     * robot (a sprinting person, about 10 m/s); a speed above it is a slip (a unit, an exponent),
+     * and the simulator's steps and the laser's sweep are not made for it.
+     */
+    public static final double MAX_SPEED_MPS = 10.0;
 
     /** What kind of actor. */
     public enum Kind {
@@ -94,6 +101,9 @@ public record ActorSpec(String name, Kind kind, ActorShape shape, List<Point2d> 
             }
         }
         notNegative("speed_mps", speedMps);
+        if (speedMps > MAX_SPEED_MPS) {
+            throw new IllegalArgumentException("speed_mps must be at most " + MAX_SPEED_MPS + " m/s, got " + speedMps);
+        }
         notNegative("start_at_s", startAtS);
         notNegative("start_when_robot_within_m", startWithinM);
         notNegative("start_jitter_s", startJitterS);

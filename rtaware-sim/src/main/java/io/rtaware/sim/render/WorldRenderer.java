@@ -15,13 +15,8 @@ import java.awt.geom.Ellipse2D;
 import java.awt.geom.Line2D;
 import java.awt.geom.Path2D;
 import java.awt.image.BufferedImage;
-import java.io.IOException;
-import java.io.UncheckedIOException;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import javax.imageio.ImageIO;
 
 /**
  * Draws a scenario to an image (headless java.awt): free space white, obstacles black, unknown
@@ -32,8 +27,9 @@ import javax.imageio.ImageIO;
  * drawn (top right) and a 1 m scale bar (bottom left). The scenario's actors are drawn where
  * they start, bodies filled in orange with their paths dashed, doors and obstacles outlined with
  * the time they close or appear.
- * Without a map, the picture spans the scenario's points with a margin. Immutable and
- * thread-safe (each call draws on its own image).
+ * Without a map, the picture spans the scenario's points with a margin. Write an image with
+ * {@code OutputFiles.write(file, OutputFiles.png(image))}, which never deletes what stands at the
+ * path. Immutable and thread-safe (each call draws on its own image).
  */
 public final class WorldRenderer {
 
@@ -165,56 +161,6 @@ public final class WorldRenderer {
             g.dispose();
         }
         return img;
-    }
-
-    /**
-     * Writes an image as PNG, creating parent directories.
-     *
-     * @param image the image
-     * @param file destination
-     * @throws UncheckedIOException if writing fails
-     */
-    public void writePng(BufferedImage image, Path file) {
-        try {
-            Path parent = file.toAbsolutePath().getParent();
-            if (parent != null) {
-                Files.createDirectories(parent);
-            }
-            if (!ImageIO.write(image, "png", file.toFile())) {
-                throw new IOException("no PNG writer available");
-            }
-        } catch (IOException e) {
-            throw new UncheckedIOException("cannot write " + file + ": " + e.getMessage(), e);
-        }
-    }
-
-    /**
-     * Draws and writes in one call.
-     *
-     * @param scenario start and waypoints
-     * @param map the map, or null
-     * @param trajectory poses driven (may be empty)
-     * @param markers points to mark (may be empty)
-     * @param file destination PNG
-     */
-    public void writePng(Scenario scenario, OccupancyMap map, List<Pose2d> trajectory, List<Point2d> markers,
-                         Path file) {
-        writePng(render(scenario, map, trajectory, markers), file);
-    }
-
-    /**
-     * Draws and writes in one call, with the believed path beside the true one.
-     *
-     * @param scenario start and waypoints
-     * @param map the map, or null
-     * @param trajectory poses driven in truth (may be empty)
-     * @param believed the robot's own estimates (may be empty)
-     * @param markers points to mark (may be empty)
-     * @param file destination PNG
-     */
-    public void writePng(Scenario scenario, OccupancyMap map, List<Pose2d> trajectory, List<Pose2d> believed,
-                         List<Point2d> markers, Path file) {
-        writePng(render(scenario, map, trajectory, believed, markers), file);
     }
 
     private static List<Pose2d> concat(List<Pose2d> a, List<Pose2d> b) {

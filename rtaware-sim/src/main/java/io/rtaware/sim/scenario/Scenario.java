@@ -22,11 +22,18 @@ import java.util.Optional;
  * @param timeLimitS the time limit in seconds
  * @param robot the robot model the scenario asks for (its {@code robot:} section); empty for
  *     the default (the Koala at the paper's top speed)
- * @param actors what moves, closes or appears in the world (its {@code actors:} section); empty
- *     for a world that stands still
+ * @param actors what moves, closes or appears in the world (its {@code actors:} section), at most
+ *     {@link #MAX_ACTORS}; empty for a world that stands still
  */
 public record Scenario(String name, Optional<OccupancyMap> map, Pose2d start, List<Point2d> waypoints,
                        double goalToleranceM, double timeLimitS, Optional<RobotModel> robot, List<ActorSpec> actors) {
+
+    /**
+     * The most actors a scenario may have: every laser beam is cast against each actor present,
+     * and the robot's body is measured against each on every step of the world; the built-in
+     * scenarios have three at most.
+     */
+    public static final int MAX_ACTORS = 100;
 
     /**
      * A scenario without actors.
@@ -83,6 +90,9 @@ public record Scenario(String name, Optional<OccupancyMap> map, Pose2d start, Li
         actors = List.copyOf(actors);
         if (waypoints.isEmpty()) {
             throw new IllegalArgumentException("waypoints must not be empty, got []");
+        }
+        if (actors.size() > MAX_ACTORS) {
+            throw new IllegalArgumentException("actors must be at most " + MAX_ACTORS + ", got " + actors.size());
         }
         for (Point2d p : waypoints) {
             if (!Double.isFinite(p.xM()) || !Double.isFinite(p.yM())) {

@@ -25,6 +25,7 @@ import java.util.Set;
 import java.util.Iterator;
 import java.util.Map;
 import java.util.List;
+import java.util.Locale;
 import java.util.Optional;
 
 /**
@@ -181,8 +182,64 @@ public final class ScenarioLoader {
         if (!(limit > 0)) {
             throw new ScenarioException(source + ": field 'time_limit_s' must be positive, got " + limit);
         }
-        return new Scenario(name, map, start, waypoints, tolerance, limit, robot(source, root.get("robot")),
-                actors(source, root.get("actors")));
+        Optional<RobotModel> robot = robot(source, root.get("robot"));
+        List<ActorSpec> actors = actors(source, root.get("actors"));
+        if (!actors.isEmpty()) {
+            checkActorsInTheWorld(source, map, actors);
+            checkStartIsClear(source, start, robot.orElse(RobotModel.koala(RobotModel.PAPER_TOP_SPEED_MPS)), actors);
+        }
+        return new Scenario(name, map, start, waypoints, tolerance, limit, robot, actors);
+    }
+
+    /**
+     * Every actor's points lie in the world, whose extent is its map's: actors live in the
+     * simulated world, so a scenario without a map has none.
+     */
+    private static void checkActorsInTheWorld(String source, Optional<OccupancyMap> map, List<ActorSpec> actors) {
+        if (map.isEmpty()) {
+            throw new ScenarioException(source + ": field 'actors' needs a 'map': actors move in the simulated world, "
+                    + "whose extent is its map's");
+        }
+        OccupancyMap m = map.get();
+        double minX = m.originXM();
+        double minY = m.originYM();
+        double maxX = minX + m.widthM();
+        double maxY = minY + m.heightM();
+        for (int i = 0; i < actors.size(); i++) {
+            List<Point2d> path = actors.get(i).path();
+            for (int k = 0; k < path.size(); k++) {
+                Point2d p = path.get(k);
+                if (p.xM() < minX || p.xM() > maxX || p.yM() < minY || p.yM() > maxY) {
+                    throw new ScenarioException(String.format(Locale.ROOT, "%s: field 'actors[%d].%s' is (%s, %s), outside "
+                            + "the world: its map spans x %s..%s m, y %s..%s m", source, i,
+                            path.size() == 1 ? "at" : "path[" + k + "]", p.xM(), p.yM(), metres(minX), metres(maxX),
+                            metres(minY), metres(maxY)));
+                }
+            }
+        }
+    }
+
+    /** @return a map coordinate to the millimetre, without trailing zeros */
+    private static String metres(double m) {
+        return String.format(Locale.ROOT, "%.3f", m).replaceFirst("\\.?0+$", "");
+    }
+
+    /**
+     * No actor stands where the robot starts: where a body waits before it moves, where a door
+     * closes or an obstacle appears must not overlap the robot's body at the start.
+     */
+    private static void checkStartIsClear(String source, Pose2d start, RobotModel robot, List<ActorSpec> actors) {
+        double radiusM = robot.body().radiusM();
+        for (int i = 0; i < actors.size(); i++) {
+            ActorSpec a = actors.get(i);
+            Point2d at = a.path().get(0);
+            if (a.shape().clearanceM(start.xM() - at.xM(), start.yM() - at.yM()) < radiusM) {
+                throw new ScenarioException(String.format(Locale.ROOT, "%s: the start (%s, %s) is inside actor '%s' "
+                        + "(actors[%d]: %s at (%s, %s)): the robot's body (radius %s m) would begin in a collision; move "
+                        + "the start or the actor", source, start.xM(), start.yM(), a.name(), i, a.kind().yamlName(),
+                        at.xM(), at.yM(), radiusM));
+            }
+        }
     }
 
     private static final Set<String> ACTOR_FIELDS = Set.of("name", "type", "shape", "radius_m", "size_m", "path", "at",
@@ -195,6 +252,10 @@ public final class ScenarioLoader {
         }
         if (!node.isArray()) {
             throw new ScenarioException(source + ": field 'actors' must be a list, got " + node);
+        }
+        if (node.size() > Scenario.MAX_ACTORS) {
+            throw new ScenarioException(source + ": field 'actors' has " + node.size() + " actors; a scenario may have at most "
+                    + Scenario.MAX_ACTORS);
         }
         List<ActorSpec> actors = new ArrayList<>();
         Set<String> names = new HashSet<>();

@@ -3,6 +3,7 @@ package io.rtaware.sim.render;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.rtaware.core.output.OutputFiles;
 import io.rtaware.robot.geometry.Point2d;
 import io.rtaware.robot.geometry.Pose2d;
 import io.rtaware.sim.scenario.Scenario;
@@ -37,7 +38,7 @@ class WorldRendererTest {
         Color start = new Color(img.getRGB(50, 286));
         assertTrue(start.getGreen() > start.getRed() && start.getGreen() > start.getBlue(), start.toString());
         Path png = dir.resolve("sub/world.png");
-        r.writePng(img, png);
+        OutputFiles.write(png, OutputFiles.png(img));
         BufferedImage back = ImageIO.read(png.toFile());
         assertEquals(500, back.getWidth());
     }

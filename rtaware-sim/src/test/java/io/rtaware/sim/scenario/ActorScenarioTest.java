@@ -62,4 +62,58 @@ class ActorScenarioTest {
         assertTrue(error("  - {name: a, at: {x: 1, y: 1}}\n  - {name: a, at: {x: 2, y: 1}}\n")
                 .contains("field 'actors[1].name' repeats the name 'a'"), "names are unique");
     }
+
+    /** Copies the paper's room (its map_server YAML and PGM) beside the scenario files the tests write. */
+    private void paperRoomMap() throws Exception {
+        for (String file : new String[] {"paper-room.yaml", "paper-room.pgm"}) {
+            try (var in = ScenarioLoader.class.getResourceAsStream("/io/rtaware/sim/scenario/" + file)) {
+                Files.copy(java.util.Objects.requireNonNull(in, file), dir.resolve(file));
+            }
+        }
+    }
+
+    private Scenario onThePaperRoom(String actors) throws Exception {
+        Path file = dir.resolve("room.yaml");
+        Files.writeString(file, "map: paper-room.yaml\nstart: {x: 1.0, y: 1.0}\nwaypoints: [{x: 3, y: 1}]\n"
+                + "goal_tolerance_m: 0.3\ntime_limit_s: 60\nactors:\n" + actors);
+        return ScenarioLoader.load(file);
+    }
+
+    private String refusedOnThePaperRoom(String actors) throws Exception {
+        ScenarioException e = assertThrows(ScenarioException.class, () -> onThePaperRoom(actors));
+        assertTrue(!e.getMessage().contains("\n"), "one line: " + e.getMessage());
+        return e.getMessage();
+    }
+
+    /**
+     * Issue 38: a path at 1e308, a speed of 1e308, an obstacle over the start and 20 000 actors all
+     * loaded. Each is refused at load time in one line naming the bound.
+     */
+    @Test
+    void actorsOutsideTheWorldTooFastTooManyOrOverTheStartAreRefused() throws Exception {
+        paperRoomMap();
+        assertTrue(refusedOnThePaperRoom("  - {type: body, path: [{x: 2, y: 2}, {x: 1.0e+308, y: 2}], speed_mps: 1}\n")
+                .contains("field 'actors[0].path[1]' is (1.0E308, 2.0), outside the world: its map spans x -0.2..9.8 m, "
+                        + "y -0.2..6.4 m"),
+                "a path beyond the map");
+        assertTrue(refusedOnThePaperRoom("  - {type: obstacle, at: {x: 2, y: -5}, size_m: [0.5, 0.5], appear_at_s: 1}\n")
+                .contains("field 'actors[0].at' is (2.0, -5.0), outside the world"), "a point beyond the map");
+        assertTrue(refusedOnThePaperRoom("  - {type: body, path: [{x: 2, y: 2}, {x: 3, y: 2}], speed_mps: 1.0e+308}\n")
+                .contains("field 'actors[0].speed_mps' must be at most " + ActorSpec.MAX_SPEED_MPS + " m/s, got 1.0E308"),
+                "a speed beyond the bound");
+        assertTrue(refusedOnThePaperRoom("  - {name: crate, type: obstacle, at: {x: 1.1, y: 1.0}, size_m: [0.5, 0.5],"
+                + " appear_at_s: 5}\n").contains("the start (1.0, 1.0) is inside actor 'crate' (actors[0]: obstacle at "
+                + "(1.1, 1.0)): the robot's body (radius 0.2 m) would begin in a collision"), "an obstacle over the start");
+        assertTrue(refusedOnThePaperRoom("  - {type: body, at: {x: 1.3, y: 1.0}}\n").contains("is inside actor 'body-1'"),
+                "a body touching the robot's body at the start");
+        String many = "  - {at: {x: 2, y: 2}}\n".repeat(20_000);
+        assertTrue(refusedOnThePaperRoom(many).contains("field 'actors' has 20000 actors; a scenario may have at most "
+                + Scenario.MAX_ACTORS), "20 000 actors");
+        assertEquals(Scenario.MAX_ACTORS, onThePaperRoom("  - {at: {x: 2, y: 2}}\n".repeat(Scenario.MAX_ACTORS))
+                .actors().size(), "the bound itself loads");
+        assertEquals(1, onThePaperRoom("  - {type: body, at: {x: 1.5, y: 1.0}}\n").actors().size(),
+                "a body that does not touch the robot at the start loads");
+        assertTrue(error("  - {type: body, at: {x: 1.5, y: 1.0}}\n").contains("field 'actors' needs a 'map'"),
+                "without a map there is no world for the actors");
+    }
 }
