@@ -80,7 +80,18 @@ public final class NavRun {
                            double gridResolutionM, double inflationMarginM, double stuckAfterS,
                            String groundTruthModel) {
 
-        /** Copies the periods. */
+        /**
+         * Copies the periods.
+         *
+         * @param periodsNs the behaviors' periods by task name
+         * @param timeScale world seconds per wall second
+         * @param seed the simulator's noise seed
+         * @param robotSeed the simulated robot's error seed
+         * @param gridResolutionM the controller's occupancy grid cell size
+         * @param inflationMarginM the clearance the planner adds to the robot's radius
+         * @param stuckAfterS world seconds without progress after which the robot is stuck
+         * @param groundTruthModel the robot's model name in the simulation
+         */
         public Settings {
             periodsNs = Map.copyOf(periodsNs);
             Objects.requireNonNull(groundTruthModel, "groundTruthModel");
