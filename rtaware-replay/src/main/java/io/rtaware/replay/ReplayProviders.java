@@ -94,13 +94,21 @@ public final class ReplayProviders {
          * @throws IllegalArgumentException as {@link ReplayableController#tasks}
          */
         public Map<String, Long> recordedPeriodsNs() {
-            Map<String, Long> periods = new LinkedHashMap<>();
-            for (TaskSpec spec : tasks(Map.of())) {
-                if (spec.schedule() instanceof Schedule.Periodic p) {
-                    periods.put(spec.name(), p.periodNs());
-                }
-            }
-            return periods;
+            return periodsNs(tasks(Map.of()));
         }
+    }
+
+    /**
+     * @param tasks a controller's tasks
+     * @return the period in ns of each periodic task, by name, in the tasks' order
+     */
+    public static Map<String, Long> periodsNs(List<TaskSpec> tasks) {
+        Map<String, Long> periods = new LinkedHashMap<>();
+        for (TaskSpec spec : tasks) {
+            if (spec.schedule() instanceof Schedule.Periodic p) {
+                periods.put(spec.name(), p.periodNs());
+            }
+        }
+        return periods;
     }
 }

@@ -228,7 +228,8 @@ public final class ReplayCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             throw new UserError("--periods: " + e.getMessage());
         }
-        checkCycleBudget(recording, asked.nanosByTask());
+        TaskPeriods run = TaskPeriods.ofNanos(ReplayProviders.periodsNs(tasks)); // with what the controller derives
+        checkCycleBudget(recording, run.nanosByTask());
         long wallStart = System.nanoTime();
         WhatIfReplay.Result result = WhatIfReplay.replay(recording, tasks, recorded.tasks(changed));
         double wallS = (System.nanoTime() - wallStart) / 1e9;
@@ -238,7 +239,7 @@ public final class ReplayCommand implements Callable<Integer> {
         section.put("file", recording.file().toString());
         section.put("mode", "what-if");
         section.put("open_loop", true);
-        section.put("periods_ms", asked.millis());
+        section.put("periods_ms", run.millis());
         section.put("recorded_periods_ms", defaults.millis());
         section.put("sensor_keys", result.sensorKeys());
         section.put("sensor_commits", result.sensorCommits());
@@ -255,7 +256,7 @@ public final class ReplayCommand implements Callable<Integer> {
                         String.join(", ", result.sensorKeys()), result.dataTask());
         stdout.printf(Locale.ROOT, "what-if replay of %s with periods %s (recorded: %s): open loop, the robot's path is the"
                         + " recorded one; %s; each cycle charged its task's recorded execution times in order; one core"
-                        + " (step executor)%n", recording.file(), asked, defaults, fed);
+                        + " (step executor)%n", recording.file(), run, defaults, fed);
         stdout.printf(Locale.ROOT, "%d cycles, %.1f s of world time in %.2f s of wall time: %.0f cycles/s, %.1f s of world"
                 + " time per wall second%n", cycles, result.report().durationS(), wallS, wallS > 0 ? cycles / wallS : 0,
                 wallS > 0 ? result.report().durationS() / wallS : 0);
