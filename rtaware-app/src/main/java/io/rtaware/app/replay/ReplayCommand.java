@@ -75,8 +75,8 @@ public final class ReplayCommand implements Callable<Integer> {
     String periods;
 
     @Option(names = "--classpath", paramLabel = "PATHS",
-            description = "Where your controller's classes and its replay provider are: folders and jars, separated by '"
-                    + File.pathSeparator + "'.")
+            description = "Where your controller's classes and its replay provider are: folders and jars, separated by"
+                    + " the system's path separator (':' on Linux and macOS).")
     String classpath;
 
     @Override
