@@ -19,6 +19,7 @@ import io.rtaware.record.RunRecorder;
 import io.rtaware.record.mcap.McapReader;
 import io.rtaware.replay.ExactReplay;
 import io.rtaware.replay.Recording;
+import io.rtaware.replay.ReplayableController;
 import io.rtaware.robot.msg.MotionRequest;
 import io.rtaware.robot.msg.Odometry;
 import io.rtaware.robot.msg.RobotKeys;
@@ -30,6 +31,7 @@ import java.io.PrintStream;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -43,22 +45,37 @@ import java.util.Optional;
  * cycles exactly ({@code rtaware-replay}) and prints whether each one computed the same outputs
  * again.
  *
- * <p>Run it with {@code java io.rtaware.examples.ThreeTaskController [file.mcap] [seconds]}.
+ * <p>The recording names this class as its replay provider ({@link ReplayableController}, registered
+ * in {@code META-INF/services}) with the controller's configuration (the wall, the step), so
+ * {@code rtaware replay FILE.mcap --classpath CLASSES} re-executes it exactly, or with other
+ * periods ({@code --periods slow=40}).
+ *
+ * <p>Run it with {@code java io.rtaware.examples.ThreeTaskController FILE.mcap [seconds]}.
  */
-public final class ThreeTaskController {
+public final class ThreeTaskController implements ReplayableController {
 
+    /** The id the recordings name this controller's replay provider by. */
+    public static final String ID = "io.rtaware.examples.three-tasks";
     /** Where the wall stands, metres along x. */
     static final double WALL_X_M = 2.0;
     /** How far the pose source moves per cycle, metres. */
     static final double STEP_M = 0.01;
+    /** The tasks' periods as run, ms, in the controller's order. */
+    private static final Map<String, Long> PERIODS_MS = Map.of("pose", 10L, "slow", 20L, "drive", 50L);
 
-    private ThreeTaskController() {
+    /** Creates the replay provider (for {@link java.util.ServiceLoader}); the controller itself is static. */
+    public ThreeTaskController() {
     }
 
-    /** Publishes a pose that advances along x by {@link #STEP_M} each cycle. One thread at a time. */
+    /** Publishes a pose that advances along x by a step each cycle. One thread at a time. */
     static final class PoseSource implements Task {
+        private final double stepM;
         private Output<Odometry> pose;
         private long cycles;
+
+        PoseSource(double stepM) {
+            this.stepM = stepM;
+        }
 
         @Override
         public void initialize(TaskSetup setup) {
@@ -67,7 +84,7 @@ public final class ThreeTaskController {
 
         @Override
         public void execute(long nowNs) {
-            pose.value().xM = STEP_M * cycles++;
+            pose.value().xM = stepM * cycles++;
             pose.publish();
         }
     }
@@ -77,8 +94,13 @@ public final class ThreeTaskController {
      * wall), or none before the first pose. A function of its input only. One thread at a time.
      */
     static final class SlowBeforeWall implements Task {
+        private final double wallXM;
         private Input<Odometry> pose;
         private Output<MotionRequest> request;
+
+        SlowBeforeWall(double wallXM) {
+            this.wallXM = wallXM;
+        }
 
         @Override
         public void initialize(TaskSetup setup) {
@@ -91,7 +113,7 @@ public final class ThreeTaskController {
             if (!pose.hasValue()) {
                 request.value().release();
             } else {
-                double leftM = Math.max(0, WALL_X_M - pose.value().xM);
+                double leftM = Math.max(0, wallXM - pose.value().xM);
                 request.value().request(Math.min(0.5, 0.5 * leftM), 0);
             }
             request.publish();
@@ -121,12 +143,62 @@ public final class ThreeTaskController {
         }
     }
 
-    /** @return a fresh set of the controller's three tasks */
+    /** @return a fresh set of the controller's three tasks, as it runs */
     static List<TaskSpec> controller() {
+        return controller(WALL_X_M, STEP_M, Map.of());
+    }
+
+    private static List<TaskSpec> controller(double wallXM, double stepM, Map<String, Long> periodsNs) {
+        for (String name : periodsNs.keySet()) {
+            if (!PERIODS_MS.containsKey(name)) {
+                throw new IllegalArgumentException("unknown task '" + name + "'; tasks: pose, slow, drive");
+            }
+        }
         return List.of(
-                new TaskSpec("pose", Schedule.periodic(Duration.ofMillis(10)), ErrorPolicy.CONTINUE, new PoseSource()),
-                new TaskSpec("slow", Schedule.periodic(Duration.ofMillis(20)), ErrorPolicy.CONTINUE, new SlowBeforeWall()),
-                new TaskSpec("drive", Schedule.periodic(Duration.ofMillis(50)), ErrorPolicy.CONTINUE, new Driver()));
+                new TaskSpec("pose", schedule("pose", periodsNs), ErrorPolicy.CONTINUE, new PoseSource(stepM)),
+                new TaskSpec("slow", schedule("slow", periodsNs), ErrorPolicy.CONTINUE, new SlowBeforeWall(wallXM)),
+                new TaskSpec("drive", schedule("drive", periodsNs), ErrorPolicy.CONTINUE, new Driver()));
+    }
+
+    private static Schedule schedule(String task, Map<String, Long> periodsNs) {
+        return Schedule.periodic(Duration.ofNanos(periodsNs.getOrDefault(task, PERIODS_MS.get(task) * 1_000_000L)));
+    }
+
+    /** @return {@value #ID} */
+    @Override
+    public String id() {
+        return ID;
+    }
+
+    /**
+     * @param configuration {@code wall_x_m} and {@code step_m}, as {@link #run} records them
+     * @param periodsNs period in ns of each task to change ({@code pose}, {@code slow}, {@code drive})
+     * @return a fresh set of the controller's tasks
+     * @throws IllegalArgumentException if an entry is missing or not a number, or a task is unknown
+     */
+    @Override
+    public List<TaskSpec> tasks(Map<String, String> configuration, Map<String, Long> periodsNs) {
+        return controller(number(configuration, "wall_x_m"), number(configuration, "step_m"), periodsNs);
+    }
+
+    private static double number(Map<String, String> configuration, String name) {
+        String value = configuration.get(name);
+        if (value == null) {
+            throw new IllegalArgumentException("the controller's configuration has no " + name);
+        }
+        try {
+            return Double.parseDouble(value);
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException("the controller's " + name + " is not a number: '" + value + "'");
+        }
+    }
+
+    /** @return what {@link #tasks} rebuilds the controller from, as the recording stores it */
+    static Map<String, String> configuration() {
+        Map<String, String> m = new LinkedHashMap<>();
+        m.put("wall_x_m", Double.toString(WALL_X_M));
+        m.put("step_m", Double.toString(STEP_M));
+        return m;
     }
 
     /**
@@ -161,7 +233,8 @@ public final class ThreeTaskController {
         sleeper.ifPresent(builder::sleeper);
         controller().forEach(builder::task);
         Monitor monitor = builder.build();
-        RunRecorder recorder = RecordingListener.attach(monitor, file, new RecordingPlan());
+        RecordingPlan plan = ReplayableController.describe(new RecordingPlan(), ID, configuration());
+        RunRecorder recorder = RecordingListener.attach(monitor, file, plan);
 
         monitor.start();
         Thread.sleep(duration.toMillis());
@@ -177,7 +250,8 @@ public final class ThreeTaskController {
         Recording recording = Recording.load(McapReader.open(file), file);
         List<ExactReplay.TaskResult> replays = new ArrayList<>();
         for (TaskSpec spec : controller()) {
-            ExactReplay.TaskResult r = ExactReplay.replay(recording, ThreeTaskController::controller, spec.name());
+            ExactReplay.TaskResult r = ExactReplay.replay(recording,
+                    () -> new ThreeTaskController().tasks(configuration(), Map.of()), spec.name());
             replays.add(r);
             out.printf("replayed %-5s %d cycles: %d identical, %d different, %d not replayable%n",
                     r.name(), r.cycles(), r.identical(), r.different(), r.notReplayable());
@@ -186,12 +260,18 @@ public final class ThreeTaskController {
     }
 
     /**
-     * @param args optional: the MCAP file (default {@code three-tasks.mcap}) and the seconds to
-     *     run (default 2)
+     * Runs, records to the file and replays in-process; {@code rtaware replay FILE.mcap --classpath}
+     * this module's classes replays the file again.
+     *
+     * @param args the MCAP file to write, and optionally the seconds to run (default 2)
      * @throws Exception if the run or the replay fails
      */
     public static void main(String[] args) throws Exception {
-        Path file = Path.of(args.length > 0 ? args[0] : "three-tasks.mcap");
+        if (args.length < 1 || args.length > 2) {
+            System.err.println("usage: ThreeTaskController FILE.mcap [SECONDS]");
+            System.exit(2);
+        }
+        Path file = Path.of(args[0]);
         Duration duration = Duration.ofMillis(Math.round(1000 * (args.length > 1 ? Double.parseDouble(args[1]) : 2.0)));
         run(file, duration, System.out, System.err);
     }

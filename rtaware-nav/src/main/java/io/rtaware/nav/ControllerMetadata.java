@@ -10,8 +10,9 @@ import java.util.stream.Collectors;
 /**
  * The navigation controller's configuration in a recording's {@code rtaware.run} metadata: the
  * whole {@link NavConfig} as JSON under {@value #NAV_CONFIG} (what replay rebuilds the controller
- * from, exactly), plus readable entries for people and other tools (robot model, top speed,
- * inflation margin, grid, waypoints, cores). Stateless and thread-safe.
+ * from, exactly: {@link #configuration}, stored as the replay provider's configuration), plus
+ * readable entries for people and other tools (robot model, top speed, inflation margin, grid,
+ * waypoints, cores: {@link #entries}). Stateless and thread-safe.
  */
 public final class ControllerMetadata {
 
@@ -27,17 +28,24 @@ public final class ControllerMetadata {
 
     /**
      * @param config the controller's configuration
-     * @param robotModel the robot model's name
-     * @param cores the recording machine's core count
-     * @return the metadata entries to add to {@code rtaware.run}
+     * @return what replay rebuilds the controller from: {@value #NAV_CONFIG}, the configuration as JSON
      */
-    public static Map<String, String> entries(NavConfig config, String robotModel, int cores) {
-        Map<String, String> m = new LinkedHashMap<>();
+    public static Map<String, String> configuration(NavConfig config) {
         try {
-            m.put(NAV_CONFIG, JSON.writeValueAsString(config));
+            return Map.of(NAV_CONFIG, JSON.writeValueAsString(config));
         } catch (JsonProcessingException e) {
             throw new IllegalStateException("NavConfig is not serializable", e);
         }
+    }
+
+    /**
+     * @param config the controller's configuration
+     * @param robotModel the robot model's name
+     * @param cores the recording machine's core count
+     * @return the readable metadata entries to add to {@code rtaware.run}
+     */
+    public static Map<String, String> entries(NavConfig config, String robotModel, int cores) {
+        Map<String, String> m = new LinkedHashMap<>();
         m.put("robot_model", robotModel);
         m.put("top_speed_mps", Double.toString(config.robot().topSpeedMps()));
         m.put("inflation_margin_m", Double.toString(config.planner().inflationMarginM()));
@@ -51,15 +59,15 @@ public final class ControllerMetadata {
     }
 
     /**
-     * @param metadata a recording's {@code rtaware.run} entries
+     * @param configuration what {@link #configuration} stored (or an older recording's whole
+     *     {@code rtaware.run} metadata, which held {@value #NAV_CONFIG} itself)
      * @return the controller's configuration as recorded
-     * @throws IllegalArgumentException if the recording has none or it is not readable
+     * @throws IllegalArgumentException if there is none or it is not readable
      */
-    public static NavConfig navConfig(Map<String, String> metadata) {
-        String json = metadata.get(NAV_CONFIG);
+    public static NavConfig navConfig(Map<String, String> configuration) {
+        String json = configuration.get(NAV_CONFIG);
         if (json == null) {
-            throw new IllegalArgumentException("its rtaware.run metadata has no " + NAV_CONFIG
-                    + " (recorded by an rtaware without replay, or not by 'rtaware run')");
+            throw new IllegalArgumentException("its controller configuration has no " + NAV_CONFIG);
         }
         try {
             return JSON.readValue(json, NavConfig.class);
@@ -76,8 +84,15 @@ public final class ControllerMetadata {
      * @param recorded the recorded configuration
      * @param periodsNs period of each behavior by task name
      * @return the configuration to run
+     * @throws IllegalArgumentException if a name is not a behavior's task (the mediator's period is derived)
      */
     public static NavConfig withPeriods(NavConfig recorded, Map<String, Long> periodsNs) {
+        for (String task : periodsNs.keySet()) {
+            if (!Behavior.taskNames().contains(task)) {
+                throw new IllegalArgumentException("unknown task '" + task + "'; tasks whose period can be set: "
+                        + String.join(", ", Behavior.taskNames()));
+            }
+        }
         NavConfig.Grid g = recorded.grid();
         NavConfig.Robot r = recorded.robot();
         NavConfig.Avoider a = recorded.avoider();

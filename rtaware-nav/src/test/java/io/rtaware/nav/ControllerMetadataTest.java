@@ -26,7 +26,7 @@ class ControllerMetadataTest {
         NavConfig config = config();
         Map<String, String> entries = ControllerMetadata.entries(config, "koala", 2);
 
-        assertEquals(config, ControllerMetadata.navConfig(entries));
+        assertEquals(config, ControllerMetadata.navConfig(ControllerMetadata.configuration(config)));
         assertEquals("koala", entries.get("robot_model"));
         assertEquals("2", entries.get(ControllerMetadata.CORES));
         assertEquals("1.0,2.0 3.5,-1.0", entries.get("waypoints"));
@@ -44,6 +44,13 @@ class ControllerMetadataTest {
         assertEquals(recorded.robot(), replayed.robot());
         assertEquals(recorded.course(), replayed.course());
         assertEquals(recorded, ControllerMetadata.withPeriods(recorded, Map.of()), "no change asked: the same");
+    }
+
+    @Test
+    void aPeriodOfATaskThatIsNotABehaviorIsRefused() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> ControllerMetadata.withPeriods(config(), Map.of("mediator", 10 * MS)));
+        assertTrue(e.getMessage().contains("unknown task 'mediator'"), e.getMessage());
     }
 
     @Test

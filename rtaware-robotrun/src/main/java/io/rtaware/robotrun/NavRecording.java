@@ -9,6 +9,7 @@ import io.rtaware.nav.NavKeys;
 import io.rtaware.record.RecordingPlan;
 import io.rtaware.record.RobotRecordingPlan;
 import io.rtaware.record.RunRecorder;
+import io.rtaware.replay.ReplayableController;
 import io.rtaware.robot.geometry.Pose2d;
 import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.sim.scenario.Scenario;
@@ -58,6 +59,7 @@ final class NavRecording {
                 .metadata("robot", robot);
         ControllerMetadata.entries(navConfig, modelName, Runtime.getRuntime().availableProcessors())
                 .forEach(plan::metadata);
+        ReplayableController.describe(plan, NavReplayProvider.ID, ControllerMetadata.configuration(navConfig));
         if (simulator != null) {
             plan.robotClockOriginNs(simulator.clockOriginNs()); // the simulator's timestamps are the run's clock
         }

@@ -9,6 +9,7 @@ import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.time.ScaledClock;
 import io.rtaware.nav.ControllerMetadata;
 import io.rtaware.record.RecordingPlan;
+import io.rtaware.replay.ReplayProviders;
 import io.rtaware.robot.geometry.Point2d;
 import io.rtaware.sim.scenario.Scenario;
 import io.rtaware.sim.scenario.ScenarioLoader;
@@ -59,7 +60,11 @@ class NavRunTest {
             assertEquals("time limit of 1 s passed", ending.reason());
             assertEquals(ending, run.state().ending(), "the ending is recorded once");
             assertEquals("built-in simulator", plan.metadata().get("robot"));
-            assertEquals(run.navConfig(), ControllerMetadata.navConfig(plan.metadata()), "replay can rebuild the controller");
+            ReplayProviders.RecordedController controller = ReplayProviders.load(NavRunTest.class.getClassLoader())
+                    .controllerOf(plan.metadata());
+            assertEquals(NavReplayProvider.ID, controller.provider().id(), "the recording names its replay provider");
+            assertEquals(run.navConfig(), ControllerMetadata.navConfig(controller.configuration()),
+                    "replay can rebuild the controller");
             assertEquals("/map", plan.topicOf("map"));
         }
         RunSection section = finished.get();

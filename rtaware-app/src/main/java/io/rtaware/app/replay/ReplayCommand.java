@@ -10,23 +10,27 @@ import io.rtaware.core.report.SummaryTable;
 import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Durations;
 import io.rtaware.nav.ControllerMetadata;
-import io.rtaware.nav.Behavior;
-import io.rtaware.nav.NavConfig;
-import io.rtaware.nav.NavController;
 import io.rtaware.record.mcap.McapFormatException;
 import io.rtaware.record.mcap.McapReader;
 import io.rtaware.replay.ExactReplay;
 import io.rtaware.replay.Recording;
 import io.rtaware.replay.ReplayJson;
+import io.rtaware.replay.ReplayProviders;
 import io.rtaware.replay.WhatIfReplay;
+import java.io.File;
 import java.io.IOException;
 import java.io.PrintStream;
+import java.net.MalformedURLException;
+import java.net.URL;
+import java.net.URLClassLoader;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.ServiceConfigurationError;
 import java.util.concurrent.Callable;
 import java.util.function.Supplier;
 import picocli.CommandLine.Command;
@@ -34,15 +38,19 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
 /**
- * {@code rtaware replay FILE.mcap}: a recording of {@code rtaware run --record} re-executed
- * offline. Without {@code --periods}: exact re-execution of every recorded cycle of the
- * controller's tasks ({@link ExactReplay}), compared with the recorded outputs; with
- * {@code --periods}: the controller with other periods on the recorded sensor stream
- * ({@link WhatIfReplay}), reported as a run is. The controller is rebuilt from the recording's
- * {@code rtaware.run} metadata ({@link ControllerMetadata}).
+ * {@code rtaware replay FILE.mcap [--classpath PATHS]}: a recording of any replayable controller
+ * ({@code rtaware run --record}, or a user's controller recorded with
+ * {@link io.rtaware.replay.ReplayableController#describe}) re-executed offline. Without
+ * {@code --periods}: exact re-execution of every recorded cycle of the controller's tasks
+ * ({@link ExactReplay}), compared with the recorded outputs; with {@code --periods}: the
+ * controller with other periods on the recorded sensor stream ({@link WhatIfReplay}), reported
+ * as a run is. The controller is rebuilt by the replay provider the recording names, found with
+ * {@link java.util.ServiceLoader} among the command's own classes and those of {@code --classpath}
+ * ({@link ReplayProviders}).
  */
 @Command(name = "replay", mixinStandardHelpOptions = true,
-        description = {"Re-execute a recording of 'rtaware run --record' offline.",
+        description = {"Re-execute a recording of a replayable controller offline ('rtaware run --record', or your own",
+            "controller's recording: pass its classes and their replay provider with --classpath).",
             "Exact (default): feed every recorded cycle of the controller's tasks the inputs it read, run it on the",
             "step executor, and compare its outputs with the recorded ones (a difference means the behavior depends",
             "on something besides its inputs). What-if (--periods): run the controller with other periods on the",
@@ -66,8 +74,42 @@ public final class ReplayCommand implements Callable<Integer> {
             description = "What-if: periods to try, e.g. planner=50 (ms; tasks not named keep the recorded periods).")
     String periods;
 
+    @Option(names = "--classpath", paramLabel = "PATHS",
+            description = "Where your controller's classes and its replay provider are: folders and jars, separated by"
+                    + " the system's path separator (':' on Linux and macOS).")
+    String classpath;
+
     @Override
     public Integer call() throws IOException {
+        try (URLClassLoader loader = new URLClassLoader(classpathUrls(classpath), ReplayCommand.class.getClassLoader())) {
+            return replay(loader);
+        }
+    }
+
+    /** The {@code --classpath} entries as URLs; a missing one is one line and status 2. */
+    private static URL[] classpathUrls(String classpath) {
+        if (classpath == null) {
+            return new URL[0];
+        }
+        List<URL> urls = new ArrayList<>();
+        for (String entry : classpath.split(File.pathSeparator)) {
+            if (entry.isBlank()) {
+                continue;
+            }
+            Path path = Path.of(entry);
+            if (!Files.exists(path)) {
+                throw new UserError("--classpath: no such file or directory: " + entry);
+            }
+            try {
+                urls.add(path.toUri().toURL());
+            } catch (MalformedURLException e) {
+                throw new UserError("--classpath: not a usable path: " + entry + " (" + e.getMessage() + ")");
+            }
+        }
+        return urls.toArray(new URL[0]);
+    }
+
+    private int replay(ClassLoader loader) {
         if (task != null && periods != null) {
             throw new UserError("--task and --periods exclude each other (--task selects a task for exact replay)");
         }
@@ -78,30 +120,32 @@ public final class ReplayCommand implements Callable<Integer> {
         if (recording.tasks().isEmpty()) {
             throw new UserError(file + " has no /rtaware/timing channels: not a recording of 'rtaware run --record'");
         }
-        NavConfig recorded;
+        ReplayProviders.RecordedController controller;
+        List<String> names;
         try {
-            recorded = ControllerMetadata.navConfig(recording.runMetadata());
-        } catch (IllegalArgumentException e) {
+            controller = ReplayProviders.load(loader).controllerOf(recording.runMetadata());
+            names = controller.tasks(Map.of()).stream().map(TaskSpec::name).toList();
+        } catch (IllegalArgumentException | ServiceConfigurationError e) {
             throw new UserError(file + ": " + e.getMessage());
         }
         List<String> known = new ArrayList<>(); // in the controller's order, as run reports them
-        for (String name : NavConfig.TASK_NAMES) {
+        for (String name : names) {
             if (recording.tasks().containsKey(name)) {
                 known.add(name);
             }
         }
         if (known.isEmpty()) {
-            throw new UserError(file + " has no cycles of the controller's tasks (" + String.join(", ", NavConfig.TASK_NAMES) + ")");
+            throw new UserError(file + " has no cycles of the controller's tasks (" + String.join(", ", names) + ")");
         }
         PrintStream stdout = System.out;
         try {
             if (periods != null) {
-                return whatIf(recording, recorded, stdout);
+                return whatIf(recording, controller, names, stdout);
             }
             if (task != null && !known.contains(task)) {
                 throw new UserError("unknown task '" + task + "' in " + file + "; tasks: " + String.join(", ", known));
             }
-            return exact(recording, recorded, task == null ? known : List.of(task), stdout);
+            return exact(recording, controller, task == null ? known : List.of(task), stdout);
         } catch (McapFormatException e) {
             throw new UserError(e.getMessage());
         } catch (IOException e) {
@@ -123,8 +167,9 @@ public final class ReplayCommand implements Callable<Integer> {
         }
     }
 
-    private int exact(Recording recording, NavConfig config, List<String> tasks, PrintStream stdout) throws IOException {
-        Supplier<List<TaskSpec>> controller = () -> new NavController(config).taskSpecs();
+    private int exact(Recording recording, ReplayProviders.RecordedController recorded, List<String> tasks,
+                      PrintStream stdout) throws IOException {
+        Supplier<List<TaskSpec>> controller = () -> recorded.tasks(Map.of());
         long wallStart = System.nanoTime();
         List<ExactReplay.TaskResult> results = new ArrayList<>();
         for (String name : tasks) {
@@ -166,21 +211,27 @@ public final class ReplayCommand implements Callable<Integer> {
         }
     }
 
-    private int whatIf(Recording recording, NavConfig recorded, PrintStream stdout) throws IOException {
-        TaskPeriods defaults = TaskPeriods.of(recorded.periods().ns(Behavior.WAYPOINT) / 1e6,
-                recorded.periods().ns(Behavior.OBSTACLE) / 1e6, recorded.periods().ns(Behavior.OCCUPANCY) / 1e6,
-                recorded.periods().ns(Behavior.PLANNER) / 1e6);
+    private int whatIf(Recording recording, ReplayProviders.RecordedController recorded, List<String> names,
+                       PrintStream stdout) throws IOException {
+        Map<String, Long> recordedNs = recorded.recordedPeriodsNs();
+        TaskPeriods defaults = TaskPeriods.ofNanos(recordedNs);
         TaskPeriods asked = TaskPeriods.parse(periods, defaults);
-        NavConfig config;
+        Map<String, Long> changed = new LinkedHashMap<>(); // only what differs: the controller derives the rest
+        asked.nanosByTask().forEach((name, ns) -> {
+            if (!ns.equals(recordedNs.get(name))) {
+                changed.put(name, ns);
+            }
+        });
+        List<TaskSpec> tasks;
         try {
-            config = ControllerMetadata.withPeriods(recorded, asked.nanosByTask());
+            tasks = recorded.tasks(changed);
         } catch (IllegalArgumentException e) {
             throw new UserError("--periods: " + e.getMessage());
         }
-        checkCycleBudget(recording, asked.nanosByTask());
+        TaskPeriods run = TaskPeriods.ofNanos(ReplayProviders.periodsNs(tasks)); // with what the controller derives
+        checkCycleBudget(recording, run.nanosByTask());
         long wallStart = System.nanoTime();
-        WhatIfReplay.Result result = WhatIfReplay.replay(recording, new NavController(config).taskSpecs(),
-                new NavController(config).taskSpecs());
+        WhatIfReplay.Result result = WhatIfReplay.replay(recording, tasks, recorded.tasks(changed));
         double wallS = (System.nanoTime() - wallStart) / 1e9;
         int cores = cores(recording);
         ReportDocument doc = new ReportDocument(result.report());
@@ -188,7 +239,7 @@ public final class ReplayCommand implements Callable<Integer> {
         section.put("file", recording.file().toString());
         section.put("mode", "what-if");
         section.put("open_loop", true);
-        section.put("periods_ms", asked.millis());
+        section.put("periods_ms", run.millis());
         section.put("recorded_periods_ms", defaults.millis());
         section.put("sensor_keys", result.sensorKeys());
         section.put("sensor_commits", result.sensorCommits());
@@ -198,12 +249,14 @@ public final class ReplayCommand implements Callable<Integer> {
         String analysis = ReportSections.enrich(doc, cores).text();
         stdout.print(SummaryTable.format(result.report()));
         stdout.println();
-        long cycles = result.report().tasks().stream().filter(t -> NavConfig.TASK_NAMES.contains(t.name()))
+        long cycles = result.report().tasks().stream().filter(t -> names.contains(t.name()))
                 .mapToLong(t -> t.runs()).sum();
+        String fed = result.sensorKeys().isEmpty() ? "no recorded values fed (the controller produces every key it reads)"
+                : String.format(Locale.ROOT, "%d values of %s fed by '%s' at their recorded times", result.sensorCommits(),
+                        String.join(", ", result.sensorKeys()), result.dataTask());
         stdout.printf(Locale.ROOT, "what-if replay of %s with periods %s (recorded: %s): open loop, the robot's path is the"
-                        + " recorded one; %d values of %s fed by '%s' at their recorded times; each cycle charged its"
-                        + " task's recorded execution times in order; one core (step executor)%n", recording.file(), asked,
-                defaults, result.sensorCommits(), String.join(", ", result.sensorKeys()), result.dataTask());
+                        + " recorded one; %s; each cycle charged its task's recorded execution times in order; one core"
+                        + " (step executor)%n", recording.file(), run, defaults, fed);
         stdout.printf(Locale.ROOT, "%d cycles, %.1f s of world time in %.2f s of wall time: %.0f cycles/s, %.1f s of world"
                 + " time per wall second%n", cycles, result.report().durationS(), wallS, wallS > 0 ? cycles / wallS : 0,
                 wallS > 0 ? result.report().durationS() / wallS : 0);

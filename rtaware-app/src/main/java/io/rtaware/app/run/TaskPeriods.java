@@ -46,10 +46,18 @@ public final class TaskPeriods {
     }
 
     /**
+     * @param periodsNs period in ns of each task, in the controller's order
+     * @return the periods (e.g. a recorded controller's, the defaults of {@code replay --periods})
+     */
+    public static TaskPeriods ofNanos(Map<String, Long> periodsNs) {
+        return new TaskPeriods(new LinkedHashMap<>(periodsNs));
+    }
+
+    /**
      * Parses the {@code --periods} value over the defaults.
      *
      * @param text e.g. {@code waypoint=100,obstacle=50}
-     * @param defaults periods of tasks the text does not name
+     * @param defaults periods of tasks the text does not name; the text may name only these tasks
      * @return the periods
      * @throws UserError naming the unknown task or the bad period
      */
@@ -64,8 +72,9 @@ public final class TaskPeriods {
             if (kv.length != 2 || task.isEmpty()) {
                 throw new UserError("--periods entry '" + entry.trim() + "' is not task=period (example: obstacle=50)");
             }
-            if (!TASKS.contains(task)) {
-                throw new UserError("unknown task '" + task + "' in --periods; tasks: " + String.join(", ", TASKS));
+            if (!defaults.periodsNs.containsKey(task)) {
+                throw new UserError("unknown task '" + task + "' in --periods; tasks: "
+                        + String.join(", ", defaults.periodsNs.keySet()));
             }
             long ns;
             try {
