@@ -80,7 +80,18 @@ public final class NavRun {
                            double gridResolutionM, double inflationMarginM, double stuckAfterS,
                            String groundTruthModel) {
 
-        /** Copies the periods. */
+        /**
+         * Copies the periods.
+         *
+         * @param periodsNs the behaviors' periods by task name
+         * @param timeScale world seconds per wall second
+         * @param seed the simulator's noise seed
+         * @param robotSeed the simulated robot's error seed
+         * @param gridResolutionM the occupancy grid cell size
+         * @param inflationMarginM the planner's clearance beyond the robot's radius
+         * @param stuckAfterS the stuck window in world seconds
+         * @param groundTruthModel the robot's model name in the simulation
+         */
         public Settings {
             periodsNs = Map.copyOf(periodsNs);
             Objects.requireNonNull(groundTruthModel, "groundTruthModel");

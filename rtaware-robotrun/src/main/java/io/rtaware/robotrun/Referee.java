@@ -31,7 +31,10 @@ public final class Referee implements AutoCloseable {
 
     /** Where the true pose comes from. */
     public interface PoseSource extends AutoCloseable {
-        /** @return the robot's pose now, or null if none is known yet */
+        /**
+         * @return the robot's pose now, or null if none is known yet
+         * @throws Exception if the source failed (the referee records a gap)
+         */
         Pose2d pose() throws Exception;
 
         /** @return {@code ground_truth} or {@code odometry}, as the report says */

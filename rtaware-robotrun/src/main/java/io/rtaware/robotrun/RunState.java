@@ -18,7 +18,12 @@ public final class RunState {
      * @param reason why, in words
      */
     public record Ending(RunOutcome outcome, String reason) {
-        /** Both are required. */
+        /**
+         * Both are required.
+         *
+         * @param outcome the outcome
+         * @param reason why, in words
+         */
         public Ending {
             Objects.requireNonNull(outcome, "outcome");
             Objects.requireNonNull(reason, "reason");
