@@ -87,9 +87,9 @@ public final class NavRun {
          * @param timeScale world seconds per wall second
          * @param seed the simulator's noise seed
          * @param robotSeed the simulated robot's error seed
-         * @param gridResolutionM the controller's occupancy grid cell size
-         * @param inflationMarginM the clearance the planner adds to the robot's radius
-         * @param stuckAfterS world seconds without progress after which the robot is stuck
+         * @param gridResolutionM the occupancy grid cell size
+         * @param inflationMarginM the planner's clearance beyond the robot's radius
+         * @param stuckAfterS the stuck window in world seconds
          * @param groundTruthModel the robot's model name in the simulation
          */
         public Settings {

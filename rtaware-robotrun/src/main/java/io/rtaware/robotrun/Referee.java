@@ -33,7 +33,7 @@ public final class Referee implements AutoCloseable {
     public interface PoseSource extends AutoCloseable {
         /**
          * @return the robot's pose now, or null if none is known yet
-         * @throws Exception if the source failed (a gap in the ground truth)
+         * @throws Exception if the source failed (the referee records a gap)
          */
         Pose2d pose() throws Exception;
 
