@@ -80,5 +80,15 @@ if [ "$out" = "--test" ]; then
 fi
 mkdir -p "$CARGO_TARGET_DIR" "$out/$platform"
 cargo build --release --locked --quiet "${features[@]}" --manifest-path "$here/Cargo.toml"
-cp "$CARGO_TARGET_DIR/release/$lib" "$out/$platform/$lib.tmp"
-mv "$out/$platform/$lib.tmp" "$out/$platform/$lib"
+# The library, and with the bridge its executable (rtaware-dds-bridge, a process of its own: src/bridge/main.rs).
+# A bridge left from an earlier build with it is removed: Java takes its presence for the bridge being built.
+artifacts=("$lib")
+if [ ${#features[@]} -gt 0 ]; then
+  artifacts+=(rtaware-dds-bridge)
+else
+  rm -f "$out/$platform/rtaware-dds-bridge"
+fi
+for artifact in "${artifacts[@]}"; do
+  cp "$CARGO_TARGET_DIR/release/$artifact" "$out/$platform/$artifact.tmp"
+  mv "$out/$platform/$artifact.tmp" "$out/$platform/$artifact"
+done

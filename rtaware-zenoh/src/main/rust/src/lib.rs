@@ -11,7 +11,6 @@
 //! and attachment into direct buffers that Java allocated once, so the Java side allocates
 //! nothing per sample.
 
-mod dds;
 mod handles;
 mod mailbox;
 mod messages;
@@ -376,59 +375,6 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_livelinessGet(
         }
         string_array(env, &keys)
     })
-}
-
-// ---------------------------------------------------------------------------------------------
-// ROS 2 DDS bridge
-
-/// A bridge as Java holds it: the running bridge and the endpoints it listens on.
-struct BridgeEntry {
-    bridge: dds::DdsBridge,
-    endpoints: Vec<String>,
-}
-
-/// Whether this library was built with the ROS 2 DDS bridge (cargo feature `dds`).
-#[no_mangle]
-pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_ddsAvailable(_env: JNIEnv, _class: JClass) -> jboolean {
-    dds::AVAILABLE as jboolean
-}
-
-/// Starts the ROS 2 DDS bridge ([`dds::start`]); `env` holds names and values in turn.
-#[no_mangle]
-pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_startDdsBridge(
-    mut env: JNIEnv,
-    _class: JClass,
-    listen: JString,
-    plugin_config: JString,
-    variables: JObjectArray,
-) -> jlong {
-    guarded(&mut env, 0, |env| {
-        let listen = java_string(env, &listen)?;
-        let plugin_config = java_string(env, &plugin_config)?;
-        let variables = java_strings(env, &variables)?;
-        if variables.len() % 2 != 0 {
-            return Err(format!("environment for the DDS bridge needs names and values in pairs, got {} strings", variables.len()));
-        }
-        let pairs: Vec<(String, String)> = variables.chunks(2).map(|p| (p[0].clone(), p[1].clone())).collect();
-        let (bridge, endpoints) = dds::start(&listen, &plugin_config, &pairs)?;
-        Ok(HANDLES.insert(BridgeEntry { bridge, endpoints }))
-    })
-}
-
-/// The bridge's Zenoh id, then the endpoints it listens on.
-#[no_mangle]
-pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_ddsBridgeInfo(mut env: JNIEnv, _class: JClass, bridge: jlong) -> jobjectArray {
-    guarded(&mut env, std::ptr::null_mut(), |env| {
-        let entry = HANDLES.get::<BridgeEntry>(bridge, "DDS bridge")?;
-        let mut info = vec![entry.bridge.zid()];
-        info.extend(entry.endpoints.iter().cloned());
-        string_array(env, &info)
-    })
-}
-
-#[no_mangle]
-pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_closeDdsBridge(mut env: JNIEnv, _class: JClass, bridge: jlong) {
-    guarded(&mut env, (), |_| HANDLES.remove::<BridgeEntry>(bridge, "DDS bridge")?.bridge.close())
 }
 
 #[cfg(test)]

@@ -9,15 +9,16 @@ import picocli.CommandLine.Option;
 
 /**
  * {@code --dds} and {@code --dds-interface}: reach ROS 2 over DDS, through the ROS 2 DDS bridge
- * started in this process, for everything ROS 2 in a command ({@code --ros2}, {@code --export}).
+ * (a process the command starts), for everything ROS 2 in a command ({@code --ros2}, {@code --export}).
  */
 public final class DdsMixin {
 
     @Option(names = "--dds",
             description = "Speak DDS (RTPS), the default ROS 2 middleware, instead of rmw_zenoh (with --ros2 or --export): "
-                    + "Zenoh's ROS 2 DDS bridge (zenoh-plugin-ros2dds on Eclipse Cyclone DDS) runs in this process on "
-                    + "--domain; topics are rt/<name> as ROS 2 writes them. DDS stays on the loopback interface with "
-                    + "multicast off unless --dds-interface names another (CYCLONEDDS_URI, when set, replaces both).")
+                    + "Zenoh's ROS 2 DDS bridge (zenoh-plugin-ros2dds on Eclipse Cyclone DDS) runs in a process of its own "
+                    + "on --domain; topics are rt/<name> as ROS 2 writes them. DDS stays on the loopback interface, its "
+                    + "sockets bound to 127.0.0.1, with multicast off unless --dds-interface names another "
+                    + "(CYCLONEDDS_URI, when set, replaces both).")
     boolean enabled;
 
     @Option(names = "--dds-interface", paramLabel = "NAME",

@@ -1,6 +1,7 @@
 package io.rtaware.app.ros2;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
@@ -44,8 +45,8 @@ import org.junit.jupiter.api.io.TempDir;
  * stock ROS 2 node on the wire. It drives the simulator served over DDS, and it is the Cyclone DDS
  * robot that {@code run --ros2 --dds} drives through the paper's short leg (the simulator on one
  * DDS domain, relayed by the peer to another). All DDS traffic stays on the loopback interface,
- * multicast off; each test has domains of its own, since a bridge's DDS participant lives as long
- * as the JVM. Skipped without the bridge or the peer's Python, except under CI=true (with Rust),
+ * multicast off, and every UDP socket on 127.0.0.1; each test has domains of its own, so that
+ * tests never see each other's DDS traffic. Skipped without the bridge or the peer's Python, except under CI=true (with Rust),
  * where that fails.
  */
 @Timeout(240)
@@ -252,6 +253,26 @@ class DdsEndToEndTest {
             bench.join(60_000);
         }
         assertEquals(0, status.get(), "bench --export --dds exit status");
+    }
+
+    /**
+     * Nothing DDS opens listens beyond the chosen interface (issue 38): with a DDS context on
+     * {@code lo}, every UDP socket of this JVM and of the processes it started is bound to
+     * 127.0.0.1, none to 0.0.0.0 or ::, and there are some (Cyclone DDS's). Read from
+     * {@code /proc/net/udp} and {@code /proc/net/udp6}, matched to the processes' socket inodes.
+     */
+    @Test
+    void aDdsContextOnLoopbackBindsEveryUdpSocketTo127001() throws Exception {
+        requireDdsBridge();
+        assumeTrue(Files.isReadable(Path.of("/proc/net/udp")), "skipped: no /proc/net/udp (Linux only)");
+        try (Ros2Context ignored = ddsContext(47)) {
+            List<ProcessHandle> processes = new ArrayList<>(List.of(ProcessHandle.current()));
+            processes.addAll(ProcessHandle.current().descendants().toList());
+            List<String> bound = UdpSockets.localAddresses(processes);
+            assertFalse(bound.isEmpty(), "Cyclone DDS's UDP sockets were found among " + processes);
+            assertEquals(List.of(), bound.stream().filter(a -> !a.startsWith("127.0.0.1:")).toList(),
+                    "UDP sockets bound beyond loopback; all: " + bound);
+        }
     }
 
     @Test
