@@ -127,7 +127,7 @@ fn key_expr(text: String) -> Result<KeyExpr<'static>, String> {
 /// Opens a session. `mode` is "peer" or "client"; endpoints are Zenoh locators
 /// (`tcp/127.0.0.1:7447`); `connect_timeout_ms` bounds the wait for the connect endpoints, and
 /// with at least one connect endpoint the open fails when none can be reached in that time.
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_open(
     mut env: JNIEnv,
     _class: JClass,
@@ -159,7 +159,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_open(
 }
 
 /// The session's Zenoh id as Zenoh prints it (lowercase hexadecimal).
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_zid(mut env: JNIEnv, _class: JClass, session: jlong) -> jstring {
     guarded(&mut env, std::ptr::null_mut(), |env| {
         let session = HANDLES.get::<Session>(session, "session")?;
@@ -168,7 +168,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_zid(mut env: JNIEnv, _c
     })
 }
 
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_close(mut env: JNIEnv, _class: JClass, session: jlong) {
     guarded(&mut env, (), |_| {
         // Zenoh closes a session through a shared reference: calls still using it get Zenoh's
@@ -181,7 +181,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_close(mut env: JNIEnv, 
 // ---------------------------------------------------------------------------------------------
 // Publisher
 
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_declarePublisher(
     mut env: JNIEnv,
     _class: JClass,
@@ -198,7 +198,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_declarePublisher(
 
 /// Publishes the first `length` bytes of `payload` with the first `attachment_length` bytes of
 /// `attachment` (no attachment when `attachment_length` is negative).
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_put(
     mut env: JNIEnv,
     _class: JClass,
@@ -226,7 +226,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_put(
     })
 }
 
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_undeclarePublisher(mut env: JNIEnv, _class: JClass, publisher: jlong) {
     guarded(&mut env, (), |_| {
         let publisher = HANDLES.remove::<Publisher<'static>>(publisher, "publisher")?;
@@ -237,7 +237,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_undeclarePublisher(mut 
 // ---------------------------------------------------------------------------------------------
 // Mailbox and subscribers
 
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_newMailbox(mut env: JNIEnv, _class: JClass, capacity: jint) -> jlong {
     guarded(&mut env, 0, |_| {
         Ok(HANDLES.insert(Mailbox::new(capacity)?))
@@ -250,7 +250,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_newMailbox(mut env: JNI
 /// copied, 0 on timeout, -1 when the sample did not fit (it is dropped, its lengths are reported),
 /// -2 when the mailbox was closed while or before waiting; throws when the handle is closed.
 /// Bytes beyond a buffer's capacity are never written.
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_take(
     mut env: JNIEnv,
     _class: JClass,
@@ -269,7 +269,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_take(
 }
 
 /// Samples dropped because the mailbox was full.
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_overflowed(mut env: JNIEnv, _class: JClass, mailbox: jlong) -> jlong {
     guarded(&mut env, 0, |_| Ok(HANDLES.get::<Mailbox>(mailbox, "mailbox")?.overflowed() as jlong))
 }
@@ -277,7 +277,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_overflowed(mut env: JNI
 /// Wakes a waiting `take` (which returns -2) and makes every later call with this handle throw.
 /// The memory goes with the last reference: a `take` still returning, or a subscriber callback
 /// (its subscriber not yet undeclared).
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_closeMailbox(mut env: JNIEnv, _class: JClass, mailbox: jlong) {
     guarded(&mut env, (), |_| {
         HANDLES.remove::<Mailbox>(mailbox, "mailbox")?.close();
@@ -286,7 +286,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_closeMailbox(mut env: J
 }
 
 /// Subscribes to `key`; its samples go to `mailbox` tagged with `channel`.
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_declareSubscriber(
     mut env: JNIEnv,
     _class: JClass,
@@ -314,7 +314,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_declareSubscriber(
     })
 }
 
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_undeclareSubscriber(mut env: JNIEnv, _class: JClass, subscriber: jlong) {
     guarded(&mut env, (), |_| {
         let subscriber = HANDLES.remove::<Subscriber<()>>(subscriber, "subscriber")?;
@@ -325,7 +325,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_undeclareSubscriber(mut
 // ---------------------------------------------------------------------------------------------
 // Liveliness
 
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_declareToken(
     mut env: JNIEnv,
     _class: JClass,
@@ -340,7 +340,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_declareToken(
     })
 }
 
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_undeclareToken(mut env: JNIEnv, _class: JClass, token: jlong) {
     guarded(&mut env, (), |_| {
         let token = HANDLES.remove::<LivelinessToken>(token, "liveliness token")?;
@@ -350,7 +350,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_undeclareToken(mut env:
 
 /// The key expressions of the liveliness tokens alive now that match `key`, waiting at most
 /// `timeout_ms` for the replies.
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_livelinessGet(
     mut env: JNIEnv,
     _class: JClass,
