@@ -54,22 +54,37 @@ fn java_string(env: &mut JNIEnv, s: &JString) -> Result<String, String> {
     env.get_string(s).map(Into::into).map_err(|e| format!("bad string argument: {e}"))
 }
 
+/// Runs `body` in a JNI local frame of its own: the local references it creates are freed when it
+/// returns, so that a loop over an array's elements holds one element's at a time (a native
+/// method may otherwise hold only 16, and they would pile up until it returns).
+fn in_local_frame<T>(env: &mut JNIEnv, body: impl FnOnce(&mut JNIEnv) -> Result<T, String>) -> Result<T, String> {
+    env.with_local_frame(LOCALS_PER_ELEMENT, |env| Ok::<_, jni::errors::Error>(body(env)))
+        .map_err(|e| format!("JNI local frame: {e}"))?
+}
+
+/// The local references one element of a string array takes: the element, a spare.
+const LOCALS_PER_ELEMENT: i32 = 2;
+
 fn java_strings(env: &mut JNIEnv, array: &JObjectArray) -> Result<Vec<String>, String> {
     let n = env.get_array_length(array).map_err(|e| e.to_string())?;
     let mut out = Vec::with_capacity(n as usize);
     for i in 0..n {
-        let element = env.get_object_array_element(array, i).map_err(|e| e.to_string())?;
-        out.push(java_string(env, &JString::from(element))?);
+        out.push(in_local_frame(env, |env| {
+            let element = env.get_object_array_element(array, i).map_err(|e| e.to_string())?;
+            java_string(env, &JString::from(element))
+        })?);
     }
     Ok(out)
 }
 
-/// A new Java `String[]` holding `values`.
+/// A new Java `String[]` holding `values`: one local reference, the array, returned to Java.
 fn string_array(env: &mut JNIEnv, values: &[String]) -> Result<jobjectArray, String> {
     let array = env.new_object_array(values.len() as jint, "java/lang/String", JObject::null()).map_err(|e| e.to_string())?;
     for (i, value) in values.iter().enumerate() {
-        let s = env.new_string(value).map_err(|e| e.to_string())?;
-        env.set_object_array_element(&array, i as jint, s).map_err(|e| e.to_string())?;
+        in_local_frame(env, |env| {
+            let s = env.new_string(value).map_err(|e| e.to_string())?;
+            env.set_object_array_element(&array, i as jint, s).map_err(|e| e.to_string())
+        })?;
     }
     Ok(array.into_raw())
 }
@@ -349,7 +364,8 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_undeclareToken(mut env:
 }
 
 /// The key expressions of the liveliness tokens alive now that match `key`, waiting at most
-/// `timeout_ms` for the replies.
+/// `timeout_ms` for the replies. More than `max_keys` of them is an error naming the pattern
+/// (the query stops there): the answer's size is the network's to choose, not this process's.
 #[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_livelinessGet(
     mut env: JNIEnv,
@@ -357,29 +373,49 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_livelinessGet(
     session: jlong,
     key: JString,
     timeout_ms: jlong,
+    max_keys: jint,
 ) -> jobjectArray {
     guarded(&mut env, std::ptr::null_mut(), |env| {
         let session = HANDLES.get::<Session>(session, "session")?;
-        let key = key_expr(java_string(env, &key)?)?;
+        let pattern = java_string(env, &key)?;
         let replies = session
             .liveliness()
-            .get(key)
+            .get(key_expr(pattern.clone())?)
             .timeout(Duration::from_millis(timeout_ms.max(0) as u64))
             .wait()
             .map_err(|e| format!("liveliness query: {e}"))?;
-        let mut keys = Vec::new();
-        while let Ok(reply) = replies.recv() {
-            if let Ok(sample) = reply.result() {
-                keys.push(sample.key_expr().as_str().to_string());
-            }
-        }
+        let keys = at_most(max_keys.max(0) as usize, std::iter::from_fn(|| replies.recv().ok()).filter_map(|reply| {
+            reply.result().ok().map(|sample| sample.key_expr().as_str().to_string())
+        }))
+        .map_err(|max| format!("more than {max} liveliness tokens match '{pattern}'"))?;
         string_array(env, &keys)
     })
 }
 
+/// The items of `items`, or `Err(max)` as soon as there are more than `max` (the rest is not read).
+fn at_most<T>(max: usize, items: impl Iterator<Item = T>) -> Result<Vec<T>, usize> {
+    let mut out = Vec::new();
+    for item in items {
+        if out.len() == max {
+            return Err(max);
+        }
+        out.push(item);
+    }
+    Ok(out)
+}
+
 #[cfg(test)]
 mod tests {
-    use super::any_overlap;
+    use super::{any_overlap, at_most};
+
+    #[test]
+    fn at_most_stops_reading_at_the_first_item_too_many() {
+        assert_eq!(at_most(3, 0..3), Ok(vec![0, 1, 2]));
+        assert_eq!(at_most(0, 0..0), Ok(vec![]));
+        let mut read = 0;
+        assert_eq!(at_most(3, (0..1_000_000).inspect(|_| read += 1)), Err(3));
+        assert_eq!(read, 4, "three kept, the fourth refused, nothing after it read");
+    }
 
     #[test]
     fn buffers_sharing_a_byte_overlap_and_adjacent_ones_do_not() {

@@ -45,5 +45,5 @@ final class NativeZenoh {
 
     static native void undeclareToken(long token) throws ZenohException;
 
-    static native String[] livelinessGet(long session, String key, long timeoutMs) throws ZenohException;
+    static native String[] livelinessGet(long session, String key, long timeoutMs, int maxKeys) throws ZenohException;
 }
