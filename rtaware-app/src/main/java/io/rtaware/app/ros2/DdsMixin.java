@@ -4,6 +4,7 @@ import io.rtaware.app.UserError;
 import io.rtaware.ros2.graph.DdsSettings;
 import io.rtaware.ros2.graph.Ros2Distro;
 import io.rtaware.zenoh.DdsBridge;
+import io.rtaware.zenoh.DdsBridgeConfig;
 import java.util.Optional;
 import picocli.CommandLine.Option;
 
@@ -38,8 +39,9 @@ public final class DdsMixin {
      * @param distro the distribution the bridge behaves as
      * @return the DDS settings when {@code --dds} was given
      * @throws UserError for DDS options without {@code --dds} or without {@code needs}, a domain
-     *     outside 0..232, a malformed interface, an unreadable {@code CYCLONEDDS_URI}, or a build
-     *     without the bridge
+     *     outside 0..232, a malformed interface name or one this machine does not have (or has
+     *     without an IPv4 address), an unreadable {@code CYCLONEDDS_URI}, or a build without the
+     *     bridge
      */
     public Optional<DdsSettings> settings(boolean used, String needs, int domain, Ros2Distro distro) {
         if (!enabled) {
@@ -57,6 +59,13 @@ public final class DdsMixin {
                     System.getenv("CYCLONEDDS_URI"));
         } catch (IllegalArgumentException e) {
             throw new UserError("--dds: " + e.getMessage());
+        }
+        if (settings.bindInterface() != null) {
+            try {
+                DdsBridgeConfig.interfaceAddress(settings.bindInterface());
+            } catch (IllegalArgumentException e) {
+                throw new UserError("--dds-interface: " + e.getMessage());
+            }
         }
         String reason = DdsBridge.unavailableReason();
         if (reason != null) {

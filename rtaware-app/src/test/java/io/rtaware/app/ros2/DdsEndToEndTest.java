@@ -283,16 +283,49 @@ class DdsEndToEndTest {
         assertEquals(2, quietly("run", "--ros2", "--dds", "--zenoh", "tcp/127.0.0.1:7447", "--quiet"));
         assertEquals(2, quietly("sim", "--ros2", "--dds", "--listen", "tcp/127.0.0.1:0"));
         String missing = dir.resolve("missing.xml").toString();
-        ProcessBuilder cli = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
-                System.getProperty("java.class.path"), RtawareCli.class.getName(), "run", "--ros2", "--dds", "--quiet",
-                "--out", dir.resolve("x").toString()).redirectErrorStream(true);
-        cli.environment().put("CYCLONEDDS_URI", "file://" + missing);
+        assertEquals(List.of("rtaware: --dds: CYCLONEDDS_URI: cannot read 'file://" + missing + "'"),
+                cliLines(Map.of("CYCLONEDDS_URI", "file://" + missing), "run", "--ros2", "--dds", "--quiet"),
+                "one line naming the value");
+        assertEquals(List.of("rtaware: --dds-interface: no network interface named 'rtaware9' on this machine"),
+                cliLines(Map.of(), "run", "--ros2", "--dds", "--dds-interface", "rtaware9", "--quiet"),
+                "an interface this machine lacks is named before anything starts (it was a 7-line Rust panic after 11 s)");
+    }
+
+    /**
+     * A configuration Cyclone DDS refuses ends the bridge as it starts, and the command in one
+     * line with Cyclone's own reason, exit status 2 (it was a 7-line Rust panic after the 10 s
+     * start timeout): the reason can come only from the bridge's refusal, not from a timeout.
+     */
+    @Test
+    void aCycloneConfigurationCycloneDdsRefusesIsOneLineWithItsReason() throws Exception {
+        requireDdsBridge();
+        String uri = "<CycloneDDS><Domain><General><Interfaces><NetworkInterface name=\"rtaware9\"/></Interfaces>"
+                + "</General></Domain></CycloneDDS>";
+        assertEquals(List.of("rtaware: --dds: cannot join DDS domain 0 (configured by CYCLONEDDS_URI) through "
+                        + "zenoh-plugin-ros2dds: the ROS 2 DDS bridge did not start: Cyclone DDS refused domain 0: rtaware9: "
+                        + "does not match an available interface."),
+                cliLines(Map.of("CYCLONEDDS_URI", uri), "run", "--ros2", "--dds", "--domain", "0", "--quiet"));
+    }
+
+    /**
+     * Runs the command line in a JVM of its own (so that everything its processes print is seen)
+     * and checks it exits with status 2.
+     *
+     * @return its output's lines but Maven's and the JVM's own ({@code [...]})
+     */
+    private List<String> cliLines(Map<String, String> environment, String... args) throws Exception {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path"), RtawareCli.class.getName()));
+        command.addAll(List.of(args));
+        command.addAll(List.of("--out", dir.resolve("cli-" + System.nanoTime()).toString()));
+        ProcessBuilder cli = new ProcessBuilder(command).redirectErrorStream(true);
+        cli.environment().remove("CYCLONEDDS_URI");
+        cli.environment().putAll(environment);
         Process p = cli.start();
         String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         assertTrue(p.waitFor(60, TimeUnit.SECONDS));
         assertEquals(2, p.exitValue(), output);
-        assertEquals(List.of("rtaware: --dds: CYCLONEDDS_URI: cannot read 'file://" + missing + "'"),
-                output.lines().filter(l -> !l.startsWith("[")).toList(), "one line naming the value: " + output);
+        return output.lines().filter(l -> !l.startsWith("[")).toList();
     }
 
     private static int quietly(String... args) {
