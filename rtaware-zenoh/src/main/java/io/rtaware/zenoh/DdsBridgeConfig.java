@@ -30,6 +30,11 @@ public record DdsBridgeConfig(String listen, String pluginConfig, String cyclone
                               Map<String, String> environment) {
 
     /**
+     * @param listen where the bridge's runtime listens
+     * @param pluginConfig the plugin's settings, JSON5
+     * @param cycloneConfig the whole Cyclone DDS configuration
+     * @param bindInterface the interface the bridge's sockets are held to, or null
+     * @param environment variables of the bridge's process
      * @throws IllegalArgumentException for a malformed listen endpoint
      */
     public DdsBridgeConfig {
