@@ -27,7 +27,9 @@ import java.util.concurrent.TimeoutException;
  * run, which inside this JVM would be undefined behaviour; the bridge process holds its sockets to
  * one network interface, which Cyclone DDS cannot be configured to do; and its DDS participant,
  * which the plugin never stops, ends with it. The process ends when the bridge is closed, and when
- * this JVM ends (its standard input closes). Thread-safe.
+ * this JVM ends (its standard input closes). The executable is the file the system property
+ * {@code rtaware.dds.bridge} names, else the one the build put beside the native library on the
+ * class path. Thread-safe.
  */
 public final class DdsBridge implements AutoCloseable {
 
