@@ -7,9 +7,12 @@
 # the clone (RTAWARE_CARGO_TARGET_DIR, default: the user's cache folder) so that rebuilds reuse it.
 #
 # build-native.sh --test runs the layer's Rust tests instead (cargo test, release profile, so it
-# reuses the dependencies the build compiled), skipping with the same WARNING block without cargo.
+# reuses the dependencies the build compiled), skipping with the same WARNING block without cargo;
+# rtaware-zenoh's pom runs it in Maven's test phase.
 set -euo pipefail
 out="$1"
+what="is NOT built"
+[ "$out" = "--test" ] && what="is NOT built and its Rust tests do NOT run"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 min_rust="1.75"
 
@@ -18,7 +21,7 @@ min_rust="1.75"
 skip() {
   {
     echo "[WARNING] ========================================================================"
-    echo "[WARNING] rtaware-zenoh: the native Zenoh layer is NOT built: $1"
+    echo "[WARNING] rtaware-zenoh: the native Zenoh layer $what: $1"
     echo "[WARNING] OFF: everything ROS 2 (run/sim --ros2, the ROS 2 exporter); ROS 2 tests skip."
     echo "[WARNING] To enable: install Rust >= $min_rust with cargo on the PATH (https://rustup.rs),"
     echo "[WARNING] then rebuild (./mvnw -B -DskipTests package)."
@@ -80,5 +83,15 @@ if [ "$out" = "--test" ]; then
 fi
 mkdir -p "$CARGO_TARGET_DIR" "$out/$platform"
 cargo build --release --locked --quiet "${features[@]}" --manifest-path "$here/Cargo.toml"
-cp "$CARGO_TARGET_DIR/release/$lib" "$out/$platform/$lib.tmp"
-mv "$out/$platform/$lib.tmp" "$out/$platform/$lib"
+# The library, and with the bridge its executable (rtaware-dds-bridge, a process of its own: src/bridge/main.rs).
+# A bridge left from an earlier build with it is removed: Java takes its presence for the bridge being built.
+artifacts=("$lib")
+if [ ${#features[@]} -gt 0 ]; then
+  artifacts+=(rtaware-dds-bridge)
+else
+  rm -f "$out/$platform/rtaware-dds-bridge"
+fi
+for artifact in "${artifacts[@]}"; do
+  cp "$CARGO_TARGET_DIR/release/$artifact" "$out/$platform/$artifact.tmp"
+  mv "$out/$platform/$artifact.tmp" "$out/$platform/$artifact"
+done

@@ -11,7 +11,6 @@
 //! and attachment into direct buffers that Java allocated once, so the Java side allocates
 //! nothing per sample.
 
-mod dds;
 mod handles;
 mod mailbox;
 mod messages;
@@ -55,22 +54,37 @@ fn java_string(env: &mut JNIEnv, s: &JString) -> Result<String, String> {
     env.get_string(s).map(Into::into).map_err(|e| format!("bad string argument: {e}"))
 }
 
+/// Runs `body` in a JNI local frame of its own: the local references it creates are freed when it
+/// returns, so that a loop over an array's elements holds one element's at a time (a native
+/// method may otherwise hold only 16, and they would pile up until it returns).
+fn in_local_frame<T>(env: &mut JNIEnv, body: impl FnOnce(&mut JNIEnv) -> Result<T, String>) -> Result<T, String> {
+    env.with_local_frame(LOCALS_PER_ELEMENT, |env| Ok::<_, jni::errors::Error>(body(env)))
+        .map_err(|e| format!("JNI local frame: {e}"))?
+}
+
+/// The local references one element of a string array takes: the element, a spare.
+const LOCALS_PER_ELEMENT: i32 = 2;
+
 fn java_strings(env: &mut JNIEnv, array: &JObjectArray) -> Result<Vec<String>, String> {
     let n = env.get_array_length(array).map_err(|e| e.to_string())?;
     let mut out = Vec::with_capacity(n as usize);
     for i in 0..n {
-        let element = env.get_object_array_element(array, i).map_err(|e| e.to_string())?;
-        out.push(java_string(env, &JString::from(element))?);
+        out.push(in_local_frame(env, |env| {
+            let element = env.get_object_array_element(array, i).map_err(|e| e.to_string())?;
+            java_string(env, &JString::from(element))
+        })?);
     }
     Ok(out)
 }
 
-/// A new Java `String[]` holding `values`.
+/// A new Java `String[]` holding `values`: one local reference, the array, returned to Java.
 fn string_array(env: &mut JNIEnv, values: &[String]) -> Result<jobjectArray, String> {
     let array = env.new_object_array(values.len() as jint, "java/lang/String", JObject::null()).map_err(|e| e.to_string())?;
     for (i, value) in values.iter().enumerate() {
-        let s = env.new_string(value).map_err(|e| e.to_string())?;
-        env.set_object_array_element(&array, i as jint, s).map_err(|e| e.to_string())?;
+        in_local_frame(env, |env| {
+            let s = env.new_string(value).map_err(|e| e.to_string())?;
+            env.set_object_array_element(&array, i as jint, s).map_err(|e| e.to_string())
+        })?;
     }
     Ok(array.into_raw())
 }
@@ -128,7 +142,7 @@ fn key_expr(text: String) -> Result<KeyExpr<'static>, String> {
 /// Opens a session. `mode` is "peer" or "client"; endpoints are Zenoh locators
 /// (`tcp/127.0.0.1:7447`); `connect_timeout_ms` bounds the wait for the connect endpoints, and
 /// with at least one connect endpoint the open fails when none can be reached in that time.
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_open(
     mut env: JNIEnv,
     _class: JClass,
@@ -160,7 +174,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_open(
 }
 
 /// The session's Zenoh id as Zenoh prints it (lowercase hexadecimal).
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_zid(mut env: JNIEnv, _class: JClass, session: jlong) -> jstring {
     guarded(&mut env, std::ptr::null_mut(), |env| {
         let session = HANDLES.get::<Session>(session, "session")?;
@@ -169,7 +183,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_zid(mut env: JNIEnv, _c
     })
 }
 
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_close(mut env: JNIEnv, _class: JClass, session: jlong) {
     guarded(&mut env, (), |_| {
         // Zenoh closes a session through a shared reference: calls still using it get Zenoh's
@@ -182,7 +196,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_close(mut env: JNIEnv, 
 // ---------------------------------------------------------------------------------------------
 // Publisher
 
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_declarePublisher(
     mut env: JNIEnv,
     _class: JClass,
@@ -199,7 +213,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_declarePublisher(
 
 /// Publishes the first `length` bytes of `payload` with the first `attachment_length` bytes of
 /// `attachment` (no attachment when `attachment_length` is negative).
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_put(
     mut env: JNIEnv,
     _class: JClass,
@@ -227,7 +241,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_put(
     })
 }
 
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_undeclarePublisher(mut env: JNIEnv, _class: JClass, publisher: jlong) {
     guarded(&mut env, (), |_| {
         let publisher = HANDLES.remove::<Publisher<'static>>(publisher, "publisher")?;
@@ -238,7 +252,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_undeclarePublisher(mut 
 // ---------------------------------------------------------------------------------------------
 // Mailbox and subscribers
 
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_newMailbox(mut env: JNIEnv, _class: JClass, capacity: jint) -> jlong {
     guarded(&mut env, 0, |_| {
         Ok(HANDLES.insert(Mailbox::new(capacity)?))
@@ -251,7 +265,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_newMailbox(mut env: JNI
 /// copied, 0 on timeout, -1 when the sample did not fit (it is dropped, its lengths are reported),
 /// -2 when the mailbox was closed while or before waiting; throws when the handle is closed.
 /// Bytes beyond a buffer's capacity are never written.
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_take(
     mut env: JNIEnv,
     _class: JClass,
@@ -270,7 +284,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_take(
 }
 
 /// Samples dropped because the mailbox was full.
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_overflowed(mut env: JNIEnv, _class: JClass, mailbox: jlong) -> jlong {
     guarded(&mut env, 0, |_| Ok(HANDLES.get::<Mailbox>(mailbox, "mailbox")?.overflowed() as jlong))
 }
@@ -278,7 +292,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_overflowed(mut env: JNI
 /// Wakes a waiting `take` (which returns -2) and makes every later call with this handle throw.
 /// The memory goes with the last reference: a `take` still returning, or a subscriber callback
 /// (its subscriber not yet undeclared).
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_closeMailbox(mut env: JNIEnv, _class: JClass, mailbox: jlong) {
     guarded(&mut env, (), |_| {
         HANDLES.remove::<Mailbox>(mailbox, "mailbox")?.close();
@@ -287,7 +301,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_closeMailbox(mut env: J
 }
 
 /// Subscribes to `key`; its samples go to `mailbox` tagged with `channel`.
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_declareSubscriber(
     mut env: JNIEnv,
     _class: JClass,
@@ -315,7 +329,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_declareSubscriber(
     })
 }
 
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_undeclareSubscriber(mut env: JNIEnv, _class: JClass, subscriber: jlong) {
     guarded(&mut env, (), |_| {
         let subscriber = HANDLES.remove::<Subscriber<()>>(subscriber, "subscriber")?;
@@ -326,7 +340,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_undeclareSubscriber(mut
 // ---------------------------------------------------------------------------------------------
 // Liveliness
 
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_declareToken(
     mut env: JNIEnv,
     _class: JClass,
@@ -341,7 +355,7 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_declareToken(
     })
 }
 
-#[no_mangle]
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_undeclareToken(mut env: JNIEnv, _class: JClass, token: jlong) {
     guarded(&mut env, (), |_| {
         let token = HANDLES.remove::<LivelinessToken>(token, "liveliness token")?;
@@ -350,90 +364,58 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_undeclareToken(mut env:
 }
 
 /// The key expressions of the liveliness tokens alive now that match `key`, waiting at most
-/// `timeout_ms` for the replies.
-#[no_mangle]
+/// `timeout_ms` for the replies. More than `max_keys` of them is an error naming the pattern
+/// (the query stops there): the answer's size is the network's to choose, not this process's.
+#[unsafe(no_mangle)]
 pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_livelinessGet(
     mut env: JNIEnv,
     _class: JClass,
     session: jlong,
     key: JString,
     timeout_ms: jlong,
+    max_keys: jint,
 ) -> jobjectArray {
     guarded(&mut env, std::ptr::null_mut(), |env| {
         let session = HANDLES.get::<Session>(session, "session")?;
-        let key = key_expr(java_string(env, &key)?)?;
+        let pattern = java_string(env, &key)?;
         let replies = session
             .liveliness()
-            .get(key)
+            .get(key_expr(pattern.clone())?)
             .timeout(Duration::from_millis(timeout_ms.max(0) as u64))
             .wait()
             .map_err(|e| format!("liveliness query: {e}"))?;
-        let mut keys = Vec::new();
-        while let Ok(reply) = replies.recv() {
-            if let Ok(sample) = reply.result() {
-                keys.push(sample.key_expr().as_str().to_string());
-            }
-        }
+        let keys = at_most(max_keys.max(0) as usize, std::iter::from_fn(|| replies.recv().ok()).filter_map(|reply| {
+            reply.result().ok().map(|sample| sample.key_expr().as_str().to_string())
+        }))
+        .map_err(|max| format!("more than {max} liveliness tokens match '{pattern}'"))?;
         string_array(env, &keys)
     })
 }
 
-// ---------------------------------------------------------------------------------------------
-// ROS 2 DDS bridge
-
-/// A bridge as Java holds it: the running bridge and the endpoints it listens on.
-struct BridgeEntry {
-    bridge: dds::DdsBridge,
-    endpoints: Vec<String>,
-}
-
-/// Whether this library was built with the ROS 2 DDS bridge (cargo feature `dds`).
-#[no_mangle]
-pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_ddsAvailable(_env: JNIEnv, _class: JClass) -> jboolean {
-    dds::AVAILABLE as jboolean
-}
-
-/// Starts the ROS 2 DDS bridge ([`dds::start`]); `env` holds names and values in turn.
-#[no_mangle]
-pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_startDdsBridge(
-    mut env: JNIEnv,
-    _class: JClass,
-    listen: JString,
-    plugin_config: JString,
-    variables: JObjectArray,
-) -> jlong {
-    guarded(&mut env, 0, |env| {
-        let listen = java_string(env, &listen)?;
-        let plugin_config = java_string(env, &plugin_config)?;
-        let variables = java_strings(env, &variables)?;
-        if variables.len() % 2 != 0 {
-            return Err(format!("environment for the DDS bridge needs names and values in pairs, got {} strings", variables.len()));
+/// The items of `items`, or `Err(max)` as soon as there are more than `max` (the rest is not read).
+fn at_most<T>(max: usize, items: impl Iterator<Item = T>) -> Result<Vec<T>, usize> {
+    let mut out = Vec::new();
+    for item in items {
+        if out.len() == max {
+            return Err(max);
         }
-        let pairs: Vec<(String, String)> = variables.chunks(2).map(|p| (p[0].clone(), p[1].clone())).collect();
-        let (bridge, endpoints) = dds::start(&listen, &plugin_config, &pairs)?;
-        Ok(HANDLES.insert(BridgeEntry { bridge, endpoints }))
-    })
-}
-
-/// The bridge's Zenoh id, then the endpoints it listens on.
-#[no_mangle]
-pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_ddsBridgeInfo(mut env: JNIEnv, _class: JClass, bridge: jlong) -> jobjectArray {
-    guarded(&mut env, std::ptr::null_mut(), |env| {
-        let entry = HANDLES.get::<BridgeEntry>(bridge, "DDS bridge")?;
-        let mut info = vec![entry.bridge.zid()];
-        info.extend(entry.endpoints.iter().cloned());
-        string_array(env, &info)
-    })
-}
-
-#[no_mangle]
-pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_closeDdsBridge(mut env: JNIEnv, _class: JClass, bridge: jlong) {
-    guarded(&mut env, (), |_| HANDLES.remove::<BridgeEntry>(bridge, "DDS bridge")?.bridge.close())
+        out.push(item);
+    }
+    Ok(out)
 }
 
 #[cfg(test)]
 mod tests {
-    use super::any_overlap;
+    use super::{any_overlap, at_most};
+
+    #[test]
+    fn at_most_stops_reading_at_the_first_item_too_many() {
+        assert_eq!(at_most(3, 0..3), Ok(vec![0, 1, 2]));
+        assert_eq!(at_most(0, 0..0), Ok(vec![]));
+        let mut read = 0;
+        assert_eq!(at_most(3, (0..1_000_000).inspect(|_| read += 1)), Err(3));
+        assert_eq!(read, 4, "three kept, the fourth refused, nothing after it read");
+    }
 
     #[test]
     fn buffers_sharing_a_byte_overlap_and_adjacent_ones_do_not() {

@@ -45,13 +45,5 @@ final class NativeZenoh {
 
     static native void undeclareToken(long token) throws ZenohException;
 
-    static native String[] livelinessGet(long session, String key, long timeoutMs) throws ZenohException;
-
-    static native boolean ddsAvailable();
-
-    static native long startDdsBridge(String listen, String pluginConfig, String[] environment) throws ZenohException;
-
-    static native String[] ddsBridgeInfo(long bridge) throws ZenohException;
-
-    static native void closeDdsBridge(long bridge) throws ZenohException;
+    static native String[] livelinessGet(long session, String key, long timeoutMs, int maxKeys) throws ZenohException;
 }

@@ -63,20 +63,35 @@ public final class ZenohLibrary {
                 System.load(Path.of(explicit).toAbsolutePath().toString());
                 return null;
             }
-            String resource = "/native/" + platform() + "/" + System.mapLibraryName("rtaware_zenoh");
-            try (InputStream in = ZenohLibrary.class.getResourceAsStream(resource)) {
-                if (in == null) {
-                    return "the native Zenoh layer was not built (no Rust toolchain when the project was built): "
-                            + HOW_TO_ENABLE;
-                }
-                Path file = Files.createTempFile("rtaware_zenoh", ".so");
-                file.toFile().deleteOnExit();
-                Files.copy(in, file, StandardCopyOption.REPLACE_EXISTING);
-                System.load(file.toString());
-                return null;
+            Path file = extract(System.mapLibraryName("rtaware_zenoh"));
+            if (file == null) {
+                return "the native Zenoh layer was not built (no Rust toolchain when the project was built): "
+                        + HOW_TO_ENABLE;
             }
+            System.load(file.toString());
+            return null;
         } catch (IOException | UnsatisfiedLinkError | SecurityException e) {
             return "the native Zenoh layer cannot be loaded (" + e.getMessage() + "): " + HOW_TO_ENABLE;
+        }
+    }
+
+    /**
+     * Copies a file the build put beside the library ({@code native/<os>-<arch>/<name>} on the class
+     * path) to a temporary file, deleted when the JVM exits.
+     *
+     * @param name the file's name
+     * @return the copy, or null when the build did not make that file
+     * @throws IOException if it cannot be copied
+     */
+    static Path extract(String name) throws IOException {
+        try (InputStream in = ZenohLibrary.class.getResourceAsStream("/native/" + platform() + "/" + name)) {
+            if (in == null) {
+                return null;
+            }
+            Path file = Files.createTempFile(name, ".tmp");
+            file.toFile().deleteOnExit();
+            Files.copy(in, file, StandardCopyOption.REPLACE_EXISTING);
+            return file;
         }
     }
 

@@ -12,6 +12,9 @@ import java.util.Objects;
  */
 public final class ZenohSession implements AutoCloseable {
 
+    /** The most liveliness keys {@link #livelinessKeys(String, long)} takes: a large ROS 2 graph's tokens, about 2 MB of keys. */
+    public static final int MAX_LIVELINESS_KEYS = 10_000;
+
     private final Object lock = new Object();
     private final List<AutoCloseable> owned = new ArrayList<>();
     private final ZenohConfig config;
@@ -106,17 +109,40 @@ public final class ZenohSession implements AutoCloseable {
     }
 
     /**
+     * At most {@value #MAX_LIVELINESS_KEYS} keys: {@link #livelinessKeys(String, long, int)}.
+     *
      * @param keyPattern a key expression, wildcards allowed ({@code @ros2_lv/0/**})
      * @param timeoutMs how long to collect replies
      * @return the keys of the liveliness tokens alive now that match, in no particular order
-     * @throws ZenohException if the pattern is invalid or the session is closed
+     * @throws ZenohException if the pattern is invalid, the session is closed, or more than
+     *     {@value #MAX_LIVELINESS_KEYS} tokens match
      */
     public List<String> livelinessKeys(String keyPattern, long timeoutMs) throws ZenohException {
+        return livelinessKeys(keyPattern, timeoutMs, MAX_LIVELINESS_KEYS);
+    }
+
+    /**
+     * The keys of the liveliness tokens that match, as many as the network answers up to a
+     * bound: how many there are is for other processes to choose, so more than {@code maxKeys}
+     * is an error (the query stops reading there), not an allocation without end.
+     *
+     * @param keyPattern a key expression, wildcards allowed ({@code @ros2_lv/0/**})
+     * @param timeoutMs how long to collect replies
+     * @param maxKeys the most keys taken (non-negative)
+     * @return the keys of the liveliness tokens alive now that match, in no particular order
+     * @throws ZenohException if the pattern is invalid, the session is closed, or more than
+     *     {@code maxKeys} tokens match (naming the pattern)
+     * @throws IllegalArgumentException if {@code maxKeys} is negative
+     */
+    public List<String> livelinessKeys(String keyPattern, long timeoutMs, int maxKeys) throws ZenohException {
+        if (maxKeys < 0) {
+            throw new IllegalArgumentException("maxKeys must not be negative: " + maxKeys);
+        }
         long h;
         synchronized (lock) {
             h = open();
         }
-        return List.of(NativeZenoh.livelinessGet(h, keyPattern, timeoutMs));
+        return List.of(NativeZenoh.livelinessGet(h, keyPattern, timeoutMs, maxKeys));
     }
 
     void forget(AutoCloseable declaration) {

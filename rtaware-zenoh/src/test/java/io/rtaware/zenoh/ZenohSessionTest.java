@@ -103,6 +103,19 @@ class ZenohSessionTest {
     }
 
     @Test
+    void moreLivelinessTokensThanAskedForIsAnErrorNamingThePattern() throws Exception {
+        try (ZenohSession s = ZenohSession.open(ZenohConfig.loopbackPeer())) {
+            for (int i = 0; i < 4; i++) {
+                s.declareToken("@cap_lv/" + i);
+            }
+            assertEquals(4, s.livelinessKeys("@cap_lv/**", 1000, 4).size(), "as many as allowed");
+            ZenohException e = assertThrows(ZenohException.class, () -> s.livelinessKeys("@cap_lv/**", 1000, 3));
+            assertEquals("more than 3 liveliness tokens match '@cap_lv/**'", e.getMessage());
+            assertThrows(IllegalArgumentException.class, () -> s.livelinessKeys("@cap_lv/**", 1000, -1));
+        }
+    }
+
+    @Test
     void anUnreachableRouterFailsTheOpen() throws Exception {
         ZenohConfig config = new ZenohConfig(ZenohConfig.Mode.PEER, List.of("tcp/127.0.0.1:" + freePort()),
                 List.of(ZenohConfig.LOOPBACK_ANY_PORT), false, 500);

@@ -1,6 +1,7 @@
 package io.rtaware.app.ros2;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
@@ -44,8 +45,8 @@ import org.junit.jupiter.api.io.TempDir;
  * stock ROS 2 node on the wire. It drives the simulator served over DDS, and it is the Cyclone DDS
  * robot that {@code run --ros2 --dds} drives through the paper's short leg (the simulator on one
  * DDS domain, relayed by the peer to another). All DDS traffic stays on the loopback interface,
- * multicast off; each test has domains of its own, since a bridge's DDS participant lives as long
- * as the JVM. Skipped without the bridge or the peer's Python, except under CI=true (with Rust),
+ * multicast off, and every UDP socket on 127.0.0.1; each test has domains of its own, so that
+ * tests never see each other's DDS traffic. Skipped without the bridge or the peer's Python, except under CI=true (with Rust),
  * where that fails.
  */
 @Timeout(240)
@@ -254,6 +255,26 @@ class DdsEndToEndTest {
         assertEquals(0, status.get(), "bench --export --dds exit status");
     }
 
+    /**
+     * Nothing DDS opens listens beyond the chosen interface (issue 38): with a DDS context on
+     * {@code lo}, every UDP socket of this JVM and of the processes it started is bound to
+     * 127.0.0.1, none to 0.0.0.0 or ::, and there are some (Cyclone DDS's). Read from
+     * {@code /proc/net/udp} and {@code /proc/net/udp6}, matched to the processes' socket inodes.
+     */
+    @Test
+    void aDdsContextOnLoopbackBindsEveryUdpSocketTo127001() throws Exception {
+        requireDdsBridge();
+        assumeTrue(Files.isReadable(Path.of("/proc/net/udp")), "skipped: no /proc/net/udp (Linux only)");
+        try (Ros2Context ignored = ddsContext(47)) {
+            List<ProcessHandle> processes = new ArrayList<>(List.of(ProcessHandle.current()));
+            processes.addAll(ProcessHandle.current().descendants().toList());
+            List<String> bound = UdpSockets.localAddresses(processes);
+            assertFalse(bound.isEmpty(), "Cyclone DDS's UDP sockets were found among " + processes);
+            assertEquals(List.of(), bound.stream().filter(a -> !a.startsWith("127.0.0.1:")).toList(),
+                    "UDP sockets bound beyond loopback; all: " + bound);
+        }
+    }
+
     @Test
     void badDdsSettingsAreOneLineAndExitStatusTwo() throws Exception {
         assertEquals(2, quietly("run", "--ros2", "--dds", "--domain", "300", "--quiet"));
@@ -262,16 +283,49 @@ class DdsEndToEndTest {
         assertEquals(2, quietly("run", "--ros2", "--dds", "--zenoh", "tcp/127.0.0.1:7447", "--quiet"));
         assertEquals(2, quietly("sim", "--ros2", "--dds", "--listen", "tcp/127.0.0.1:0"));
         String missing = dir.resolve("missing.xml").toString();
-        ProcessBuilder cli = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
-                System.getProperty("java.class.path"), RtawareCli.class.getName(), "run", "--ros2", "--dds", "--quiet",
-                "--out", dir.resolve("x").toString()).redirectErrorStream(true);
-        cli.environment().put("CYCLONEDDS_URI", "file://" + missing);
+        assertEquals(List.of("rtaware: --dds: CYCLONEDDS_URI: cannot read 'file://" + missing + "'"),
+                cliLines(Map.of("CYCLONEDDS_URI", "file://" + missing), "run", "--ros2", "--dds", "--quiet"),
+                "one line naming the value");
+        assertEquals(List.of("rtaware: --dds-interface: no network interface named 'rtaware9' on this machine"),
+                cliLines(Map.of(), "run", "--ros2", "--dds", "--dds-interface", "rtaware9", "--quiet"),
+                "an interface this machine lacks is named before anything starts (it was a 7-line Rust panic after 11 s)");
+    }
+
+    /**
+     * A configuration Cyclone DDS refuses ends the bridge as it starts, and the command in one
+     * line with Cyclone's own reason, exit status 2 (it was a 7-line Rust panic after the 10 s
+     * start timeout): the reason can come only from the bridge's refusal, not from a timeout.
+     */
+    @Test
+    void aCycloneConfigurationCycloneDdsRefusesIsOneLineWithItsReason() throws Exception {
+        requireDdsBridge();
+        String uri = "<CycloneDDS><Domain><General><Interfaces><NetworkInterface name=\"rtaware9\"/></Interfaces>"
+                + "</General></Domain></CycloneDDS>";
+        assertEquals(List.of("rtaware: --dds: cannot join DDS domain 0 (configured by CYCLONEDDS_URI) through "
+                        + "zenoh-plugin-ros2dds: the ROS 2 DDS bridge did not start: Cyclone DDS refused domain 0: rtaware9: "
+                        + "does not match an available interface."),
+                cliLines(Map.of("CYCLONEDDS_URI", uri), "run", "--ros2", "--dds", "--domain", "0", "--quiet"));
+    }
+
+    /**
+     * Runs the command line in a JVM of its own (so that everything its processes print is seen)
+     * and checks it exits with status 2.
+     *
+     * @return its output's lines but Maven's and the JVM's own ({@code [...]})
+     */
+    private List<String> cliLines(Map<String, String> environment, String... args) throws Exception {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path"), RtawareCli.class.getName()));
+        command.addAll(List.of(args));
+        command.addAll(List.of("--out", dir.resolve("cli-" + System.nanoTime()).toString()));
+        ProcessBuilder cli = new ProcessBuilder(command).redirectErrorStream(true);
+        cli.environment().remove("CYCLONEDDS_URI");
+        cli.environment().putAll(environment);
         Process p = cli.start();
         String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         assertTrue(p.waitFor(60, TimeUnit.SECONDS));
         assertEquals(2, p.exitValue(), output);
-        assertEquals(List.of("rtaware: --dds: CYCLONEDDS_URI: cannot read 'file://" + missing + "'"),
-                output.lines().filter(l -> !l.startsWith("[")).toList(), "one line naming the value: " + output);
+        return output.lines().filter(l -> !l.startsWith("[")).toList();
     }
 
     private static int quietly(String... args) {

@@ -1,10 +1,10 @@
 package io.rtaware.ros2.graph;
 
+import io.rtaware.zenoh.DdsBridgeConfig;
 import java.io.File;
 import java.net.URI;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
@@ -16,10 +16,12 @@ import java.util.regex.Pattern;
  *
  * <p>By default DDS stays on this machine: Cyclone DDS uses the loopback interface only, sends no
  * multicast, and discovers participants by unicast to 127.0.0.1 (what ROS 2 calls
- * {@code ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST}, and {@code ROS_LOCALHOST_ONLY=1} on Humble).
- * One setting opens it to a robot's network: the interface name ({@code --dds-interface eth0}),
- * on which Cyclone DDS then discovers by multicast as a stock ROS 2 node does. A user's own
- * {@code CYCLONEDDS_URI} replaces both: the bridge then adds nothing to it. Immutable.
+ * {@code ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST}, and {@code ROS_LOCALHOST_ONLY=1} on Humble),
+ * and the bridge's sockets are bound to 127.0.0.1. One setting opens it to a robot's network: the
+ * interface name ({@code --dds-interface eth0}), on which Cyclone DDS then discovers by multicast
+ * as a stock ROS 2 node does, its sockets held to that interface. A user's own
+ * {@code CYCLONEDDS_URI} replaces both: the bridge then adds nothing to it and Cyclone DDS binds
+ * as it does by itself (its receive sockets on every address). Immutable.
  *
  * @param domain the DDS domain (the ROS domain id, 0..232)
  * @param distro the distribution the bridge behaves as (Humble's discovery differs from Iron's on)
@@ -75,47 +77,68 @@ public record DdsSettings(int domain, Ros2Distro distro, String networkInterface
     }
 
     /**
-     * @return the plugin's settings (JSON): the domain, the bridge's node name, and the discovery
-     *     range (Iron and later) or localhost-only switch (Humble) matching {@link #confined()};
-     *     with a user's {@code CYCLONEDDS_URI} the plugin is told to add nothing to it
+     * @return the plugin's settings (JSON): the domain, the bridge's node name, and that the
+     *     plugin adds nothing to the Cyclone DDS configuration ({@link #cycloneConfig()} is whole;
+     *     the plugin's own additions, from its discovery-range settings, would otherwise go into
+     *     {@code CYCLONEDDS_URI})
      */
     public String pluginConfig() {
         StringBuilder json = new StringBuilder("{\"domain\": ").append(domain)
-                .append(", \"namespace\": \"/\", \"nodename\": \"").append(BRIDGE_NODE).append('"');
-        if (distro == Ros2Distro.HUMBLE) {
-            json.append(", \"ros_localhost_only\": ").append(confined());
-        } else {
-            String range = userCycloneUri != null ? "SYSTEM_DEFAULT" : confined() ? "LOCALHOST" : "SUBNET";
-            json.append(", \"ros_localhost_only\": false, \"ros_automatic_discovery_range\": \"").append(range).append('"');
+                .append(", \"namespace\": \"/\", \"nodename\": \"").append(BRIDGE_NODE)
+                .append("\", \"ros_localhost_only\": false");
+        if (distro != Ros2Distro.HUMBLE) {
+            json.append(", \"ros_automatic_discovery_range\": \"SYSTEM_DEFAULT\"");
         }
         return json.append('}').toString();
     }
 
     /**
-     * @return the environment the plugin and Cyclone DDS read when they start: {@code ROS_DISTRO}
-     *     (the plugin's discovery differs before Iron) and {@code CYCLONEDDS_URI}: the user's as
-     *     it is, or a fragment that pins the interface (and, on loopback, turns multicast off and
-     *     names 127.0.0.1 as the unicast peer). The plugin puts its own fragment in front of it;
-     *     Cyclone DDS lets later fragments override earlier ones.
+     * @return the environment of the bridge's process: {@code ROS_DISTRO}, which the plugin reads
+     *     (its discovery differs before Iron)
      */
     public Map<String, String> environment() {
-        Map<String, String> env = new LinkedHashMap<>();
-        env.put("ROS_DISTRO", distro.cliName());
-        env.put("CYCLONEDDS_URI", userCycloneUri != null ? userCycloneUri : cycloneFragment());
-        return env;
+        return Map.of("ROS_DISTRO", distro.cliName());
     }
 
-    private String cycloneFragment() {
+    /**
+     * @return the whole Cyclone DDS configuration: the user's {@code CYCLONEDDS_URI} as it is, or
+     *     one that pins the interface and, on loopback, turns multicast off and names 127.0.0.1 as
+     *     the unicast peer (what ROS 2's {@code LOCALHOST} discovery range asks of Cyclone DDS);
+     *     on another interface from Iron on, participant indexes as ROS 2's {@code SUBNET} range
+     *     sets them
+     */
+    public String cycloneConfig() {
+        if (userCycloneUri != null) {
+            return userCycloneUri;
+        }
         StringBuilder xml = new StringBuilder("<CycloneDDS><Domain><General><Interfaces><NetworkInterface name=\"")
                 .append(networkInterface).append("\"/></Interfaces>");
+        String autoIndex = "<ParticipantIndex>auto</ParticipantIndex><MaxAutoParticipantIndex>32</MaxAutoParticipantIndex>";
         if (LOOPBACK.equals(networkInterface)) {
-            xml.append("<AllowMulticast>false</AllowMulticast></General><Discovery><ParticipantIndex>auto</ParticipantIndex>"
-                    + "<MaxAutoParticipantIndex>32</MaxAutoParticipantIndex><Peers><Peer address=\"127.0.0.1\"/></Peers>"
-                    + "</Discovery>");
+            xml.append("<AllowMulticast>false</AllowMulticast></General><Discovery>").append(autoIndex)
+                    .append("<Peers><Peer address=\"127.0.0.1\"/></Peers></Discovery>");
+        } else if (distro != Ros2Distro.HUMBLE) {
+            xml.append("</General><Discovery>").append(autoIndex).append("</Discovery>");
         } else {
             xml.append("</General>");
         }
         return xml.append("</Domain></CycloneDDS>").toString();
+    }
+
+    /**
+     * @return the interface every socket of the bridge is held to (the chosen one), or null with a
+     *     user's {@code CYCLONEDDS_URI}, whose interfaces rtaware does not know
+     */
+    public String bindInterface() {
+        return userCycloneUri != null ? null : networkInterface;
+    }
+
+    /**
+     * @param listen where the bridge's runtime listens
+     * @return what the bridge is told
+     */
+    public DdsBridgeConfig bridgeConfig(String listen) {
+        return new DdsBridgeConfig(listen, pluginConfig(), cycloneConfig(), bindInterface(), environment());
     }
 
     /**

@@ -15,7 +15,7 @@ import java.util.concurrent.atomic.AtomicLong;
  * tokens, publishers and subscribers.
  *
  * <p>With {@link Ros2Transport#DDS} ({@link #openDds}) the session is connected to a ROS 2 DDS
- * bridge of its own in this process, which the context owns and closes: topics are the bridge's
+ * bridge of its own (a process this one starts), which the context owns and closes: topics are the bridge's
  * keys and routes are announced to it ({@link Ros2Node}).
  */
 public final class Ros2Context implements AutoCloseable {
@@ -45,17 +45,18 @@ public final class Ros2Context implements AutoCloseable {
     }
 
     /**
-     * Starts a ROS 2 DDS bridge in this process on {@code settings}' domain and opens a session
-     * connected to it (and to nothing else). Returns once the bridge's plugin has announced
-     * itself, so that routes declared next reach DDS.
+     * Starts a ROS 2 DDS bridge on {@code settings}' domain and opens a session connected to it
+     * (and to nothing else). Returns once the bridge's plugin has announced itself, so that routes
+     * declared next reach DDS.
      *
      * @param settings the DDS domain and reach
-     * @param startTimeoutMs how long to wait for the plugin to announce itself
+     * @param startTimeoutMs how long to wait for the bridge to start, and again for its plugin to
+     *     announce itself
      * @return a context on DDS
      * @throws ZenohException if the bridge is not in this build, or it or the session cannot start
      */
     public static Ros2Context openDds(DdsSettings settings, long startTimeoutMs) throws ZenohException {
-        DdsBridge bridge = DdsBridge.start(ZenohConfig.LOOPBACK_ANY_PORT, settings.pluginConfig(), settings.environment());
+        DdsBridge bridge = DdsBridge.start(settings.bridgeConfig(ZenohConfig.LOOPBACK_ANY_PORT), startTimeoutMs);
         ZenohSession session = null;
         try {
             session = ZenohSession.open(ZenohConfig.loopbackPeer().withListen(List.of()).withConnect(List.of(bridge.endpoint())));

@@ -6,7 +6,7 @@ public enum Ros2Transport {
     /** Zenoh with rmw_zenoh's key expressions, liveliness tokens and attachments. */
     RMW_ZENOH("rmw_zenoh"),
     /**
-     * DDS (RTPS), through a ROS 2 DDS bridge ({@code zenoh-plugin-ros2dds}) in this process: the
+     * DDS (RTPS), through a ROS 2 DDS bridge ({@code zenoh-plugin-ros2dds}) this process starts: the
      * bridge's keys ({@code scan} for {@code rt/scan}), routes announced to it, no attachments.
      */
     DDS("dds");
