@@ -25,6 +25,12 @@ public final class RecordingPlan {
     public static final String TIMING_PREFIX = "/rtaware/timing/";
     /** The monitor events topic. */
     public static final String EVENTS_TOPIC = "/rtaware/events";
+    /**
+     * The topic statistics topic ({@code statistics_msgs/msg/MetricsMessage}, one message per
+     * second of world time per task and key and metric, as ROS 2's topic statistics publish them;
+     * every recording of a task or a key has it).
+     */
+    public static final String STATISTICS_TOPIC = "/statistics";
     /** The ground-truth topic. */
     public static final String GROUND_TRUTH_TOPIC = "/ground_truth";
     /**

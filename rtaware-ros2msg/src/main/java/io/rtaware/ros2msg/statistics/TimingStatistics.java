@@ -25,7 +25,8 @@ import java.util.Objects;
  * Metrics of a task (rtaware's additions), one sample per cycle unless said otherwise:
  * <ul>
  * <li>{@value #RELEASE_LATENESS}: start minus scheduled release, ms (0 for continuous tasks,
- *     released when they start);</li>
+ *     released when they start; never below 0, as in the run's report and the recorded
+ *     {@code TaskCycle});</li>
  * <li>{@value #EXECUTION_TIME}: end minus start, ms;</li>
  * <li>{@value #INPUT_AGE}: the cycle's start minus the commit time of the oldest value it held
  *     among its inputs (cycles whose inputs were never written give no sample), ms;</li>
@@ -41,9 +42,10 @@ import java.util.Objects;
  * reported. The stamps of a message are its window's bounds plus {@code stampOffsetNs} (the
  * Unix-epoch time of world time 0). A window is published, all its messages at once, as soon as
  * its samples can all have arrived: once every task that reported within the last
- * {@code graceNs} has reported a time past its end (judged one {@link #drained} later, so that a
- * commit handed over just before a consumer's cycle record is in too), and at the latest once the
- * newest time seen (or the clock given) is {@code graceNs} past its end. A record that arrives
+ * {@code graceNs} has reported a time past its end, and at the latest once the newest time seen
+ * (or the clock given) is {@code graceNs} past its end; both judged at one {@link #drained} and
+ * acted on at the next, so that what was handed over before a record that passed the end (a
+ * commit, drained from another ring, just before the cycle that made it) is in. A record that arrives
  * after its window was published is counted ({@link #lateRecords()}), never put in another
  * window.
  *
@@ -126,8 +128,12 @@ public final class TimingStatistics {
     /** The oldest window not published yet. */
     private long openWindow;
     private long newestNs = Long.MIN_VALUE;
-    /** The least latest time of the tasks that have reported, as of the previous {@link #drained}. */
-    private long readyNs = Long.MIN_VALUE;
+    /**
+     * Windows that ended by this are published at the next {@link #drained}: the least latest
+     * time of the tasks active at the previous one, or its newest time (or clock) less the
+     * grace, whichever is later.
+     */
+    private long horizonNs = Long.MIN_VALUE;
     private long late;
     private long unmatched;
     private long windows;
@@ -273,7 +279,7 @@ public final class TimingStatistics {
         }
         Moments[] m = taskMoments[bank];
         int base = task * TASK_METRICS.length;
-        m[base + LATENESS].add(ms(startNs - releaseNs));
+        m[base + LATENESS].add(ms(Math.max(0, startNs - releaseNs)));
         m[base + EXECUTION].add(ms(endNs - startNs));
         if (outcome != CycleOutcome.ERROR) {
             m[base + MISSES].add(outcome == CycleOutcome.MISS ? 1 : 0);
@@ -328,17 +334,16 @@ public final class TimingStatistics {
     public int drained(long clockNs) throws IOException {
         settle();
         long before = messages;
+        publishEndedBy(horizonNs);
         long seen = Math.max(newestNs, clockNs);
-        long horizon = Math.max(readyNs, seen == Long.MIN_VALUE ? Long.MIN_VALUE : seen - graceNs);
-        publishEndedBy(horizon);
-        long quietBefore = seen == Long.MIN_VALUE ? Long.MIN_VALUE : seen - graceNs;
+        long fallback = seen == Long.MIN_VALUE ? Long.MIN_VALUE : seen - graceNs;
         long ready = Long.MAX_VALUE;
         for (long t : latestNs) {
-            if (t != Long.MIN_VALUE && t >= quietBefore) {
+            if (t != Long.MIN_VALUE && t >= fallback) {
                 ready = Math.min(ready, t);
             }
         }
-        readyNs = ready == Long.MAX_VALUE ? Long.MIN_VALUE : ready;
+        horizonNs = ready == Long.MAX_VALUE ? fallback : Math.max(ready, fallback);
         return (int) (messages - before);
     }
 

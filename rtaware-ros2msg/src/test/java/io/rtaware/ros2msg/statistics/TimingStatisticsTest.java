@@ -156,9 +156,31 @@ class TimingStatisticsTest {
     }
 
     @Test
+    void aDrainThatRanAheadOnOneRingWaitsForTheOthersOfTheNextDrain() throws Exception {
+        // A recorder's pass drains the key's ring, then the sensor's, while the sensor runs on:
+        // the commits seen stop at 1.505 s, the cycles at 3.405 s.
+        TimingStatistics s = statistics(0);
+        for (int k = 0; k <= 15; k++) {
+            s.commit(0, k + 1, k * 100 * MS + 5 * MS);
+        }
+        for (int k = 0; k <= 34; k++) {
+            s.cycle(0, CycleOutcome.OK, k * 100 * MS, k * 100 * MS + 2 * MS, k * 100 * MS + 5 * MS, null);
+        }
+        assertEquals(0, s.drained(Long.MIN_VALUE), "the sensor is past 3 s, but that is judged at this drain");
+        for (int k = 16; k <= 34; k++) { // the next pass: the rest of the commits
+            s.commit(0, k + 1, k * 100 * MS + 5 * MS);
+        }
+        assertEquals(30, s.drained(Long.MIN_VALUE), "three windows, the sensor alone being active");
+        assertStatistics(find("scan", "message_period", EPOCH + 2 * S), 100, 100, 100, 0, 10);
+        assertStatistics(find("scan", "message_period", EPOCH + 3 * S), 100, 100, 100, 0, 10);
+        assertEquals(0, s.lateRecords());
+    }
+
+    @Test
     void theClockPublishesWindowsOfAnIdleMonitorAfterTheGrace() throws Exception {
         TimingStatistics s = statistics(500 * MS);
         assertEquals(0, s.drained(2499 * MS));
+        assertEquals(0, s.drained(2500 * MS), "judged now, published at the next drain");
         assertEquals(10, s.drained(2500 * MS), "the window from 0.5 s to 1.5 s, 1 s of grace later");
         assertEmpty(find("sensor", "execution_time", EPOCH + 1500 * MS));
         assertEquals(EPOCH + 500 * MS, out.get(0).startNs);
@@ -168,11 +190,13 @@ class TimingStatisticsTest {
     void aRecordOfAPublishedWindowIsCountedLateAndLeftOut() throws Exception {
         TimingStatistics s = statistics(0);
         s.drained(2 * S);
+        s.drained(2 * S);
         assertEquals(1, s.windowsPublished());
         s.cycle(0, CycleOutcome.OK, 990 * MS, 992 * MS, 995 * MS, null);
         s.commit(0, 1, 995 * MS);
         s.skipped(0, 2, 995 * MS);
         s.cycle(0, CycleOutcome.OK, 1000 * MS, 1002 * MS, 1005 * MS, null);
+        s.drained(3 * S);
         s.drained(3 * S);
         assertEquals(3, s.lateRecords());
         assertStatistics(find("sensor", "execution_time", EPOCH + 2 * S), 3, 3, 3, 0, 1);
