@@ -180,6 +180,9 @@ public final class RunRecorder {
                             Ros2Types.METRICS_MESSAGE.typeHash(), Ros2Channels.Qos.RELIABLE_VOLATILE, Map.of()),
                             sink, taskNames, taskInputs, names, plan);
             TimingStatistics timing = statistics == null ? null : statistics.statistics();
+            if (statistics != null && ordered != null) {
+                ordered.holdAfter(statistics::nextLogTimeNs); // a second's statistics come after its messages
+            }
             keys = new CommitRing[keysByIndex.size()];
             for (int i = 0; i < keys.length; i++) {
                 Key<?> key = keysByIndex.get(i);

@@ -52,6 +52,14 @@ final class StatisticsChannel implements RecorderRing {
                 plan.reorderWindowNs() / 2, this::write);
     }
 
+    /**
+     * @return the log time (world time) of the next messages to come: the end of the window not
+     *     yet published, before which the file must not move on
+     */
+    long nextLogTimeNs() {
+        return statistics.nextWindowStartNs() + TimingStatistics.WINDOW_NS;
+    }
+
     /** @return the statistics the commit and cycle rings feed */
     TimingStatistics statistics() {
         return statistics;

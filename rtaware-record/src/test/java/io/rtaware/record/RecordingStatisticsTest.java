@@ -153,6 +153,32 @@ class RecordingStatisticsTest {
         assertTrue(windows.stream().filter(w -> !w.metric.equals("deadline_misses")).allMatch(w -> w.unit.equals("ms")));
     }
 
+    @Test
+    void aSecondsStatisticsComeBeforeAnyLaterMessageInTheFile() throws Exception {
+        // No reorder window: every message is written as soon as it arrives, but for what the
+        // statistics of the second not yet published hold back (they are published a drain later).
+        Path file = dir.resolve("ordered.mcap");
+        RunRecorder recorder = new RunRecorder(file, List.of("a"), List.of(List.of()), List.of(),
+                new RecordingPlan().reorderWindowNs(0).worldStartNs(0));
+        recorder.cycle(0, RunRecorder.OK, 500 * MS, 500 * MS, 501 * MS, 0, null);
+        recorder.cycle(0, RunRecorder.OK, 1200 * MS, 1200 * MS, 1201 * MS, 0, null);
+        recorder.cycle(0, RunRecorder.OK, 2500 * MS, 2500 * MS, 2501 * MS, 0, null);
+        RecordingStats stats = recorder.finish();
+        assertNull(stats.error());
+        assertEquals(0, stats.outOfOrder(), "the cycle at 1.201 s waited for the statistics of the first second");
+        List<String> order = new ArrayList<>();
+        McapReader.open(file).read(new McapVisitor() {
+            @Override
+            public void message(McapChannel channel, long sequence, long logTimeNs, long publishTimeNs, byte[] data,
+                                int offset, int length) {
+                order.add(channel.topic() + "@" + logTimeNs / MS);
+            }
+        });
+        assertEquals(List.of("/rtaware/timing/a@501", "/statistics@1000", "/statistics@1000", "/statistics@1000",
+                "/statistics@1000", "/rtaware/timing/a@1201", "/statistics@2000", "/statistics@2000",
+                "/statistics@2000", "/statistics@2000", "/rtaware/timing/a@2501"), order);
+    }
+
     private static void assertWindow(List<Window> windows, String source, String metric, long stopNs, double average,
                                      double min, double max, double stddev, long count) {
         Window w = windows.stream().filter(x -> x.source.equals(source) && x.metric.equals(metric) && x.stopNs == stopNs)

@@ -388,7 +388,11 @@ public final class TimingStatistics {
         return messages;
     }
 
-    /** @return the world time the next window to publish starts at */
+    /**
+     * @return the world time the next window to publish starts at; its messages, still to come,
+     *     will be stamped and logged at this plus {@link #WINDOW_NS} (a sink in log-time order
+     *     holds back what is later)
+     */
     public long nextWindowStartNs() {
         return originNs + openWindow * WINDOW_NS;
     }
@@ -529,7 +533,6 @@ public final class TimingStatistics {
         }
         pendingCount = kept;
         int bank = (int) Math.floorMod(openWindow, (long) BANKS);
-        openWindow++;
         for (int t = 0; t < taskNames.length; t++) {
             for (int m = 0; m < TASK_METRICS.length; m++) {
                 publish(taskNames[t], TASK_METRICS[m], TASK_UNITS[m], taskMoments[bank][t * TASK_METRICS.length + m],
@@ -544,6 +547,7 @@ public final class TimingStatistics {
                 }
             }
         }
+        openWindow++; // only now: until its last message is out, the window is the next to publish
         windows++;
     }
 
