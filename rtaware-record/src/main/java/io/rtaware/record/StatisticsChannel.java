@@ -34,7 +34,7 @@ final class StatisticsChannel implements RecorderRing {
      * @param taskInputs each task's input key names
      * @param keyNames key names by key index, null for a key not recorded
      * @param plan the recording's start (the first window's), log-time offset (the stamps') and
-     *     reorder window (half of it is the statistics' grace)
+     *     reorder window (the statistics' grace: how long a quiet task holds a second back)
      */
     StatisticsChannel(int channel, MessageSink sink, List<String> taskNames, List<List<String>> taskInputs,
                       List<String> keyNames, RecordingPlan plan) {
@@ -49,7 +49,7 @@ final class StatisticsChannel implements RecorderRing {
         }
         cdr = new CdrWriter(1024 + 3 * longestName); // three bytes of UTF-8 at most per char of a name
         statistics = new TimingStatistics(taskNames, taskInputs, keyNames, plan.worldStartNs(), plan.logTimeOffsetNs(),
-                plan.reorderWindowNs() / 2, this::write);
+                plan.reorderWindowNs(), this::write);
     }
 
     /**

@@ -255,6 +255,39 @@ class DdsEndToEndTest {
     }
 
     @Test
+    void aCycloneDdsNodeReadsTheExportedTopicStatisticsOfEveryTaskAndKeyOverDds() throws Exception {
+        requireDdsBridge();
+        Path script = peerScript();
+        assumeTrue(System.getenv("ROS_DOMAIN_ID") == null, "bench exports on ROS_DOMAIN_ID, set here");
+        AtomicInteger status = new AtomicInteger(-1);
+        Thread bench = new Thread(() -> status.set(quietly("bench", "--tasks", "2", "--period", "10ms", "--duration",
+                "12s", "--export", "--dds", "--quiet")), "bench --export --dds");
+        bench.start();
+        JsonNode seen;
+        try {
+            Process node = peer(script, "statistics", "--domain", "0", "--seconds", "9");
+            String output = new String(node.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+            assertTrue(node.waitFor(60, TimeUnit.SECONDS), "the Cyclone DDS node finished");
+            seen = lastJsonLine(output);
+            assertEquals(0, node.exitValue(), "the node's checks: " + seen);
+        } finally {
+            bench.join(60_000);
+        }
+        assertEquals(0, status.get(), "bench --export --dds exit status");
+        assertTrue(seen.path("windows").asInt() >= 3, "a window a second: " + seen);
+        for (String task : List.of("t1", "t2")) {
+            assertEquals("[\"release_lateness\",\"execution_time\",\"input_age\",\"deadline_misses\"]",
+                    seen.path("sources").path(task).toString(), "issue 37: every task's metrics: " + seen);
+        }
+        for (String key : List.of("t1.out", "t2.out")) {
+            assertEquals("[\"message_period\",\"message_age\"]", seen.path("sources").path(key).toString(),
+                    "every key's: " + seen);
+        }
+        assertEquals("ms", seen.path("first").path("t1.out message_period").path("unit").asText(), seen.toString());
+        assertEquals("count", seen.path("first").path("t1 deadline_misses").path("unit").asText(), seen.toString());
+    }
+
+    @Test
     void badDdsSettingsAreOneLineAndExitStatusTwo() throws Exception {
         assertEquals(2, quietly("run", "--ros2", "--dds", "--domain", "300", "--quiet"));
         assertEquals(2, quietly("run", "--dds", "--quiet"), "--dds without --ros2 or --export");
