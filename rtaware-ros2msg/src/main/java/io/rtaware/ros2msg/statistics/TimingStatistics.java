@@ -259,6 +259,7 @@ public final class TimingStatistics {
         boolean[] isNew = room ? pendingNew[pendingCount] : null;
         boolean anyInput = false;
         boolean waits = false;
+        int receipts = 0;
         for (int i = 0; i < keys.length; i++) {
             long g = inputGenerations == null ? 0 : inputGenerations[i];
             boolean fresh = g != held[i];
@@ -267,6 +268,7 @@ public final class TimingStatistics {
                 g = 0; // a key not followed: left out
             }
             anyInput |= g != 0;
+            receipts += g != 0 && fresh ? 1 : 0;
             waits |= g != 0 && g > newestGeneration[keys[i]];
             if (room) {
                 generations[i] = g;
@@ -288,7 +290,7 @@ public final class TimingStatistics {
             return;
         }
         if (!room) {
-            unmatched++; // no room to wait, nor to keep the record: its ages are lost
+            unmatched += 1 + receipts; // no room to keep the record: its input age and receipts are lost
             return;
         }
         pendingTask[pendingCount] = task;

@@ -234,6 +234,19 @@ class TimingStatisticsTest {
     }
 
     @Test
+    void cyclesBeyondTheWaitingRoomAreCountedAsUnmatched() throws Exception {
+        TimingStatistics s = statistics(0);
+        for (int i = 0; i <= TimingStatistics.PENDING; i++) { // each read a scan whose commit never comes
+            s.cycle(1, CycleOutcome.OK, i * MS, i * MS, i * MS + 1, new long[] {i + 1, 0});
+        }
+        assertEquals(2, s.unmatchedAges(), "the one beyond the room: its input age and its receipt");
+        s.finish(S);
+        assertEquals(2 * (TimingStatistics.PENDING + 1), s.unmatchedAges(), "and those that waited in vain");
+        assertStatistics(find("planner", "execution_time", EPOCH + S), 1e-6, 1e-6, 1e-6, 0,
+                TimingStatistics.PENDING + 1);
+    }
+
+    @Test
     void skippedReleasesAreMissesAndAFarRecordPublishesTheWindowsBeforeIt() throws Exception {
         TimingStatistics s = statistics(0);
         s.cycle(0, CycleOutcome.MISS, 0, 0, 350 * MS, null);
