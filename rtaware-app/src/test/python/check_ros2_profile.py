@@ -17,13 +17,22 @@ Usage: check_ros2_profile.py FILE.mcap
   was committed).
 - ``/clock`` (where the file has it): ``rosgraph_msgs/msg/Clock`` ticks, each carrying its own
   log time, strictly increasing.
+- ``/statistics`` (where the file has it): every ``statistics_msgs/msg/MetricsMessage``
+  deserialized with rosbags' typestore, shaped as ROS 2's topic statistics publish them (data
+  types AVERAGE 1, MINIMUM 2, MAXIMUM 3, STDDEV 4, SAMPLE_COUNT 5 in that order, finite or NaN,
+  NaN exactly when the count is 0; windows of one second from the recording's start, logged at
+  their end); each whole second has the four metrics of every task on a ``/rtaware/timing/``
+  channel and the two of every recorded key, nothing else; and, when nothing was dropped or
+  late, every value equals what this script computes itself, by the definitions of docs/ros2.md,
+  from the cycles on the timing channels and the commits on the key channels.
 
 Prints one line per check and exits 1 on the first failure. Needs: mcap, rosbags
 (see .ci/python-peers.txt).
 """
+import math
 import struct
 import sys
-from collections import Counter
+from collections import Counter, defaultdict
 from pathlib import Path
 
 from mcap.reader import make_reader
@@ -106,6 +115,8 @@ def main(path):
                   % (a.message_start_time, a.message_end_time, b.message_start_time, b.message_end_time))
         print("ok: %d chunks, none overlapping" % len(chunks))
 
+        check_statistics(reader, summary, jazzy)
+
         bags = [m for m in reader.iter_metadata() if m.name == "rosbag2"]
         check(len(bags) == 1, "%d rosbag2 metadata records" % len(bags))
         info = YAML_SAFE.load(bags[0].metadata["serialized_metadata"])["rosbag2_bagfile_information"]
@@ -155,6 +166,141 @@ def main(path):
         check(frames <= reached, "frames not connected to map by /tf and /tf_static: %s" % sorted(frames - reached))
         print("ok: /tf and /tf_static connect every header frame to map (%s)"
               % ", ".join("%s->%s" % e for e in sorted(edges)))
+
+
+TASK_METRICS = ("release_lateness", "execution_time", "input_age", "deadline_misses")
+KEY_METRICS = ("message_period", "message_age")
+WINDOW_NS = 10**9
+
+
+class Moments:
+    """One metric's samples in one window, kept whole (this script's own arithmetic)."""
+
+    def __init__(self):
+        self.samples = []
+
+    def add(self, x):
+        self.samples.append(x)
+
+    def expected(self):
+        n = len(self.samples)
+        if n == 0:
+            return [math.nan] * 4 + [0.0]
+        mean = sum(self.samples) / n
+        return [mean, min(self.samples), max(self.samples),
+                math.sqrt(sum((x - mean) ** 2 for x in self.samples) / n), float(n)]
+
+
+def check_statistics(reader, summary, store):
+    channels = summary.channels.values()
+    statistics = [c for c in channels if c.topic == "/statistics"]
+    if not statistics:
+        return
+    schema = summary.schemas[statistics[0].schema_id].name
+    check(schema == "statistics_msgs/msg/MetricsMessage", "/statistics is %s" % schema)
+    run = {m.name: m.metadata for m in reader.iter_metadata()}
+    offset = int(run["rtaware.run"]["log_time_offset_ns"])
+    origin = offset + int(run["rtaware.run"]["world_start_ns"])
+    counted = run["rtaware.statistics"]
+    tasks = {c.id: c.topic[len("/rtaware/timing/"):] for c in channels if c.topic.startswith("/rtaware/timing/")}
+    inputs = {c.topic[len("/rtaware/timing/"):]: [k for k in c.metadata.get("inputs", "").split(",") if k]
+              for c in channels if c.topic.startswith("/rtaware/timing/")}
+    key_channels = {}
+    for c in sorted(channels, key=lambda c: c.id):
+        if c.metadata.get("sequence") == "generation" and "key" in c.metadata:
+            key_channels.setdefault(c.metadata["key"], c.id)
+    keys = {cid: key for key, cid in key_channels.items()}
+
+    published = defaultdict(dict)  # window start -> {(source, metric): (unit, values)}
+    cycles = defaultdict(list)  # task -> [(sequence, TaskCycle)]
+    commits = defaultdict(dict)  # key -> {generation: world ns}
+    for _schema, channel, message in reader.iter_messages(log_time_order=False):
+        if channel.topic == "/statistics":
+            m = store.deserialize_cdr(message.data, "statistics_msgs/msg/MetricsMessage")
+            start = m.window_start.sec * 10**9 + m.window_start.nanosec
+            stop = m.window_stop.sec * 10**9 + m.window_stop.nanosec
+            check(stop - start == WINDOW_NS, "a window of %d ns" % (stop - start))
+            check((start - origin) % WINDOW_NS == 0, "a window not on a second of the recording: %d" % start)
+            check(message.log_time == stop, "logged at %d, not at its window's end %d" % (message.log_time, stop))
+            types = [p.data_type for p in m.statistics]
+            check(types == [1, 2, 3, 4, 5], "%s %s: data types %s" % (m.measurement_source_name, m.metrics_source, types))
+            values = [p.data for p in m.statistics]
+            check(not any(math.isinf(v) for v in values), "an infinite statistic: %s" % values)
+            count = values[4]
+            check(count >= 0 and count == int(count), "sample count %s" % count)
+            check(all(math.isnan(v) == (count == 0) for v in values[:4]), "NaN exactly without samples: %s" % values)
+            unit = "count" if m.metrics_source == "deadline_misses" else "ms"
+            check(m.unit == unit, "%s in %r, not %r" % (m.metrics_source, m.unit, unit))
+            what = (m.measurement_source_name, m.metrics_source)
+            check(what not in published[start], "%s twice in the window at %d" % (what, start))
+            published[start][what] = values
+        elif channel.id in tasks:
+            cycles[tasks[channel.id]].append((message.sequence, store.deserialize_cdr(message.data, _schema.name)))
+        elif channel.id in keys:
+            commits[keys[channel.id]][message.sequence] = message.log_time - offset
+
+    starts = sorted(published)
+    check(starts == [origin + k * WINDOW_NS for k in range(len(starts))], "windows not one every second from the start")
+    check(len(starts) == int(counted["windows"]), "%d windows, the metadata says %s" % (len(starts), counted["windows"]))
+    expected_sources = {(t, m) for t in inputs for m in TASK_METRICS} | {(k, m) for k in key_channels for m in KEY_METRICS}
+    for start in starts:
+        check(set(published[start]) == expected_sources, "the window at %d has %s, not every task's and key's metrics"
+              % (start, sorted(set(published[start]) ^ expected_sources)))
+    print("ok: /statistics decoded by rosbags: %d whole seconds, each with %s of every task (%s) and %s of every key "
+          "(%s)" % (len(starts), ", ".join(TASK_METRICS), ", ".join(sorted(inputs)), ", ".join(KEY_METRICS),
+                    ", ".join(sorted(key_channels))))
+
+    gaps = [t for t, cs in cycles.items() if [s for s, _ in cs] != list(range(len(cs)))]
+    gaps += [k for k, cs in commits.items() if sorted(cs) != list(range(1, len(cs) + 1))]
+    if gaps or counted["late_records"] != "0" or counted["unmatched_ages"] != "0":
+        print("ok: /statistics not recomputed: records dropped (%s) or late (%s) or ages unmatched (%s)"
+              % (", ".join(gaps) or "none", counted["late_records"], counted["unmatched_ages"]))
+        return
+    windows = defaultdict(lambda: defaultdict(Moments))
+
+    def window(world_ns):
+        return origin + (world_ns + offset - origin) // WINDOW_NS * WINDOW_NS
+
+    for key, by_generation in commits.items():
+        for g, t in by_generation.items():
+            if g - 1 in by_generation:
+                windows[window(t)][(key, "message_period")].add((t - by_generation[g - 1]) / 1e6)
+    for task, records in cycles.items():
+        held = [0] * len(inputs[task])
+        for _seq, c in sorted(records, key=lambda r: r[0]):
+            w = windows[window(c.end_ns)]
+            if c.outcome == "skipped":
+                for _ in range(c.skipped_releases):
+                    w[(task, "deadline_misses")].add(1.0)
+                continue
+            w[(task, "release_lateness")].add(max(0, c.start_ns - c.release_ns) / 1e6)
+            w[(task, "execution_time")].add((c.end_ns - c.start_ns) / 1e6)
+            if c.outcome != "error":
+                w[(task, "deadline_misses")].add(1.0 if c.outcome == "miss" else 0.0)
+            ages = []
+            for i, g in enumerate(int(x) for x in c.input_generations):
+                key = inputs[task][i]
+                fresh = g != held[i]
+                held[i] = g
+                if g == 0 or key not in commits:
+                    continue
+                age = (c.start_ns - commits[key][g]) / 1e6
+                ages.append(age)
+                if fresh:
+                    w[(key, "message_age")].add(age)
+            if ages:
+                w[(task, "input_age")].add(max(ages))
+    compared = 0
+    for start in starts:
+        for what, values in published[start].items():
+            want = windows[start][what].expected()
+            for name, got, expected in zip(("average", "min", "max", "stddev", "count"), values, want):
+                same = (math.isnan(got) and math.isnan(expected)) or math.isclose(got, expected, rel_tol=1e-9,
+                                                                                  abs_tol=1e-9)
+                check(same, "%s %s in the window at %d: %s %r, computed from the recording %r"
+                      % (what[0], what[1], start, name, got, expected))
+            compared += 1
+    print("ok: /statistics equals what the timing and key channels give: %d messages recomputed" % compared)
 
 
 if __name__ == "__main__":

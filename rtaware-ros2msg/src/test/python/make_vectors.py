@@ -101,6 +101,15 @@ def diagnostics(s):
     return T['diagnostic_msgs/msg/DiagnosticArray'](header=header(s), status=statuses)
 
 
+def metrics(s):
+    # a data point's value None stands for NaN (JSON has no NaN)
+    points = [T['statistics_msgs/msg/StatisticDataPoint'](data_type=t, data=float('nan') if v is None else float(v))
+              for t, v in s['statistics']]
+    return T['statistics_msgs/msg/MetricsMessage'](
+        measurement_source_name=s['measurement_source_name'], metrics_source=s['metrics_source'], unit=s['unit'],
+        window_start=stamp(s['window_start_ns']), window_stop=stamp(s['window_stop_ns']), statistics=points)
+
+
 # stamps: one with a non-zero nanosecond part, one at zero
 SAMPLES = {
     'sensor_msgs/msg/LaserScan': (laser, [
@@ -135,6 +144,15 @@ SAMPLES = {
                  values=[['period_ms', '100'], ['misses', '0']]),
             dict(level=1, name='rtaware: mapper', message='late', hardware_id='host', values=[]),
         ]),
+    ]),
+    # as ROS 2's topic statistics order them: AVERAGE 1, MINIMUM 2, MAXIMUM 3, STDDEV 4, SAMPLE_COUNT 5
+    'statistics_msgs/msg/MetricsMessage': (metrics, [
+        dict(measurement_source_name='obstacle', metrics_source='execution_time', unit='ms',
+             window_start_ns=1_764_000_000_250_000_001, window_stop_ns=1_764_000_001_250_000_001,
+             statistics=[[1, 2.5], [2, 0.125], [3, 7.75], [4, 1.0625], [5, 20]]),
+        dict(measurement_source_name='laser', metrics_source='message_age', unit='ms',
+             window_start_ns=0, window_stop_ns=1_000_000_000,
+             statistics=[[1, None], [2, None], [3, None], [4, None], [5, 0]]),
     ]),
 }
 

@@ -14,6 +14,13 @@ discovery on 127.0.0.1 (ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST). rtaware's test
       Reads rt/diagnostics (diagnostic_msgs/msg/DiagnosticArray, what rtaware's exporter
       publishes) for T seconds; prints one JSON line: messages and the status names seen.
 
+  statistics --domain D --seconds T
+      Reads rt/statistics (statistics_msgs/msg/MetricsMessage, ROS 2's topic statistics, what
+      rtaware's exporter publishes) for T seconds, checking each message as ROS 2 publishes them
+      (data types 1 to 5 in order, finite or NaN, NaN exactly when the count is 0, a window of
+      one second); prints one JSON line: messages, the metrics seen per source, the windows seen,
+      and the first message of each source and metric as `ros2 topic echo` would show it.
+
   relay --from A --to B [--restamp] [--nan-odom-after S]
       A Cyclone DDS robot made of the simulator on domain A: scans and odometry from A are
       written again on B (with --restamp, stamped with this machine's clock as a driver stamps
@@ -152,6 +159,22 @@ class DiagnosticArray(IdlStruct, typename="diagnostic_msgs::msg::dds_::Diagnosti
 
 # The ROS graph as rmw announces it on DDS (rmw_dds_common, Iron and later: 16-byte gids): every
 # ROS 2 node's participant writes which readers and writers belong to which node on
+@dataclass
+class StatisticDataPoint(IdlStruct, typename="statistics_msgs::msg::dds_::StatisticDataPoint_"):
+    data_type: uint8
+    data: float64
+
+
+@dataclass
+class MetricsMessage(IdlStruct, typename="statistics_msgs::msg::dds_::MetricsMessage_"):
+    measurement_source_name: str
+    metrics_source: str
+    unit: str
+    window_start: Time
+    window_stop: Time
+    statistics: sequence[StatisticDataPoint]
+
+
 # ros_discovery_info; tools and bridges read it to tell ROS 2 nodes from other DDS entities.
 @dataclass
 class Gid(IdlStruct, typename="rmw_dds_common::msg::dds_::Gid_"):
@@ -288,6 +311,49 @@ def diagnostics(args):
     return 1 if seen["failures"] else 0
 
 
+def statistics(args):
+    node = Node(args.domain, "dds_peer_statistics")
+    # reliable as the publisher; a deep history, since a second's messages come all at once
+    metrics = node.reader("statistics", MetricsMessage, Qos(Policy.Reliability.Reliable(duration(milliseconds=100)),
+                                                           Policy.Durability.Volatile, Policy.History.KeepLast(1000),
+                                                           XCDR1))
+    seen = {"messages": 0, "sources": {}, "windows": 0, "first": {}, "failures": []}
+    windows = set()
+    arrivals = {}
+    end = time.monotonic() + args.seconds
+    while time.monotonic() < end:
+        for m in metrics.take(N=64):
+            seen["messages"] += 1
+            arrivals.setdefault((m.measurement_source_name, m.metrics_source), []).append(time.monotonic())
+            start = m.window_start.sec * 1_000_000_000 + m.window_start.nanosec
+            stop = m.window_stop.sec * 1_000_000_000 + m.window_stop.nanosec
+            windows.add(start)
+            what = "%s %s" % (m.measurement_source_name, m.metrics_source)
+            types = [p.data_type for p in m.statistics]
+            values = [p.data for p in m.statistics]
+            if types != [1, 2, 3, 4, 5]:
+                seen["failures"].append("%s: data types %s" % (what, types))
+            elif any(math.isinf(v) for v in values) or any(math.isnan(v) != (values[4] == 0) for v in values[:4]):
+                seen["failures"].append("%s: values %s" % (what, values))
+            if stop - start != 1_000_000_000:
+                seen["failures"].append("%s: a window of %d ns" % (what, stop - start))
+            sources = seen["sources"].setdefault(m.measurement_source_name, [])
+            if m.metrics_source not in sources:
+                sources.append(m.metrics_source)
+                seen["first"][what] = {"unit": m.unit, "window_start": start, "window_stop": stop,
+                                       "statistics": [{"data_type": t, "data": None if math.isnan(v) else v}
+                                                      for t, v in zip(types, values)]}
+        time.sleep(0.01)
+    seen["windows"] = len(windows)
+    # as `ros2 topic hz` reports a rate: messages after the first over the time since it
+    rates = [(len(t) - 1) / (t[-1] - t[0]) for t in arrivals.values() if len(t) > 2]
+    seen["rate_hz_per_source_and_metric"] = [min(rates), max(rates)] if rates else None
+    if seen["messages"] == 0:
+        seen["failures"].append("no MetricsMessage on rt/statistics")
+    print(json.dumps(seen), flush=True)
+    return 1 if seen["failures"] else 0
+
+
 def now_stamp():
     ns = time.time_ns()
     return Time(sec=ns // 1_000_000_000, nanosec=ns % 1_000_000_000)
@@ -346,13 +412,16 @@ def main():
     g = sub.add_parser("diagnostics")
     g.add_argument("--domain", type=int, required=True)
     g.add_argument("--seconds", type=float, default=10.0)
+    s = sub.add_parser("statistics")
+    s.add_argument("--domain", type=int, required=True)
+    s.add_argument("--seconds", type=float, default=10.0)
     r = sub.add_parser("relay")
     r.add_argument("--from", type=int, required=True)
     r.add_argument("--to", type=int, required=True)
     r.add_argument("--restamp", action="store_true")
     r.add_argument("--nan-odom-after", type=float)
     args = parser.parse_args()
-    sys.exit({"drive": drive, "diagnostics": diagnostics, "relay": relay}[args.mode](args))
+    sys.exit({"drive": drive, "diagnostics": diagnostics, "statistics": statistics, "relay": relay}[args.mode](args))
 
 
 if __name__ == "__main__":

@@ -12,6 +12,14 @@
       robot with a zenoh-ros2-sdk /cmd_vel publisher and watches odometry move. Prints one JSON
       object with what it saw; exits 0 when every check passed, 1 otherwise (reasons in
       "failures").
+
+  ros2_peer.py statistics --router tcp/127.0.0.1:PORT [--seconds 6]
+      Subscribes /statistics (statistics_msgs/msg/MetricsMessage, ROS 2's topic statistics,
+      what rtaware's exporter publishes) with zenoh-ros2-sdk for that long, checking each
+      message as ROS 2 publishes them (data types 1 to 5 in order, finite or NaN, NaN exactly
+      when the count is 0, a window of one second); prints one JSON object: messages, the metrics
+      seen per source, the windows, and the first message of each source and metric as
+      `ros2 topic echo` shows it; exits 1 if a check failed or nothing arrived.
 """
 
 import argparse
@@ -212,6 +220,61 @@ def check(endpoint, namespace, timeout_s):
     return 1 if failures else 0
 
 
+def statistics(endpoint, seconds):
+    from rosbags.typesys import Stores, get_typestore
+    from zenoh_ros2_sdk import ROS2Subscriber, ZenohSession
+
+    host, port = endpoint[len("tcp/"):].rsplit(":", 1)
+    port = int(port)
+    jazzy = get_typestore(Stores.ROS2_JAZZY)
+    session = ZenohSession.get_instance(host, port)
+    session.store.register(dict(jazzy.fielddefs))
+    name = "statistics_msgs/msg/MetricsMessage"
+    lock = threading.Lock()
+    seen = {"messages": 0, "sources": {}, "windows": 0, "first": {}, "failures": []}
+    windows = set()
+    arrivals = {}
+
+    def on_metrics(m):
+        now = time.monotonic()
+        start = m.window_start.sec * 1_000_000_000 + m.window_start.nanosec
+        stop = m.window_stop.sec * 1_000_000_000 + m.window_stop.nanosec
+        what = "%s %s" % (m.measurement_source_name, m.metrics_source)
+        types = [int(p.data_type) for p in m.statistics]
+        values = [float(p.data) for p in m.statistics]
+        with lock:
+            seen["messages"] += 1
+            windows.add(start)
+            arrivals.setdefault(what, []).append(now)
+            if types != [1, 2, 3, 4, 5]:
+                seen["failures"].append("%s: data types %s" % (what, types))
+            elif any(math.isinf(v) for v in values) or any(math.isnan(v) != (values[4] == 0) for v in values[:4]):
+                seen["failures"].append("%s: values %s" % (what, values))
+            if stop - start != 1_000_000_000:
+                seen["failures"].append("%s: a window of %d ns" % (what, stop - start))
+            sources = seen["sources"].setdefault(m.measurement_source_name, [])
+            if m.metrics_source not in sources:
+                sources.append(m.metrics_source)
+                seen["first"][what] = {"unit": m.unit, "window_start": start, "window_stop": stop,
+                                       "statistics": [{"data_type": t, "data": None if math.isnan(v) else v}
+                                                      for t, v in zip(types, values)]}
+
+    sub = ROS2Subscriber(topic="/statistics", callback=on_metrics, node_name="peer_statistics", msg_type=name,
+                         msg_definition=jazzy.generate_msgdef(name, ros_version=2)[0],
+                         type_hash=jazzy.hash_rihs01(name), router_ip=host, router_port=port)
+    time.sleep(seconds)
+    sub.close()
+    with lock:
+        seen["windows"] = len(windows)
+        # as `ros2 topic hz` reports a rate: messages after the first over the time since it
+        rates = [(len(t) - 1) / (t[-1] - t[0]) for t in arrivals.values() if len(t) > 2]
+        seen["rate_hz_per_source_and_metric"] = [min(rates), max(rates)] if rates else None
+        if seen["messages"] == 0:
+            seen["failures"].append("no MetricsMessage on /statistics")
+        print(json.dumps(seen), flush=True)
+        return 1 if seen["failures"] else 0
+
+
 def main():
     parser = argparse.ArgumentParser()
     sub = parser.add_subparsers(dest="command", required=True)
@@ -221,9 +284,14 @@ def main():
     c.add_argument("--router", required=True)
     c.add_argument("--namespace", default="/")
     c.add_argument("--timeout", type=float, default=60.0)
+    st = sub.add_parser("statistics")
+    st.add_argument("--router", required=True)
+    st.add_argument("--seconds", type=float, default=6.0)
     args = parser.parse_args()
     if args.command == "router":
         return router(args.listen)
+    if args.command == "statistics":
+        return statistics(args.router, args.seconds)
     return check(args.router, args.namespace, args.timeout)
 
 

@@ -5,6 +5,7 @@ import io.rtaware.core.data.StateValue;
 import io.rtaware.record.encode.StateFields;
 import io.rtaware.record.ring.SingleProducerRing;
 import io.rtaware.record.ring.SlotReader;
+import io.rtaware.ros2msg.statistics.TimingStatistics;
 import java.io.IOException;
 
 /**
@@ -27,10 +28,16 @@ final class CommitRing implements RecorderRing {
 
     private final SingleProducerRing<Commit> ring;
     private final KeyChannels channels;
+    private final int keyIndex;
+    /** The run's statistics, or null. */
+    private final TimingStatistics statistics;
     private final SlotReader<Commit, MessageSink, WriterScratch> writer = this::write;
 
-    CommitRing(Key<?> key, KeyChannels channels, int mostSlots, long mostBytes) {
+    CommitRing(Key<?> key, int keyIndex, KeyChannels channels, TimingStatistics statistics, int mostSlots,
+               long mostBytes) {
         this.channels = channels;
+        this.keyIndex = keyIndex;
+        this.statistics = statistics;
         StateValue<?> first = key.newBuffer();
         long valueBytes = StateFields.of(key.type()).estimateBytes(first);
         int n = (int) Math.max(Math.min(8, mostSlots), Math.min(mostSlots, mostBytes / Math.max(1, valueBytes)));
@@ -59,6 +66,9 @@ final class CommitRing implements RecorderRing {
 
     private void write(Commit c, long position, MessageSink sink, WriterScratch scratch) throws IOException {
         channels.write(c.value, c.generation, c.timeNs, sink, scratch);
+        if (statistics != null) {
+            statistics.commit(keyIndex, c.generation, c.timeNs);
+        }
     }
 
     @Override

@@ -2,6 +2,7 @@ package io.rtaware.record;
 
 import io.rtaware.record.mcap.McapWriter;
 import java.io.IOException;
+import java.util.function.LongSupplier;
 
 /**
  * Puts the writer thread's messages into the file in log-time order, within and across chunks,
@@ -14,8 +15,10 @@ import java.io.IOException;
  *
  * <p>Log times in the file are the world time plus {@code logTimeOffsetNs} (the Unix-epoch time
  * of world time 0), publish times likewise. With {@link ClockTicks}, the {@code /clock} ticks
- * due up to each message are written just before it. Writer thread only; once its slots have
- * grown to the run's message sizes it allocates nothing.
+ * due up to each message are written just before it. With a {@link #holdAfter} limit (the end of
+ * the {@code /statistics} window still to be published), nothing later than the limit is written
+ * until the limit moves on, unless the window's message or byte budget is full. Writer thread
+ * only; once its slots have grown to the run's message sizes it allocates nothing.
  */
 final class LogTimeOrderedSink implements MessageSink {
 
@@ -43,6 +46,8 @@ final class LogTimeOrderedSink implements MessageSink {
     private long outOfOrder;
     /** {@code /clock}, or null when the world runs on wall time. */
     private ClockTicks clock;
+    /** The latest log time that may be written now (world time), or null for no limit. */
+    private LongSupplier limit;
 
     /**
      * @param writer the file
@@ -93,9 +98,21 @@ final class LogTimeOrderedSink implements MessageSink {
         heldBytes += n;
         push(slot);
         newestNs = Math.max(newestNs, logTimeNs);
-        while (size > 0 && time[heap[0]] <= newestNs - windowNs) {
+        long until = limit == null ? newestNs - windowNs : Math.min(newestNs - windowNs, limit.getAsLong());
+        while (size > 0 && time[heap[0]] <= until) {
             writeOldest();
         }
+    }
+
+    /**
+     * Holds back every message whose log time is later than what {@code limitNs} says (world
+     * time), for messages still to come with that log time (a {@code /statistics} window not yet
+     * published). Call before the first {@link #write}.
+     *
+     * @param limitNs the latest log time that may be written now; read on every write
+     */
+    void holdAfter(LongSupplier limitNs) {
+        limit = limitNs;
     }
 
     /**

@@ -27,6 +27,12 @@ public final class RecordingPlan {
     /** The monitor events topic. */
     public static final String EVENTS_TOPIC = "/rtaware/events";
     /**
+     * The topic statistics topic ({@code statistics_msgs/msg/MetricsMessage}, one message per
+     * second of world time per task and key and metric, as ROS 2's topic statistics publish them;
+     * every recording of a task or a key has it).
+     */
+    public static final String STATISTICS_TOPIC = "/statistics";
+    /**
      * {@code rtaware.run} metadata: what was added to world time to make log times (Unix-epoch
      * ns of world time 0). Absent in recordings made before log times were epoch times (then 0).
      */

@@ -9,6 +9,7 @@ import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.ros2msg.Ros2Types;
 import io.rtaware.ros2msg.TransformMessages;
 import io.rtaware.ros2msg.cdr.CdrWriter;
+import io.rtaware.ros2msg.statistics.TimingStatistics;
 import io.rtaware.ros2msg.value.PlanarTransform;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -16,6 +17,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.concurrent.atomic.AtomicLong;
 
 /**
@@ -38,8 +40,12 @@ import java.util.concurrent.atomic.AtomicLong;
  * ({@code rtaware_msgs/msg/TaskCycle}), one message per cycle; {@code /rtaware/events}
  * ({@code rtaware_msgs/msg/MonitorEvent}); {@code /ground_truth} if the plan declares it;
  * {@code /tf_static} and {@code /tf} as the plan names them; {@code /clock} when the world runs
- * on simulated time ({@link RecordingPlan#clock}). Log and publish time of every message are the
- * world time of its commit, cycle end or event plus the plan's log-time offset (Unix-epoch ns),
+ * on simulated time ({@link RecordingPlan#clock}); {@code /statistics}
+ * ({@code statistics_msgs/msg/MetricsMessage}, {@link TimingStatistics}): ROS 2's topic statistics
+ * of every task and key, one message per second of world time per metric, computed on the writer
+ * thread from the commits and cycles it writes, logged at the end of their window. Log and
+ * publish time of every message are the world time of its commit, cycle end or event (a
+ * statistics window's end) plus the plan's log-time offset (Unix-epoch ns),
  * and messages are written in log-time order through a reorder window
  * ({@link LogTimeOrderedSink}). A plan's {@link RecordingTap} (a live server) is told of every
  * channel and handed every message as the writer thread encodes it, before the reorder window
@@ -84,6 +90,13 @@ public final class RunRecorder {
     public static final String SEQUENCE_GENERATION = "generation";
     /** {@link #SEQUENCE} of timing channels. */
     public static final String SEQUENCE_CYCLE = "cycle";
+    /**
+     * The metadata record, written when the file is finished, of what the file's
+     * {@code /statistics} could not count: {@code windows} published, {@code late_records}
+     * (records that reached the writer after their window was written) and {@code unmatched_ages}
+     * (ages whose commit was dropped or missing), with {@code window_ns}.
+     */
+    public static final String STATISTICS_METADATA = "rtaware.statistics";
     /** The MCAP profile of recordings: every channel CDR with a {@code ros2msg} schema. */
     public static final String PROFILE = "ros2";
     /** Most messages the reorder window holds. */
@@ -103,6 +116,8 @@ public final class RunRecorder {
     private final Ros2Channels layout;
     /** The file's sink, or null without a file. */
     private final LogTimeOrderedSink ordered;
+    /** {@code /statistics}, or null for a recording of no task and no key. */
+    private final StatisticsChannel statistics;
     /** Where the writer thread writes: the file's sink, the tap's, or both. */
     private final MessageSink sink;
     private boolean closed;
@@ -153,15 +168,27 @@ public final class RunRecorder {
         this.keyNames = names;
         List<RecorderRing> rings = new ArrayList<>();
         layout = new Ros2Channels(writer, plan.tap());
+        ordered = writer == null ? null : new LogTimeOrderedSink(writer, plan.logTimeOffsetNs(),
+                plan.reorderWindowNs(), REORDER_SLOTS, REORDER_BYTES);
+        sink = plan.tap() == null ? ordered : new TappedSink(plan.tap(), ordered, plan.logTimeOffsetNs());
         try {
             if (writer != null) {
                 writer.addMetadata("rtaware.run", plan.metadata());
+            }
+            statistics = taskNames.isEmpty() && names.stream().allMatch(Objects::isNull) ? null
+                    : new StatisticsChannel(layout.add(RecordingPlan.STATISTICS_TOPIC,
+                            Ros2Types.METRICS_MESSAGE.name(), Ros2Types.METRICS_MESSAGE.schemaText(),
+                            Ros2Types.METRICS_MESSAGE.typeHash(), Ros2Channels.Qos.RELIABLE_VOLATILE, Map.of()),
+                            sink, taskNames, taskInputs, names, plan);
+            TimingStatistics timing = statistics == null ? null : statistics.statistics();
+            if (statistics != null && ordered != null) {
+                ordered.holdAfter(statistics::nextLogTimeNs); // a second's statistics come after its messages
             }
             keys = new CommitRing[keysByIndex.size()];
             for (int i = 0; i < keys.length; i++) {
                 Key<?> key = keysByIndex.get(i);
                 if (key != null) {
-                    keys[i] = new CommitRing(key, new KeyChannels(key, plan, layout), plan.valueSlots(),
+                    keys[i] = new CommitRing(key, i, new KeyChannels(key, plan, layout), timing, plan.valueSlots(),
                             plan.valueBytesPerKey());
                     rings.add(keys[i]);
                 }
@@ -172,7 +199,7 @@ public final class RunRecorder {
                 int channel = layout.add(RecordingPlan.TIMING_PREFIX + taskNames.get(t), TimingTypes.TASK_CYCLE.name(),
                         TimingTypes.TASK_CYCLE.schemaText(), TimingTypes.TASK_CYCLE.typeHash(),
                         Ros2Channels.Qos.RELIABLE_VOLATILE, Map.of("task", taskNames.get(t), "inputs", String.join(",", inputs), SEQUENCE, SEQUENCE_CYCLE));
-                tasks[t] = new CycleRing(channel, inputs.size(), plan.cycleSlots());
+                tasks[t] = new CycleRing(channel, t, timing, inputs.size(), plan.cycleSlots());
                 rings.add(tasks[t]);
             }
             events = new EventRing(layout.add(RecordingPlan.EVENTS_TOPIC, TimingTypes.MONITOR_EVENT.name(),
@@ -193,13 +220,13 @@ public final class RunRecorder {
             } else {
                 truth = null;
             }
+            if (statistics != null) {
+                rings.add(statistics); // last in each pass: it publishes the windows the pass completed
+            }
         } catch (IOException | RuntimeException e) {
             closeIfAny(writer);
             throw e;
         }
-        ordered = writer == null ? null : new LogTimeOrderedSink(writer, plan.logTimeOffsetNs(),
-                plan.reorderWindowNs(), REORDER_SLOTS, REORDER_BYTES);
-        sink = plan.tap() == null ? ordered : new TappedSink(plan.tap(), ordered, plan.logTimeOffsetNs());
         try {
             if (plan.clockPeriodNs() > 0 && ordered != null) { // /clock is for files; a tap alone follows live time
                 int clock = layout.add(RobotTopics.CLOCK, Ros2Types.CLOCK.name(), Ros2Types.CLOCK.schemaText(),
@@ -341,9 +368,15 @@ public final class RunRecorder {
         closed = true;
         String error = thread.stopAndJoin();
         try {
+            if (error == null && statistics != null) {
+                statistics.finish();
+            }
             if (error == null && writer != null) {
                 ordered.flush();
                 layout.writeBagMetadata(file.getFileName() == null ? file.toString() : file.getFileName().toString());
+                if (statistics != null) {
+                    writer.addMetadata(STATISTICS_METADATA, statistics.metadata());
+                }
                 for (Map.Entry<String, Map<String, String>> m : closingMetadata.entrySet()) {
                     writer.addMetadata(m.getKey(), m.getValue());
                 }

@@ -109,6 +109,20 @@ public final class Ros2Types {
             "rosgraph_msgs/msg/Clock", "builtin_interfaces/Time clock\n", TIME),
             "RIHS01_692f7a66e93a3c83e71765d033b60349ba68023a8c689a79e48078bcb5c58564");
 
+    /** {@code statistics_msgs/msg/StatisticDataPoint}: one statistic of a window (its type, its value). */
+    public static final MessageDefinition STATISTIC_DATA_POINT = new MessageDefinition(
+            "statistics_msgs/msg/StatisticDataPoint", "uint8 data_type\nfloat64 data\n");
+    /**
+     * {@code statistics_msgs/msg/MetricsMessage}, what ROS 2's topic statistics publish on
+     * {@code /statistics} (its hash as {@link TypeDescriptionHash} and rosbags compute it for Jazzy).
+     */
+    public static final Ros2MessageType METRICS_MESSAGE = new Ros2MessageType(new MessageDefinition(
+            "statistics_msgs/msg/MetricsMessage",
+            "string measurement_source_name\nstring metrics_source\nstring unit\n"
+                    + "builtin_interfaces/Time window_start\nbuiltin_interfaces/Time window_stop\n"
+                    + "statistics_msgs/StatisticDataPoint[] statistics\n", TIME, STATISTIC_DATA_POINT),
+            "RIHS01_36a67fb499fc2a11b8b9ff9ac735ed76e8d5a1f7775d6d5b97b625188ec68e20");
+
     private Ros2Types() {
     }
 }

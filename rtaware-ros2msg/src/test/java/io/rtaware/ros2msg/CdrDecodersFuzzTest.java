@@ -9,6 +9,7 @@ import io.rtaware.robot.msg.VelocityCommand;
 import io.rtaware.ros2msg.cdr.CdrException;
 import io.rtaware.ros2msg.cdr.CdrReader;
 import io.rtaware.ros2msg.value.DiagnosticArray;
+import io.rtaware.ros2msg.value.MetricsMessage;
 import io.rtaware.ros2msg.value.PlanarPose;
 import java.util.Arrays;
 
@@ -31,6 +32,7 @@ class CdrDecodersFuzzTest {
     private final OccupancyGrid grid = new OccupancyGrid(64 * 1024);
     private final PlanarPose pose = new PlanarPose();
     private final DiagnosticArray diagnostics = new DiagnosticArray(16, 16);
+    private final MetricsMessage metrics = new MetricsMessage(8);
 
     @FuzzTest(maxDuration = "20s")
     void decodingThrowsNothingButCdrException(byte[] input) {
@@ -40,14 +42,15 @@ class CdrDecodersFuzzTest {
         byte[] message = Arrays.copyOfRange(input, 1, input.length);
         try {
             reader.wrap(message, 0, message.length);
-            switch (Math.floorMod(input[0], 7)) {
+            switch (Math.floorMod(input[0], 8)) {
                 case 0 -> new LaserScanCodec().decode(reader, header, scan);
                 case 1 -> new OdometryCodec("base_link").decode(reader, header, odometry);
                 case 2 -> new TwistCodec().decode(reader, header, twist);
                 case 3 -> new PathCodec().decode(reader, header, path);
                 case 4 -> new OccupancyGridCodec().decode(reader, header, grid);
                 case 5 -> new PoseStampedCodec().decode(reader, header, pose);
-                default -> new DiagnosticArrayCodec().decode(reader, header, diagnostics);
+                case 6 -> new DiagnosticArrayCodec().decode(reader, header, diagnostics);
+                default -> new MetricsMessageCodec().decode(reader, header, metrics);
             }
         } catch (CdrException refused) {
             // the documented way to refuse a malformed message

@@ -11,6 +11,7 @@ import io.rtaware.ros2msg.cdr.CdrException;
 import io.rtaware.ros2msg.cdr.CdrReader;
 import io.rtaware.ros2msg.cdr.CdrWriter;
 import io.rtaware.ros2msg.value.DiagnosticArray;
+import io.rtaware.ros2msg.value.MetricsMessage;
 import java.util.Arrays;
 import org.junit.jupiter.api.Test;
 
@@ -103,5 +104,35 @@ class MalformedInputTest {
         LaserScan scan = new LaserScan(2000);
         scan.setCount(2000);
         assertThrows(CdrException.class, () -> new LaserScanCodec().encode(header, scan, new CdrWriter(1024)));
+    }
+
+    private byte[] metricsBytes(int points) {
+        MetricsMessage m = new MetricsMessage(points);
+        m.measurementSourceName.append("planner");
+        for (int i = 0; i < points; i++) {
+            m.add(MetricsMessage.AVERAGE, i);
+        }
+        new MetricsMessageCodec().encode(header, m, writer);
+        return Arrays.copyOf(writer.buffer(), writer.size());
+    }
+
+    @Test
+    void moreDataPointsThanTheTargetHoldsAreRejected() {
+        byte[] bytes = metricsBytes(6);
+        CdrException e = assertThrows(CdrException.class, () -> new MetricsMessageCodec()
+                .decode(reader.wrap(bytes, 0, bytes.length), header, new MetricsMessage(5)));
+        assertEquals("MetricsMessage of 6 data points exceeds the capacity of 5", e.getMessage());
+    }
+
+    @Test
+    void anInfiniteStatisticIsNotEncoded() {
+        MetricsMessage m = new MetricsMessage(5);
+        m.measurementSourceName.append("planner");
+        m.metricsSource.append("execution_time");
+        m.add(MetricsMessage.AVERAGE, Double.NaN);
+        m.add(MetricsMessage.MAXIMUM, Double.POSITIVE_INFINITY);
+        CdrException e = assertThrows(CdrException.class, () -> new MetricsMessageCodec().encode(header, m, writer));
+        assertEquals("MetricsMessage data point 1 of planner execution_time is Infinity: statistics are finite or NaN",
+                e.getMessage());
     }
 }

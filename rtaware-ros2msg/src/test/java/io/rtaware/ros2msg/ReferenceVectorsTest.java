@@ -13,6 +13,7 @@ import io.rtaware.ros2msg.cdr.CdrReader;
 import io.rtaware.ros2msg.cdr.CdrWriter;
 import io.rtaware.ros2msg.value.DiagnosticArray;
 import io.rtaware.ros2msg.value.DiagnosticStatus;
+import io.rtaware.ros2msg.value.MetricsMessage;
 import io.rtaware.ros2msg.value.PlanarPose;
 import java.io.IOException;
 import java.io.InputStream;
@@ -35,7 +36,8 @@ class ReferenceVectorsTest {
             "nav_msgs/msg/Path", Ros2Types.PATH,
             "nav_msgs/msg/OccupancyGrid", Ros2Types.OCCUPANCY_GRID,
             "geometry_msgs/msg/PoseStamped", Ros2Types.POSE_STAMPED,
-            "diagnostic_msgs/msg/DiagnosticArray", Ros2Types.DIAGNOSTIC_ARRAY);
+            "diagnostic_msgs/msg/DiagnosticArray", Ros2Types.DIAGNOSTIC_ARRAY,
+            "statistics_msgs/msg/MetricsMessage", Ros2Types.METRICS_MESSAGE);
 
     private static JsonNode vectors;
     private final CdrWriter writer = new CdrWriter(1 << 16);
@@ -286,6 +288,38 @@ class ReferenceVectorsTest {
                     assertEquals(a.key(k).toString(), b.key(k).toString());
                     assertEquals(a.value(k).toString(), b.value(k).toString());
                 }
+            }
+        }
+    }
+
+    @Test
+    void metricsMessage() {
+        MetricsMessageCodec codec = new MetricsMessageCodec();
+        for (JsonNode s : entry("statistics_msgs/msg/MetricsMessage").get("samples")) {
+            JsonNode v = s.get("values");
+            MetricsMessage m = new MetricsMessage(8);
+            m.measurementSourceName.append(v.get("measurement_source_name").asText());
+            m.metricsSource.append(v.get("metrics_source").asText());
+            m.unit.append(v.get("unit").asText());
+            m.windowStartNs = v.get("window_start_ns").asLong();
+            m.windowStopNs = v.get("window_stop_ns").asLong();
+            for (JsonNode point : v.get("statistics")) {
+                m.add((byte) point.get(0).asInt(), point.get(1).isNull() ? Double.NaN : point.get(1).asDouble());
+            }
+            codec.encode(header, m, writer);
+            byte[] expected = bytes(s);
+            assertEncodes(expected, "MetricsMessage " + v);
+            MetricsMessage back = new MetricsMessage(8);
+            codec.decode(reader.wrap(expected, 0, expected.length), header, back);
+            assertEquals(m.measurementSourceName.toString(), back.measurementSourceName.toString());
+            assertEquals(m.metricsSource.toString(), back.metricsSource.toString());
+            assertEquals(m.unit.toString(), back.unit.toString());
+            assertEquals(m.windowStartNs, back.windowStartNs);
+            assertEquals(m.windowStopNs, back.windowStopNs);
+            assertEquals(m.count(), back.count());
+            for (int i = 0; i < m.count(); i++) {
+                assertEquals(m.dataType(i), back.dataType(i));
+                assertEquals(m.data(i), back.data(i)); // NaN equals NaN here, as Double.equals has it
             }
         }
     }

@@ -54,7 +54,7 @@ public record ExportOptions(String router, String listen, Ros2Distro distro, Dds
             String where = dds != null ? dds.describe() : "Zenoh on " + at + (router == null ? "" : " via " + router);
             err.println("rtaware export: ROS 2 over " + where
                     + " (" + distro.cliName() + " conventions): "
-                    + MonitorExporter.DIAGNOSTICS + (topics.isEmpty()
+                    + MonitorExporter.DIAGNOSTICS + ", " + MonitorExporter.STATISTICS + (topics.isEmpty()
                             ? " (no key of this run has a ROS 2 type: each key's health is a status there)"
                             : " and " + String.join(", ", topics)));
             return exporter;
@@ -80,6 +80,10 @@ public record ExportOptions(String router, String listen, Ros2Distro distro, Dds
             exporter.close();
         } catch (ZenohException e) {
             err.println("rtaware export: closing: " + e.getMessage());
+        }
+        if (exporter.statisticsLost() > 0) {
+            err.println("rtaware export: " + MonitorExporter.STATISTICS + " left out " + exporter.statisticsLost()
+                    + " cycle and commit records (the exporter's thread fell behind the tasks)");
         }
     }
 }

@@ -29,6 +29,9 @@ class BenchRecordingTest {
         assertTrue(run.out().contains("recording written to " + file), run.out());
         String checked = Ros2ProfileCheck.run(file);
         assertTrue(checked.contains("rosbags AnyReader deserialized all"), checked);
+        assertTrue(checked.contains("release_lateness, execution_time, input_age, deadline_misses of every task "
+                + "(t1, t2, t3, t4)"), "issue 37: /statistics of every task, every second: " + checked);
+        assertTrue(checked.contains("/statistics equals what the timing and key channels give"), checked);
         String foxglove = FoxgloveReadersCheck.run(file);
         assertTrue(foxglove.contains("McapStreamReader decoded all"), foxglove);
         CliRun inspect = CliRun.of("inspect", file.toString());

@@ -232,8 +232,13 @@ class DdsEndToEndTest {
         }
     }
 
-    @Test
-    void aCycloneDdsNodeReadsTheExportedDiagnosticsOverDds() throws Exception {
+    /**
+     * Runs {@code bench --tasks 2 --export --dds} on domain 0 for 12 s and the Cyclone DDS node in
+     * {@code mode} beside it for 9 s.
+     *
+     * @return what the node saw, once it and the bench ended well
+     */
+    private JsonNode besideBenchExportDds(String mode) throws Exception {
         requireDdsBridge();
         Path script = peerScript();
         assumeTrue(System.getenv("ROS_DOMAIN_ID") == null, "bench exports on ROS_DOMAIN_ID, set here");
@@ -241,18 +246,31 @@ class DdsEndToEndTest {
         Thread bench = new Thread(() -> status.set(quietly("bench", "--tasks", "2", "--period", "10ms", "--duration",
                 "12s", "--export", "--dds", "--quiet")), "bench --export --dds");
         bench.start();
+        JsonNode seen;
         try {
-            Process node = peer(script, "diagnostics", "--domain", "0", "--seconds", "9");
+            Process node = peer(script, mode, "--domain", "0", "--seconds", "9");
             String output = new String(node.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
             assertTrue(node.waitFor(60, TimeUnit.SECONDS), "the Cyclone DDS node finished");
-            JsonNode seen = lastJsonLine(output);
+            seen = lastJsonLine(output);
             assertEquals(0, node.exitValue(), "the node's checks: " + seen);
-            assertTrue(seen.path("messages").asInt() >= 3, "one DiagnosticArray a second: " + seen);
-            assertTrue(seen.path("names").toString().contains("rtaware: task t1"), "the tasks' health: " + seen);
         } finally {
             bench.join(60_000);
         }
         assertEquals(0, status.get(), "bench --export --dds exit status");
+        return seen;
+    }
+
+    @Test
+    void aCycloneDdsNodeReadsTheExportedDiagnosticsOverDds() throws Exception {
+        JsonNode seen = besideBenchExportDds("diagnostics");
+        assertTrue(seen.path("messages").asInt() >= 3, "one DiagnosticArray a second: " + seen);
+        assertTrue(seen.path("names").toString().contains("rtaware: task t1"), "the tasks' health: " + seen);
+    }
+
+    /** Issue 37: ROS 2's topic statistics of every task and key, read by a stock DDS node. */
+    @Test
+    void aCycloneDdsNodeReadsTheExportedTopicStatisticsOfEveryTaskAndKeyOverDds() throws Exception {
+        Ros2PythonPeer.assertStatisticsOfEveryTaskAndKey(besideBenchExportDds("statistics"));
     }
 
     /**

@@ -111,16 +111,17 @@ class ExportEndToEndTest {
         assertEquals(0, status, text);
         assertTrue(names.containsAll(List.of("rtaware: task t1", "rtaware: task t2", "rtaware: key t1.out",
                 "rtaware: key t2.out")), "one status per task and per key: " + names);
-        assertTrue(text.contains("/diagnostics (no key of this run has a ROS 2 type"), "says what it exports: " + text);
+        assertTrue(text.contains("/diagnostics, /statistics (no key of this run has a ROS 2 type"),
+                "says what it exports: " + text);
     }
 
     @Test
     void runExportsTheKeysWithRos2TypesUnderRtawareAndTheRep105Frames() throws Exception {
         List<String> topics = List.of("/rtaware/laser", "/rtaware/odometry", "/rtaware/motor", "/rtaware/map",
-                "/rtaware/path", "/diagnostics", "/tf", "/tf_static");
+                "/rtaware/path", "/diagnostics", "/tf", "/tf_static", "/statistics");
         List<Ros2MessageType> types = List.of(Ros2Types.LASER_SCAN, Ros2Types.ODOMETRY, Ros2Types.TWIST,
                 Ros2Types.OCCUPANCY_GRID, Ros2Types.PATH, new DiagnosticArrayCodec().type(), Ros2Types.TF_MESSAGE,
-                Ros2Types.TF_MESSAGE);
+                Ros2Types.TF_MESSAGE, Ros2Types.METRICS_MESSAGE);
         for (int i = 0; i < topics.size(); i++) {
             mailbox.subscribe(Ros2Names.topicKey(0, topics.get(i), types.get(i).ddsTypeName(), types.get(i).typeHash()), i);
         }

@@ -1,12 +1,16 @@
 package io.rtaware.app.ros2;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Objects;
 
 /**
@@ -46,5 +50,25 @@ public final class Ros2PythonPeer {
             Files.copy(in, script);
         }
         return script;
+    }
+
+    /**
+     * Issue 37: what a peer's {@code statistics} mode saw of {@code bench --tasks 2 --export}, live:
+     * a window a second, and every task's four metrics and every key's two, ROS 2's units.
+     *
+     * @param seen the peer's JSON line
+     */
+    public static void assertStatisticsOfEveryTaskAndKey(JsonNode seen) {
+        assertTrue(seen.path("windows").asInt() >= 3, "a window a second: " + seen);
+        for (String task : List.of("t1", "t2")) {
+            assertEquals("[\"release_lateness\",\"execution_time\",\"input_age\",\"deadline_misses\"]",
+                    seen.path("sources").path(task).toString(), "every task's metrics: " + seen);
+        }
+        for (String key : List.of("t1.out", "t2.out")) {
+            assertEquals("[\"message_period\",\"message_age\"]", seen.path("sources").path(key).toString(),
+                    "every key's: " + seen);
+        }
+        assertEquals("ms", seen.path("first").path("t1.out message_period").path("unit").asText(), seen.toString());
+        assertEquals("count", seen.path("first").path("t1 deadline_misses").path("unit").asText(), seen.toString());
     }
 }

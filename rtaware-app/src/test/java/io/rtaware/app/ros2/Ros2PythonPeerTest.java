@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
+import io.rtaware.app.RtawareCli;
 import io.rtaware.core.time.SystemClock;
 import io.rtaware.robot.geometry.Pose2d;
 import io.rtaware.ros2.graph.Ros2Context;
@@ -23,6 +24,7 @@ import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -33,7 +35,8 @@ import org.junit.jupiter.api.io.TempDir;
  * a Python Zenoh router standing in for rmw_zenohd, and a Python peer built on zenoh-ros2-sdk and
  * rosbags ({@code src/test/resources/ros2/ros2_peer.py}) that decodes /scan and /odom, checks the
  * REP 105 frames on /tf and /tf_static, lists the graph through liveliness tokens and drives the
- * robot on /cmd_vel. The Python interpreter of a
+ * robot on /cmd_vel, and reads the topic statistics {@code bench --export} publishes on
+ * /statistics. The Python interpreter of a
  * virtual environment with those packages is named by {@code RTAWARE_PEER_PYTHON} (.ci/run makes
  * one); without it, or without the native Zenoh layer, the test is skipped, except under CI=true
  * where it fails.
@@ -55,8 +58,13 @@ class Ros2PythonPeerTest {
         assumeTrue(present, () -> "skipped: " + why);
     }
 
-    @Test
-    void aPythonRos2PeerSeesTheSimulatorAndDrivesIt() throws Exception {
+    /** What a test does while the Python router runs on {@code endpoint}. */
+    private interface WithRouter {
+        void run(String python, Path script, String endpoint) throws Exception;
+    }
+
+    /** Starts the Python router on a free loopback endpoint, runs {@code test}, stops the router. */
+    private void withRouter(WithRouter test) throws Exception {
         String reason = ZenohLibrary.unavailableReason();
         if (reason != null && "1".equals(System.getenv("RTAWARE_NO_RUST"))) {
             assumeTrue(false, () -> "skipped: " + reason + " (no Rust toolchain on this machine)");
@@ -70,16 +78,33 @@ class Ros2PythonPeerTest {
         try (BufferedReader routerOut = new BufferedReader(
                 new InputStreamReader(router.getInputStream(), StandardCharsets.UTF_8))) {
             assertEquals("ready", routerOut.readLine(), "the Python router started");
+            test.run(python, script, endpoint);
+        } finally {
+            router.getOutputStream().close();
+            if (!router.waitFor(10, TimeUnit.SECONDS)) {
+                router.destroyForcibly();
+            }
+        }
+    }
+
+    /** Runs the peer to its end; its last line, a JSON object, after checking it exited 0. */
+    private static JsonNode peerResult(Process peer) throws Exception {
+        String output = new String(peer.getInputStream().readAllBytes(), StandardCharsets.UTF_8).trim();
+        assertTrue(peer.waitFor(90, TimeUnit.SECONDS), "the Python peer finished");
+        JsonNode seen = new ObjectMapper().readTree(output.lines().reduce((a, b) -> b).orElse("{}"));
+        assertEquals(0, peer.exitValue(), "the Python peer's checks: " + seen.path("failures"));
+        return seen;
+    }
+
+    @Test
+    void aPythonRos2PeerSeesTheSimulatorAndDrivesIt() throws Exception {
+        withRouter((python, script, endpoint) -> {
             try (PlayerSimServer server = SimCommandSupport.start(ScenarioLoader.load("paper-room"), new SystemClock(),
                          ServerConfig.defaults(0), 1, 4);
                  Ros2SimRobot robot = Ros2SimRobot.start(server, openThrough(endpoint), "/", line -> { })) {
                 Pose2d start = server.groundTruth();
-                Process peer = new ProcessBuilder(python, script.toString(), "check", "--router", endpoint,
-                        "--timeout", "60").redirectError(ProcessBuilder.Redirect.INHERIT).start();
-                String output = new String(peer.getInputStream().readAllBytes(), StandardCharsets.UTF_8).trim();
-                assertTrue(peer.waitFor(90, TimeUnit.SECONDS), "the Python peer finished");
-                JsonNode seen = new ObjectMapper().readTree(output.lines().reduce((a, b) -> b).orElse("{}"));
-                assertEquals(0, peer.exitValue(), "the Python peer's checks: " + seen.path("failures"));
+                JsonNode seen = peerResult(new ProcessBuilder(python, script.toString(), "check", "--router", endpoint,
+                        "--timeout", "60").redirectError(ProcessBuilder.Redirect.INHERIT).start());
                 assertTrue(seen.path("first_scan").path("beams").asInt() > 100, "LaserScan decoded: " + seen);
                 assertEquals("odom", seen.path("first_odometry").path("frame").asText(), "Odometry decoded: " + seen);
                 assertEquals("base_link", seen.path("first_odometry").path("child").asText(), "odometry's child frame");
@@ -100,12 +125,21 @@ class Ros2PythonPeerTest {
                 assertTrue(Math.hypot(end.xM() - start.xM(), end.yM() - start.yM()) > 0.1,
                         "ground truth moved from " + start + " to " + end);
             }
-        } finally {
-            router.getOutputStream().close();
-            if (!router.waitFor(10, TimeUnit.SECONDS)) {
-                router.destroyForcibly();
-            }
-        }
+        });
+    }
+
+    /** Issue 37: {@code --export} publishes ROS 2's topic statistics, read by zenoh-ros2-sdk through the router. */
+    @Test
+    void aPythonRos2PeerReadsTheTopicStatisticsOfEveryTaskAndKey() throws Exception {
+        withRouter((python, script, endpoint) -> {
+            CompletableFuture<Integer> bench = CompletableFuture.supplyAsync(() -> RtawareCli.execute("bench", "--tasks",
+                    "2", "--period", "10ms", "--work", "0", "--duration", "10s", "--quiet", "--export",
+                    "--export-zenoh", endpoint));
+            JsonNode seen = peerResult(new ProcessBuilder(python, script.toString(), "statistics", "--router", endpoint,
+                    "--seconds", "7").redirectError(ProcessBuilder.Redirect.INHERIT).start());
+            assertEquals(0, bench.get(60, TimeUnit.SECONDS), "bench --export");
+            Ros2PythonPeer.assertStatisticsOfEveryTaskAndKey(seen);
+        });
     }
 
     private static Ros2Context openThrough(String router) throws ZenohException {

@@ -197,6 +197,8 @@ class RecordRunTest {
     void rosToolsReadTheRecordingAsAnMcapRos2ProfileBagInLogTimeOrder() throws Exception {
         String output = Ros2ProfileCheck.run(recording);
         assertTrue(output.contains("rosbags AnyReader deserialized all"), output);
+        assertTrue(output.contains("deadline_misses of every task (mediator, obstacle, occupancy, planner, player, "
+                + "waypoint)"), "issue 37: /statistics of every task of the robot run, every second: " + output);
     }
 
     @Test

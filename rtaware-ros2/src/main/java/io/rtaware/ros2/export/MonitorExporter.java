@@ -14,15 +14,19 @@ import io.rtaware.ros2.graph.Ros2Context;
 import io.rtaware.ros2.graph.Ros2Node;
 import io.rtaware.ros2.graph.Ros2Publisher;
 import io.rtaware.ros2msg.DiagnosticArrayCodec;
+import io.rtaware.ros2msg.MetricsMessageCodec;
 import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.ros2msg.Ros2Header;
 import io.rtaware.ros2msg.Ros2Types;
 import io.rtaware.ros2msg.TransformMessages;
 import io.rtaware.ros2msg.cdr.CdrWriter;
+import io.rtaware.ros2msg.statistics.TimingStatistics;
 import io.rtaware.ros2msg.value.DiagnosticArray;
 import io.rtaware.ros2msg.value.DiagnosticStatus;
+import io.rtaware.ros2msg.value.MetricsMessage;
 import io.rtaware.ros2msg.value.PlanarTransform;
 import io.rtaware.zenoh.ZenohException;
+import java.io.IOException;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -48,9 +52,16 @@ import org.agrona.concurrent.SleepingIdleStrategy;
  * its frame to that child, stamped as its message; the static transforms given are published
  * on {@code /tf_static} (offered transient local, as tf2's static broadcaster offers them, and,
  * since this Zenoh layer keeps no history for late subscribers, again with every health
- * array). Its thread, an {@link AgentThread}, is named {@value #THREAD_NAME}, outside the
- * {@code rtaware-*} threads whose allocation {@code bench} measures; a failing publication ends
- * it, and {@link #failure()} says why. Thread-safe: {@link #close()} from any thread.
+ * array). On {@value #STATISTICS}, ROS 2's topic statistics of every task and key
+ * ({@code statistics_msgs/msg/MetricsMessage}, {@link TimingStatistics}): a listener copies every
+ * commit and cycle record into a ring on the thread that reports it ({@code TimingFeed}), and the
+ * exporter's thread turns them into one message per metric, task and key for every second of
+ * world time (the monitor's clock, the first window starting when the exporter starts), stamped
+ * in Unix-epoch time (the wall clock when the exporter started plus the world time since),
+ * published as soon as each second is complete. Its thread, an {@link AgentThread}, is named
+ * {@value #THREAD_NAME}, outside the {@code rtaware-*} threads whose allocation {@code bench}
+ * measures; a failing publication ends it, and {@link #failure()} says why. Thread-safe:
+ * {@link #close()} from any thread.
  */
 public final class MonitorExporter implements AutoCloseable {
 
@@ -58,6 +69,13 @@ public final class MonitorExporter implements AutoCloseable {
     public static final String NODE_NAME = "rtaware_monitor";
     /** Topic of the health array. */
     public static final String DIAGNOSTICS = "/diagnostics";
+    /** Topic of the topic statistics. */
+    public static final String STATISTICS = "/statistics";
+    /**
+     * World time after a second's end after which its statistics are published even if a task has
+     * not reported past it (one that has gone quiet): see {@link TimingStatistics}.
+     */
+    public static final long STATISTICS_GRACE_NS = TimeUnit.SECONDS.toNanos(1);
     /** The history depth tf2's broadcaster offers on {@code /tf}. */
     private static final int TF_DEPTH = 100;
     /** The name of the exporter's thread. */
@@ -78,6 +96,10 @@ public final class MonitorExporter implements AutoCloseable {
     private final Ros2Publisher tfStatic;
     private final List<PlanarTransform> staticTransforms;
     private final DiagnosticArrayCodec diagnosticCodec = new DiagnosticArrayCodec();
+    private final Ros2Publisher statisticsPublisher;
+    private final MetricsMessageCodec metricsCodec = new MetricsMessageCodec();
+    private final TimingFeed feed;
+    private final TimingStatistics statistics;
     private final DiagnosticArray array;
     private final CdrWriter writer = new CdrWriter(MAX_MESSAGE_BYTES);
     private final Ros2Header header = new Ros2Header();
@@ -123,6 +145,15 @@ public final class MonitorExporter implements AutoCloseable {
         tfStatic = this.staticTransforms.isEmpty() ? null
                 : node.createPublisher(RobotTopics.TF_STATIC, Ros2Types.TF_MESSAGE, new QosProfile(true, true, 1), MAX_MESSAGE_BYTES);
         diagnostics = node.createPublisher(DIAGNOSTICS, diagnosticCodec.type(), QosProfile.defaults(), MAX_MESSAGE_BYTES);
+        statisticsPublisher = node.createPublisher(STATISTICS, metricsCodec.type(), QosProfile.defaults(),
+                MAX_MESSAGE_BYTES);
+        List<TaskInfo> tasks = monitor.tasks();
+        long worldNowNs = monitor.clock().nanos();
+        statistics = new TimingStatistics(tasks.stream().map(TaskInfo::name).toList(),
+                tasks.stream().map(TaskInfo::inputKeys).toList(), monitor.keyNames(), worldNowNs,
+                epoch.epochNanos() - worldNowNs, STATISTICS_GRACE_NS, this::publishStatistics);
+        feed = TimingFeed.of(tasks);
+        monitor.addListener(feed);
         int statuses = monitor.tasks().size() + monitor.keyNames().size();
         array = new DiagnosticArray(statuses, VALUES_PER_STATUS);
         lastMisses = new long[monitor.tasks().size()];
@@ -136,13 +167,15 @@ public final class MonitorExporter implements AutoCloseable {
     /**
      * Declares the node and publishers and starts the thread.
      *
-     * @param monitor the monitor to export (built; started or not)
+     * @param monitor the monitor to export (built, not started: the exporter listens to its
+     *     cycles and commits from the start)
      * @param context an open context, owned by the exporter from now on
      * @param keys the keys with a ROS 2 type (keys the monitor does not have are left out)
      * @param staticTransforms what {@code /tf_static} carries (none: no such topic)
      * @param keyPeriodMs how often the keys are looked at, in wall milliseconds
      * @return the running exporter
      * @throws ZenohException if a declaration fails (the context is closed then)
+     * @throws IllegalStateException if the monitor has started (the context is closed then)
      */
     public static MonitorExporter start(Monitor monitor, Ros2Context context, List<ExportedKey<?>> keys,
                                         List<PlanarTransform> staticTransforms, long keyPeriodMs)
@@ -162,8 +195,9 @@ public final class MonitorExporter implements AutoCloseable {
     }
 
     /**
-     * The exporter's loop: the keys whose generation changed every key period, the health array
-     * once a second; a failing publication ends it ({@link #stopped}).
+     * The exporter's loop: the statistics of what the monitor reported since the last turn, the
+     * keys whose generation changed every key period, the health array once a second; a failing
+     * publication ends it ({@link #stopped}).
      */
     private final class Publishing implements Agent {
         private long nextDiagnosticsNs;
@@ -176,6 +210,8 @@ public final class MonitorExporter implements AutoCloseable {
         @Override
         public int doWork() {
             try {
+                feed.drainInto(statistics);
+                statistics.drained(monitor.clock().nanos());
                 for (Slot<?> s : slots) {
                     publishIfNew(s);
                 }
@@ -184,7 +220,7 @@ public final class MonitorExporter implements AutoCloseable {
                     publishDiagnostics();
                     nextDiagnosticsNs += DIAGNOSTICS_PERIOD_NS;
                 }
-            } catch (ZenohException | RuntimeException e) {
+            } catch (IOException | RuntimeException e) {
                 throw new AgentTerminationException(e);
             }
             return 0; // always idle a key period: the keys are looked at that often
@@ -217,6 +253,11 @@ public final class MonitorExporter implements AutoCloseable {
                     odometry.yM, odometry.yawRad);
             tf.publish(writer.buffer(), writer.size(), nowNs);
         }
+    }
+
+    private void publishStatistics(MetricsMessage message, long windowStopWorldNs) throws ZenohException {
+        metricsCodec.encode(header, message, writer);
+        statisticsPublisher.publish(writer.buffer(), writer.size(), message.windowStopNs);
     }
 
     private void publishStaticTransforms() throws ZenohException {
@@ -300,19 +341,41 @@ public final class MonitorExporter implements AutoCloseable {
         return arraysPublished;
     }
 
+    /** @return {@code statistics_msgs/msg/MetricsMessage}s published so far on {@value #STATISTICS} */
+    public long statisticsPublished() {
+        return statistics.messagesPublished();
+    }
+
+    /**
+     * @return records of the monitor the statistics could not count: dropped because the
+     *     exporter's ring was full, or handed over after their second had been published
+     */
+    public long statisticsLost() {
+        return feed.dropped() + statistics.lateRecords();
+    }
+
     /** @return why the thread stopped early, or null */
     public String failure() {
         return failure;
     }
 
-    /** Publishes one last health array, stops the thread, closes the session. */
+    /**
+     * Stops the thread, publishes the statistics of every whole second not published yet and one
+     * last health array, closes the session.
+     */
     @Override
     public void close() throws ZenohException {
         loop.close();
         try {
             if (loop.isClosed() && failure == null) {
+                feed.drainInto(statistics);
+                statistics.finish(monitor.clock().nanos());
                 publishDiagnostics();
             }
+        } catch (ZenohException e) {
+            throw e;
+        } catch (IOException e) {
+            throw new ZenohException(e.getMessage());
         } finally {
             context.close();
         }

@@ -17,22 +17,30 @@ import io.rtaware.ros2.graph.Ros2Context;
 import io.rtaware.ros2.graph.Ros2Names;
 import io.rtaware.ros2msg.DiagnosticArrayCodec;
 import io.rtaware.ros2msg.LaserScanCodec;
+import io.rtaware.ros2msg.MetricsMessageCodec;
 import io.rtaware.ros2msg.Ros2Header;
 import io.rtaware.ros2msg.Ros2Types;
 import io.rtaware.ros2msg.cdr.CdrReader;
 import io.rtaware.ros2msg.value.DiagnosticArray;
 import io.rtaware.ros2msg.value.DiagnosticStatus;
+import io.rtaware.ros2msg.value.MetricsMessage;
 import io.rtaware.zenoh.SampleBuffer;
 import io.rtaware.zenoh.ZenohConfig;
 import io.rtaware.zenoh.ZenohMailbox;
 import java.net.ServerSocket;
 import java.time.Duration;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
-/** The exporter seen from another Zenoh session: keys as ROS 2 types, health on /diagnostics. */
+/**
+ * The exporter seen from another Zenoh session: keys as ROS 2 types, health on /diagnostics, the
+ * topic statistics on /statistics.
+ */
 @Timeout(60)
 class MonitorExporterTest {
 
@@ -58,16 +66,38 @@ class MonitorExporterTest {
         }
     }
 
+    /** A monitor of the scanner at 10 ms on a manual clock, not started. */
+    private static Monitor scanning(ManualClock clock) {
+        return Monitor.builder(clock).task("scanner", Schedule.periodic(Duration.ofMillis(10)), new Scanner()).build();
+    }
+
+    private static String loopbackEndpoint() throws Exception {
+        try (ServerSocket s = new ServerSocket(0)) {
+            return "tcp/127.0.0.1:" + s.getLocalPort();
+        }
+    }
+
+    /** Takes samples until {@code done} says so or 20 s pass; each sample's CDR to {@code sampled}. */
+    private static void take(ZenohMailbox mailbox, java.util.function.BooleanSupplier done,
+                             java.util.function.ObjIntConsumer<CdrReader> sampled) throws Exception {
+        SampleBuffer sample = new SampleBuffer(1 << 16, 64);
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+        while (!done.getAsBoolean() && System.nanoTime() < deadline) {
+            if (mailbox.take(TimeUnit.MILLISECONDS.toNanos(100), sample) != ZenohMailbox.Take.SAMPLE) {
+                continue;
+            }
+            byte[] bytes = new byte[sample.payloadLength()];
+            sample.payload().get(0, bytes);
+            sampled.accept(new CdrReader().wrap(bytes, 0, bytes.length), sample.channel());
+        }
+    }
+
     @Test
     void keysAndHealthReachAnotherSession() throws Exception {
         NativeZenohAssumption.require();
-        Monitor monitor = Monitor.builder(new ManualClock())
-                .task("scanner", Schedule.periodic(Duration.ofMillis(10)), new Scanner()).build();
-        monitor.startStepped().runUntil(100 * MS);
-        String endpoint;
-        try (ServerSocket s = new ServerSocket(0)) {
-            endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
-        }
+        ManualClock clock = new ManualClock();
+        Monitor monitor = scanning(clock);
+        String endpoint = loopbackEndpoint();
         try (Ros2Context viewer = Ros2Context.open(ZenohConfig.loopbackPeer().withListen(List.of(endpoint)), 0)) {
             ZenohMailbox mailbox = viewer.session().newMailbox(64);
             mailbox.subscribe(Ros2Names.topicKey(0, "/diagnostics", Ros2Types.DIAGNOSTIC_ARRAY.ddsTypeName(),
@@ -77,30 +107,23 @@ class MonitorExporterTest {
             Ros2Context exporting = Ros2Context.open(ZenohConfig.loopbackPeer().withConnect(List.of(endpoint)), 0);
             DiagnosticArray array = new DiagnosticArray(8, 16);
             LaserScan scan = new LaserScan();
-            boolean sawArray = false;
-            boolean sawScan = false;
+            boolean[] saw = new boolean[2];
             try (MonitorExporter exporter = MonitorExporter.start(monitor, exporting,
                     List.of(new ExportedKey<>(RobotKeys.LASER, new LaserScanCodec(), "laser")), List.of(), 10)) {
+                monitor.startStepped().runUntil(100 * MS);
                 assertEquals("/rtaware/laser", exporter.topics().get("laser"));
-                SampleBuffer sample = new SampleBuffer(1 << 16, 64);
-                long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
-                while (!(sawArray && sawScan) && System.nanoTime() < deadline) {
-                    if (mailbox.take(TimeUnit.MILLISECONDS.toNanos(100), sample) != ZenohMailbox.Take.SAMPLE) {
-                        continue;
-                    }
-                    byte[] bytes = new byte[sample.payloadLength()];
-                    sample.payload().get(0, bytes);
-                    CdrReader in = new CdrReader().wrap(bytes, 0, bytes.length);
-                    if (sample.channel() == 0) {
+                take(mailbox, () -> saw[0] && saw[1], (in, channel) -> {
+                    if (channel == 0) { // the first arrays may come before the run: wait for one after it
                         new DiagnosticArrayCodec().decode(in, new Ros2Header(), array);
-                        sawArray = true;
+                        DiagnosticStatus task = find(array, "rtaware: task scanner");
+                        saw[0] = task != null && Long.parseLong(value(task, "releases")) >= 10;
                     } else {
                         new LaserScanCodec().decode(in, new Ros2Header(), scan);
-                        sawScan = true;
+                        saw[1] = true;
                     }
-                }
+                });
             }
-            assertTrue(sawArray && sawScan, "a DiagnosticArray and a LaserScan arrived");
+            assertTrue(saw[0] && saw[1], "a DiagnosticArray and a LaserScan arrived");
             assertEquals(3, scan.count());
             assertEquals(2.5f, scan.rangesM[1]);
             DiagnosticStatus task = find(array, "rtaware: task scanner");
@@ -113,6 +136,48 @@ class MonitorExporterTest {
             assertEquals("scanner", value(key, "producer"));
         }
         monitor.stop();
+    }
+
+    @Test
+    void statisticsOfEveryTaskAndKeyReachAnotherSessionOnceTheirSecondIsOver() throws Exception {
+        NativeZenohAssumption.require();
+        ManualClock clock = new ManualClock();
+        Monitor monitor = scanning(clock);
+        String endpoint = loopbackEndpoint();
+        Map<String, MetricsMessage> firstSecond = new HashMap<>();
+        long published;
+        try (Ros2Context viewer = Ros2Context.open(ZenohConfig.loopbackPeer().withListen(List.of(endpoint)), 0)) {
+            ZenohMailbox mailbox = viewer.session().newMailbox(64);
+            mailbox.subscribe(Ros2Names.topicKey(0, "/statistics", Ros2Types.METRICS_MESSAGE.ddsTypeName(),
+                    Ros2Types.METRICS_MESSAGE.typeHash()), 0);
+            Ros2Context exporting = Ros2Context.open(ZenohConfig.loopbackPeer().withConnect(List.of(endpoint)), 0);
+            try (MonitorExporter exporter = MonitorExporter.start(monitor, exporting, List.of(), List.of(), 10)) {
+                monitor.startStepped().runUntil(1500 * MS); // the first second is over; the scanner is past it
+                take(mailbox, () -> firstSecond.size() == 6, (in, channel) -> {
+                    MetricsMessage m = new MetricsMessage(5);
+                    new MetricsMessageCodec().decode(in, new Ros2Header(), m);
+                    firstSecond.putIfAbsent(m.measurementSourceName + " " + m.metricsSource, m);
+                });
+                published = exporter.statisticsPublished();
+                assertEquals(0, exporter.statisticsLost());
+            }
+        }
+        monitor.stop();
+        assertEquals(Set.of("scanner release_lateness", "scanner execution_time", "scanner input_age",
+                "scanner deadline_misses", "laser message_period", "laser message_age"), firstSecond.keySet());
+        assertEquals(6, published, "the first second, and not the half second after it");
+        MetricsMessage periods = firstSecond.get("laser message_period");
+        assertEquals(1_000_000_000L, periods.windowStopNs - periods.windowStartNs);
+        assertEquals("ms", periods.unit.toString());
+        assertEquals(10.0, periods.valueOf(MetricsMessage.AVERAGE), "commits every 10 ms");
+        assertEquals(99.0, periods.valueOf(MetricsMessage.SAMPLE_COUNT), "100 commits in the second, 99 periods");
+        MetricsMessage misses = firstSecond.get("scanner deadline_misses");
+        assertEquals(100.0, misses.valueOf(MetricsMessage.SAMPLE_COUNT), "releases at 0, 10, ..., 990 ms");
+        assertEquals(0.0, misses.valueOf(MetricsMessage.MAXIMUM));
+        assertEquals(0.0, firstSecond.get("scanner execution_time").valueOf(MetricsMessage.MAXIMUM),
+                "a stepped cycle takes no world time");
+        assertEquals(0.0, firstSecond.get("laser message_age").valueOf(MetricsMessage.SAMPLE_COUNT), "no consumer");
+        assertTrue(Double.isNaN(firstSecond.get("laser message_age").valueOf(MetricsMessage.AVERAGE)));
     }
 
     private static DiagnosticStatus find(DiagnosticArray array, String name) {
