@@ -277,6 +277,7 @@ public final class RobotRun {
         } catch (LiveAddressException e) {
             throw new UserError(e.getMessage());
         }
+        CommandMonitor.showMachine(live, monitor, () -> conditions);
         // Connected before the start, so the first ground-truth sample is the pose at the start.
         Referee.PoseSource truthSource = poseSource(host, port, clock, monitor);
         Referee.PoseSource truth = RunRecording.recordingGroundTruth(truthSource, recorder, clock);
