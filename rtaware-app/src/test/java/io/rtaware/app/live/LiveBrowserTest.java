@@ -81,7 +81,7 @@ class LiveBrowserTest {
                     assertTrue(c.path("points").asInt() > 0, "lateness and execution time drawn: " + c);
                     assertEquals("0-60", c.path("axis").asText(), "a minute of world time from the start: " + c);
                 });
-                assertTrue(strips.path("machine").asText().matches("(quiet|busy|disturbed|unknown) \\(\\d+ s\\)"),
+                assertTrue(strips.path("machine").asText().matches("(quiet|busy|disturbed|unknown) \\(over \\d+ s\\)"),
                         "the machine verdict so far in the header: " + strips);
                 assertTrue(!strips.path("machineReason").asText().isEmpty(), "and its reasons: " + strips);
                 Path shot = Path.of("target", "live-view.png");
