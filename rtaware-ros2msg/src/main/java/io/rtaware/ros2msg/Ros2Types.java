@@ -109,6 +109,18 @@ public final class Ros2Types {
             "rosgraph_msgs/msg/Clock", "builtin_interfaces/Time clock\n", TIME),
             "RIHS01_692f7a66e93a3c83e71765d033b60349ba68023a8c689a79e48078bcb5c58564");
 
+    /**
+     * {@code rcl_interfaces/msg/Log}, what a ROS 2 node's log lines carry on {@code /rosout} (its
+     * Jazzy hash as {@link TypeDescriptionHash} and rosbags compute it; the severity constants as
+     * rcl_interfaces defines them).
+     */
+    public static final Ros2MessageType LOG = new Ros2MessageType(new MessageDefinition(
+            "rcl_interfaces/msg/Log",
+            "byte DEBUG=10\nbyte INFO=20\nbyte WARN=30\nbyte ERROR=40\nbyte FATAL=50\n"
+                    + "builtin_interfaces/Time stamp\nuint8 level\nstring name\nstring msg\nstring file\n"
+                    + "string function\nuint32 line\n", TIME),
+            "RIHS01_e28ce254ca8abc06abf92773b74602cdbf116ed34fbaf294fb9f81da9f318eac");
+
     private Ros2Types() {
     }
 }

@@ -342,7 +342,8 @@ public final class RobotRun {
                     scenario.name(), options.periods(), trim(options.timeScale()), robot, referee.kind());
         }
 
-        supervise(scenario, clock, startNs, monitor, nav, referee, supervisor, view, course, state, truthNow, passes);
+        supervise(scenario, clock, startNs, monitor, nav, referee, supervisor, view, course, state, truthNow, passes,
+                new SafetyLog(recorder, server));
         CommandMonitor.stop(monitor, hook);
         live.close();
         FoxgloveMixin.close(foxgloveServer);
@@ -468,7 +469,8 @@ public final class RobotRun {
     /** Watches the run until it ends; records the ending. Returns when the run is over. */
     private void supervise(Scenario scenario, Clock clock, long startNs, Monitor monitor, NavController nav,
                            Referee referee, Supervisor supervisor, MonitorView view, CourseStatus course,
-                           RunState state, Supplier<Pose2d> truthNow, List<RunSection.WaypointPass> passes) {
+                           RunState state, Supplier<Pose2d> truthNow, List<RunSection.WaypointPass> passes,
+                           SafetyLog safety) {
         long pollWallNs = Math.max(1_000_000L, Math.min(50_000_000L, (long) (50_000_000L / options.timeScale())));
         long lastStatusWallNs = System.nanoTime();
         boolean tty = System.console() != null;
@@ -480,7 +482,9 @@ public final class RobotRun {
             double elapsedS = (clock.nanos() - startNs) / 1e9;
             RunState.Ending ending = supervisor.check();
             recordPasses(scenario, view.course(), view.odometry(), truthNow, elapsedS, passes);
+            safety.poll(clock.nanos());
             if (ending != null) {
+                safety.ended(ending, clock.nanos());
                 state.end(ending.outcome(), ending.reason(), clock.nanos());
                 if (!options.quiet()) {
                     monitor.read(nav.keys().course(), course);
