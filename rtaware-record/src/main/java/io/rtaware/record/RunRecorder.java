@@ -81,6 +81,8 @@ public final class RunRecorder {
     public static final byte ERROR_LEVEL = 40;
     /** {@code rcl_interfaces/msg/Log} severity: fatal (what ends a run for safety). */
     public static final byte FATAL = 50;
+    /** The health topic: a status per task once a second ({@link RecordingPlan#health}). */
+    public static final String DIAGNOSTICS_TOPIC = "/diagnostics";
     /** The log topic, as ROS 2 nodes log. */
     public static final String ROSOUT_TOPIC = "/rosout";
 
@@ -193,6 +195,11 @@ public final class RunRecorder {
                             Ros2Channels.Qos.ROSOUT, Map.of()),
                     List.copyOf(taskNames), plan.eventSlots(), plan.logTimeOffsetNs());
             rings.add(events);
+            if (plan.health() != null) {
+                rings.add(new HealthRing(plan.health(), layout.add(DIAGNOSTICS_TOPIC, Ros2Types.DIAGNOSTIC_ARRAY.name(),
+                        Ros2Types.DIAGNOSTIC_ARRAY.schemaText(), Ros2Types.DIAGNOSTIC_ARRAY.typeHash(),
+                        Ros2Channels.Qos.RELIABLE_VOLATILE, Map.of()), plan.worldStartNs(), plan.logTimeOffsetNs()));
+            }
             if (plan.hasGroundTruth()) {
                 PoseStampedCodec poseCodec = new PoseStampedCodec();
                 boolean transforms = !plan.staticTransforms().isEmpty();

@@ -252,7 +252,7 @@ class RecordRunTest {
         }
         assertEquals(Set.of("/map", "/scan", "/plan", "/ground_truth", "/rtaware/timing/player", "/rtaware/timing/obstacle",
                 "/rtaware/timing/occupancy", "/rtaware/timing/planner", "/rtaware/timing/waypoint",
-                "/rtaware/timing/mediator", "/rtaware/data/mediator.decision", "/rosout"), read);
+                "/rtaware/timing/mediator", "/rtaware/data/mediator.decision", "/rosout", "/diagnostics"), read);
         assertEquals(12, layout.path("configById").path("Plot!lateness").path("paths").size()
                 + layout.path("configById").path("Plot!exec").path("paths").size(), "lateness and exec of six tasks");
     }
@@ -269,18 +269,20 @@ class RecordRunTest {
         ((ObjectNode) lateness.get(3)).put("value", "/rtaware/timing/planner.outcome");
         ((ObjectNode) configs.path("StateTransitions!winner").path("paths").get(0))
                 .put("value", "\"/rtaware/data/mediator.decision\".winner{stale==true}");
+        ((ArrayNode) configs.path("Plot!exec").path("paths")).addObject().put("value", "/odom.pose.pose.position.w");
         ((ObjectNode) configs.path("3D!map").path("topics")).putObject("/costmap");
         ((ObjectNode) configs.path("RosOut!events")).put("topicToRender", "/rtaware/events");
-        ((ObjectNode) configs.path("Table!cycle")).put("topicPath", "/odom.pose.pose.position.w");
+        ((ObjectNode) configs.path("Table!tasks")).put("topicPath", "/diagnostics.status.name");
         assertEquals(List.of(
                 "3D!map: topic /costmap is not advertised by the recording",
                 "Plot!lateness: /rtaware/timing/player.latenes: no field 'latenes' in rtaware_msgs/msg/TaskCycle",
                 "Plot!lateness: topic /rtaware/timing/steering is not advertised by the recording",
                 "Plot!lateness: /rtaware/timing/occupancy.input_generations ends on int64[], not a value this panel draws",
                 "Plot!lateness: /rtaware/timing/planner.outcome ends on string, not a value this panel draws",
+                "Plot!exec: /odom.pose.pose.position.w: no field 'w' in geometry_msgs/Point",
                 "StateTransitions!winner: \"/rtaware/data/mediator.decision\".winner{stale==true}: the filter {stale==true}"
                         + " names no field of uint8",
-                "Table!cycle: /odom.pose.pose.position.w: no field 'w' in geometry_msgs/Point",
+                "Table!tasks: /diagnostics.status.name: field name of an array without an index or slice",
                 "RosOut!events: /rtaware/events is rtaware_msgs/msg/MonitorEvent, not a type the Log panel reads "
                         + FoxgloveLayoutCheck.LOG_TYPES), FoxgloveLayoutCheck.problems(layout, channels));
     }
