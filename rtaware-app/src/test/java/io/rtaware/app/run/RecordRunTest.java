@@ -11,6 +11,7 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import io.rtaware.app.CliRun;
 import io.rtaware.app.RtawareCli;
+import io.rtaware.app.foxglove.FoxgloveLayoutCheck;
 import io.rtaware.record.RecordingPlan;
 import io.rtaware.record.StateJsonMessage;
 import io.rtaware.record.mcap.McapChannel;
@@ -237,13 +238,9 @@ class RecordRunTest {
         return channels;
     }
 
-    private static JsonNode shippedLayout() throws IOException {
-        return new ObjectMapper().readTree(Path.of("..", "docs", "foxglove", "rtaware-layout.json").toFile());
-    }
-
     @Test
     void theShippedFoxgloveLayoutReadsOnlyTopicsAndFieldsTheRecordingAdvertises() throws Exception {
-        JsonNode layout = shippedLayout();
+        JsonNode layout = FoxgloveLayoutCheck.shipped();
         Map<String, FoxgloveLayoutCheck.Channel> channels = channels();
         assertEquals(List.of(), FoxgloveLayoutCheck.problems(layout, channels));
         Set<String> read = FoxgloveLayoutCheck.topics(layout, channels);
@@ -260,7 +257,7 @@ class RecordRunTest {
     @Test
     void aLayoutNamingATopicOrFieldTheRecordingLacksFails() throws Exception {
         Map<String, FoxgloveLayoutCheck.Channel> channels = channels();
-        ObjectNode layout = (ObjectNode) shippedLayout();
+        ObjectNode layout = (ObjectNode) FoxgloveLayoutCheck.shipped();
         ObjectNode configs = (ObjectNode) layout.path("configById");
         ArrayNode lateness = (ArrayNode) configs.path("Plot!lateness").path("paths");
         ((ObjectNode) lateness.get(0)).put("value", "/rtaware/timing/player.latenes");

@@ -1,4 +1,4 @@
-package io.rtaware.app.run;
+package io.rtaware.app.foxglove;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import java.util.ArrayList;
@@ -19,10 +19,10 @@ import java.util.Set;
  * any other panel type is a problem, so a panel added to the layout is never left unchecked.
  * Field names and config keys as Lichtblick's sources define them (2025-03).
  */
-final class FoxgloveLayoutCheck {
+public final class FoxgloveLayoutCheck {
 
     /** The message types Foxglove's Log panel reads. */
-    static final Set<String> LOG_TYPES = Set.of("rcl_interfaces/msg/Log", "rosgraph_msgs/Log", "foxglove_msgs/msg/Log",
+    public static final Set<String> LOG_TYPES = Set.of("rcl_interfaces/msg/Log", "rosgraph_msgs/Log", "foxglove_msgs/msg/Log",
             "foxglove.Log");
     private static final Set<String> PRIMITIVES = Set.of("bool", "byte", "char", "float32", "float64", "int8", "uint8",
             "int16", "uint16", "int32", "uint32", "int64", "uint64", "string", "wstring");
@@ -33,8 +33,13 @@ final class FoxgloveLayoutCheck {
     private record Field(String name, String type, boolean array) {
     }
 
-    /** A channel: its schema's name and its types by name (the first the schema's own). */
-    record Channel(String schemaName, String schemaText) {
+    /**
+     * A channel as a recording or a live server advertises it.
+     *
+     * @param schemaName its schema's name, e.g. {@code rtaware_msgs/msg/TaskCycle}
+     * @param schemaText its {@code ros2msg} schema, the type's definition and its dependencies'
+     */
+    public record Channel(String schemaName, String schemaText) {
     }
 
     private final Map<String, Channel> channels;
@@ -50,7 +55,7 @@ final class FoxgloveLayoutCheck {
      * @param channels the recording's channels by topic
      * @return every problem found, one line each; empty if the layout reads only what the recording holds
      */
-    static List<String> problems(JsonNode layout, Map<String, Channel> channels) {
+    public static List<String> problems(JsonNode layout, Map<String, Channel> channels) {
         FoxgloveLayoutCheck check = new FoxgloveLayoutCheck(channels);
         check.layout(layout);
         return check.problems;
@@ -61,10 +66,19 @@ final class FoxgloveLayoutCheck {
      * @param channels the recording's channels by topic
      * @return the topics its panels read
      */
-    static Set<String> topics(JsonNode layout, Map<String, Channel> channels) {
+    public static Set<String> topics(JsonNode layout, Map<String, Channel> channels) {
         FoxgloveLayoutCheck check = new FoxgloveLayoutCheck(channels);
         check.layout(layout);
         return check.topicsRead;
+    }
+
+    /**
+     * @return the layout shipped in the repository ({@code docs/foxglove/rtaware-layout.json})
+     * @throws java.io.IOException if it cannot be read
+     */
+    public static JsonNode shipped() throws java.io.IOException {
+        return new com.fasterxml.jackson.databind.ObjectMapper()
+                .readTree(java.nio.file.Path.of("..", "docs", "foxglove", "rtaware-layout.json").toFile());
     }
 
     private void layout(JsonNode layout) {
