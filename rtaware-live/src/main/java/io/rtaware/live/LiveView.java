@@ -49,6 +49,8 @@ import org.agrona.concurrent.SleepingMillisIdleStrategy;
  */
 public final class LiveView implements AutoCloseable {
 
+    /** The publisher thread's name: an observer, off the tasks' per-release path. */
+    public static final String PUBLISHER_THREAD = "rtaware-live-publisher";
     /** Wall time between snapshots. */
     static final long PUBLISH_PERIOD_MS = 200;
     /** Least wall time between two grid images. */
@@ -232,7 +234,7 @@ public final class LiveView implements AutoCloseable {
 
         @Override
         public String roleName() {
-            return "rtaware-live-publisher";
+            return PUBLISHER_THREAD;
         }
     }
 

@@ -1,5 +1,6 @@
 package io.rtaware.app.bench;
 
+import io.rtaware.live.LiveView;
 import java.lang.management.ManagementFactory;
 import java.util.Arrays;
 import java.util.Comparator;
@@ -13,11 +14,11 @@ import java.util.Set;
 public final class ThreadAllocation {
 
     /**
-     * Threads of the monitor that are not on the per-release path (they print, stop, or write a
-     * recording from what the task threads handed over).
+     * Threads of the monitor that are not on the per-release path (they print, stop, write a
+     * recording from what the task threads handed over, or build the live view's snapshots).
      */
     private static final Set<String> OFF_PATH = Set.of("rtaware-console", "rtaware-shutdown", "rtaware-stop",
-            "rtaware-recorder");
+            "rtaware-recorder", LiveView.PUBLISHER_THREAD);
 
     private final com.sun.management.ThreadMXBean bean;
     private final long[] ids;
@@ -52,7 +53,7 @@ public final class ThreadAllocation {
      * Snapshots the monitor's threads on the per-release path: every live thread named
      * {@code rtaware-*} (the task threads, the pool workers {@code rtaware-pool-N} and the watchdog
      * {@code rtaware-monitor}) except the
-     * console printer and the stop helpers.
+     * console printer, the stop helpers, the recorder's writer and the live view's publisher.
      *
      * @return the snapshot
      */

@@ -3,6 +3,7 @@ package io.rtaware.app.bench;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.rtaware.live.LiveView;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
@@ -56,6 +57,40 @@ class ThreadAllocationTest {
             mayEnd.countDown();
             task.join();
             idle.join();
+        }
+    }
+
+    @Test
+    void theLiveViewsPublisherIsAnObserverNotAFrameworkThread() throws Exception {
+        CountDownLatch snapshotTaken = new CountDownLatch(1);
+        CountDownLatch allocated = new CountDownLatch(1);
+        CountDownLatch mayEnd = new CountDownLatch(1);
+        Thread publisher = new Thread(() -> {
+            try {
+                snapshotTaken.await();
+                sink = new byte[10_000]; // a snapshot's JSON, off the tasks' path
+                allocated.countDown();
+                mayEnd.await(); // alive while asked: a thread that ended has no count
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, LiveView.PUBLISHER_THREAD);
+        publisher.start();
+        try {
+            while (publisher.getState() != Thread.State.WAITING) {
+                Thread.onSpinWait();
+            }
+            ThreadAllocation.prepare();
+            ThreadAllocation snapshot = ThreadAllocation.ofFrameworkThreads();
+            snapshotTaken.countDown();
+            assertTrue(allocated.await(10, TimeUnit.SECONDS));
+            assertEquals(-1, snapshot.allocatingThreads().indexOf(LiveView.PUBLISHER_THREAD),
+                    "bench --live --fail-on-alloc counted the publisher's JSON as the framework's: "
+                            + snapshot.allocatingThreads());
+        } finally {
+            snapshotTaken.countDown();
+            mayEnd.countDown();
+            publisher.join();
         }
     }
 }
