@@ -4,6 +4,7 @@ import io.rtaware.core.monitor.CycleOutcome;
 import io.rtaware.core.monitor.MonitorListener;
 import io.rtaware.core.monitor.TaskInfo;
 import java.lang.invoke.VarHandle;
+import java.util.Arrays;
 import java.util.concurrent.atomic.AtomicLong;
 
 /**
@@ -97,7 +98,7 @@ final class TimingSeries implements MonitorListener {
         private long lost;
 
         Bins() {
-            java.util.Arrays.fill(index, -1);
+            Arrays.fill(index, -1);
         }
 
         private void add(long bin, long latenessNs, long execNs, long missCount, boolean ran) {
