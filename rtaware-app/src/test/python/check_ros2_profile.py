@@ -146,7 +146,10 @@ def main(path):
                     edges.add((t.header.frame_id, t.child_frame_id))
                     stamped(connection.topic, t.header, timestamp)
             elif hasattr(msg, "header"):
-                frames.add(msg.header.frame_id)
+                # A health array is about the system, not a place: its frame is empty, as
+                # diagnostic_updater leaves it.
+                if not (connection.msgtype == "diagnostic_msgs/msg/DiagnosticArray" and msg.header.frame_id == ""):
+                    frames.add(msg.header.frame_id)
                 stamped(connection.topic, msg.header, timestamp)
             if connection.msgtype == "nav_msgs/msg/Odometry":
                 frames.add(msg.child_frame_id)

@@ -3,8 +3,10 @@ package io.rtaware.live;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
+import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import io.rtaware.core.agent.AgentThread;
+import io.rtaware.core.conditions.Conditions;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
@@ -34,7 +36,12 @@ import org.agrona.concurrent.SleepingMillisIdleStrategy;
  * background loop ({@link AgentThread}), not a task: it reads counters and copies key values the way any observer
  * may ({@link Monitor#read}), so the task threads never wait for a browser.
  *
- * <p>Use: {@link #start} after the monitor is built (before or after it starts), {@link #finish}
+ * <p>The task rows carry strip charts of release lateness and execution time over the last
+ * minute of world time ({@link TimingSeries}: a listener that copies each cycle record into a
+ * preallocated ring on the task's thread, drained by the publisher); the header carries the
+ * machine verdict so far ({@link #machine}), refreshed at most every {@value #MACHINE_PERIOD_MS} ms.
+ *
+ * <p>Use: {@link #start} after the monitor is built and before it starts, {@link #finish}
  * from the termination handler with the report, {@link #close} when the command ends (it
  * lingers as configured). When the options say off, every method does nothing.
  *
@@ -42,10 +49,14 @@ import org.agrona.concurrent.SleepingMillisIdleStrategy;
  */
 public final class LiveView implements AutoCloseable {
 
+    /** The publisher thread's name: an observer, off the tasks' per-release path. */
+    public static final String PUBLISHER_THREAD = "rtaware-live-publisher";
     /** Wall time between snapshots. */
     static final long PUBLISH_PERIOD_MS = 200;
     /** Least wall time between two grid images. */
     static final long GRID_PERIOD_MS = 1_000;
+    /** Least wall time between two readings of the machine verdict (each reads the machine's process table). */
+    static final long MACHINE_PERIOD_MS = 1_000;
 
     private final LiveOptions options;
     private final LiveServer server;
@@ -59,6 +70,9 @@ public final class LiveView implements AutoCloseable {
     private final OccupancyGrid grid;
     private volatile Supplier<Pose2d> truePose;
     private volatile String truthKind = "odometry";
+    private volatile Supplier<Conditions> machine;
+    private Conditions machineLatest;
+    private long machineWallNs;
     private volatile boolean finished;
     private volatile boolean closed;
     private long gridGeneration;
@@ -80,11 +94,12 @@ public final class LiveView implements AutoCloseable {
      * Starts the live view of a task set: tasks and keys only (e.g. {@code bench}).
      *
      * @param options where to serve; off gives an inert view
-     * @param monitor the monitor to watch
+     * @param monitor the monitor to watch, not started yet
      * @param out where the {@code live view: URL} line goes
      * @return the view
      * @throws LiveAddressException if the port is in use or the address is not one of this machine
      * @throws IOException if the page cannot be loaded
+     * @throws IllegalStateException if the monitor has started already (the strip charts listen to it)
      */
     public static LiveView start(LiveOptions options, Monitor monitor, PrintStream out) throws IOException {
         return start(options, monitor, null, out);
@@ -100,6 +115,7 @@ public final class LiveView implements AutoCloseable {
      * @return the view
      * @throws LiveAddressException if the port is in use or the address is not one of this machine
      * @throws IOException if the page cannot be loaded
+     * @throws IllegalStateException if the monitor has started already (the strip charts listen to it)
      */
     public static LiveView start(LiveOptions options, Monitor monitor, RunScene scene, PrintStream out)
             throws IOException {
@@ -119,6 +135,12 @@ public final class LiveView implements AutoCloseable {
                     + e.getMessage() + " (--live-port in use, or --live-bind not an address of this machine)");
         }
         LiveView view = new LiveView(options, server, monitor, scene, out);
+        try {
+            monitor.addListener(view.builder.series());
+        } catch (IllegalStateException e) {
+            server.close();
+            throw e;
+        }
         if (scene != null && scene.world() != null) {
             server.putResource("/world.png", "image/png", MapImages.world(scene.world()));
         }
@@ -162,6 +184,17 @@ public final class LiveView implements AutoCloseable {
     }
 
     /**
+     * Names the run's machine conditions so far, shown in the page's header while the run goes
+     * and in the final page ({@code machine}: the verdict and its reasons).
+     *
+     * @param conditions returns the conditions from the run's start to now (after the run, the
+     *     final ones), or null before the measurement starts; called from the publisher thread at most every {@value #MACHINE_PERIOD_MS} ms
+     */
+    public void machine(Supplier<Conditions> conditions) {
+        this.machine = Objects.requireNonNull(conditions, "conditions");
+    }
+
+    /**
      * Publishes the final snapshot: the last live figures plus the report (and the run's own
      * section), which the page shows as the summary and keeps showing on reload.
      *
@@ -201,7 +234,7 @@ public final class LiveView implements AutoCloseable {
 
         @Override
         public String roleName() {
-            return "rtaware-live-publisher";
+            return PUBLISHER_THREAD;
         }
     }
 
@@ -217,10 +250,33 @@ public final class LiveView implements AutoCloseable {
     private ObjectNode snapshot(String state) {
         Supplier<Pose2d> pose = truePose;
         ObjectNode snapshot = builder.build(state, pose == null ? null : pose.get(), truthKind);
+        putMachine(snapshot);
         if (scene != null) {
             world(snapshot);
         }
         return snapshot;
+    }
+
+    /** The machine verdict so far, read again when {@value #MACHINE_PERIOD_MS} ms have passed and at the end. */
+    private void putMachine(ObjectNode snapshot) {
+        Supplier<Conditions> source = machine;
+        if (source == null) {
+            return;
+        }
+        long now = System.nanoTime();
+        if (machineLatest == null || finished || now - machineWallNs >= TimeUnit.MILLISECONDS.toNanos(MACHINE_PERIOD_MS)) {
+            machineLatest = source.get();
+            machineWallNs = now;
+        }
+        if (machineLatest == null) {
+            return; // the measurement has not started yet
+        }
+        ObjectNode node = snapshot.putObject("machine");
+        node.put("verdict", machineLatest.machine());
+        ArrayNode reasons = node.putArray("reasons");
+        machineLatest.machineReasons().forEach(reasons::add);
+        node.put("duration_s", SnapshotBuilder.round(machineLatest.measured().durationS(), 1));
+        node.put("rule", machineLatest.rule());
     }
 
     private void world(ObjectNode snapshot) {

@@ -50,6 +50,7 @@ final class SnapshotBuilder {
     private final List<TaskInfo> tasks;
     private final List<String> keys;
     private final ArrayDeque<Sample> history = new ArrayDeque<>();
+    private final TimingSeries series;
     private final List<double[]> trail = new ArrayList<>();
     private final Odometry odometry = new Odometry();
     private final LaserScan laser = new LaserScan();
@@ -70,6 +71,12 @@ final class SnapshotBuilder {
         this.startWorldNs = startWorldNs;
         this.tasks = monitor.tasks();
         this.keys = monitor.keyNames();
+        this.series = new TimingSeries(tasks.size(), startWorldNs);
+    }
+
+    /** @return the listener that feeds the strip charts; the monitor must have it before it starts */
+    TimingSeries series() {
+        return series;
     }
 
     /**
@@ -107,9 +114,16 @@ final class SnapshotBuilder {
         root.put("time_s", round((nowWorldNs - startWorldNs) / 1e9, 2));
         root.put("time_scale", monitor.clock().timeScale());
         root.put("recent_window_s", round((nowWorldNs - base.worldNs()) / 1e9, 2));
+        series.drain();
+        long lastBin = series.binOf(nowWorldNs);
+        long firstBin = Math.max(0, lastBin - TimingSeries.WINDOW_BINS + 1);
+        root.put("series_bin_s", TimingSeries.BIN_NS / 1e9);
+        root.put("series_from_s", firstBin * TimingSeries.BIN_NS / 1e9);
         ArrayNode taskRows = root.putArray("tasks");
         for (int i = 0; i < n; i++) {
-            taskRows.add(taskRow(tasks.get(i), counters[i], base, now, i));
+            ObjectNode row = taskRow(tasks.get(i), counters[i], base, now, i);
+            row.set("series", seriesOf(series.bins(i), firstBin, lastBin));
+            taskRows.add(row);
         }
         ArrayNode keyRows = root.putArray("keys");
         for (int i = 0; i < keys.size(); i++) {
@@ -165,6 +179,29 @@ final class SnapshotBuilder {
             row.put("exec_p99_of_period", round(c.recentExecP99Ns() / 1e6 / periodMs, 3));
         }
         return row;
+    }
+
+    /**
+     * A task's strip chart: per bin from {@code firstBin} to {@code lastBin}, the largest release
+     * lateness and execution time in ms (null where no cycle was released) and the misses.
+     */
+    private ObjectNode seriesOf(TimingSeries.Bins bins, long firstBin, long lastBin) {
+        ObjectNode node = json.objectNode();
+        ArrayNode lateness = node.putArray("lateness_max_ms");
+        ArrayNode exec = node.putArray("exec_max_ms");
+        ArrayNode misses = node.putArray("misses");
+        for (long k = firstBin; k <= lastBin; k++) {
+            if (bins.cycles(k) > 0) {
+                lateness.add(round(bins.maxLatenessNs(k) / 1e6, 3));
+                exec.add(round(bins.maxExecNs(k) / 1e6, 3));
+            } else {
+                lateness.addNull();
+                exec.addNull();
+            }
+            misses.add(bins.misses(k));
+        }
+        node.put("lost_cycles", bins.lost());
+        return node;
     }
 
     private ObjectNode keyRow(String key, FeedStats feed, Sample base, Sample now, int i) {

@@ -25,7 +25,8 @@ public final class RecordingListener implements MonitorListener {
     }
 
     /**
-     * Creates the recording of a monitor's run (every key, every task) and adds it as a listener.
+     * Creates the recording of a monitor's run (every key, every task, and each task's health on
+     * {@code /diagnostics} once a second) and adds it as a listener.
      * Log times become Unix-epoch ns: the wall clock now plus the world time since now
      * ({@link RecordingPlan#logTimeOffsetNs}), both kept in the metadata.
      *
@@ -37,7 +38,7 @@ public final class RecordingListener implements MonitorListener {
      * @throws IOException if the file cannot be written
      */
     public static RunRecorder attach(Monitor monitor, Path file, RecordingPlan plan) throws IOException {
-        plan.startingNow(monitor.clock().nanos());
+        plan.startingNow(monitor.clock().nanos()).health(monitor);
         List<String> names = monitor.tasks().stream().map(TaskInfo::name).toList();
         List<List<String>> inputs = monitor.tasks().stream().map(TaskInfo::inputKeys).toList();
         RunRecorder recorder = new RunRecorder(file, names, inputs, monitor.keys(), plan);

@@ -1,5 +1,6 @@
 package io.rtaware.record;
 
+import io.rtaware.core.monitor.Monitor;
 import io.rtaware.record.mcap.Compression;
 import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.ros2msg.value.PlanarTransform;
@@ -74,6 +75,7 @@ public final class RecordingPlan {
     private int cycleSlots = 16384;
     private int eventSlots = 4096;
     private RecordingTap tap;
+    private Monitor health;
 
     /**
      * @param key a key name
@@ -182,6 +184,24 @@ public final class RecordingPlan {
     /** @return the tap, or null */
     public RecordingTap tap() {
         return tap;
+    }
+
+    /**
+     * Records {@code /diagnostics}: once a second of world time, a
+     * {@code diagnostic_msgs/msg/DiagnosticArray} with each task's figures from the monitor's
+     * counters, sampled by the writer thread ({@link RecordingListener#attach} sets it).
+     *
+     * @param monitor the monitor whose counters are sampled, or null for none
+     * @return this plan
+     */
+    public RecordingPlan health(Monitor monitor) {
+        health = monitor;
+        return this;
+    }
+
+    /** @return the monitor whose health is recorded, or null */
+    public Monitor health() {
+        return health;
     }
 
     /**

@@ -38,7 +38,9 @@ final class Ros2Channels {
         /** Reliable, volatile, keep last 100: {@code /tf}, as tf2's broadcaster offers it. */
         TF(100, 1, 2),
         /** Best effort, volatile, keep last 1: {@code /clock}, as rclcpp's {@code ClockQoS} offers it. */
-        CLOCK(1, 2, 2);
+        CLOCK(1, 2, 2),
+        /** Reliable, transient local, keep last 1000: {@code /rosout}, as rcl's rosout publisher offers it. */
+        ROSOUT(1000, 1, 1);
 
         private final int depth;
         private final int reliability;

@@ -1,6 +1,7 @@
 package io.rtaware.record;
 
 import io.rtaware.robot.msg.LaserScan;
+import io.rtaware.robot.msg.MediatorDecision;
 import io.rtaware.robot.msg.OccupancyGrid;
 import io.rtaware.robot.msg.Odometry;
 import io.rtaware.robot.msg.PlannedPath;
@@ -15,7 +16,7 @@ import io.rtaware.ros2msg.Ros2Codec;
 import io.rtaware.ros2msg.TwistCodec;
 import io.rtaware.ros2msg.value.PlanarPose;
 
-/** Which value classes are recorded as which standard ROS 2 type. */
+/** Which value classes are recorded as which ROS 2 type (standard, or {@code rtaware_msgs} with named constants). */
 public final class RosCodecs {
 
     private RosCodecs() {
@@ -38,6 +39,8 @@ public final class RosCodecs {
             return new OccupancyGridCodec();
         } else if (type == PlanarPose.class) {
             return new PoseStampedCodec();
+        } else if (type == MediatorDecision.class) {
+            return new MediatorDecisionCodec();
         }
         return null;
     }

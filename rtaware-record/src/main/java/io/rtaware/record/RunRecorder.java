@@ -78,6 +78,20 @@ public final class RunRecorder {
     public static final byte PERIOD_CHANGE = 2;
     /** A cycle threw. */
     public static final byte TASK_ERROR = 3;
+    /** Event kind of a log line of the run's own ({@link #log}): on {@code /rosout} only. */
+    static final byte LOG_LINE = 4;
+    /** {@code rcl_interfaces/msg/Log} severity: information. */
+    public static final byte INFO = 20;
+    /** {@code rcl_interfaces/msg/Log} severity: a warning (deadline misses, expired reads). */
+    public static final byte WARN = 30;
+    /** {@code rcl_interfaces/msg/Log} severity: an error (task errors, collisions). */
+    public static final byte ERROR_LEVEL = 40;
+    /** {@code rcl_interfaces/msg/Log} severity: fatal (what ends a run for safety). */
+    public static final byte FATAL = 50;
+    /** The health topic: a status per task once a second ({@link RecordingPlan#health}). */
+    public static final String DIAGNOSTICS_TOPIC = "/diagnostics";
+    /** The log topic, as ROS 2 nodes log. */
+    public static final String ROSOUT_TOPIC = "/rosout";
 
     /**
      * Channel metadata naming what a message's MCAP sequence number counts: on key channels
@@ -205,8 +219,15 @@ public final class RunRecorder {
             events = new EventRing(layout.add(RecordingPlan.EVENTS_TOPIC, TimingTypes.MONITOR_EVENT.name(),
                     TimingTypes.MONITOR_EVENT.schemaText(), TimingTypes.MONITOR_EVENT.typeHash(),
                     Ros2Channels.Qos.RELIABLE_VOLATILE, Map.of()),
-                    List.copyOf(taskNames), plan.eventSlots());
+                    layout.add(ROSOUT_TOPIC, Ros2Types.LOG.name(), Ros2Types.LOG.schemaText(), Ros2Types.LOG.typeHash(),
+                            Ros2Channels.Qos.ROSOUT, Map.of()),
+                    List.copyOf(taskNames), plan.eventSlots(), plan.logTimeOffsetNs());
             rings.add(events);
+            if (plan.health() != null) {
+                rings.add(new HealthRing(plan.health(), layout.add(DIAGNOSTICS_TOPIC, Ros2Types.DIAGNOSTIC_ARRAY.name(),
+                        Ros2Types.DIAGNOSTIC_ARRAY.schemaText(), Ros2Types.DIAGNOSTIC_ARRAY.typeHash(),
+                        Ros2Channels.Qos.RELIABLE_VOLATILE, Map.of()), plan.worldStartNs(), plan.logTimeOffsetNs()));
+            }
             if (plan.hasGroundTruth()) {
                 PoseStampedCodec poseCodec = new PoseStampedCodec();
                 boolean transforms = !plan.staticTransforms().isEmpty();
@@ -324,6 +345,22 @@ public final class RunRecorder {
      */
     public void event(byte kind, int taskIndex, long timeNs, long a, long b, boolean flag, String key, Object detail) {
         if (!events.offer(kind, taskIndex, timeNs, a, b, flag, key, detail)) {
+            dropped.incrementAndGet();
+        }
+    }
+
+    /**
+     * Hands a log line of the run's own to the recorder (any thread), written on {@code /rosout}
+     * beside the monitor's events in words: what the command saw happen to the robot (a
+     * collision, a near miss, a safety stop). Allocates nothing here; the writer thread encodes it.
+     *
+     * @param level {@link #INFO}, {@link #WARN}, {@link #ERROR_LEVEL} or {@link #FATAL}
+     * @param timeNs world time of what it says
+     * @param name the logger's name, e.g. {@code safety}
+     * @param text the line
+     */
+    public void log(byte level, long timeNs, String name, String text) {
+        if (!events.offerLine(level, timeNs, name, text)) {
             dropped.incrementAndGet();
         }
     }

@@ -175,8 +175,8 @@ class RecordingTapTest {
         assertTrue(scan.schema().contains("float32[] ranges"), "the ros2msg definition: " + scan.schema());
         assertTrue(tap.channels.stream().anyMatch(c -> c.topic().equals("/rtaware/timing/avoid")
                 && c.schemaName().equals("rtaware_msgs/msg/TaskCycle")), "the timing channel: " + tap.channels);
-        // scan + its state, motion, 2 cycles, 1 event, 1 pose + its /tf, /tf_static
-        assertEquals(9, tap.messages.size(), "every message: " + tap.messages);
+        // scan + its state, motion, 2 cycles, 1 event + its /rosout line, 1 pose + its /tf, /tf_static
+        assertEquals(10, tap.messages.size(), "every message: " + tap.messages);
         long scans = tap.messages.stream().filter(m -> m.channel() == scan.id()).count();
         assertEquals(1, scans, "one scan");
         assertEquals(OFFSET_NS + 1_000, tap.messages.stream().filter(m -> m.channel() == scan.id()).findFirst()

@@ -15,6 +15,7 @@ import io.rtaware.record.mcap.McapReader;
 import io.rtaware.record.mcap.McapSummary;
 import io.rtaware.record.mcap.McapVisitor;
 import io.rtaware.ros2msg.LaserScanCodec;
+import io.rtaware.ros2msg.Ros2Types;
 import io.rtaware.ros2msg.Ros2Header;
 import io.rtaware.ros2msg.cdr.CdrReader;
 import java.io.IOException;
@@ -68,10 +69,12 @@ class RunRecorderTest {
         recorder.cycle(1, RunRecorder.SKIPPED, 40_000, 40_000, 40_000, 2, null);
         recorder.event(RunRecorder.DEADLINE_MISS, 0, 20_000, 10_000, 20_000, true, null, null);
         recorder.groundTruth(6_000, 1, 2, 0.5);
+        recorder.log(RunRecorder.ERROR_LEVEL, 7_000, "safety", "collision: the robot touched an obstacle (1 so far)");
         RecordingStats stats = recorder.finish();
         assertNull(stats.error());
         assertEquals(0, stats.dropped());
-        assertEquals(9, stats.messages(), "scan + its state, motion, goals, 3 cycles, 1 event, 1 pose");
+        assertEquals(11, stats.messages(), "scan + its state, motion, goals, 3 cycles, 1 event + its log line, 1 pose, "
+                + "1 line of the run's own");
 
         McapReader reader = McapReader.open(file);
         List<Msg> messages = new ArrayList<>();
@@ -91,7 +94,7 @@ class RunRecorderTest {
                     assertEquals("0", entries.get("windows"), "40 us of records: no whole second of statistics");
                 } else {
                     assertEquals("rosbag2", name, "the other metadata record");
-                    assertTrue(entries.get("serialized_metadata").contains("message_count: 9"), entries.toString());
+                    assertTrue(entries.get("serialized_metadata").contains("message_count: 11"), entries.toString());
                 }
             }
 
@@ -154,7 +157,36 @@ class RunRecorderTest {
         assertEquals(6_000, only(messages, "/ground_truth").logTimeNs());
 
         McapSummary summary = reader.summary();
-        assertEquals(9, summary.statistics().messageCount());
+        assertEquals(11, summary.statistics().messageCount());
+
+        // /rosout: rcl_interfaces/msg/Log, the run's own line, then the monitor's event in words.
+        McapChannel rosout = channels.stream().filter(c -> c.topic().equals(RunRecorder.ROSOUT_TOPIC)).findFirst()
+                .orElseThrow();
+        assertEquals(Ros2Types.LOG.typeHash(), rosout.metadata().get("topic_type_hash"));
+        List<Msg> lines = messages.stream().filter(x -> x.topic().equals(RunRecorder.ROSOUT_TOPIC)).toList();
+        assertEquals(List.of(7_000L, 20_000L), lines.stream().map(Msg::logTimeNs).toList(),
+                "at the line's and the event's time");
+        assertEquals("7000 40 safety collision: the robot touched an obstacle (1 so far)", logLine(lines.get(0).data()));
+        assertEquals("20000 30 avoid deadline miss: the release at 0.000 s did not end by its deadline at 0.000 s "
+                + "(still running)", logLine(lines.get(1).data()));
+    }
+
+    /** An rcl_interfaces/msg/Log as "stamp level name msg", checking it names no file, function or line. */
+    private static String logLine(byte[] data) {
+        CdrReader in = new CdrReader().wrap(data, 0, data.length);
+        long stampNs = in.readInt32() * 1_000_000_000L + in.readInt32();
+        int level = in.readInt8();
+        StringBuilder name = new StringBuilder();
+        StringBuilder text = new StringBuilder();
+        StringBuilder file = new StringBuilder();
+        StringBuilder function = new StringBuilder();
+        in.readString(name);
+        in.readString(text);
+        in.readString(file);
+        in.readString(function);
+        assertEquals("", file.toString() + function);
+        assertEquals(0, in.readInt32(), "line");
+        return stampNs + " " + level + " " + name + " " + text;
     }
 
     @Test

@@ -122,6 +122,17 @@ public final class Ros2Types {
                     + "builtin_interfaces/Time window_start\nbuiltin_interfaces/Time window_stop\n"
                     + "statistics_msgs/StatisticDataPoint[] statistics\n", TIME, STATISTIC_DATA_POINT),
             "RIHS01_36a67fb499fc2a11b8b9ff9ac735ed76e8d5a1f7775d6d5b97b625188ec68e20");
+    /**
+     * {@code rcl_interfaces/msg/Log}, what a ROS 2 node's log lines carry on {@code /rosout} (its
+     * Jazzy hash as {@link TypeDescriptionHash} and rosbags compute it; the severity constants as
+     * rcl_interfaces defines them).
+     */
+    public static final Ros2MessageType LOG = new Ros2MessageType(new MessageDefinition(
+            "rcl_interfaces/msg/Log",
+            "byte DEBUG=10\nbyte INFO=20\nbyte WARN=30\nbyte ERROR=40\nbyte FATAL=50\n"
+                    + "builtin_interfaces/Time stamp\nuint8 level\nstring name\nstring msg\nstring file\n"
+                    + "string function\nuint32 line\n", TIME),
+            "RIHS01_e28ce254ca8abc06abf92773b74602cdbf116ed34fbaf294fb9f81da9f318eac");
 
     private Ros2Types() {
     }

@@ -417,6 +417,7 @@ public final class BenchCommand implements Callable<Integer> {
         } catch (LiveAddressException e) {
             throw new UserError(e.getMessage());
         }
+        CommandMonitor.showMachine(liveView, monitor, () -> conditions);
         MonitorExporter exporter = exportOptions().map(e -> e.start(monitor, List.of(), List.of(), System.err))
                 .orElse(null);
         Thread hook = monitor.installShutdownHook();

@@ -17,6 +17,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
@@ -89,6 +90,9 @@ class FoxgloveLiveEndToEndTest {
             assertTrue(topics.has("/rtaware/timing/" + task), "the timing channel of " + task + ": " + topics);
         }
         assertTrue(topics.path("/rtaware/timing/obstacle").asLong() > 10, "obstacle cycles streamed: " + topics);
+        for (String topic : FoxgloveLayoutCheck.topics(FoxgloveLayoutCheck.shipped(), Map.of())) {
+            assertTrue(topics.path(topic).asLong() > 0, "the shipped layout's " + topic + " streamed live: " + topics);
+        }
         assertEquals("rtaware run", seen.path("server").asText(), seen.toString());
     }
 

@@ -22,8 +22,10 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * End to end in a real browser: {@code rtaware run --live} on the short course, headless
  * Chromium (driven over the DevTools protocol) opens the page, the robot and the task rows
- * appear, the numbers move, a screenshot is saved to {@code target/live-view.png}, and after the
- * run the page shows the final summary, also on reload. Skipped, saying so, without Chromium
+ * appear, the numbers move, each task's strip chart draws its lateness and execution time on a
+ * minute-long time axis, the header shows the machine verdict so far, a screenshot is saved to
+ * {@code target/live-view.png}, and after the run the page shows the final summary, which names
+ * the figures by odometry and those in truth, also on reload. Skipped, saying so, without Chromium
  * ({@code apt-get install -y chromium}).
  */
 class LiveBrowserTest {
@@ -72,6 +74,16 @@ class LiveBrowserTest {
                         "task runs grow between two looks: " + first + " then " + second);
                 assertTrue(!second.path("robot").asText().equals(first.path("robot").asText())
                         || second.path("state").asText().equals("finished"), "the robot moves: " + first + " " + second);
+                JsonNode strips = awaitPage(browser, "[...document.querySelectorAll('#strips canvas')]"
+                        + ".filter(c => Number(c.dataset.points) > 0).length === 6", 15);
+                assertEquals(6, strips.path("strips").size(), "a strip chart per task: " + strips);
+                strips.path("strips").forEach(c -> {
+                    assertTrue(c.path("points").asInt() > 0, "lateness and execution time drawn: " + c);
+                    assertEquals("0-60", c.path("axis").asText(), "a minute of world time from the start: " + c);
+                });
+                assertTrue(strips.path("machine").asText().matches("(quiet|busy|disturbed|unknown) \\(over \\d+ s\\)"),
+                        "the machine verdict so far in the header: " + strips);
+                assertTrue(!strips.path("machineReason").asText().isEmpty(), "and its reasons: " + strips);
                 Path shot = Path.of("target", "live-view.png");
                 Files.createDirectories(shot.getParent());
                 browser.screenshot(shot);
@@ -83,6 +95,11 @@ class LiveBrowserTest {
                 JsonNode reloaded = awaitPage(browser, "!!latest && latest.state === 'finished' && rows.length === 6", 15);
                 assertTrue(reloaded.path("final").asText().contains("completed"), "the same summary after a reload: "
                         + reloaded);
+                assertTrue(reloaded.path("final").asText().contains("1 of 1 by odometry"),
+                        "the final page says which figures are the robot's belief: " + reloaded);
+                assertTrue(reloaded.path("final").asText().contains("in truth (ground truth)")
+                        && reloaded.path("final").asText().contains("in truth (the simulator's contacts)"),
+                        "and which are measured in truth: " + reloaded);
                 browser.screenshot(Path.of("target", "live-view-final.png"));
             }
             assertEquals(0, run.get(60, TimeUnit.SECONDS), "exit status; output:\n" + stdout);
@@ -107,6 +124,10 @@ class LiveBrowserTest {
             + " let runs = 0; rows.forEach(r => runs += Number(r.children[2].textContent));"
             + " return { rows: rows.length, runs: runs, state: document.getElementById('state').textContent,"
             + " robot: document.getElementById('map').dataset.robot || '',"
+            + " strips: [...document.querySelectorAll('#strips canvas')].map(c => ({ points: Number(c.dataset.points),"
+            + " misses: Number(c.dataset.misses), axis: c.dataset.axis })),"
+            + " machine: document.getElementById('machine').textContent,"
+            + " machineReason: document.getElementById('machineReason').textContent,"
             + " final: document.getElementById('final').style.display === 'block'"
             + " ? document.getElementById('final').innerText : '' }; })()";
 

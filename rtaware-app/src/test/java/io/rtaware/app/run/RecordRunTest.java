@@ -7,12 +7,16 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import io.rtaware.app.CliRun;
 import io.rtaware.app.RtawareCli;
+import io.rtaware.app.foxglove.FoxgloveLayoutCheck;
 import io.rtaware.record.RecordingPlan;
 import io.rtaware.record.StateJsonMessage;
 import io.rtaware.record.mcap.McapChannel;
 import io.rtaware.record.mcap.McapReader;
+import io.rtaware.record.mcap.McapSchema;
 import io.rtaware.record.mcap.McapSummary;
 import io.rtaware.record.mcap.McapVisitor;
 import io.rtaware.robot.msg.LaserScan;
@@ -28,8 +32,10 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -220,6 +226,64 @@ class RecordRunTest {
             }
         }
         return false;
+    }
+
+    /** The recording's channels by topic, with their schemas. */
+    private static Map<String, FoxgloveLayoutCheck.Channel> channels() throws IOException {
+        McapSummary summary = McapReader.open(recording).summary();
+        Map<String, FoxgloveLayoutCheck.Channel> channels = new HashMap<>();
+        for (McapChannel c : summary.channels()) {
+            McapSchema schema = summary.schemas().stream().filter(s -> s.id() == c.schemaId()).findFirst().orElseThrow();
+            assertEquals("ros2msg", schema.encoding(), c.topic());
+            channels.put(c.topic(), new FoxgloveLayoutCheck.Channel(schema.name(), schema.data()));
+        }
+        return channels;
+    }
+
+    @Test
+    void theShippedFoxgloveLayoutReadsOnlyTopicsAndFieldsTheRecordingAdvertises() throws Exception {
+        JsonNode layout = FoxgloveLayoutCheck.shipped();
+        Map<String, FoxgloveLayoutCheck.Channel> channels = channels();
+        assertEquals(List.of(), FoxgloveLayoutCheck.problems(layout, channels));
+        Set<String> read = FoxgloveLayoutCheck.topics(layout, channels);
+        for (String task : List.of("player", "obstacle", "occupancy", "planner", "waypoint", "mediator")) {
+            assertTrue(read.contains("/rtaware/timing/" + task), "every task of the run is plotted: " + read);
+        }
+        assertEquals(Set.of("/map", "/scan", "/plan", "/ground_truth", "/rtaware/timing/player", "/rtaware/timing/obstacle",
+                "/rtaware/timing/occupancy", "/rtaware/timing/planner", "/rtaware/timing/waypoint",
+                "/rtaware/timing/mediator", "/rtaware/data/mediator.decision", "/rosout", "/diagnostics"), read);
+        assertEquals(12, layout.path("configById").path("Plot!lateness").path("paths").size()
+                + layout.path("configById").path("Plot!exec").path("paths").size(), "lateness and exec of six tasks");
+    }
+
+    @Test
+    void aLayoutNamingATopicOrFieldTheRecordingLacksFails() throws Exception {
+        Map<String, FoxgloveLayoutCheck.Channel> channels = channels();
+        ObjectNode layout = (ObjectNode) FoxgloveLayoutCheck.shipped();
+        ObjectNode configs = (ObjectNode) layout.path("configById");
+        ArrayNode lateness = (ArrayNode) configs.path("Plot!lateness").path("paths");
+        ((ObjectNode) lateness.get(0)).put("value", "/rtaware/timing/player.latenes");
+        ((ObjectNode) lateness.get(1)).put("value", "/rtaware/timing/steering.lateness");
+        ((ObjectNode) lateness.get(2)).put("value", "/rtaware/timing/occupancy.input_generations");
+        ((ObjectNode) lateness.get(3)).put("value", "/rtaware/timing/planner.outcome");
+        ((ObjectNode) configs.path("StateTransitions!winner").path("paths").get(0))
+                .put("value", "\"/rtaware/data/mediator.decision\".winner{stale==true}");
+        ((ArrayNode) configs.path("Plot!exec").path("paths")).addObject().put("value", "/odom.pose.pose.position.w");
+        ((ObjectNode) configs.path("3D!map").path("topics")).putObject("/costmap");
+        ((ObjectNode) configs.path("RosOut!events")).put("topicToRender", "/rtaware/events");
+        ((ObjectNode) configs.path("Table!tasks")).put("topicPath", "/diagnostics.status.name");
+        assertEquals(List.of(
+                "3D!map: topic /costmap is not advertised by the recording",
+                "Plot!lateness: /rtaware/timing/player.latenes: no field 'latenes' in rtaware_msgs/msg/TaskCycle",
+                "Plot!lateness: topic /rtaware/timing/steering is not advertised by the recording",
+                "Plot!lateness: /rtaware/timing/occupancy.input_generations ends on int64[], not a value this panel draws",
+                "Plot!lateness: /rtaware/timing/planner.outcome ends on string, not a value this panel draws",
+                "Plot!exec: /odom.pose.pose.position.w: no field 'w' in geometry_msgs/Point",
+                "StateTransitions!winner: \"/rtaware/data/mediator.decision\".winner{stale==true}: the filter {stale==true}"
+                        + " names no field of uint8",
+                "Table!tasks: /diagnostics.status.name: field name of an array without an index or slice",
+                "RosOut!events: /rtaware/events is rtaware_msgs/msg/MonitorEvent, not a type the Log panel reads "
+                        + FoxgloveLayoutCheck.LOG_TYPES), FoxgloveLayoutCheck.problems(layout, channels));
     }
 
     @Test

@@ -79,12 +79,28 @@ public final class ConditionsMeter {
             if (finished == null) {
                 HostSample end = host.sample();
                 pauses.close(); // first: the JVM may deliver the last pauses while closing
-                double wallPeriodMs = shortestPeriodWorldMs / setup.timeScale();
-                MeasuredConditions measured = MeasuredConditions.between(start, end, pauses,
-                        MachineVerdict.PAUSE_PERIOD_FRACTION * wallPeriodMs);
-                finished = Conditions.of(setup, measured, MachineVerdict.of(measured, wallPeriodMs));
+                finished = between(end, shortestPeriodWorldMs);
             }
             return finished;
+        }
+
+        /**
+         * The conditions from the start to now, by the same rule, for a view of the run while it
+         * goes; the measurement goes on. Once {@link #finish} has run, its conditions. Reads the
+         * machine's files: call it from an observer's thread, not a task's.
+         *
+         * @param shortestPeriodWorldMs as for {@link #finish}
+         * @return the conditions so far, with the verdict on them
+         */
+        public synchronized Conditions sofar(double shortestPeriodWorldMs) {
+            return finished != null ? finished : between(host.sample(), shortestPeriodWorldMs);
+        }
+
+        private Conditions between(HostSample end, double shortestPeriodWorldMs) {
+            double wallPeriodMs = shortestPeriodWorldMs / setup.timeScale();
+            MeasuredConditions measured = MeasuredConditions.between(start, end, pauses,
+                    MachineVerdict.PAUSE_PERIOD_FRACTION * wallPeriodMs);
+            return Conditions.of(setup, measured, MachineVerdict.of(measured, wallPeriodMs));
         }
     }
 

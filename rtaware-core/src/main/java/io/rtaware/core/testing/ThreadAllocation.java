@@ -20,11 +20,11 @@ public final class ThreadAllocation {
     public static final String FRAMEWORK_PREFIX = "rtaware-";
 
     /**
-     * Threads of the framework that are not on the per-release path (they print, stop, or write a
-     * recording from what the task threads handed over).
+     * Threads of the framework that are not on the per-release path (they print, stop, write a
+     * recording from what the task threads handed over, or build the live view's snapshots).
      */
     private static final Set<String> OFF_PATH = Set.of("rtaware-console", "rtaware-shutdown", "rtaware-stop",
-            "rtaware-recorder");
+            "rtaware-recorder", "rtaware-live-publisher");
 
     private final com.sun.management.ThreadMXBean bean;
     private final long[] ids;
@@ -58,8 +58,8 @@ public final class ThreadAllocation {
     /**
      * Snapshots the framework's threads on the per-release path: every live thread named
      * {@value #FRAMEWORK_PREFIX}{@code *} (the task threads, the pool workers {@code rtaware-pool-N}
-     * and the watchdog {@code rtaware-monitor}) except the console printer, the stop helpers and
-     * the recorder's writer.
+     * and the watchdog {@code rtaware-monitor}) except the console printer, the stop helpers, the
+     * recorder's writer and the live view's publisher.
      *
      * @return the snapshot
      */

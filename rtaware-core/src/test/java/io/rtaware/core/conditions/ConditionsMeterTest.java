@@ -64,6 +64,26 @@ class ConditionsMeterTest {
     }
 
     @Test
+    void theVerdictSoFarFollowsTheRunAndIsTheFinalOneOnceFinished(@TempDir Path root) throws IOException {
+        HostReaderTest.lay("busy-start", root);
+        AtomicLong now = new AtomicLong();
+        FakeJvm jvm = new FakeJvm();
+        ConditionsMeter.Span span = new ConditionsMeter(new HostReader(new HostFiles(root), now::get), jvm,
+                new BuildInfo("0.1.0", null)).start(1, "none");
+        HostReaderTest.lay("busy-end", root);
+        now.set(10_000_000_000L);
+        Conditions later = span.sofar(100);
+        assertEquals("busy", later.machine(), "the other processes' 1.6 CPUs since the start");
+        assertEquals(10.0, later.measured().durationS(), 1e-12);
+        assertTrue(!jvm.closed, "the measurement goes on");
+        jvm.gcCount = 2;
+        assertEquals(2, span.sofar(100).measured().gcCount(), "pauses since the last look count too");
+        Conditions end = span.finish(100);
+        now.set(20_000_000_000L);
+        assertEquals(end, span.sofar(100), "after the finish, the final conditions");
+    }
+
+    @Test
     void stopsAreJudgedAgainstThePeriodInWallTime(@TempDir Path root) throws IOException {
         for (double scale : new double[] {1, 10}) {
             HostReaderTest.lay("busy-start", root);

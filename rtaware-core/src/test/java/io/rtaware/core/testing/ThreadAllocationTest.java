@@ -96,4 +96,39 @@ class ThreadAllocationTest {
             worker.thread.join();
         }
     }
+
+    /** The live view's publisher ({@code LiveView.PUBLISHER_THREAD} in rtaware-live) builds JSON off the tasks' path. */
+    @Test
+    void theLiveViewsPublisherIsAnObserverNotAFrameworkThread() throws Exception {
+        CountDownLatch snapshotTaken = new CountDownLatch(1);
+        CountDownLatch allocated = new CountDownLatch(1);
+        CountDownLatch mayEnd = new CountDownLatch(1);
+        Thread publisher = new Thread(() -> {
+            try {
+                snapshotTaken.await();
+                sink = new byte[10_000]; // a snapshot's JSON, off the tasks' path
+                allocated.countDown();
+                mayEnd.await(); // alive while asked: a thread that ended has no count
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "rtaware-live-publisher");
+        publisher.start();
+        try {
+            while (publisher.getState() != Thread.State.WAITING) {
+                Thread.onSpinWait();
+            }
+            ThreadAllocation.prepare();
+            ThreadAllocation snapshot = ThreadAllocation.ofFrameworkThreads();
+            snapshotTaken.countDown();
+            assertTrue(allocated.await(10, TimeUnit.SECONDS));
+            assertEquals(-1, snapshot.allocatingThreads().indexOf("rtaware-live-publisher"),
+                    "bench --live --fail-on-alloc counted the publisher's JSON as the framework's: "
+                            + snapshot.allocatingThreads());
+        } finally {
+            snapshotTaken.countDown();
+            mayEnd.countDown();
+            publisher.join();
+        }
+    }
 }

@@ -5,6 +5,7 @@ import io.rtaware.core.data.Output;
 import io.rtaware.core.task.Task;
 import io.rtaware.core.task.TaskSetup;
 import io.rtaware.nav.logic.MediatorLogic;
+import io.rtaware.robot.msg.MediatorDecision;
 import io.rtaware.robot.msg.MotionRequest;
 import io.rtaware.robot.msg.RobotKeys;
 import io.rtaware.robot.msg.VelocityCommand;
@@ -13,7 +14,8 @@ import java.time.Duration;
 /**
  * The position mediator ({@code mediator}): consumes {@code motion.avoid} and
  * {@code motion.waypoint}, each with a declared maximum age, and publishes on {@code motor}
- * every cycle the command {@link MediatorLogic} decides. It counts who won each cycle; a stop
+ * every cycle the command {@link MediatorLogic} decides, and on {@code mediator.decision} who won
+ * (so a recording shows the winner over time). It counts who won each cycle; a stop
  * because a request was missing or too old is counted both as a stop and as a stale stop (the
  * monitor also reports the expired read).
  *
@@ -26,6 +28,7 @@ public final class PositionMediatorTask implements Task {
     private Input<MotionRequest> avoid;
     private Input<MotionRequest> waypoint;
     private Output<VelocityCommand> motor;
+    private Output<MediatorDecision> decision;
 
     // Written only by the task's thread; volatile so that counts() sees them.
     private volatile long obstacleWins;
@@ -48,6 +51,7 @@ public final class PositionMediatorTask implements Task {
         avoid = setup.consume(RobotKeys.MOTION_AVOID, Duration.ofNanos(avoidMaxAgeNs));
         waypoint = setup.consume(RobotKeys.MOTION_WAYPOINT, Duration.ofNanos(waypointMaxAgeNs));
         motor = setup.produce(RobotKeys.MOTOR);
+        decision = setup.produce(RobotKeys.MEDIATOR_DECISION);
     }
 
     @Override
@@ -67,6 +71,13 @@ public final class PositionMediatorTask implements Task {
             }
         }
         motor.publish();
+        decision.value().winner = switch (d) {
+            case OBSTACLE -> MediatorDecision.OBSTACLE;
+            case WAYPOINT -> MediatorDecision.WAYPOINT;
+            case IDLE_STOP -> MediatorDecision.IDLE_STOP;
+            case STALE_STOP -> MediatorDecision.STALE_STOP;
+        };
+        decision.publish();
     }
 
     /**

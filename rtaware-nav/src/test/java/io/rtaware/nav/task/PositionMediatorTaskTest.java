@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.rtaware.core.testing.TaskHarness;
+import io.rtaware.robot.msg.MediatorDecision;
 import io.rtaware.robot.msg.MotionRequest;
 import io.rtaware.robot.msg.RobotKeys;
 import io.rtaware.robot.msg.VelocityCommand;
@@ -24,6 +25,7 @@ class PositionMediatorTaskTest {
         h.cycle("mediator", 0);
         assertTrue(h.read(RobotKeys.MOTOR).isStop(), "nothing written yet: stop");
         assertEquals(1, task.counts().staleStops());
+        assertEquals(MediatorDecision.STALE_STOP, h.read(RobotKeys.MEDIATOR_DECISION).winner);
 
         avoid.release();
         waypoint.request(0.1, 0.2);
@@ -33,11 +35,13 @@ class PositionMediatorTaskTest {
         VelocityCommand motor = h.read(RobotKeys.MOTOR);
         assertEquals(0.1, motor.vxMps);
         assertEquals(0.2, motor.omegaRadPerSec);
+        assertEquals(MediatorDecision.WAYPOINT, h.read(RobotKeys.MEDIATOR_DECISION).winner, "the winner of each cycle");
 
         avoid.request(0.03, -0.5);
         h.publish(RobotKeys.MOTION_AVOID, avoid, 100 * MS);
         h.cycle("mediator", 100 * MS);
         assertEquals(-0.5, h.read(RobotKeys.MOTOR).omegaRadPerSec);
+        assertEquals(MediatorDecision.OBSTACLE, h.read(RobotKeys.MEDIATOR_DECISION).winner);
 
         // The avoider misses its deadlines: at 300 ms its request is 200 ms old (> 150 ms).
         h.cycle("mediator", 300 * MS);

@@ -42,6 +42,9 @@ public final class TimingTypes {
      */
     public static final Ros2MessageType STATE_JSON = load("StateJson");
 
+    /** The position mediator's decision of one cycle: {@code /rtaware/data/mediator.decision}. */
+    public static final Ros2MessageType MEDIATOR_DECISION = load("MediatorDecision");
+
     /** Where the {@code rtaware_msgs} ROS 2 package (package.xml, msg/) lies on the class path. */
     public static final String PACKAGE_RESOURCE = "/rtaware_msgs/";
 

@@ -14,6 +14,9 @@ public final class RobotKeys {
     public static final Key<Odometry> ODOMETRY = Key.of("odometry", Odometry.class, Odometry::new);
     /** The mediated motor command, produced by the position mediator, sent by the Player data task. */
     public static final Key<VelocityCommand> MOTOR = Key.of("motor", VelocityCommand.class, VelocityCommand::new);
+    /** The position mediator's decision of each cycle: whose request went to the motors ({@link #MOTOR}). */
+    public static final Key<MediatorDecision> MEDIATOR_DECISION =
+            Key.of("mediator.decision", MediatorDecision.class, MediatorDecision::new);
     /** Motion request of the obstacle avoider. */
     public static final Key<MotionRequest> MOTION_AVOID =
             Key.of("motion.avoid", MotionRequest.class, MotionRequest::new);

@@ -4,9 +4,7 @@ import io.rtaware.core.agent.AgentThread;
 import io.rtaware.core.data.FeedStats;
 import io.rtaware.core.data.StateValue;
 import io.rtaware.core.monitor.Monitor;
-import io.rtaware.core.monitor.TaskCounters;
 import io.rtaware.core.monitor.TaskInfo;
-import io.rtaware.core.task.Schedule;
 import io.rtaware.core.time.EpochClock;
 import io.rtaware.robot.msg.Odometry;
 import io.rtaware.ros2.graph.QosProfile;
@@ -18,6 +16,7 @@ import io.rtaware.ros2msg.MetricsMessageCodec;
 import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.ros2msg.Ros2Header;
 import io.rtaware.ros2msg.Ros2Types;
+import io.rtaware.ros2msg.TaskDiagnostics;
 import io.rtaware.ros2msg.TransformMessages;
 import io.rtaware.ros2msg.cdr.CdrWriter;
 import io.rtaware.ros2msg.statistics.TimingStatistics;
@@ -30,7 +29,6 @@ import java.io.IOException;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
 import java.util.concurrent.TimeUnit;
@@ -81,7 +79,7 @@ public final class MonitorExporter implements AutoCloseable {
     /** The name of the exporter's thread. */
     public static final String THREAD_NAME = "ros2-export";
     private static final long DIAGNOSTICS_PERIOD_NS = TimeUnit.SECONDS.toNanos(1);
-    private static final int VALUES_PER_STATUS = 10;
+    private static final int VALUES_PER_STATUS = TaskDiagnostics.VALUES;
     private static final int MAX_MESSAGE_BYTES = 1 << 20;
 
     private final Monitor monitor;
@@ -104,8 +102,7 @@ public final class MonitorExporter implements AutoCloseable {
     private final CdrWriter writer = new CdrWriter(MAX_MESSAGE_BYTES);
     private final Ros2Header header = new Ros2Header();
     private final EpochClock epoch = new EpochClock();
-    private final long[] lastMisses;
-    private final long[] lastErrors;
+    private final TaskDiagnostics taskDiagnostics;
     /** The publishing loop, started once the node and publishers are declared. */
     private volatile AgentThread loop;
     private volatile String failure;
@@ -156,8 +153,7 @@ public final class MonitorExporter implements AutoCloseable {
         monitor.addListener(feed);
         int statuses = monitor.tasks().size() + monitor.keyNames().size();
         array = new DiagnosticArray(statuses, VALUES_PER_STATUS);
-        lastMisses = new long[monitor.tasks().size()];
-        lastErrors = new long[monitor.tasks().size()];
+        taskDiagnostics = TaskDiagnostics.of(monitor.tasks());
     }
 
     private static <T extends StateValue<T>> Slot<T> slot(Ros2Node node, ExportedKey<T> k) throws ZenohException {
@@ -272,7 +268,7 @@ public final class MonitorExporter implements AutoCloseable {
         array.clear();
         List<TaskInfo> tasks = monitor.tasks();
         for (TaskInfo task : tasks) {
-            taskStatus(task, monitor.counters(task.index()), array.add());
+            taskDiagnostics.fill(task, monitor.counters(task.index()), array.add());
         }
         for (String key : monitor.keyNames()) {
             keyStatus(key, array.add());
@@ -283,31 +279,6 @@ public final class MonitorExporter implements AutoCloseable {
         arraysPublished++;
     }
 
-    private void taskStatus(TaskInfo task, TaskCounters c, DiagnosticStatus s) {
-        int i = task.index();
-        long periodNs = task.schedule() instanceof Schedule.Periodic p ? p.periodNs() : 0;
-        double missPct = c.releases() == 0 ? 0.0 : 100.0 * c.misses() / c.releases();
-        s.level = c.errors() > lastErrors[i] ? DiagnosticStatus.ERROR
-                : c.misses() > lastMisses[i] ? DiagnosticStatus.WARN : DiagnosticStatus.OK;
-        lastErrors[i] = c.errors();
-        lastMisses[i] = c.misses();
-        s.name.append("rtaware: task ").append(task.name());
-        s.hardwareId.append("rtaware");
-        s.message.append(String.format(Locale.ROOT, "%d misses (%.2f%%), %d stale runs, exec p99 %.3f ms%s",
-                c.misses(), missPct, c.staleRuns(), c.recentExecP99Ns() / 1e6,
-                periodNs > 0 ? String.format(Locale.ROOT, " of a %.1f ms period", periodNs / 1e6) : ""));
-        value(s, "schedule", task.schedule().kind());
-        value(s, "period_ms", periodNs > 0 ? format(periodNs / 1e6) : "");
-        value(s, "releases", Long.toString(c.releases()));
-        value(s, "runs", Long.toString(c.runs()));
-        value(s, "misses", Long.toString(c.misses()));
-        value(s, "miss_pct", format(missPct));
-        value(s, "stale_runs", Long.toString(c.staleRuns()));
-        value(s, "errors", Long.toString(c.errors()));
-        value(s, "exec_p99_ms", format(c.recentExecP99Ns() / 1e6));
-        value(s, "exec_p99_of_period", periodNs > 0 ? format(c.recentExecP99Ns() / (double) periodNs) : "");
-    }
-
     private void keyStatus(String key, DiagnosticStatus s) {
         FeedStats feed = monitor.feed(key);
         s.level = DiagnosticStatus.OK;
@@ -315,20 +286,10 @@ public final class MonitorExporter implements AutoCloseable {
         s.hardwareId.append("rtaware");
         String topic = topicByKey.get(key);
         s.message.append(topic != null ? "published on " + topic : "no ROS 2 type: health only");
-        value(s, "commits", Long.toString(feed.commits()));
-        value(s, "rate_hz", format(feed.rateHz()));
-        value(s, "producer", String.valueOf(monitor.producer(key)));
-        value(s, "topic", topic != null ? topic : "");
-    }
-
-    private static void value(DiagnosticStatus s, String key, String value) {
-        int i = s.addValue();
-        s.key(i).append(key);
-        s.value(i).append(value);
-    }
-
-    private static String format(double v) {
-        return Double.isFinite(v) ? String.format(Locale.ROOT, "%.3f", v) : "";
+        TaskDiagnostics.value(s, "commits", Long.toString(feed.commits()));
+        TaskDiagnostics.value(s, "rate_hz", TaskDiagnostics.format(feed.rateHz()));
+        TaskDiagnostics.value(s, "producer", String.valueOf(monitor.producer(key)));
+        TaskDiagnostics.value(s, "topic", topic != null ? topic : "");
     }
 
     /** @return the topics the keys are published on, by key name */
