@@ -73,10 +73,11 @@ public final class ControllerMetadata {
 
     /**
      * The recorded configuration with other periods, everything derived from the periods (the
-     * mediator's period, its maximum request ages) derived again, as {@code run} derives them.
+     * mediator's period unless named, its maximum request ages) derived again, as {@code run}
+     * derives them.
      *
      * @param recorded the recorded configuration
-     * @param periodsNs period of each behavior by task name
+     * @param periodsNs period of each behavior, and optionally of the mediator, by task name
      * @return the configuration to run
      */
     public static NavConfig withPeriods(NavConfig recorded, Map<String, Long> periodsNs) {
@@ -104,6 +105,9 @@ public final class ControllerMetadata {
                 .externalWaypoints(recorded.course().external());
         for (Behavior behavior : Behavior.values()) {
             b.periodNs(behavior, periodsNs.getOrDefault(behavior.taskName(), recorded.periods().ns(behavior)));
+        }
+        if (periodsNs.containsKey(NavConfig.MEDIATOR)) {
+            b.mediatorPeriodNs(periodsNs.get(NavConfig.MEDIATOR)); // named (period advice does): not derived
         }
         return b.build();
     }

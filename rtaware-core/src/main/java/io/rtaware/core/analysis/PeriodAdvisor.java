@@ -118,15 +118,12 @@ public final class PeriodAdvisor {
                 || MachineVerdict.DISTURBED.equals(machine.verdict()));
         String machineWhy = inflated ? machine.verdict() + " (" + String.join("; ", machine.reasons()) + ")" : "";
         List<Plan> plans = new ArrayList<>();
-        List<String> excluded = new ArrayList<>();
         Map<String, Plan> byName = new HashMap<>();
         for (TaskReport t : report.tasks()) {
             if (t.periodMs() != null && t.periodMs() > 0) {
-                Plan p = new Plan(t, plans.size(), report.data());
+                Plan p = new Plan(t, report.data());
                 plans.add(p);
                 byName.put(t.name(), p);
-            } else {
-                excluded.add(t.name());
             }
         }
         List<Plan> order = producersFirst(plans, byName);
@@ -150,7 +147,9 @@ public final class PeriodAdvisor {
                 failing.responseLowerMs = need;
             }
         }
-        SchedulabilityReport suggested = Schedulability.analyze(scheduled(plans), excluded, cores);
+        Map<String, Double> chosen = new LinkedHashMap<>();
+        plans.forEach(p -> chosen.put(p.name(), p.chosenMs));
+        SchedulabilityReport suggested = Schedulability.analyze(report, chosen, cores);
         Map<String, TaskUtilization> rows = new HashMap<>();
         suggested.tasks().forEach(row -> rows.put(row.task(), row));
         Map<String, AdviceNote> together = releasedTogether(report, inflated, machineWhy);
@@ -162,6 +161,27 @@ public final class PeriodAdvisor {
             items.add(finish(p, rows.get(p.task.name()), cores, together.get(p.task.name()), machineWhy));
         }
         return new Advice(cores, items, suggested);
+    }
+
+    /**
+     * Withdraws items of an advice, as a what-if replay that shows them worse does, and checks
+     * the periods that remain as one set again.
+     *
+     * @param advice the advice
+     * @param report the run it was made from
+     * @param reasons per task to withdraw, why (with the figures that show it)
+     * @return the advice with those items withdrawn (their period stays) and the set check of
+     *     what remains
+     */
+    public static Advice withdraw(Advice advice, Report report, Map<String, String> reasons) {
+        List<PeriodAdvice> items = new ArrayList<>();
+        Map<String, Double> periods = new LinkedHashMap<>();
+        for (PeriodAdvice a : advice.tasks()) {
+            PeriodAdvice item = reasons.containsKey(a.task()) ? a.withdrawn(reasons.get(a.task())) : a;
+            items.add(item);
+            periods.put(item.task(), item.suggestedPeriodMs());
+        }
+        return new Advice(advice.cores(), items, Schedulability.analyze(report, periods, advice.cores()));
     }
 
     /**
@@ -184,7 +204,6 @@ public final class PeriodAdvisor {
     /** One periodic task while its period is chosen. */
     private static final class Plan {
         final TaskReport task;
-        final int index;
         final double periodMs;
         /** Deadline over period. */
         final double ratio;
@@ -200,9 +219,8 @@ public final class PeriodAdvisor {
         boolean held;
         List<PeriodBound> upper = List.of();
 
-        Plan(TaskReport task, int index, List<DataReport> data) {
+        Plan(TaskReport task, List<DataReport> data) {
             this.task = task;
-            this.index = index;
             this.periodMs = task.periodMs();
             this.ratio = task.deadlineMs() == null ? 1.0 : task.deadlineMs() / task.periodMs();
             this.execMs = task.execUs().p99() / 1000.0;

@@ -7,6 +7,7 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 
 /**
  * Schedulability of a set of periodic tasks under rate-monotonic (RM) fixed priorities, from
@@ -53,11 +54,22 @@ public final class Schedulability {
      * @return the analysis of the run's periodic tasks at their periods
      */
     public static SchedulabilityReport analyze(Report report, int cores) {
+        return analyze(report, Map.of(), cores);
+    }
+
+    /**
+     * @param report a finished run
+     * @param periodsMs periods to analyze tasks at instead of the run's, ms, by task name (each
+     *     deadline keeps its ratio to the period); tasks not named keep the run's
+     * @param cores the cores the tasks may use, at least 1
+     * @return the analysis of the run's periodic tasks at those periods
+     */
+    public static SchedulabilityReport analyze(Report report, Map<String, Double> periodsMs, int cores) {
         List<ScheduledTask> periodic = new ArrayList<>();
         List<String> excluded = new ArrayList<>();
         for (TaskReport t : report.tasks()) {
             if (t.periodMs() != null && t.periodMs() > 0) {
-                periodic.add(of(t, t.periodMs()));
+                periodic.add(of(t, periodsMs.getOrDefault(t.name(), t.periodMs())));
             } else {
                 excluded.add(t.name());
             }
