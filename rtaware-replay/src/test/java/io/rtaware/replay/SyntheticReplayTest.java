@@ -215,4 +215,33 @@ class SyntheticReplayTest {
         assertEquals(10, t.misses());
         assertEquals(1, t.staleRuns(), "160 ms: nothing new since the values committed at 110 ms");
     }
+
+    /**
+     * A bench's world time is the machine's monotonic clock (an hour after boot, say), and its
+     * tasks read no sensor: the replay starts at the first recorded release, not at 0 (which made
+     * an hour of releases), and runs no data task.
+     */
+    @Test
+    void whatIfOfARecordingWhoseWorldTimeStartsLateStartsWhereTheRecordingDoes() throws Exception {
+        long t0 = 3_600_000 * MS;
+        Path file = dir.resolve("late.mcap");
+        RunRecorder recorder = new RunRecorder(file, List.of("sensor"), List.of(List.of()), List.of(RobotKeys.ODOMETRY),
+                new RecordingPlan());
+        Odometry pose = new Odometry();
+        for (int k = 0; k < 100; k++) {
+            long release = t0 + k * 10 * MS;
+            recorder.commit(0, k + 1, release + MS, pose);
+            recorder.cycle(0, RunRecorder.OK, release, release, release + MS, 0, new long[0]);
+        }
+        recorder.finish();
+        Recording recording = Recording.load(McapReader.open(file), file);
+        List<TaskSpec> sensor = List.of(new TaskSpec("sensor", Schedule.periodic(10 * MS), ErrorPolicy.CONTINUE,
+                new Sensor()));
+        List<TaskSpec> probe = List.of(new TaskSpec("sensor", Schedule.periodic(10 * MS), ErrorPolicy.CONTINUE,
+                new Sensor()));
+        Report report = WhatIfReplay.replay(recording, sensor, probe).report();
+        assertEquals(List.of("sensor"), report.tasks().stream().map(TaskReport::name).toList(), "no data task");
+        assertEquals(100, report.task("sensor").releases(), "t0, t0 + 10 ms, ..., t0 + 990 ms");
+        assertEquals(0, report.task("sensor").misses());
+    }
 }
