@@ -2,36 +2,37 @@ package io.rtaware.replay;
 
 import io.rtaware.core.analysis.Advice;
 import io.rtaware.core.analysis.PeriodAdvice;
-import io.rtaware.core.analysis.PeriodAdvisor;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.TaskReport;
 import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Durations;
 import java.io.IOException;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
+import java.util.function.Function;
 
 /**
  * Period advice checked against a recording by what-if replays ({@link WhatIfReplay}): the
  * recording replayed with the recorded periods (before), then with each suggested change added
  * in turn, in report order. A change whose replay is worse than the replay before it is
- * withdrawn ({@link PeriodAdvisor#withdraw}) with the figures that show it; the others are kept,
- * and the replay with every kept change is the after. Worse means, over the advised tasks: more
+ * withdrawn ({@link PeriodAdvice#withdrawn}) with the figures that show it, and the advice is
+ * made again with that task at its period (so no other suggestion rests on the withdrawn
+ * change); the changes kept make the after. Worse means, over the advised tasks: more
  * misses of them all together, or of the changed task itself (percent of releases, to two
  * decimals, as the report rounds them), or more expired reads. Stale runs are printed but do not
  * judge: a task run at twice the rate of its input is stale in half its runs by design.
+ * Changes are tried one at a time in report order and kept greedily.
  *
  * <p>What a what-if replay is, and is not: open loop (the robot's path is the recorded one), one
  * core (the step executor runs one cycle at a time), each cycle charged its task's recorded
  * execution times. A change is judged against the same replay without it, so both sides share
  * those limits; advice made for more cores than one may look worse here than it would run.
- * Changes are tried one at a time and kept greedily; the advice is not made again after a
- * withdrawal (a consumer's sampling bound that assumed its producer's new period stays as it
- * was). Stateless.
+ * Stateless.
  */
 public final class AdviceCheck {
 
@@ -70,7 +71,7 @@ public final class AdviceCheck {
      * @param before the replay with the recorded periods
      * @param after the replay with every kept change (the before when none is)
      * @param steps each suggested change, in the order tried
-     * @param advice the advice with the withdrawn changes withdrawn
+     * @param advice the advice as finally made, the withdrawn changes withdrawn
      */
     public record Result(Report before, Report after, List<Step> steps, Advice advice) {
 
@@ -100,47 +101,75 @@ public final class AdviceCheck {
     }
 
     /**
+     * Checks the advice by replays, and makes it again while a replay withdraws a change: the
+     * withdrawn tasks keep their period and the others are advised around it, then checked again
+     * (replays already made are not made again).
+     *
      * @param recording the recording
      * @param controller the controller the recording was made with
      * @param settable the tasks whose period the controller can be given; a change of another is withdrawn
      * @param before the replay with the recorded periods ({@link #replay} with no periods)
-     * @param run the report the advice was made from (for the set check of what remains)
-     * @param advice the advice to check
+     * @param advisor makes the advice, given the items withdrawn so far by task (e.g.
+     *     {@code w -> PeriodAdvisor.advise(run, cores, machine, w)})
      * @return the check
      * @throws IOException as {@link #replay}
      */
     public static Result verify(Recording recording, Controller controller, Set<String> settable, Report before,
-                                Report run, Advice advice) throws IOException {
-        List<String> advised = advice.tasks().stream().map(PeriodAdvice::task).toList();
-        Map<String, Long> kept = new LinkedHashMap<>();
-        Map<String, String> withdrawn = new LinkedHashMap<>();
-        List<Step> steps = new ArrayList<>();
-        Report current = before;
-        for (PeriodAdvice a : advice.tasks()) {
-            if (!a.changesPeriod()) {
-                continue;
+                                Function<Map<String, PeriodAdvice>, Advice> advisor) throws IOException {
+        Map<String, PeriodAdvice> withdrawn = new LinkedHashMap<>();
+        Map<String, Step> withdrawnSteps = new LinkedHashMap<>();
+        Map<Map<String, Long>, Report> replays = new HashMap<>();
+        replays.put(Map.of(), before);
+        while (true) {
+            Advice advice = advisor.apply(withdrawn);
+            List<String> advised = advice.tasks().stream().map(PeriodAdvice::task).toList();
+            Map<String, Long> kept = new LinkedHashMap<>();
+            Map<String, Step> keptSteps = new LinkedHashMap<>();
+            Report current = before;
+            boolean more = false;
+            for (PeriodAdvice a : advice.tasks()) {
+                if (!a.changesPeriod()) {
+                    continue;
+                }
+                double all = missPct(current, advised);
+                String reason;
+                Report candidate = current;
+                Map<String, Long> trial = new LinkedHashMap<>(kept);
+                trial.put(a.task(), Math.round(a.suggestedPeriodMs() * 1e6));
+                if (settable.contains(a.task())) {
+                    candidate = replays.get(trial);
+                    if (candidate == null) {
+                        candidate = replay(recording, controller, trial);
+                        replays.put(trial, candidate);
+                    }
+                    reason = worse(current, candidate, a.task(), advised);
+                } else {
+                    reason = "a what-if replay cannot give '" + a.task() + "' a period";
+                }
+                Step step = new Step(a.task(), a.periodMs(), a.suggestedPeriodMs(), reason == null, all,
+                        missPct(candidate, advised), reason == null ? "" : reason);
+                if (reason == null) {
+                    kept = trial;
+                    current = candidate;
+                    keptSteps.put(a.task(), step);
+                } else {
+                    withdrawn.put(a.task(), a.withdrawn(reason));
+                    withdrawnSteps.put(a.task(), step);
+                    more = true;
+                    break; // the advice is made again without this change before the next is judged
+                }
             }
-            double all = missPct(current, advised);
-            if (!settable.contains(a.task())) {
-                String reason = "a what-if replay cannot give '" + a.task() + "' a period";
-                withdrawn.put(a.task(), reason);
-                steps.add(new Step(a.task(), a.periodMs(), a.suggestedPeriodMs(), false, all, all, reason));
-                continue;
-            }
-            Map<String, Long> trial = new LinkedHashMap<>(kept);
-            trial.put(a.task(), Math.round(a.suggestedPeriodMs() * 1e6));
-            Report candidate = replay(recording, controller, trial);
-            String worse = worse(current, candidate, a.task(), advised);
-            steps.add(new Step(a.task(), a.periodMs(), a.suggestedPeriodMs(), worse == null, all,
-                    missPct(candidate, advised), worse == null ? "" : worse));
-            if (worse == null) {
-                kept = trial;
-                current = candidate;
-            } else {
-                withdrawn.put(a.task(), worse);
+            if (!more) {
+                List<Step> steps = new ArrayList<>();
+                for (String task : advised) {
+                    Step step = withdrawnSteps.containsKey(task) ? withdrawnSteps.get(task) : keptSteps.get(task);
+                    if (step != null) {
+                        steps.add(step);
+                    }
+                }
+                return new Result(before, current, steps, advice);
             }
         }
-        return new Result(before, current, steps, PeriodAdvisor.withdraw(advice, run, withdrawn));
     }
 
     /** @return why {@code candidate} is worse than {@code current}, with the figures, or null if it is not */

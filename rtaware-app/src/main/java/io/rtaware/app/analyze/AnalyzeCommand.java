@@ -3,9 +3,10 @@ package io.rtaware.app.analyze;
 import io.rtaware.app.UserError;
 import io.rtaware.app.replay.ControllerMetadata;
 import io.rtaware.app.replay.ReplayCommand;
-import io.rtaware.app.report.Analysis;
 import io.rtaware.app.report.ReportSections;
 import io.rtaware.core.analysis.AnalysisText;
+import io.rtaware.core.analysis.PeriodAdvisor;
+import io.rtaware.core.analysis.Schedulability;
 import io.rtaware.core.conditions.MachineVerdict;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
@@ -114,26 +115,26 @@ public final class AnalyzeCommand implements Callable<Integer> {
                        Set<String> settable) throws IOException {
         Report before = AdviceCheck.replay(recording, controller, Map.of());
         int n = cores != null ? cores : doc != null ? Runtime.getRuntime().availableProcessors() : recordedCores(recording);
-        Analysis analysis;
-        Report run;
+        MachineVerdict machine = null;
+        Report run = before;
         if (doc != null) {
-            MachineVerdict machine = ReportSections.machine(doc);
+            machine = ReportSections.machine(doc);
             out.println(machine == null ? "machine: not recorded in " + file : machine.text());
             run = doc.report();
-            analysis = ReportSections.analyze(run, n, machine);
         } else {
             out.println("machine: not applied: the advice is made from a replay of " + verify + " with its recorded"
                     + " periods, and every replay below charges the same recorded execution times");
-            run = before;
-            analysis = ReportSections.analyze(before, n, null);
         }
-        AdviceCheck.Result check = AdviceCheck.verify(recording, controller, settable, before, run, analysis.advice());
+        Report advised = run;
+        MachineVerdict judged = machine;
+        AdviceCheck.Result check = AdviceCheck.verify(recording, controller, settable, before,
+                withdrawn -> PeriodAdvisor.advise(advised, n, judged, withdrawn));
         out.println();
         out.print(AdviceCheck.text(check, verify.toString()));
         out.println();
         out.print(AnalysisText.advice(check.advice()));
         out.println();
-        out.print(AnalysisText.schedulability(analysis.schedulability()));
+        out.print(AnalysisText.schedulability(Schedulability.analyze(run, n)));
         return 0;
     }
 

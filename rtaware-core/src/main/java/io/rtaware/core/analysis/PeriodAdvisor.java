@@ -111,6 +111,22 @@ public final class PeriodAdvisor {
      * @return one item per periodic task, in report order, and the check of the suggested set
      */
     public static Advice advise(Report report, int cores, MachineVerdict machine) {
+        return advise(report, cores, machine, Map.of());
+    }
+
+    /**
+     * The advice made again with some changes withdrawn (a what-if replay showed them worse):
+     * those tasks keep their period, and the others are advised around it, so no bound rests on
+     * a change that is not made.
+     *
+     * @param report a finished run
+     * @param cores the cores the tasks may use, at least 1
+     * @param machine the run's machine verdict, or null when unknown
+     * @param withdrawn items already withdrawn ({@link PeriodAdvice#withdrawn}), by task: each
+     *     task keeps its period and its item is this one
+     * @return one item per periodic task, in report order, and the check of the suggested set
+     */
+    public static Advice advise(Report report, int cores, MachineVerdict machine, Map<String, PeriodAdvice> withdrawn) {
         if (cores < 1) {
             throw new IllegalArgumentException("cores must be at least 1, got " + cores);
         }
@@ -129,9 +145,17 @@ public final class PeriodAdvisor {
         List<Plan> order = producersFirst(plans, byName);
         boolean search = plans.size() <= MAX_SEARCHED_TASKS;
         Set<Plan> stuck = new HashSet<>();
+        for (Plan p : plans) {
+            if (withdrawn.containsKey(p.name())) {
+                stuck.add(p); // its period stays whatever the set asks
+            }
+        }
         for (int round = 0; ; round++) {
             for (Plan p : order) {
                 choose(p, report, byName, inflated);
+                if (withdrawn.containsKey(p.name())) {
+                    p.chosenMs = p.periodMs;
+                }
             }
             if (!search || round > plans.size() + 16) {
                 break;
@@ -158,30 +182,11 @@ public final class PeriodAdvisor {
             if (p.responseLowerMs > 0 && Double.isFinite(p.responseLowerMs)) {
                 p.responseLowerMs = responseLowerBoundMs(p, plans, cores); // the others have settled since
             }
-            items.add(finish(p, rows.get(p.task.name()), cores, together.get(p.task.name()), machineWhy));
+            PeriodAdvice item = withdrawn.get(p.name());
+            items.add(item != null ? item
+                    : finish(p, rows.get(p.task.name()), cores, together.get(p.task.name()), machineWhy));
         }
         return new Advice(cores, items, suggested);
-    }
-
-    /**
-     * Withdraws items of an advice, as a what-if replay that shows them worse does, and checks
-     * the periods that remain as one set again.
-     *
-     * @param advice the advice
-     * @param report the run it was made from
-     * @param reasons per task to withdraw, why (with the figures that show it)
-     * @return the advice with those items withdrawn (their period stays) and the set check of
-     *     what remains
-     */
-    public static Advice withdraw(Advice advice, Report report, Map<String, String> reasons) {
-        List<PeriodAdvice> items = new ArrayList<>();
-        Map<String, Double> periods = new LinkedHashMap<>();
-        for (PeriodAdvice a : advice.tasks()) {
-            PeriodAdvice item = reasons.containsKey(a.task()) ? a.withdrawn(reasons.get(a.task())) : a;
-            items.add(item);
-            periods.put(item.task(), item.suggestedPeriodMs());
-        }
-        return new Advice(advice.cores(), items, Schedulability.analyze(report, periods, advice.cores()));
     }
 
     /**

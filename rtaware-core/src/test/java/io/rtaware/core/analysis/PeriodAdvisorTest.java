@@ -326,10 +326,24 @@ class PeriodAdvisorTest {
         assertEquals(0.0, together.get(0).evidence().get("offset_ms"));
     }
 
+    /** A change a replay withdrew keeps its task's period, and no other bound rests on it any more. */
     @Test
-    void printsThePlannerCase() {
-        System.out.println(AnalysisText.advice(PeriodAdvisor.advise(paperRoomRun(), 2)));
-        System.out.println(AnalysisText.schedulability(Schedulability.analyze(paperRoomRun(), 2)));
+    void aWithdrawnChangeKeepsItsPeriodAndTheOthersAreAdvisedAroundIt() {
+        Report run = paperRoomRun();
+        PeriodAdvice occupancy = PeriodAdvisor.advise(run, 2).task("occupancy").withdrawn("a replay showed it worse");
+        assertEquals(PeriodAdvice.WITHDRAWN, occupancy.verdict());
+        assertEquals(100.0, occupancy.suggestedPeriodMs());
+        assertTrue(occupancy.message().startsWith("'occupancy' keeps 100 ms: the suggested 32 ms is withdrawn, a replay"
+                + " showed it worse (it was: 'occupancy' 100 ms -> 32 ms: "), occupancy.message());
+        Advice again = PeriodAdvisor.advise(run, 2, null, Map.of("occupancy", occupancy));
+        assertEquals(occupancy, again.task("occupancy"));
+        PeriodAdvice planner = again.task("planner");
+        assertEquals("sampling of 'odometry' (15.58 Hz)", planner.upperBound(), "the map changes at its measured 9.36 Hz"
+                + " again (53.419 ms), so odometry binds");
+        assertTrue(planner.bounds().stream().anyMatch(b -> b.label().equals("sampling of 'map' (9.36 Hz)")),
+                planner.bounds().toString());
+        assertEquals(100.0, again.suggestedSet().tasks().stream().filter(t -> t.task().equals("occupancy"))
+                .findFirst().orElseThrow().periodMs(), "the set is checked with occupancy at its period");
     }
 
     @Test
