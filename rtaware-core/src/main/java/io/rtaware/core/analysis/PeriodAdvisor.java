@@ -14,6 +14,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
+import java.util.TreeSet;
 
 /**
  * One period per periodic task, from every rule at once. For each task the rules give bounds on
@@ -137,9 +138,21 @@ public final class PeriodAdvisor {
         Map<String, Plan> byName = new HashMap<>();
         for (TaskReport t : report.tasks()) {
             if (t.periodMs() != null && t.periodMs() > 0) {
-                Plan p = new Plan(t, report.data());
+                Plan p = new Plan(t, plans.size());
                 plans.add(p);
                 byName.put(t.name(), p);
+            }
+        }
+        for (DataReport d : report.data()) {
+            Plan producer = byName.get(d.producer());
+            if (producer != null) {
+                producer.outputs.add(d);
+            }
+            for (String consumer : d.consumers()) {
+                Plan p = byName.get(consumer);
+                if (p != null && !consumer.equals(d.producer())) {
+                    p.inputs.add(d);
+                }
             }
         }
         List<Plan> order = producersFirst(plans, byName);
@@ -209,6 +222,8 @@ public final class PeriodAdvisor {
     /** One periodic task while its period is chosen. */
     private static final class Plan {
         final TaskReport task;
+        /** Position among the periodic tasks, in report order. */
+        final int index;
         final double periodMs;
         /** Deadline over period. */
         final double ratio;
@@ -224,20 +239,13 @@ public final class PeriodAdvisor {
         boolean held;
         List<PeriodBound> upper = List.of();
 
-        Plan(TaskReport task, List<DataReport> data) {
+        Plan(TaskReport task, int index) {
             this.task = task;
+            this.index = index;
             this.periodMs = task.periodMs();
             this.ratio = task.deadlineMs() == null ? 1.0 : task.deadlineMs() / task.periodMs();
             this.execMs = task.execUs().p99() / 1000.0;
             this.chosenMs = periodMs;
-            for (DataReport d : data) {
-                if (d.consumers().contains(task.name()) && !d.producer().equals(task.name())) {
-                    inputs.add(d);
-                }
-                if (d.producer().equals(task.name())) {
-                    outputs.add(d);
-                }
-            }
         }
 
         String name() {
@@ -257,25 +265,43 @@ public final class PeriodAdvisor {
         }
     }
 
-    /** Producers before their consumers (report order among equals; a cycle keeps report order). */
+    /**
+     * Producers before their consumers, report order among the tasks ready at once; a cycle of
+     * tasks that consume each other is broken at its task first in report order.
+     */
     private static List<Plan> producersFirst(List<Plan> plans, Map<String, Plan> byName) {
-        Map<Plan, Set<Plan>> needs = new HashMap<>();
+        Map<Plan, Set<Plan>> producers = new HashMap<>();
+        Map<Plan, List<Plan>> consumers = new HashMap<>();
         for (Plan p : plans) {
-            Set<Plan> producers = new HashSet<>();
+            Set<Plan> of = new HashSet<>();
             for (DataReport d : p.inputs) {
                 Plan producer = byName.get(d.producer());
-                if (producer != null) {
-                    producers.add(producer);
+                if (producer != null && of.add(producer)) {
+                    consumers.computeIfAbsent(producer, k -> new ArrayList<>()).add(p);
                 }
             }
-            needs.put(p, producers);
+            producers.put(p, of);
+        }
+        TreeSet<Integer> left = new TreeSet<>();
+        TreeSet<Integer> ready = new TreeSet<>();
+        for (Plan p : plans) {
+            left.add(p.index);
+            if (producers.get(p).isEmpty()) {
+                ready.add(p.index);
+            }
         }
         List<Plan> order = new ArrayList<>();
-        List<Plan> left = new ArrayList<>(plans);
         while (!left.isEmpty()) {
-            Plan next = left.stream().filter(p -> order.containsAll(needs.get(p))).findFirst().orElse(left.get(0));
+            Plan next = plans.get(ready.isEmpty() ? left.first() : ready.first());
+            ready.remove(next.index);
+            left.remove(next.index);
             order.add(next);
-            left.remove(next);
+            for (Plan c : consumers.getOrDefault(next, List.of())) {
+                producers.get(c).remove(next);
+                if (producers.get(c).isEmpty() && left.contains(c.index)) {
+                    ready.add(c.index);
+                }
+            }
         }
         return order;
     }
@@ -398,7 +424,8 @@ public final class PeriodAdvisor {
         }
         for (DataReport d : p.outputs) {
             for (String consumer : d.consumers()) {
-                TaskReport c = report.task(consumer);
+                Plan consuming = byName.get(consumer);
+                TaskReport c = consuming != null ? consuming.task : report.task(consumer);
                 Double maxAgeMs = c == null ? null : c.inputMaxAgeMs().get(d.name());
                 if (maxAgeMs == null) {
                     continue;
@@ -464,12 +491,13 @@ public final class PeriodAdvisor {
         int n = above.size();
         long[] c = new long[n + 1];
         long[] t = new long[n + 1];
+        long[] d = new long[n];
         for (int i = 0; i < n; i++) {
             c[i] = above.get(i).execP99Ns();
             t[i] = above.get(i).periodNs();
+            d[i] = above.get(i).deadlineNs();
         }
-        long[] r = Arrays.copyOf(Schedulability.unboundedResponses(Arrays.copyOf(c, n), Arrays.copyOf(t, n), cores),
-                n + 1);
+        long[] r = Arrays.copyOf(Schedulability.responseTimes(Arrays.copyOf(c, n), Arrays.copyOf(t, n), d, cores), n + 1);
         long execNs = Math.round(f.execMs * 1e6);
         long[] periods = Arrays.stream(t, 0, n).distinct().sorted().toArray();
         for (int j = periods.length - 1; j >= -1; j--) {
@@ -479,12 +507,9 @@ public final class PeriodAdvisor {
             while (count < n && t[count] <= start) {
                 count++;
             }
-            long response = -1;
-            if (cores == 1 || count == 0 || r[count - 1] >= 0) {
-                long[] exec = Arrays.copyOf(c, count + 1);
-                exec[count] = execNs;
-                response = Schedulability.responseNs(exec, t, r, count, cores, Schedulability.HORIZON_NS);
-            }
+            long[] exec = Arrays.copyOf(c, count + 1);
+            exec[count] = execNs;
+            long response = Schedulability.responseNs(exec, t, r, count, cores, Schedulability.HORIZON_NS);
             if (response < 0) {
                 return end == Long.MAX_VALUE ? Double.POSITIVE_INFINITY : end / 1e6;
             }

@@ -26,9 +26,9 @@ import java.util.Map;
  *   in a window of length L {@code W_i(L) = N C_i + min(C_i, L + R_i - C_i - N T_i)},
  *   {@code N = floor((L + R_i - C_i) / T_i)}. This test is <b>sufficient only</b>: a task it
  *   clears meets its deadline whatever the interleaving, a task it does not clear may still
- *   meet it (no exact test is known that is cheap for global scheduling). A higher-priority
- *   task enters with its own response-time bound R_i, past its deadline if need be (rtaware
- *   never has two cycles of one task in flight). It models threads that may run on any of the m cores (the
+ *   meet it (no exact test is known that is cheap for global scheduling). A higher-priority task
+ *   it does not clear enters as one core taken whole (its cycles never overlap: rtaware skips
+ *   the releases that fall while one runs, so one task takes at most one core). It models threads that may run on any of the m cores (the
  *   threads of rtaware's executors are not pinned) under fixed priorities (what
  *   {@code rtaware-rt} gives with SCHED_FIFO); under the operating system's default time
  *   sharing it is a model, not a guarantee. Partitioned scheduling (each task pinned to one
@@ -40,7 +40,7 @@ import java.util.Map;
  */
 public final class Schedulability {
 
-    /** The longest response time followed before it counts as unbounded: a day, in ns. */
+    /** The longest response time followed where no deadline limits it (the advice's search): a day, in ns. */
     static final long HORIZON_NS = 86_400_000_000_000L;
     /** The most fixed-point steps one response time takes before it counts as unbounded. */
     static final int MAX_ITERATIONS = 1_000_000;
@@ -197,10 +197,7 @@ public final class Schedulability {
     /**
      * Response-time analysis on {@code cores} cores, tasks given in priority order (index 0
      * highest): exact on one core, the global bound of Bertogna and Cirinei (sufficient only) on
-     * more. On more than one core a higher-priority task enters the bound with its own response
-     * time even where that passes its deadline (its cycles never overlap: rtaware skips the
-     * releases that fall while a cycle runs); one whose response time has no bound leaves every
-     * task below it without one.
+     * more, where a task above that passes its own deadline counts as one core taken whole.
      *
      * @param execNs worst-case execution time C of each task
      * @param periodNs period T of each task
@@ -211,33 +208,8 @@ public final class Schedulability {
     public static long[] responseTimes(long[] execNs, long[] periodNs, long[] deadlineNs, int cores) {
         int n = execNs.length;
         long[] response = new long[n];
-        if (cores == 1) {
-            for (int k = 0; k < n; k++) {
-                response[k] = responseNs(execNs, periodNs, response, k, 1, deadlineNs[k]);
-            }
-            return response;
-        }
-        long[] unbounded = unboundedResponses(execNs, periodNs, cores);
         for (int k = 0; k < n; k++) {
-            response[k] = unbounded[k] >= 0 && unbounded[k] <= deadlineNs[k] ? unbounded[k] : -1;
-        }
-        return response;
-    }
-
-    /**
-     * @param execNs C of each task, priority order
-     * @param periodNs T of each task
-     * @param cores the cores
-     * @return each task's response time whatever its deadline, or -1 where it passes
-     *     {@link #HORIZON_NS} (or, on more than one core, a task above it does)
-     */
-    static long[] unboundedResponses(long[] execNs, long[] periodNs, int cores) {
-        int n = execNs.length;
-        long[] response = new long[n];
-        boolean bounded = true;
-        for (int k = 0; k < n; k++) {
-            response[k] = bounded ? responseNs(execNs, periodNs, response, k, cores, HORIZON_NS) : -1;
-            bounded = cores == 1 || response[k] >= 0;
+            response[k] = responseNs(execNs, periodNs, response, k, cores, deadlineNs[k]);
         }
         return response;
     }
@@ -248,44 +220,66 @@ public final class Schedulability {
      *
      * @param execNs C of each task
      * @param periodNs T of each task
-     * @param responseNs R of each task above k (read on more than one core only)
+     * @param responseNs R of each task above k, -1 for one past its deadline (read on more than one core only)
      * @param k the task
      * @param cores the cores
      * @param limitNs the longest response time of interest
-     * @return the smallest fixed point, or -1 if it passes {@code limitNs} (or the iteration does
-     *     not settle in time, which only a utilization within a hair of the cores' can cause)
+     * @return the smallest fixed point, or -1 if it passes {@code limitNs}, the tasks above use
+     *     every core, or the iteration does not settle in time (which only a utilization within a
+     *     hair of the cores' can cause)
      */
     static long responseNs(long[] execNs, long[] periodNs, long[] responseNs, int k, int cores, long limitNs) {
+        double above = 0;
+        for (int i = 0; i < k; i++) {
+            // One task occupies at most one core at a time (its cycles never overlap).
+            double u = (double) execNs[i] / periodNs[i];
+            above += cores == 1 ? u : responseNs[i] < 0 ? 1.0 : Math.min(1.0, u);
+        }
+        if (above >= cores) {
+            return -1; // the tasks above fill every core: the response time has no bound
+        }
         long c = execNs[k];
         long r = c;
         for (int step = 0; step < MAX_ITERATIONS && r <= limitNs; step++) {
             long next;
             if (cores == 1) {
                 next = c;
-                for (int i = 0; i < k; i++) {
-                    next += ceilDiv(r, periodNs[i]) * execNs[i];
+                for (int i = 0; i < k && next <= limitNs; i++) {
+                    next = addSat(next, mulSat(ceilDiv(r, periodNs[i]), execNs[i]));
                 }
             } else {
                 long interference = 0;
                 int capped = 0;
                 for (int i = 0; i < k; i++) {
-                    long workload = workloadNs(execNs[i], periodNs[i], responseNs[i], r);
+                    long workload = responseNs[i] < 0 ? Long.MAX_VALUE // passes its deadline: a core taken whole
+                            : workloadNs(execNs[i], periodNs[i], responseNs[i], r);
                     if (workload >= r - c + 1) {
-                        interference += r - c + 1;
+                        interference = addSat(interference, r - c + 1);
                         capped++;
                     } else {
-                        interference += workload;
+                        interference = addSat(interference, workload);
                     }
                 }
-                next = c + interference / cores;
+                next = addSat(c, interference / cores);
                 if (capped >= cores && next != r) {
                     // While at least m terms are capped at R - C + 1, every R has f(R) > R: no fixed
                     // point before the first capped term falls below its cap, so go there at once
-                    // (at 1 ns a step the climb would take millions of steps).
+                    // (at 1 ns a step the climb would take millions of steps). Tasks of equal
+                    // parameters fall below at the same window: a run of them is searched once.
                     long first = Long.MAX_VALUE;
+                    long[] last = null; // {C, T, R, window}: the search before, reused by a task of equal parameters
                     for (int i = 0; i < k; i++) {
-                        if (workloadNs(execNs[i], periodNs[i], responseNs[i], r) >= r - c + 1) {
-                            first = Math.min(first, belowCapNs(execNs[i], periodNs[i], responseNs[i], c, r));
+                        long e = execNs[i];
+                        long p = periodNs[i];
+                        long q = responseNs[i];
+                        if (q < 0) {
+                            continue; // a core taken whole stays capped
+                        }
+                        if (workloadNs(e, p, q, r) >= r - c + 1) {
+                            if (last == null || last[0] != e || last[1] != p || last[2] != q) {
+                                last = new long[] {e, p, q, belowCapNs(e, p, q, c, r)};
+                            }
+                            first = Math.min(first, last[3]);
                         }
                     }
                     next = Math.max(next, first);
@@ -307,7 +301,17 @@ public final class Schedulability {
     private static long workloadNs(long execNs, long periodNs, long responseNs, long windowNs) {
         long reach = windowNs + responseNs - execNs;
         long jobs = Math.floorDiv(reach, periodNs);
-        return jobs * execNs + Math.min(execNs, reach - jobs * periodNs);
+        return addSat(mulSat(jobs, execNs), Math.min(execNs, reach - jobs * periodNs));
+    }
+
+    /** @return {@code a * b} for non-negative a and b, or {@link Long#MAX_VALUE} where it would overflow */
+    private static long mulSat(long a, long b) {
+        return b != 0 && a > Long.MAX_VALUE / b ? Long.MAX_VALUE : a * b;
+    }
+
+    /** @return {@code a + b} for non-negative a and b, or {@link Long#MAX_VALUE} where it would overflow */
+    private static long addSat(long a, long b) {
+        return a > Long.MAX_VALUE - b ? Long.MAX_VALUE : a + b;
     }
 
     /**

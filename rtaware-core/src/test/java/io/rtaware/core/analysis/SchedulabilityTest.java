@@ -78,6 +78,34 @@ class SchedulabilityTest {
         assertEquals(2, r[1], "fewer tasks above than cores: its own time");
     }
 
+    /**
+     * On two cores a task above that passes its own deadline (9 ns of work every 8 ns) takes one
+     * core whole, not every core: the task below it still has the other, R = 5 + floor(1 / 2) = 5.
+     * Two such tasks take both, and the task below has no bound.
+     */
+    @Test
+    void aTaskAbovePastItsDeadlineTakesOneCoreWhole() {
+        assertArrayEquals(new long[] {-1, 5}, Schedulability.responseTimes(new long[] {9, 5}, new long[] {8, 20},
+                new long[] {8, 20}, 2));
+        assertArrayEquals(new long[] {-1, -1, -1}, Schedulability.responseTimes(new long[] {9, 9, 5},
+                new long[] {8, 8, 20}, new long[] {8, 8, 20}, 2));
+    }
+
+    /** A hand-edited report may hold a day of work every nanosecond: no overflow, no endless climb. */
+    @Test
+    void absurdFiguresSaturateInsteadOfOverflowing() {
+        long day = 86_400_000_000_000L;
+        long[] c = {day, day, 1};
+        long[] t = {1, 1, 2};
+        assertArrayEquals(new long[] {day, -1, -1}, Schedulability.responseTimes(c, t, new long[] {day, day, day}));
+        assertArrayEquals(new long[] {day, day, -1}, Schedulability.responseTimes(c, t, new long[] {day, day, day}, 2),
+                "each of the two day-long tasks has a core of its own; the third never gets one");
+        var report = Reports.report(List.of(Reports.task("a", 1e-6, 8.64e16, 8.64e16, 1, 10, 0, 0),
+                Reports.task("b", 1e-6, 1e-3, 1e-3, 1e-3, 10, 0, 0)), List.of(Reports.key("a.out", "a", 1e-9, "b")));
+        Advice advice = PeriodAdvisor.advise(report, 2);
+        assertEquals(2, advice.tasks().size());
+    }
+
     @Test
     void liuLaylandBound() {
         assertEquals(1.0, Schedulability.liuLaylandBound(1), 1e-12);
