@@ -13,12 +13,9 @@ import io.rtaware.core.report.TaskReport;
 import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.TaskSpec;
-import io.rtaware.record.RecordingPlan;
 import io.rtaware.record.RunRecorder;
 import io.rtaware.record.mcap.McapReader;
 import io.rtaware.robot.msg.MotionRequest;
-import io.rtaware.robot.msg.Odometry;
-import io.rtaware.robot.msg.RobotKeys;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
@@ -44,13 +41,7 @@ class AdviceCheckTest {
 
     private Recording recording() throws Exception {
         Path file = dir.resolve("slow-follower.mcap");
-        RunRecorder recorder = new RunRecorder(file, List.of("player", "follower"), List.of(List.of(), List.of("odometry")),
-                List.of(RobotKeys.ODOMETRY, RobotKeys.MOTION_AVOID), new RecordingPlan());
-        Odometry pose = new Odometry();
-        for (int k = 1; k <= 101; k++) {
-            pose.xM = 0.01 * k;
-            recorder.commit(0, k, (k - 1) * 10 * MS, pose);
-        }
+        RunRecorder recorder = SyntheticReplayTest.poseRecorder(file, 101);
         MotionRequest request = new MotionRequest();
         for (int k = 0; k < 25; k++) {
             long release = k * 40 * MS;

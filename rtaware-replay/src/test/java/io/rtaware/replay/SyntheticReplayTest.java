@@ -168,19 +168,29 @@ class SyntheticReplayTest {
      */
     private Recording whatIfRecording() throws Exception {
         Path file = dir.resolve("whatif.mcap");
-        RunRecorder recorder = new RunRecorder(file, List.of("player", "follower"), List.of(List.of(), List.of("odometry")),
-                List.of(RobotKeys.ODOMETRY, RobotKeys.MOTION_AVOID), new RecordingPlan());
-        Odometry pose = new Odometry();
-        for (int k = 1; k <= 11; k++) {
-            pose.xM = 0.01 * k;
-            recorder.commit(0, k, (k - 1) * 10 * MS, pose);
-        }
+        RunRecorder recorder = poseRecorder(file, 11);
         for (int k = 0; k < 4; k++) {
             long release = k * 50 * MS;
             recorder.cycle(1, RunRecorder.OK, release, release, release + 30 * MS, 0, new long[] {1 + 5L * k});
         }
         recorder.finish();
         return Recording.load(McapReader.open(file), file);
+    }
+
+    /**
+     * @param file where to record
+     * @param poses how many poses 'player' commits, one every 10 ms from 0
+     * @return a recorder of 'player' and 'follower' (which reads odometry) with the poses committed
+     */
+    static RunRecorder poseRecorder(Path file, int poses) throws Exception {
+        RunRecorder recorder = new RunRecorder(file, List.of("player", "follower"), List.of(List.of(), List.of("odometry")),
+                List.of(RobotKeys.ODOMETRY, RobotKeys.MOTION_AVOID), new RecordingPlan());
+        Odometry pose = new Odometry();
+        for (int k = 1; k <= poses; k++) {
+            pose.xM = 0.01 * k;
+            recorder.commit(0, k, (k - 1) * 10 * MS, pose);
+        }
+        return recorder;
     }
 
     private static TaskReport follower(Recording recording, long periodNs) throws Exception {

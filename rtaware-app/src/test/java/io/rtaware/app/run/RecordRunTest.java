@@ -155,6 +155,8 @@ class RecordRunTest {
         assertEquals(1, plannerRuns);
         assertTrue(text.lines().anyMatch(l -> l.startsWith("planner ")), "a timing row per task:\n" + text);
         // Issue 34: inspect's words count what run's count (inspect said 'miss 57' where run said 'misses 390').
+        assertTrue(text.lines().anyMatch(l -> l.matches("task +releases +runs +misses +missed runs +skipped +stale +errors .*")),
+                "the run's words, in the run's order:\n" + text);
         JsonNode tasks = new ObjectMapper().readTree(out.resolve("report.json").toFile()).path("tasks");
         for (JsonNode task : tasks) {
             String[] row = text.lines().filter(l -> l.startsWith(task.path("name").asText() + " ")).findFirst()
