@@ -247,7 +247,7 @@ public final class PaperClaims {
                 + "period sweep with collisions counted per period is the claim 'periods above 100 ms' and the sweep-obstacle "
                 + "folder, and a too-fast avoider has no rule here");
         c.unjudged(SAMPLING, Scope.PAPER, "advice, not a measurement: every run's report.json applies it as "
-                + "the period advice's nyquist rule");
+                + "the period advice's sampling bound");
         return new Verdicts(List.copyOf(c.claims), List.copyOf(c.notEvaluated));
     }
 

@@ -5,7 +5,9 @@ import io.rtaware.core.report.ReportDocument;
 import io.rtaware.core.report.TaskReport;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 
 /**
@@ -85,17 +87,29 @@ public final class RunReports {
 
     /**
      * @param advice the report's {@code advice} section (a list of items), or null
-     * @return per task, {@code evidence.max_safe_period_ms} of its {@code reaction} item, or 0 where
-     *     the rule finds no safe period (the item's bound is zero or negative: the input's age and the
-     *     stopping distance alone use up the range)
+     * @return per task, {@code evidence.max_safe_period_ms} of its {@code reaction} bound, or 0 where
+     *     the rule finds no safe period (the bound is zero or negative: the input's age and the
+     *     stopping distance alone use up the range). Reads both shapes of the section: one item per
+     *     task with its {@code bounds} (since issue 34), and one item per rule (before)
      */
     private static Map<String, Double> maxSafePeriods(Object advice) {
         Map<String, Double> safe = new LinkedHashMap<>();
         if (advice instanceof JsonNode items && items.isArray()) {
             for (JsonNode item : items) {
-                JsonNode bound = item.path("evidence").path("max_safe_period_ms");
-                if ("reaction".equals(item.path("rule").asText()) && bound.isNumber()) {
-                    safe.put(item.path("task").asText(), Math.max(0, bound.asDouble()));
+                List<JsonNode> reactions = new ArrayList<>();
+                if ("reaction".equals(item.path("rule").asText())) {
+                    reactions.add(item);
+                }
+                item.path("bounds").forEach(b -> {
+                    if ("reaction".equals(b.path("rule").asText())) {
+                        reactions.add(b);
+                    }
+                });
+                for (JsonNode reaction : reactions) {
+                    JsonNode bound = reaction.path("evidence").path("max_safe_period_ms");
+                    if (bound.isNumber()) {
+                        safe.put(item.path("task").asText(), Math.max(0, bound.asDouble()));
+                    }
                 }
             }
         }

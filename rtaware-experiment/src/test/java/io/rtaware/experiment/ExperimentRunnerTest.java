@@ -62,6 +62,7 @@ class ExperimentRunnerTest {
         assertEquals(300.0, r.tasks().get("occupancy").execP99Us(), 1e-9);
         assertEquals(607.0, r.tasks().get("obstacle").maxSafePeriodMs(), "the reaction rule's bound from the advice");
         assertEquals(null, r.tasks().get("planner").maxSafePeriodMs(), "only reaction items give a bound");
+        assertEquals(42.0, r.tasks().get("waypoint").maxSafePeriodMs(), "a report written before issue 34");
         assertEquals(java.util.Map.of("obstacle", 1L, "waypoint", 2L, "stop", 0L), r.mediatorCycles());
         assertEquals(27L, r.tasks().get("occupancy").skipped(), "54 misses, half of them skipped");
         assertTrue(Files.exists(dir.resolve("runs/set2-run2/trajectory.csv")));

@@ -72,9 +72,12 @@ public final class FakeRun {
         run.put("distance_travelled_m", 25.0);
         run.put("collisions", 0);
         run.put("mediator", Map.of("obstacle", 1, "waypoint", 2, "stop", 0));
-        List<Map<String, Object>> advice = List.of(Map.of("task", "obstacle", "rule", "reaction",
-                "evidence", Map.of("max_safe_period_ms", 600.0 + seed)), Map.of("task", "planner", "rule", "nyquist",
-                "evidence", Map.of("max_safe_period_ms", 1.0)));
+        // One item per task with its bounds (issue 34); waypoint's and planner's in the older shape, one item per rule.
+        List<Map<String, Object>> advice = List.of(Map.of("task", "obstacle", "bounds", List.of(
+                        Map.of("rule", "exec", "evidence", Map.of("exec_p99_ms", 1.0)),
+                        Map.of("rule", "reaction", "evidence", Map.of("max_safe_period_ms", 600.0 + seed)))),
+                Map.of("task", "waypoint", "rule", "reaction", "evidence", Map.of("max_safe_period_ms", 42.0)),
+                Map.of("task", "planner", "rule", "nyquist", "evidence", Map.of("max_safe_period_ms", 1.0)));
         // Scenario 'busy-seed-N': the run with seed N was made beside another process.
         boolean busy = scenario != null && scenario.equals("busy-seed-" + seed);
         Map<String, Object> conditions = new LinkedHashMap<>();

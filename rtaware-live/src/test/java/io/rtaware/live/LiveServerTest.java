@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.core.monitor.Monitor;
+import io.rtaware.core.monitor.TaskCounters;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.time.SystemClock;
 import java.io.ByteArrayOutputStream;
@@ -95,11 +96,14 @@ class LiveServerTest {
             assertEquals("a", a.path("name").asText());
             assertEquals(10.0, a.path("period_ms").asDouble());
             for (String field : new String[] {"releases", "runs", "misses", "miss_pct", "recent_miss_pct", "skipped",
-                    "stale_runs", "errors", "exec_p99_ms", "exec_p99_of_period"}) {
+                    "stale_runs", "errors", "recent_exec_p99_ms", "recent_exec_p99_of_period"}) {
                 assertTrue(a.has(field), "task field " + field + " in " + a);
             }
+            assertFalse(a.has("exec_p99_ms"), "the p99 of the latest runs is not named as the report's whole-run p99");
+            assertEquals(256, s.path("recent_exec_runs").asInt(), "the runs the recent p99 covers, as the core keeps them");
+            assertEquals(TaskCounters.RECENT_EXEC_RUNS, s.path("recent_exec_runs").asInt());
             assertTrue(a.path("runs").asLong() > 0, "a ran: " + a);
-            assertTrue(a.path("exec_p99_ms").asDouble() > 0.1, "live exec p99 of 0.2 ms work: " + a);
+            assertTrue(a.path("recent_exec_p99_ms").asDouble() > 0.1, "live exec p99 of 0.2 ms work: " + a);
             JsonNode key = s.path("keys").get(0);
             assertEquals("a.out", key.path("name").asText());
             assertEquals("a", key.path("producer").asText());
@@ -115,7 +119,13 @@ class LiveServerTest {
         assertEquals("finished", end.path("state").asText());
         assertEquals("rtaware.report/1", end.path("final").path("report").path("schema").asText(),
                 "the final snapshot carries the report");
-        assertTrue(get(view.port(), "/").body().contains("rtaware live view"), "the page is served");
+        String page = get(view.port(), "/").body();
+        assertTrue(page.contains("rtaware live view"), "the page is served");
+        assertFalse(page.contains("latest 128"), "issue 34: the note said 128 cycles where the core keeps 256");
+        assertTrue(page.contains("latest ${s.recent_exec_runs} runs"), "the note takes the count from the snapshot");
+        assertTrue(page.contains("exec p99 (whole run)") && page.contains("recent exec p99"),
+                "the two p99s of one task have two names");
+        assertTrue(page.contains("course time") && page.contains(">elapsed <"), "and so have the two times");
     }
 
     @Test

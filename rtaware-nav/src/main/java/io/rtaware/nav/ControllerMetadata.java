@@ -79,10 +79,11 @@ public final class ControllerMetadata {
 
     /**
      * The recorded configuration with other periods, everything derived from the periods (the
-     * mediator's period, its maximum request ages) derived again, as {@code run} derives them.
+     * mediator's period unless named, its maximum request ages) derived again, as {@code run}
+     * derives them.
      *
      * @param recorded the recorded configuration
-     * @param periodsNs period of each behavior by task name
+     * @param periodsNs period of each behavior, and optionally of the mediator, by task name
      * @return the configuration to run
      * @throws IllegalArgumentException if a name is not a behavior's task (the mediator's period is derived)
      */
@@ -117,6 +118,9 @@ public final class ControllerMetadata {
                 .externalWaypoints(recorded.course().external());
         for (Behavior behavior : Behavior.values()) {
             b.periodNs(behavior, periodsNs.getOrDefault(behavior.taskName(), recorded.periods().ns(behavior)));
+        }
+        if (periodsNs.containsKey(NavConfig.MEDIATOR)) {
+            b.mediatorPeriodNs(periodsNs.get(NavConfig.MEDIATOR)); // named (period advice does): not derived
         }
         return b.build();
     }

@@ -42,7 +42,8 @@ public final class WhatIfReplay {
      * What a what-if replay found.
      *
      * @param report the monitor's report, as a run writes it
-     * @param dataTask the name of the task that fed the recorded sensor stream
+     * @param dataTask the name of the task that fed the recorded sensor stream (no such task runs
+     *     when the controller reads no key it does not produce)
      * @param sensorKeys the keys it fed
      * @param sensorCommits how many values it committed
      */
@@ -79,7 +80,9 @@ public final class WhatIfReplay {
                 feeds.add(feed(key, channel));
             }
         }
-        long startNs = 0;
+        // The replay starts where the recording does: its first sensor value or first release
+        // (world time 0 for a run; a bench's world time is the machine's monotonic clock).
+        long startNs = Long.MAX_VALUE;
         long values = 0;
         for (Feed<?> f : feeds) {
             List<Recording.Commit> commits = f.channel.commits();
@@ -88,14 +91,22 @@ public final class WhatIfReplay {
                 startNs = Math.min(startNs, commits.get(0).timeNs());
             }
         }
+        for (Recording.TaskTimeline timeline : recording.tasks().values()) {
+            if (!timeline.cycles().isEmpty()) {
+                startNs = Math.min(startNs, timeline.cycles().get(0).message().releaseNs());
+            }
+        }
+        startNs = startNs == Long.MAX_VALUE ? 0 : startNs;
         String dataTask = recording.tasks().keySet().stream().filter(t -> !controllerNames.contains(t))
                 .findFirst().orElse("player");
 
         ManualClock clock = new ManualClock(startNs);
         Feed<?>[] fedKeys = feeds.toArray(new Feed<?>[0]); // arrays: iterating them allocates nothing
         Feeder feeder = new Feeder(fedKeys);
-        Monitor.Builder builder = Monitor.builder(clock)
-                .task(new TaskSpec(dataTask, Schedule.continuous(), ErrorPolicy.CONTINUE, feeder));
+        Monitor.Builder builder = Monitor.builder(clock);
+        if (fedKeys.length > 0) { // a controller that reads no sensor (a bench's tasks) has no data task
+            builder.task(new TaskSpec(dataTask, Schedule.continuous(), ErrorPolicy.CONTINUE, feeder));
+        }
         for (TaskSpec spec : controllerTasks) {
             builder.task(new TaskSpec(spec.name(), spec.schedule(), spec.errorPolicy(),
                     new Charged(spec.task(), clock, recordedExecNs(recording, spec.name()))));

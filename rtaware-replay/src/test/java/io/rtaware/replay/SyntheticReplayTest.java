@@ -168,19 +168,29 @@ class SyntheticReplayTest {
      */
     private Recording whatIfRecording() throws Exception {
         Path file = dir.resolve("whatif.mcap");
-        RunRecorder recorder = new RunRecorder(file, List.of("player", "follower"), List.of(List.of(), List.of("odometry")),
-                List.of(RobotKeys.ODOMETRY, RobotKeys.MOTION_AVOID), new RecordingPlan());
-        Odometry pose = new Odometry();
-        for (int k = 1; k <= 11; k++) {
-            pose.xM = 0.01 * k;
-            recorder.commit(0, k, (k - 1) * 10 * MS, pose);
-        }
+        RunRecorder recorder = poseRecorder(file, 11);
         for (int k = 0; k < 4; k++) {
             long release = k * 50 * MS;
             recorder.cycle(1, RunRecorder.OK, release, release, release + 30 * MS, 0, new long[] {1 + 5L * k});
         }
         recorder.finish();
         return Recording.load(McapReader.open(file), file);
+    }
+
+    /**
+     * @param file where to record
+     * @param poses how many poses 'player' commits, one every 10 ms from 0
+     * @return a recorder of 'player' and 'follower' (which reads odometry) with the poses committed
+     */
+    static RunRecorder poseRecorder(Path file, int poses) throws Exception {
+        RunRecorder recorder = new RunRecorder(file, List.of("player", "follower"), List.of(List.of(), List.of("odometry")),
+                List.of(RobotKeys.ODOMETRY, RobotKeys.MOTION_AVOID), new RecordingPlan());
+        Odometry pose = new Odometry();
+        for (int k = 1; k <= poses; k++) {
+            pose.xM = 0.01 * k;
+            recorder.commit(0, k, (k - 1) * 10 * MS, pose);
+        }
+        return recorder;
     }
 
     private static TaskReport follower(Recording recording, long periodNs) throws Exception {
@@ -214,5 +224,34 @@ class SyntheticReplayTest {
         assertEquals(5, t.skipped());
         assertEquals(10, t.misses());
         assertEquals(1, t.staleRuns(), "160 ms: nothing new since the values committed at 110 ms");
+    }
+
+    /**
+     * A bench's world time is the machine's monotonic clock (an hour after boot, say), and its
+     * tasks read no sensor: the replay starts at the first recorded release, not at 0 (which made
+     * an hour of releases), and runs no data task.
+     */
+    @Test
+    void whatIfOfARecordingWhoseWorldTimeStartsLateStartsWhereTheRecordingDoes() throws Exception {
+        long t0 = 3_600_000 * MS;
+        Path file = dir.resolve("late.mcap");
+        RunRecorder recorder = new RunRecorder(file, List.of("sensor"), List.of(List.of()), List.of(RobotKeys.ODOMETRY),
+                new RecordingPlan());
+        Odometry pose = new Odometry();
+        for (int k = 0; k < 100; k++) {
+            long release = t0 + k * 10 * MS;
+            recorder.commit(0, k + 1, release + MS, pose);
+            recorder.cycle(0, RunRecorder.OK, release, release, release + MS, 0, new long[0]);
+        }
+        recorder.finish();
+        Recording recording = Recording.load(McapReader.open(file), file);
+        List<TaskSpec> sensor = List.of(new TaskSpec("sensor", Schedule.periodic(10 * MS), ErrorPolicy.CONTINUE,
+                new Sensor()));
+        List<TaskSpec> probe = List.of(new TaskSpec("sensor", Schedule.periodic(10 * MS), ErrorPolicy.CONTINUE,
+                new Sensor()));
+        Report report = WhatIfReplay.replay(recording, sensor, probe).report();
+        assertEquals(List.of("sensor"), report.tasks().stream().map(TaskReport::name).toList(), "no data task");
+        assertEquals(100, report.task("sensor").releases(), "t0, t0 + 10 ms, ..., t0 + 990 ms");
+        assertEquals(0, report.task("sensor").misses());
     }
 }

@@ -20,12 +20,12 @@ import java.nio.file.Files;
 import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.TreeMap;
 import java.util.concurrent.Callable;
 import org.HdrHistogram.Histogram;
 import org.knowm.xchart.BitmapEncoder;
@@ -67,15 +67,24 @@ public final class InspectCommand implements Callable<Integer> {
         long lastNs = Long.MIN_VALUE;
     }
 
-    /** Per task: what its timing channel says. */
+    /**
+     * Per task: what its timing channel says, counted as {@code run}'s summary counts (docs/reports.md):
+     * runs, skipped releases, releases (runs plus skipped), misses (runs that ended after their
+     * deadline plus skipped releases), stale runs (no input's generation changed since the task's
+     * run before) and errors.
+     */
     private static final class TaskTiming {
-        final Map<String, Long> outcomes = new TreeMap<>();
         final Histogram latenessNs = new Histogram(1, HIGHEST_NS, 2);
         final Histogram execNs = new Histogram(1, HIGHEST_NS, 2);
         final List<Double> timeS = new ArrayList<>();
         final List<Double> latenessMs = new ArrayList<>();
-        long cycles;
-        long skippedReleases;
+        long runs;
+        long skipped;
+        long missedRuns;
+        long staleRuns;
+        long errors;
+        /** The input generations of the run before, for the stale count; none before the first run. */
+        long[] lastGenerations;
     }
 
     @Override
@@ -147,16 +156,16 @@ public final class InspectCommand implements Callable<Integer> {
         }
         if (!tasks.isEmpty()) {
             out.println();
-            out.println("task timing (from /rtaware/timing/<task>; world time):");
-            out.printf(Locale.ROOT, "%-12s %8s %7s %7s %7s %7s %8s | %10s %10s %10s | %10s %10s %10s%n", "task", "cycles",
-                    "ok", "miss", "stale", "error", "skipped", "late p50", "late p99", "late max", "exec p50",
-                    "exec p99", "exec max");
+            out.println("task timing (from /rtaware/timing/<task>; world time; counted as run's summary counts:"
+                    + " misses = missed runs + skipped):");
+            out.printf(Locale.ROOT, "%-12s %8s %8s %8s %11s %8s %8s %6s | %10s %10s %10s | %10s %10s %10s%n", "task",
+                    "releases", "runs", "misses", "missed runs", "skipped", "stale", "errors", "late p50", "late p99",
+                    "late max", "exec p50", "exec p99", "exec max");
             for (Map.Entry<String, TaskTiming> e : tasks.entrySet()) {
                 TaskTiming t = e.getValue();
-                out.printf(Locale.ROOT, "%-12s %8d %7d %7d %7d %7d %8d | %10s %10s %10s | %10s %10s %10s%n", e.getKey(),
-                        t.cycles, t.outcomes.getOrDefault("ok", 0L), t.outcomes.getOrDefault("miss", 0L),
-                        t.outcomes.getOrDefault("stale", 0L), t.outcomes.getOrDefault("error", 0L), t.skippedReleases,
-                        ms(t.latenessNs, 50), ms(t.latenessNs, 99), ms(t.latenessNs, 100),
+                out.printf(Locale.ROOT, "%-12s %8d %8d %8d %11d %8d %8d %6d | %10s %10s %10s | %10s %10s %10s%n",
+                        e.getKey(), t.runs + t.skipped, t.runs, t.missedRuns + t.skipped, t.missedRuns, t.skipped,
+                        t.staleRuns, t.errors, ms(t.latenessNs, 50), ms(t.latenessNs, 99), ms(t.latenessNs, 100),
                         ms(t.execNs, 50), ms(t.execNs, 99), ms(t.execNs, 100));
             }
         }
@@ -232,11 +241,18 @@ public final class InspectCommand implements Callable<Integer> {
 
     private static void timing(TaskTiming t, TaskCycleMessage m, long startNs) {
         if (m.outcome().equals("skipped")) {
-            t.skippedReleases += m.skippedReleases();
+            t.skipped += m.skippedReleases();
             return;
         }
-        t.cycles++;
-        t.outcomes.merge(m.outcome(), 1L, Long::sum);
+        t.runs++;
+        // One outcome per record, an error before a miss before stale: a run that threw after its
+        // deadline counts as an error only. Stale is counted from the generations, as the run counts it.
+        t.missedRuns += m.outcome().equals("miss") ? 1 : 0;
+        t.errors += m.outcome().equals("error") ? 1 : 0;
+        long[] generations = m.inputGenerations();
+        long[] last = t.lastGenerations == null ? new long[generations.length] : t.lastGenerations;
+        t.staleRuns += generations.length > 0 && Arrays.equals(generations, last) ? 1 : 0;
+        t.lastGenerations = generations;
         long lateNs = Math.max(0, m.startNs() - m.releaseNs());
         t.latenessNs.recordValue(Math.min(HIGHEST_NS, Math.max(1, lateNs)));
         t.execNs.recordValue(Math.min(HIGHEST_NS, Math.max(1, m.endNs() - m.startNs())));

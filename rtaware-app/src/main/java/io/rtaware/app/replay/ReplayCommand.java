@@ -153,7 +153,12 @@ public final class ReplayCommand implements Callable<Integer> {
         }
     }
 
-    private static Recording load(Path file) {
+    /**
+     * @param file a recording
+     * @return it, loaded
+     * @throws UserError in one line if it cannot be read, is not MCAP, or does not fit in the heap
+     */
+    public static Recording load(Path file) {
         try {
             return Recording.load(McapReader.open(file), file);
         } catch (IOException e) {

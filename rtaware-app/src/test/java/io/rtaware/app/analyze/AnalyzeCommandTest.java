@@ -61,13 +61,18 @@ class AnalyzeCommandTest {
         doc.write(file);
 
         JsonNode root = ReportDocument.mapper().readTree(file.toFile());
-        assertEquals("nyquist", root.path("advice").get(0).path("rule").asText());
-        assertEquals("b", root.path("advice").get(0).path("task").asText());
-        assertEquals(5.0, root.path("advice").get(0).path("suggested_period_ms").asDouble());
-        assertEquals(100.0, root.path("advice").get(0).path("evidence").path("input_rate_hz").asDouble());
+        JsonNode b = root.path("advice").get(1);
+        assertEquals("b", b.path("task").asText());
+        assertEquals("infeasible", b.path("verdict").asText());
+        assertEquals(20.5, b.path("suggested_period_ms").asDouble(), "never below b's 20.5 ms of work (p99)");
+        assertEquals(20.5, b.path("lower_ms").asDouble());
+        assertEquals(5.0, b.path("upper_ms").asDouble());
+        assertEquals("sampling", b.path("bounds").get(2).path("rule").asText());
+        assertEquals(100.0, b.path("bounds").get(2).path("evidence").path("input_rate_hz").asDouble());
         assertEquals(2, root.path("schedulability").path("cores").asInt());
         assertEquals(0.62, root.path("schedulability").path("utilization_p99").asDouble(), 1e-9);
         assertTrue(root.path("schedulability").path("rta_schedulable_p99").asBoolean());
+        assertTrue(root.path("schedulability_suggested").path("rta_schedulable_p99_on_cores").asBoolean());
 
         String[] result = run("analyze", file.toString(), "--cores", "2");
         assertEquals("0", result[0], result[2]);
@@ -89,7 +94,8 @@ class AnalyzeCommandTest {
         new ReportDocument(report).write(quiet);
         String[] alone = run("analyze", quiet.toString());
         assertEquals("0", alone[0], alone[2]);
-        assertTrue(alone[1].contains("exec_near_period"), alone[1]);
+        assertTrue(alone[1].contains("heavy            10ms -> 13.6ms   lengthen   'heavy' 10 ms -> 13.6 ms: its exec"
+                + " p99 9.5 ms is 95% of its deadline, no headroom"), alone[1]);
 
         Path busy = dir.resolve("busy.json");
         JsonNode root = ReportDocument.mapper().readTree(quiet.toFile());
@@ -99,8 +105,15 @@ class AnalyzeCommandTest {
         String[] r = run("analyze", busy.toString());
         assertEquals("0", r[0], r[2]);
         assertTrue(r[1].startsWith("machine: busy (other processes used 1.6 of 2 CPUs (more than 0.10))"), r[1]);
-        assertTrue(r[1].contains("'heavy': no exec_near_period advice from this run: the machine was busy"), r[1]);
-        assertTrue(!r[1].contains("lengthen the period"), r[1]);
+        assertTrue(r[1].contains("heavy            10ms -> 10ms     machine    'heavy' keeps 10 ms: the run's figures"
+                + " ask for at least 9.5 ms by exec p99, but the machine was busy"), r[1]);
+    }
+
+    @Test
+    void neitherAReportNorARecordingIsOneLineWithStatus2() {
+        String[] r = run("analyze");
+        assertEquals("2", r[0]);
+        assertEquals("rtaware: give a report.json, a recording (--verify FILE.mcap), or both", r[2].strip());
     }
 
     @Test
@@ -128,7 +141,7 @@ class AnalyzeCommandTest {
         List<TaskReport> tasks = new java.util.ArrayList<>();
         for (int i = 0; i < 4; i++) {
             tasks.add(new TaskReport("t" + i, "periodic", 0.0001, 0.0001, 0.0, 1000, 1000, 10, 1.0, 0, 0, 0, 0, exec,
-                    late, 0, null));
+                    late, 0, null, null));
         }
         Path file = dir.resolve("report.json");
         new ReportDocument(new Report(Report.SCHEMA, 1.0, 1.0, 0.0, tasks, List.of())).write(file);

@@ -47,6 +47,6 @@ class AnalyzeFuzzTest {
         } catch (UserError refused) {
             return;
         }
-        ReportSections.analyze(doc.report(), 2).text();
+        ReportSections.analyze(doc.report(), 2, null).text();
     }
 }

@@ -41,6 +41,27 @@ class BenchRecordingTest {
         assertTrue(!inspect.out().contains("/clock"), "no /clock on wall time: " + inspect.out());
     }
 
+    /**
+     * Issue 34: the bench case of the issue, recorded, and its advice checked by replay. A bench's
+     * world time is the machine's monotonic clock: the replay starts where the recording does (it
+     * replayed from 0, an uptime's worth of releases), and it has no data task.
+     */
+    @Test
+    void analyzeVerifyReplaysABenchRecording() {
+        Path file = dir.resolve("chain.mcap");
+        CliRun run = CliRun.of("bench", "--spec", "a:10ms:2ms,b:50ms:20ms", "--chain", "--duration", "2s",
+                "--quiet", "--record", file.toString());
+        assertEquals(0, run.status(), run.err());
+        CliRun check = CliRun.of("analyze", "--verify", file.toString());
+        assertEquals(0, check.status(), check.err());
+        String row = check.out().lines().filter(l -> l.startsWith("  a            10ms -> ")).findFirst()
+                .orElseThrow(() -> new AssertionError(check.out()));
+        long releasesBefore = Long.parseLong(row.substring(33).trim().split("\\s+")[0]);
+        assertTrue(releasesBefore > 150 && releasesBefore < 500, "2 s of warm-up and 2 s of run at 10 ms: " + row);
+        assertTrue(check.out().lines().anyMatch(l -> l.startsWith("  b            50ms -> ")), check.out());
+        assertTrue(!check.out().contains("player"), "no data task: " + check.out());
+    }
+
     @Test
     void aBenchOnScaledTimeRecordsClockTicksThatRosbagsReads() throws Exception {
         Path file = dir.resolve("scaled.mcap");

@@ -66,6 +66,33 @@ class ReplayRunTest {
         assertTrue(one.out().lines().noneMatch(l -> l.startsWith("obstacle ")), one.out());
     }
 
+    /**
+     * Issue 34: {@code analyze --verify} replays the recording with the recorded periods and with
+     * each suggested change, prints before and after side by side, and says of every change
+     * whether the replay kept or withdrew it; with the run's report, the advice is the report's.
+     */
+    @Test
+    void analyzeVerifyChecksTheAdviceByReplayingTheRecording() {
+        CliRun check = CliRun.of("analyze", "--verify", recording.toString());
+        assertEquals(0, check.status(), check.err());
+        String out = check.out();
+        assertTrue(out.contains("replay check of " + recording + ": what-if replays with the recorded periods"), out);
+        assertTrue(out.contains("before -> after (recorded periods -> the kept ones), replayed:"), out);
+        for (String task : new String[] {"waypoint", "obstacle", "occupancy", "planner", "mediator"}) {
+            assertTrue(out.lines().anyMatch(l -> l.startsWith("  " + task + " ") && l.contains(" -> ")),
+                    "a before/after row of " + task + ":\n" + out);
+        }
+        assertTrue(out.lines().filter(l -> l.contains(" kept: ") || l.contains(" withdrawn: ")).count()
+                == out.lines().filter(l -> l.matches("  \\S+ +\\S+ -> \\S+ +(kept|withdrawn): .*")).count(), out);
+        assertTrue(out.contains("advice (one period per task from every rule"), out);
+
+        CliRun withReport = CliRun.of("analyze", dir.resolve("run/report.json").toString(), "--verify",
+                recording.toString());
+        assertEquals(0, withReport.status(), withReport.err());
+        assertTrue(withReport.out().startsWith("machine: "), withReport.out());
+        assertTrue(withReport.out().contains("before -> after"), withReport.out());
+    }
+
     @Test
     void whatIfReplayPrintsTheRunSummaryAdviceAndSchedulabilityOpenLoop() throws Exception {
         Path out = dir.resolve("whatif");

@@ -160,6 +160,23 @@ class RecordRunTest {
                 .stream().filter(n -> n.asText().equals("planner")).count();
         assertEquals(1, plannerRuns);
         assertTrue(text.lines().anyMatch(l -> l.startsWith("planner ")), "a timing row per task:\n" + text);
+        // Issue 34: inspect's words count what run's count (inspect said 'miss 57' where run said 'misses 390').
+        assertTrue(text.lines().anyMatch(l -> l.matches("task +releases +runs +misses +missed runs +skipped +stale +errors .*")),
+                "the run's words, in the run's order:\n" + text);
+        JsonNode tasks = new ObjectMapper().readTree(out.resolve("report.json").toFile()).path("tasks");
+        for (JsonNode task : tasks) {
+            String[] row = text.lines().filter(l -> l.startsWith(task.path("name").asText() + " ")).findFirst()
+                    .orElseThrow().trim().split("\\s+");
+            String name = task.path("name").asText();
+            assertEquals(task.path("releases").asLong(), Long.parseLong(row[1]), "releases of " + name + ": " + text);
+            assertEquals(task.path("runs").asLong(), Long.parseLong(row[2]), "runs of " + name);
+            assertEquals(task.path("misses").asLong(), Long.parseLong(row[3]), "misses of " + name);
+            assertEquals(task.path("skipped").asLong(), Long.parseLong(row[5]), "skipped of " + name);
+            assertEquals(Long.parseLong(row[3]), Long.parseLong(row[4]) + Long.parseLong(row[5]),
+                    "misses = missed runs + skipped: " + name);
+            assertEquals(task.path("stale_runs").asLong(), Long.parseLong(row[6]), "stale runs of " + name);
+            assertEquals(task.path("errors").asLong(), Long.parseLong(row[7]), "errors of " + name);
+        }
         assertTrue(Files.size(png) > 1000, "plot written");
         assertEquals(2, RtawareCli.execute("inspect", out.resolve("report.json").toString()), "not MCAP: user error");
         assertEquals(2, RtawareCli.execute("inspect", dir.resolve("none.mcap").toString()), "missing: user error");

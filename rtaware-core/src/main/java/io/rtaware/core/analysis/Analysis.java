@@ -5,20 +5,10 @@ import java.util.List;
 /**
  * Advice and schedulability of one run, as added to the report and printed. Immutable.
  *
- * @param advice the period advice
- * @param schedulability the schedulability analysis
+ * @param advice the period advice, with the check of the suggested set
+ * @param schedulability the schedulability analysis of the run's periods
  */
-public record Analysis(List<AdviceItem> advice, SchedulabilityReport schedulability) {
-
-    /**
-     * Copies the advice list.
-     *
-     * @param advice the period advice
-     * @param schedulability the schedulability analysis
-     */
-    public Analysis {
-        advice = List.copyOf(advice);
-    }
+public record Analysis(Advice advice, SchedulabilityReport schedulability) {
 
     /** @return the advice block followed by the schedulability block, as printed */
     public String text() {

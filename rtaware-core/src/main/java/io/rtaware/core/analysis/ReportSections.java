@@ -6,20 +6,17 @@ import io.rtaware.core.conditions.MachineVerdict;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Locale;
-import java.util.Map;
-import java.util.Set;
 
 /**
- * Adds the analysis sections to a report document: {@code advice} (a list of
- * {@link io.rtaware.core.analysis.AdviceItem}) and {@code schedulability} (a
- * {@link io.rtaware.core.analysis.SchedulabilityReport}). Every command that writes or prints a
- * report calls {@link #enrich} so they all agree. When the report's {@code conditions} say the
- * machine was busy or disturbed, the advice that rests on execution times and lateness (which
- * the machine inflates) does not blame the task: it becomes a {@value #MACHINE_RULE} item that
- * names the machine's figures and keeps the evidence. Stateless and thread-safe.
+ * Adds the analysis sections to a report document: {@code advice} (one
+ * {@link io.rtaware.core.analysis.PeriodAdvice} per periodic task), {@code schedulability} (a
+ * {@link io.rtaware.core.analysis.SchedulabilityReport} of the run's periods) and
+ * {@code schedulability_suggested} (the same of the suggested periods). Every command that
+ * writes or prints a report calls {@link #enrich} so they all agree. The advice reads the
+ * report's {@code conditions}: when the machine was busy or disturbed, a longer period that rests
+ * on execution times is not suggested ({@link io.rtaware.core.analysis.PeriodAdvisor}).
+ * Stateless and thread-safe.
  */
 public final class ReportSections {
 
@@ -29,41 +26,39 @@ public final class ReportSections {
     public static final String PERIOD_HISTORY = "period_history";
     /** Name of the schedulability section in {@code report.json}. */
     public static final String SCHEDULABILITY = "schedulability";
-
-    /** The rule of an advice item that a busy or disturbed machine turned from blame on a task. */
-    public static final String MACHINE_RULE = "machine";
-
-    /** Rules whose evidence (execution time, lateness) another process or a JVM pause inflates. */
-    private static final Set<String> MACHINE_SENSITIVE = Set.of("exec_near_period", "released_together");
+    /** Name of the section with the schedulability of the suggested periods in {@code report.json}. */
+    public static final String SCHEDULABILITY_SUGGESTED = "schedulability_suggested";
 
     private ReportSections() {
     }
 
     /**
      * @param report a finished run
-     * @param cores the machine's core count (e.g. {@code Runtime.getRuntime().availableProcessors()})
+     * @param cores the cores the tasks may use (e.g. {@code Runtime.getRuntime().availableProcessors()})
+     * @param machine the run's machine verdict, or null when unknown
      * @return the advice and schedulability of the run
      */
-    public static Analysis analyze(Report report, int cores) {
-        return new Analysis(PeriodAdvisor.advise(report), Schedulability.analyze(report, cores));
+    public static Analysis analyze(Report report, int cores, MachineVerdict machine) {
+        Advice advice = PeriodAdvisor.advise(report, cores, machine);
+        // With no period changed the suggested set is the run's: one analysis, not two (10 000 tasks take seconds).
+        return new Analysis(advice, advice.changedPeriodsMs().isEmpty() ? advice.suggestedSet()
+                : Schedulability.analyze(report, cores));
     }
 
     /**
-     * Analyzes the document's report and adds (or replaces) its {@code advice} and
-     * {@code schedulability} sections.
+     * Analyzes the document's report, with the machine verdict of its {@code conditions}, and
+     * adds (or replaces) its {@code advice}, {@code schedulability} and
+     * {@code schedulability_suggested} sections.
      *
      * @param doc the document to write
-     * @param cores the machine's core count
+     * @param cores the cores the tasks may use
      * @return the analysis, for printing with {@link Analysis#text()}
      */
     public static Analysis enrich(ReportDocument doc, int cores) {
-        Analysis analysis = analyze(doc.report(), cores);
-        MachineVerdict verdict = machine(doc);
-        String machine = verdict == null ? null : verdict.verdict();
-        List<String> reasons = verdict == null ? List.of() : verdict.reasons();
-        analysis = new Analysis(onMachine(analysis.advice(), machine, reasons), analysis.schedulability());
-        doc.section(ADVICE, analysis.advice());
+        Analysis analysis = analyze(doc.report(), cores, machine(doc));
+        doc.section(ADVICE, analysis.advice().tasks());
         doc.section(SCHEDULABILITY, analysis.schedulability());
+        doc.section(SCHEDULABILITY_SUGGESTED, analysis.advice().suggestedSet());
         return analysis;
     }
 
@@ -83,34 +78,6 @@ public final class ReportSections {
             return new MachineVerdict(node.path("machine").asText(), reasons, "");
         }
         return null;
-    }
-
-    /**
-     * @param advice the advice of a run
-     * @param machine the run's machine verdict ({@code quiet}, {@code busy}, ...), or null if unknown
-     * @param reasons the figures behind the verdict
-     * @return the advice, with each item whose evidence the machine inflates turned into a
-     *     {@value #MACHINE_RULE} item when the machine was busy or disturbed
-     */
-    public static List<AdviceItem> onMachine(List<AdviceItem> advice, String machine, List<String> reasons) {
-        if (!MachineVerdict.BUSY.equals(machine) && !MachineVerdict.DISTURBED.equals(machine)) {
-            return advice;
-        }
-        List<AdviceItem> out = new ArrayList<>();
-        for (AdviceItem item : advice) {
-            if (!MACHINE_SENSITIVE.contains(item.rule())) {
-                out.add(item);
-                continue;
-            }
-            Map<String, Object> evidence = new LinkedHashMap<>(item.evidence());
-            evidence.put("rule_not_applied", item.rule());
-            evidence.put("machine", machine);
-            out.add(new AdviceItem(item.task(), MACHINE_RULE, item.periodMs(), item.periodMs(), evidence,
-                    String.format(Locale.ROOT, "'%s': no %s advice from this run: the machine was %s (%s), which"
-                            + " inflates execution times and lateness; re-run on a quiet machine to tell the task's own"
-                            + " cost", item.task(), item.rule(), machine, String.join("; ", reasons))));
-        }
-        return out;
     }
 
     /**

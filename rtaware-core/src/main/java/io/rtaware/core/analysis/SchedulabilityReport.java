@@ -19,12 +19,17 @@ import java.util.List;
  * @param rtaSchedulableMax the same with the largest execution times
  * @param utilizationPerCoreP99 {@code utilizationP99 / cores}
  * @param utilizationPerCoreMax {@code utilizationMax / cores}
+ * @param rtaSchedulableP99OnCores true if every task meets its deadline by the response-time test
+ *     on {@code cores} cores with p99 execution times ({@code rtaTestOnCores})
+ * @param rtaTestOnCores the name of that test: the exact analysis on one core, a sufficient
+ *     bound for global fixed-priority scheduling on more
  * @param verdict one line a person reads
  */
 public record SchedulabilityReport(int cores, List<TaskUtilization> tasks, List<String> excludedTasks,
                                    double utilizationP99, double utilizationMax, double liuLaylandBound,
                                    boolean liuLaylandHoldsP99, boolean rtaSchedulableP99, boolean rtaSchedulableMax,
-                                   double utilizationPerCoreP99, double utilizationPerCoreMax, String verdict) {
+                                   double utilizationPerCoreP99, double utilizationPerCoreMax,
+                                   boolean rtaSchedulableP99OnCores, String rtaTestOnCores, String verdict) {
 
     /**
      * Copies the lists so the report stays immutable.
@@ -42,6 +47,8 @@ public record SchedulabilityReport(int cores, List<TaskUtilization> tasks, List<
      * @param rtaSchedulableMax the same with the largest execution times
      * @param utilizationPerCoreP99 {@code utilizationP99 / cores}
      * @param utilizationPerCoreMax {@code utilizationMax / cores}
+     * @param rtaSchedulableP99OnCores true if every task meets its deadline by the test on {@code cores} cores
+     * @param rtaTestOnCores the name of that test
      * @param verdict one line a person reads
      */
     public SchedulabilityReport {

@@ -16,8 +16,13 @@ package io.rtaware.core.analysis;
  * @param responseMaxMs the same with the largest execution times, ms, or null
  * @param meetsDeadlineP99 true if {@code responseP99Ms <= deadlineMs}
  * @param meetsDeadlineMax true if {@code responseMaxMs <= deadlineMs}
+ * @param responseP99MsOnCores the response-time bound on the analysis's cores with p99
+ *     execution times, ms ({@link Schedulability#testOnCores}), or null if it exceeds the deadline
+ *     or a higher-priority task's does; on one core the same as {@code responseP99Ms}
+ * @param meetsDeadlineP99OnCores true if {@code responseP99MsOnCores} is not null
  */
 public record TaskUtilization(String task, int rmPriority, double periodMs, double deadlineMs, double execP99Ms,
                               double execMaxMs, double utilizationP99, double utilizationMax, Double responseP99Ms,
-                              Double responseMaxMs, boolean meetsDeadlineP99, boolean meetsDeadlineMax) {
+                              Double responseMaxMs, boolean meetsDeadlineP99, boolean meetsDeadlineMax,
+                              Double responseP99MsOnCores, boolean meetsDeadlineP99OnCores) {
 }

@@ -10,7 +10,9 @@ import io.rtaware.core.time.Clock;
 import java.lang.invoke.MethodHandles;
 import java.lang.invoke.VarHandle;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
  * One task under the monitor, and the rulebook of its timing: every rule of when a cycle is
@@ -563,7 +565,18 @@ final class TaskRuntime implements TaskInfo {
         return new TaskReport(name(), spec.schedule().kind(), period, deadline, offset, rel, statistics.runs(), miss,
                 rel == 0 ? 0.0 : round2(100.0 * miss / rel), statistics.skippedReleases(), statistics.staleRuns(),
                 statistics.errors(), statistics.expiredReads(), statistics.execUs(), statistics.latenessUs(),
-                statistics.listenerErrors(), null);
+                statistics.listenerErrors(), null, inputMaxAgesMs());
+    }
+
+    /** @return the maximum age the task declared per input key, ms, in declaration order (none: empty) */
+    private Map<String, Double> inputMaxAgesMs() {
+        Map<String, Double> ages = new LinkedHashMap<>();
+        for (InputHandle<?> input : inputs) {
+            if (input.maxAgeNs() != Long.MAX_VALUE) {
+                ages.put(input.key().name(), input.maxAgeNs() / 1e6);
+            }
+        }
+        return ages;
     }
 
     static double round2(double v) {

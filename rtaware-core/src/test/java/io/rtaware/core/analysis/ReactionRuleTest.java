@@ -33,31 +33,41 @@ class ReactionRuleTest {
         return Reports.report(List.of(avoider), List.of(Reports.key("laser", "player", 10.0, "obstacle")));
     }
 
-    private static AdviceItem reactionItem(Report report) {
-        return PeriodAdvisor.advise(report).stream().filter(a -> a.rule().equals("reaction")).findFirst().orElseThrow();
+    private static PeriodAdvice advice(Report report) {
+        return PeriodAdvisor.advise(report, 1).task("obstacle");
+    }
+
+    private static PeriodBound reactionItem(Report report) {
+        return advice(report).bounds().stream().filter(b -> b.rule().equals(PeriodBound.REACTION)).findFirst()
+                .orElseThrow();
     }
 
     @Test
     void namesTheLargestSafePeriodAndAcceptsAPeriodWithinIt() {
         // age p99 = 76.6 + 0.99 * 100 = 175.6 ms; bound = 1000 * (0.2 - 0.026) / 0.2 - 175.6 = 694.4 ms
-        AdviceItem item = reactionItem(avoiderAt(50, KOALA_0_2));
-        assertEquals("obstacle", item.task());
+        PeriodBound item = reactionItem(avoiderAt(50, KOALA_0_2));
+        assertEquals(PeriodBound.UPPER, item.side());
+        assertEquals(694.4, item.ms(), 1e-9);
         assertEquals(175.6, (double) item.evidence().get("input_age_p99_ms"), 1e-9);
         assertEquals(694.4, (double) item.evidence().get("max_safe_period_ms"), 1e-9);
         assertEquals(true, item.evidence().get("safe"));
-        assertEquals(50.0, item.suggestedPeriodMs(), "a safe period stays");
+        assertEquals(50.0, advice(avoiderAt(50, KOALA_0_2)).suggestedPeriodMs(), "a safe period stays");
         // needed = 0.2 * (50 + 175.6) / 1000 + 0.026 = 0.07112 m
         assertEquals(0.071, (double) item.evidence().get("needed_m"), 1e-12);
-        assertEquals("'obstacle' must react within 0.2 m at 0.2 m/s: 0.2 m/s x (50 ms period + 175.6 ms input age p99)"
-                + " + 0.026 m stopping = 0.071 m; the largest safe period is 694.4 ms (the period is within it;"
-                + " assumes obstacles stand still: the gap closes at the robot's own speed)", item.message());
+        assertEquals("reaction to 'laser' (0.2 m in range at 0.2 m/s, input age p99 175.6 ms)", item.label());
+        assertEquals("assumes obstacles stand still: the gap closes at the robot's own speed",
+                item.evidence().get("assumption"));
     }
 
     @Test
     void flagsAPeriodBeyondTheBound() {
-        AdviceItem item = reactionItem(avoiderAt(800, KOALA_0_2));
+        PeriodBound item = reactionItem(avoiderAt(800, KOALA_0_2));
         assertEquals(false, item.evidence().get("safe"));
-        assertEquals(694.4, item.suggestedPeriodMs());
+        PeriodAdvice advice = advice(avoiderAt(800, KOALA_0_2));
+        assertEquals(PeriodAdvice.SHORTEN, advice.verdict());
+        assertEquals(50.0, advice.suggestedPeriodMs(), "the sampling of the 10 Hz laser binds before the reaction");
+        assertEquals(List.of(50.0, 694.4), advice.bounds().stream().filter(b -> !b.lower()).map(PeriodBound::ms)
+                .toList());
         // needed = 0.2 * 975.6 / 1000 + 0.026 = 0.22112 m > 0.2 m
         assertEquals(0.221, (double) item.evidence().get("needed_m"), 1e-12);
     }
@@ -65,36 +75,34 @@ class ReactionRuleTest {
     @Test
     void saysWhenNoPeriodIsFastEnough() {
         // 0.6 m/s: stopping 0.198 m of the 0.2 m; 1000 * 0.002 / 0.6 = 3.33 ms < 175.6 ms of age
-        AdviceItem item = reactionItem(avoiderAt(10, new ReactionConstraint("laser", 0.6, 0.198, 0.2, 76.6)));
+        Report report = avoiderAt(10, new ReactionConstraint("laser", 0.6, 0.198, 0.2, 76.6));
+        PeriodBound item = reactionItem(report);
         assertEquals(false, item.evidence().get("safe"));
-        assertEquals(10.0, item.suggestedPeriodMs());
         assertEquals(1000 * 0.002 / 0.6 - 175.6, (double) item.evidence().get("max_safe_period_ms"), 1e-3);
-        assertEquals("'obstacle' cannot react in time at any period: at 0.6 m/s the input's age (175.6 ms p99) and"
-                + " the stopping distance (0.198 m) already use up the 0.2 m range; lower the speed or extend the range"
-                + " (assumes obstacles stand still: the gap closes at the robot's own speed)", item.message());
+        assertEquals(PeriodAdvice.INFEASIBLE, advice(report).verdict());
     }
 
     @Test
     void anObstacleMovingTowardTheRobotClosesTheGapAtTheSumOfBothSpeeds() {
         // a person at 1.0 m/s: closing 1.2 m/s; bound = 1000 * (0.2 - 0.026) / 1.2 - 175.6 = -30.6 ms: none is fast enough
         ReactionConstraint person = new ReactionConstraint("laser", 0.2, 0.026, 0.2, 76.6, 1.0);
-        AdviceItem item = reactionItem(avoiderAt(50, person));
+        PeriodBound item = reactionItem(avoiderAt(50, person));
         assertEquals(1.2, (double) item.evidence().get("closing_speed_mps"), 1e-12);
         assertEquals(1000 * 0.174 / 1.2 - 175.6, (double) item.evidence().get("max_safe_period_ms"), 1e-3);
         assertEquals(false, item.evidence().get("safe"));
-        assertTrue(item.message().contains("at 1.2 m/s") && item.message().contains(
-                "assumes obstacles move toward the robot at up to 1 m/s: the gap closes at 1.2 m/s"), item.message());
+        assertTrue(item.label().contains("at 1.2 m/s") && item.evidence().get("assumption").toString().startsWith(
+                "assumes obstacles move toward the robot at up to 1 m/s: the gap closes at 1.2 m/s"), item.toString());
         // a slow cart at 0.05 m/s: closing 0.25 m/s; bound = 1000 * 0.174 / 0.25 - 175.6 = 520.4 ms, below the 694.4 ms of still obstacles
-        AdviceItem cart = reactionItem(avoiderAt(50, new ReactionConstraint("laser", 0.2, 0.026, 0.2, 76.6, 0.05)));
+        PeriodBound cart = reactionItem(avoiderAt(50, new ReactionConstraint("laser", 0.2, 0.026, 0.2, 76.6, 0.05)));
         assertEquals(520.4, (double) cart.evidence().get("max_safe_period_ms"), 1e-9);
         assertEquals(0.05, (double) cart.evidence().get("obstacle_speed_mps"), 0.0);
     }
 
     @Test
-    void aTaskWithoutADeclarationGetsNoReactionAdvice() {
+    void aTaskWithoutADeclarationGetsNoReactionBound() {
         Report report = Reports.report(List.of(Reports.task("obstacle", 50, 100, 100, 100, 100, 0, 0)),
                 List.of(Reports.key("laser", "player", 10.0, "obstacle")));
-        assertEquals(List.of(), PeriodAdvisor.advise(report));
+        assertTrue(advice(report).bounds().stream().noneMatch(b -> b.rule().equals(PeriodBound.REACTION)));
     }
 
     @Test
@@ -114,7 +122,7 @@ class ReactionRuleTest {
         Report report = monitor.stop();
         assertEquals(KOALA_0_2, report.task("obstacle").reaction());
         assertNull(report.task("player").reaction());
-        AdviceItem item = reactionItem(report);
+        PeriodBound item = reactionItem(report);
         assertEquals(10.0, (double) item.evidence().get("input_rate_hz"), 1e-9, "laser commits every 100 ms");
         assertEquals(694.4, (double) item.evidence().get("max_safe_period_ms"), 1e-9);
     }

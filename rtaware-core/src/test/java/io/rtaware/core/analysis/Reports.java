@@ -5,6 +5,7 @@ import io.rtaware.core.report.Percentiles;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.TaskReport;
 import java.util.List;
+import java.util.Map;
 
 /** Hand-built reports for the analysis tests. */
 final class Reports {
@@ -24,7 +25,13 @@ final class Reports {
     static TaskReport released(String name, double periodMs, double offsetMs, double lateP50Us, double lateP99Us) {
         return new TaskReport(name, "periodic", periodMs, periodMs, offsetMs, 1000, 1000, 0, 0, 0, 0, 0, 0,
                 new Percentiles(1, 2, 3, 4, 1), new Percentiles(lateP50Us, lateP99Us, lateP99Us, lateP99Us, lateP50Us),
-                0, null);
+                0, null, Map.of());
+    }
+
+    /** A continuous task (no period) with the given exec p99 (us). */
+    static TaskReport continuous(String name, double p99Us) {
+        return new TaskReport(name, "continuous", null, null, 100, 100, 0, 0, 0, 0, 0, 0,
+                new Percentiles(p99Us, p99Us, p99Us, p99Us, p99Us), Percentiles.EMPTY);
     }
 
     static DataReport key(String name, String producer, double rateHz, String... consumers) {

@@ -42,6 +42,70 @@ class SchedulabilityTest {
         assertArrayEquals(new long[] {2, -1}, r);
     }
 
+    /**
+     * (C, T) = (1, 4), (2, 6), (4, 8) on one core: R3 = 4 + ceil(R/4) + 2 ceil(R/6): 4 -> 7 -> 10
+     * -> 11 -> 11 > 8, a miss. On two cores, the bound of Bertogna and Cirinei, task 3 under tasks
+     * 1 (R1 = 1) and 2 (R2 = 2, fewer tasks above it than cores), with
+     * {@code W_i(L) = N C_i + min(C_i, L + R_i - C_i - N T_i)}, {@code N = floor((L + R_i - C_i) / T_i)}
+     * and {@code R = C + floor(sum min(W_i(R), R - C + 1) / 2)}:
+     * <pre>
+     * R = 4: W1 = 1 + min(1, 0) = 1 -> 1; W2 = 0 + min(2, 4) = 2 -> min(2, 1) = 1; 4 + floor(2/2) = 5
+     * R = 5: W1 = 1 + min(1, 1) = 2 -> 2; W2 = min(2, 5) = 2 -> 2;               5 + ... = 4 + 2 = 6
+     * R = 6: W1 = 1 + min(1, 2) = 2 -> 2; W2 = 2 + min(2, 0) = 2 -> 2;           4 + 2 = 6  => R3 = 6 <= 8
+     * </pre>
+     */
+    @Test
+    void twoCoresClearATaskOneCoreCannot() {
+        long[] c = {1, 2, 4};
+        long[] t = {4, 6, 8};
+        assertArrayEquals(new long[] {1, 3, -1}, Schedulability.responseTimes(c, t, t));
+        assertArrayEquals(new long[] {1, 2, 6}, Schedulability.responseTimes(c, t, t, 2));
+    }
+
+    /** The bound needs its fixed point, not a step: with three tasks above on two cores the iteration climbs. */
+    @Test
+    void theGlobalBoundGrowsWithTheWorkAbove() {
+        // Three tasks of (2, 5) above a task of (3, 10) on two cores.
+        // R = 3: each W = 2 + min(2, 3 + 2 - 2 - 5) -> N = floor(3/5) = 0: W = min(2, 3) = 2 -> min(2, 1) = 1; 3 + floor(3/2) = 4
+        // R = 4: N = floor(4/5) = 0, W = 2 -> min(2, 2) = 2 each; 3 + floor(6/2) = 6
+        // R = 6: N = floor(6/5) = 1, W = 2 + min(2, 6 - 5) = 3 -> min(3, 4) = 3 each; 3 + floor(9/2) = 7
+        // R = 7: N = 1, W = 2 + min(2, 2) = 4 -> min(4, 5) = 4 each; 3 + 6 = 9
+        // R = 9: N = 1, W = 2 + min(2, 4) = 4 -> 4 each; 3 + 6 = 9 => 9 <= 10
+        long[] r = Schedulability.responseTimes(new long[] {2, 2, 2, 3}, new long[] {5, 5, 5, 10},
+                new long[] {5, 5, 5, 10}, 2);
+        assertEquals(9, r[3]);
+        assertEquals(2, r[0]);
+        assertEquals(2, r[1], "fewer tasks above than cores: its own time");
+    }
+
+    /**
+     * On two cores a task above that passes its own deadline (9 ns of work every 8 ns) takes one
+     * core whole, not every core: the task below it still has the other, R = 5 + floor(1 / 2) = 5.
+     * Two such tasks take both, and the task below has no bound.
+     */
+    @Test
+    void aTaskAbovePastItsDeadlineTakesOneCoreWhole() {
+        assertArrayEquals(new long[] {-1, 5}, Schedulability.responseTimes(new long[] {9, 5}, new long[] {8, 20},
+                new long[] {8, 20}, 2));
+        assertArrayEquals(new long[] {-1, -1, -1}, Schedulability.responseTimes(new long[] {9, 9, 5},
+                new long[] {8, 8, 20}, new long[] {8, 8, 20}, 2));
+    }
+
+    /** A hand-edited report may hold a day of work every nanosecond: no overflow, no endless climb. */
+    @Test
+    void absurdFiguresSaturateInsteadOfOverflowing() {
+        long day = 86_400_000_000_000L;
+        long[] c = {day, day, 1};
+        long[] t = {1, 1, 2};
+        assertArrayEquals(new long[] {day, -1, -1}, Schedulability.responseTimes(c, t, new long[] {day, day, day}));
+        assertArrayEquals(new long[] {day, day, -1}, Schedulability.responseTimes(c, t, new long[] {day, day, day}, 2),
+                "each of the two day-long tasks has a core of its own; the third never gets one");
+        var report = Reports.report(List.of(Reports.task("a", 1e-6, 8.64e16, 8.64e16, 1, 10, 0, 0),
+                Reports.task("b", 1e-6, 1e-3, 1e-3, 1e-3, 10, 0, 0)), List.of(Reports.key("a.out", "a", 1e-9, "b")));
+        Advice advice = PeriodAdvisor.advise(report, 2);
+        assertEquals(2, advice.tasks().size());
+    }
+
     @Test
     void liuLaylandBound() {
         assertEquals(1.0, Schedulability.liuLaylandBound(1), 1e-12);
@@ -76,8 +140,11 @@ class SchedulabilityTest {
         assertTrue(s.rtaSchedulableP99());
         assertTrue(s.rtaSchedulableMax());
         assertEquals(0.4167, s.utilizationPerCoreP99(), 1e-9);
-        assertTrue(s.verdict().startsWith("schedulable on one core"), s.verdict());
+        assertTrue(s.verdict().startsWith("schedulable on 2 cores under global rate-monotonic priorities"), s.verdict());
+        assertTrue(s.verdict().contains("; schedulable on one core"), s.verdict());
         assertTrue(s.verdict().contains("although above the Liu-Layland bound"), s.verdict());
+        assertTrue(s.rtaSchedulableP99OnCores());
+        assertEquals(Schedulability.testOnCores(2), s.rtaTestOnCores());
     }
 
     @Test
