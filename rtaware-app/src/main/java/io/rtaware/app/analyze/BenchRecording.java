@@ -1,8 +1,8 @@
 package io.rtaware.app.analyze;
 
 import io.rtaware.app.UserError;
-import io.rtaware.app.bench.BenchTask;
-import io.rtaware.app.bench.BusyWork;
+import io.rtaware.bench.load.BenchTask;
+import io.rtaware.bench.load.BusyWork;
 import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.TaskSpec;
