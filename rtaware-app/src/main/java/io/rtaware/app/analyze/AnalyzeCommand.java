@@ -2,10 +2,12 @@ package io.rtaware.app.analyze;
 
 import io.rtaware.app.UserError;
 import io.rtaware.app.replay.ReplayCommand;
+import io.rtaware.bench.load.BenchRecording;
 import io.rtaware.core.analysis.AnalysisText;
 import io.rtaware.core.analysis.PeriodAdvisor;
 import io.rtaware.core.analysis.ReportSections;
 import io.rtaware.core.analysis.Schedulability;
+import io.rtaware.core.report.ReportChecks;
 import io.rtaware.nav.ControllerMetadata;
 import io.rtaware.core.conditions.MachineVerdict;
 import io.rtaware.core.report.Report;
@@ -84,7 +86,11 @@ public final class AnalyzeCommand implements Callable<Integer> {
         Set<String> settable;
         AdviceCheck.Controller controller;
         if (BenchRecording.is(recording)) {
-            controller = BenchRecording.controller(recording, verify);
+            try {
+                controller = BenchRecording.controller(recording, verify);
+            } catch (IllegalArgumentException e) {
+                throw new UserError(e.getMessage());
+            }
             settable = recording.tasks().keySet();
         } else {
             NavConfig recorded;
@@ -155,7 +161,11 @@ public final class AnalyzeCommand implements Callable<Integer> {
             String why = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage().lines().findFirst().orElse("");
             throw new UserError("cannot read report " + file + ": " + why);
         }
-        ReportInput.check(doc.report(), file);
+        try {
+            ReportChecks.check(doc.report(), file);
+        } catch (IllegalArgumentException e) {
+            throw new UserError(e.getMessage());
+        }
         return doc;
     }
 }

@@ -10,7 +10,7 @@ import io.rtaware.app.cli.TraceOptions;
 import io.rtaware.app.foxglove.FoxgloveMixin;
 import io.rtaware.app.live.LiveMixin;
 import io.rtaware.app.output.OutputFile;
-import io.rtaware.app.output.OutputWrites;
+import io.rtaware.core.output.OutputWrites;
 import io.rtaware.app.ros2.DdsMixin;
 import io.rtaware.app.ros2.ExportMixin;
 import io.rtaware.app.ros2.ExportOptions;

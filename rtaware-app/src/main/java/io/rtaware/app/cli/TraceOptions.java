@@ -2,7 +2,7 @@ package io.rtaware.app.cli;
 
 import io.rtaware.app.UserError;
 import io.rtaware.app.output.OutputFile;
-import io.rtaware.app.output.OutputWrites;
+import io.rtaware.core.output.OutputWrites;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.trace.TraceRecorder;
 import java.io.PrintStream;

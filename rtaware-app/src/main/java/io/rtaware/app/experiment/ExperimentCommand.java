@@ -3,7 +3,7 @@ package io.rtaware.app.experiment;
 import io.rtaware.app.UserError;
 import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.output.OutputFolder;
-import io.rtaware.app.output.OutputWrites;
+import io.rtaware.core.output.OutputWrites;
 import io.rtaware.core.conditions.HostFiles;
 import io.rtaware.core.conditions.HostReader;
 import io.rtaware.experiment.ExperimentInputException;

@@ -3,7 +3,7 @@ package io.rtaware.app.experiment;
 import io.rtaware.app.UserError;
 import io.rtaware.app.output.OutputFile;
 import io.rtaware.app.output.OutputFolder;
-import io.rtaware.app.output.OutputWrites;
+import io.rtaware.core.output.OutputWrites;
 import io.rtaware.experiment.ExperimentInputException;
 import io.rtaware.experiment.ExperimentMerge;
 import io.rtaware.experiment.FolderCheck;

@@ -1,10 +1,11 @@
 package io.rtaware.app.experiment;
 
 import io.rtaware.app.UserError;
-import io.rtaware.app.output.OutputWrites;
+import io.rtaware.core.output.OutputWrites;
 import io.rtaware.experiment.ExperimentInputException;
 import io.rtaware.experiment.ExperimentSummary;
 import io.rtaware.experiment.ResultsCsv;
+import io.rtaware.experiment.report.CourseBackgrounds;
 import io.rtaware.experiment.report.ExperimentReport;
 import java.io.IOException;
 import java.io.PrintStream;

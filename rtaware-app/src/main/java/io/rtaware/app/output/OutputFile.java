@@ -51,7 +51,7 @@ public final class OutputFile {
                 throw new UserError(option + ": " + path + " is " + what);
             });
         } catch (IOException e) {
-            throw new UserError(option + ": cannot write " + path + ": " + reason(e));
+            throw new UserError(option + ": cannot write " + path + ": " + OutputFiles.reason(e));
         }
         if (Files.exists(path) && !Files.isWritable(path)) {
             throw new UserError(option + ": cannot write " + path + ": permission denied");
@@ -80,29 +80,8 @@ public final class OutputFile {
             Path probe = Files.createTempFile(dir, ".rtaware-write-check-", ".tmp");
             Files.delete(probe);
         } catch (IOException | SecurityException | UnsupportedOperationException e) {
-            throw new UserError(option + ": cannot write into " + what + " (" + dir + "): " + reason(e));
+            throw new UserError(option + ": cannot write into " + what + " (" + dir + "): " + OutputFiles.reason(e));
         }
     }
 
-    /**
-     * @return the one-line reason of an I/O failure: the operating system's reason for a file
-     *     system error (the path is named by the caller), the message otherwise
-     */
-    static String reason(Exception e) {
-        if (e instanceof FileSystemException fse) {
-            if (fse.getReason() != null && !fse.getReason().isBlank()) {
-                return fse.getReason();
-            }
-            return switch (e.getClass().getSimpleName()) {
-                case "AccessDeniedException" -> "permission denied";
-                case "NoSuchFileException" -> "no such file or folder";
-                case "FileAlreadyExistsException" -> "a file is in the way";
-                case "NotDirectoryException" -> "not a folder";
-                default -> e.getClass().getSimpleName();
-            };
-        }
-        String message = e.getMessage();
-        return message == null || message.isBlank() ? e.getClass().getSimpleName()
-                : message.lines().findFirst().orElse(message);
-    }
 }

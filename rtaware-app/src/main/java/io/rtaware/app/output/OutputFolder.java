@@ -1,5 +1,7 @@
 package io.rtaware.app.output;
 
+import io.rtaware.core.output.OutputFiles;
+
 import io.rtaware.app.UserError;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -63,7 +65,7 @@ public final class OutputFolder {
             Path probe = Files.createTempFile(ancestor, ".rtaware-write-check-", ".tmp");
             Files.delete(probe);
         } catch (IOException | SecurityException | UnsupportedOperationException e) {
-            throw new UserError(option + ": cannot create " + what + " " + path + ": " + OutputFile.reason(e));
+            throw new UserError(option + ": cannot create " + what + " " + path + ": " + OutputFiles.reason(e));
         }
         return new OutputFolder(option, path);
     }

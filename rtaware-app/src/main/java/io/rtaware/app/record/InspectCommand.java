@@ -2,7 +2,7 @@ package io.rtaware.app.record;
 
 import io.rtaware.app.UserError;
 import io.rtaware.app.output.OutputFile;
-import io.rtaware.app.output.OutputWrites;
+import io.rtaware.core.output.OutputWrites;
 import io.rtaware.record.RecordingPlan;
 import io.rtaware.record.TaskCycleMessage;
 import io.rtaware.record.mcap.McapChannel;

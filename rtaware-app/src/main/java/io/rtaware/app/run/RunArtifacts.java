@@ -1,6 +1,6 @@
 package io.rtaware.app.run;
 
-import io.rtaware.app.output.OutputWrites;
+import io.rtaware.core.output.OutputWrites;
 import io.rtaware.core.analysis.ReportSections;
 import io.rtaware.core.conditions.Conditions;
 import io.rtaware.core.output.OutputFiles;

@@ -2,7 +2,7 @@ package io.rtaware.app.sim;
 
 import io.rtaware.app.UserError;
 import io.rtaware.app.output.OutputFile;
-import io.rtaware.app.output.OutputWrites;
+import io.rtaware.core.output.OutputWrites;
 import io.rtaware.core.output.OutputFiles;
 import io.rtaware.sim.render.WorldRenderer;
 import io.rtaware.sim.scenario.Scenario;

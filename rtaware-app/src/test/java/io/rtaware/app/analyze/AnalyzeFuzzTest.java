@@ -1,7 +1,7 @@
 package io.rtaware.app.analyze;
 
 import com.code_intelligence.jazzer.junit.FuzzTest;
-import io.rtaware.app.UserError;
+import io.rtaware.core.report.ReportChecks;
 import io.rtaware.core.analysis.ReportSections;
 import io.rtaware.core.report.ReportDocument;
 import java.io.IOException;
@@ -13,8 +13,8 @@ import org.junit.jupiter.api.BeforeAll;
 /**
  * Coverage-guided fuzzing of what {@code rtaware analyze} does with a report.json (issue 24), the
  * command's own steps without its picocli shell: reading (whose every failure the command turns
- * into the user's one line), {@link ReportInput#check} (which may refuse only with a
- * {@link UserError}), then the period advice and schedulability, which must not fail on any
+ * into the user's one line), {@link ReportChecks#check} (which may refuse only with an
+ * {@link IllegalArgumentException}, the user's one line), then the period advice and schedulability, which must not fail on any
  * report the check let through. Without {@code JAZZER_FUZZ=1} it replays the corpus in
  * {@code AnalyzeFuzzTestInputs/}, seeded from a real run's report.
  */
@@ -43,8 +43,8 @@ class AnalyzeFuzzTest {
             return; // AnalyzeCommand: "cannot read report FILE: ..." in one line
         }
         try {
-            ReportInput.check(doc.report(), file);
-        } catch (UserError refused) {
+            ReportChecks.check(doc.report(), file);
+        } catch (IllegalArgumentException refused) {
             return;
         }
         ReportSections.analyze(doc.report(), 2, null).text();

@@ -1,5 +1,7 @@
 package io.rtaware.app.output;
 
+import io.rtaware.core.output.OutputWrites;
+
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;

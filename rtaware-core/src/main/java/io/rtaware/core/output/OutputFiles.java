@@ -194,4 +194,27 @@ public final class OutputFiles {
             content.writeTo(out);
         }
     }
+
+    /**
+     * @param e an I/O failure
+     * @return its one-line reason: the operating system's reason for a file system error (the
+     *     path is named by the caller), the message otherwise
+     */
+    public static String reason(Exception e) {
+        if (e instanceof FileSystemException fse) {
+            if (fse.getReason() != null && !fse.getReason().isBlank()) {
+                return fse.getReason();
+            }
+            return switch (e.getClass().getSimpleName()) {
+                case "AccessDeniedException" -> "permission denied";
+                case "NoSuchFileException" -> "no such file or folder";
+                case "FileAlreadyExistsException" -> "a file is in the way";
+                case "NotDirectoryException" -> "not a folder";
+                default -> e.getClass().getSimpleName();
+            };
+        }
+        String message = e.getMessage();
+        return message == null || message.isBlank() ? e.getClass().getSimpleName()
+                : message.lines().findFirst().orElse(message);
+    }
 }

@@ -1,7 +1,5 @@
-package io.rtaware.app.experiment;
+package io.rtaware.experiment.report;
 
-import io.rtaware.experiment.report.MapBackground;
-import io.rtaware.experiment.report.WorldBounds;
 import io.rtaware.robot.geometry.Point2d;
 import io.rtaware.sim.map.OccupancyMap;
 import io.rtaware.sim.scenario.Scenario;
@@ -16,7 +14,7 @@ import java.util.List;
  * dark, free space light) and its waypoints. A scenario that cannot be loaded (a file moved
  * since the experiment) gives no background, and the figure shows the paths alone.
  */
-final class CourseBackgrounds {
+public final class CourseBackgrounds {
 
     private static final int OCCUPIED_RGB = 0x505050;
     private static final int FREE_RGB = 0xF2F2F2;
@@ -29,7 +27,7 @@ final class CourseBackgrounds {
      * @param scenario {@code paper-room} or a scenario file, as given to {@code run}
      * @return the course's background, or {@link MapBackground#none()}
      */
-    static MapBackground forScenario(String scenario) {
+    public static MapBackground forScenario(String scenario) {
         Scenario s;
         try {
             s = ScenarioLoader.load(scenario);

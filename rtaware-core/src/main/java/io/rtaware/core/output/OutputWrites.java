@@ -1,6 +1,5 @@
-package io.rtaware.app.output;
+package io.rtaware.core.output;
 
-import io.rtaware.core.output.OutputFiles;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.io.UncheckedIOException;
@@ -51,7 +50,7 @@ public final class OutputWrites {
             return true;
         } catch (IOException | UncheckedIOException | SecurityException e) {
             Exception cause = e instanceof UncheckedIOException u ? u.getCause() : e;
-            String line = "could not write " + file + ": " + OutputFile.reason(cause);
+            String line = "could not write " + file + ": " + OutputFiles.reason(cause);
             failures.add(line);
             err.println("rtaware: " + line);
             err.flush();

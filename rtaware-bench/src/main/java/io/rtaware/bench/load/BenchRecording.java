@@ -1,8 +1,5 @@
-package io.rtaware.app.analyze;
+package io.rtaware.bench.load;
 
-import io.rtaware.app.UserError;
-import io.rtaware.bench.load.BenchTask;
-import io.rtaware.bench.load.BusyWork;
 import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.TaskSpec;
@@ -21,10 +18,10 @@ import java.util.Map;
  * recorded inputs (in a chain, the previous task's output). The tasks do no work of their own: a
  * what-if replay charges each cycle its task's recorded execution time. Stateless.
  */
-final class BenchRecording {
+public final class BenchRecording {
 
     /** The {@code command} metadata entry of a bench recording. */
-    static final String COMMAND = "bench";
+    public static final String COMMAND = "bench";
 
     private BenchRecording() {
     }
@@ -33,7 +30,7 @@ final class BenchRecording {
      * @param recording a recording
      * @return true if {@code rtaware bench --record} made it
      */
-    static boolean is(Recording recording) {
+    public static boolean is(Recording recording) {
         return COMMAND.equals(recording.runMetadata().get("command"));
     }
 
@@ -41,12 +38,12 @@ final class BenchRecording {
      * @param recording a bench recording
      * @param file its path, for messages
      * @return the task set, at the periods a replay asks for
-     * @throws UserError if its {@code tasks} metadata is missing or malformed
+     * @throws IllegalArgumentException if its {@code tasks} metadata is missing or malformed
      */
-    static AdviceCheck.Controller controller(Recording recording, Path file) {
+    public static AdviceCheck.Controller controller(Recording recording, Path file) {
         String tasks = recording.runMetadata().get("tasks");
         if (tasks == null || tasks.isBlank()) {
-            throw new UserError(file + ": its rtaware.run metadata has no 'tasks' (name:period:work,...)");
+            throw new IllegalArgumentException(file + ": its rtaware.run metadata has no 'tasks' (name:period:work,...)");
         }
         Map<String, Long> periodsNs = new LinkedHashMap<>();
         Map<String, String> upstream = new LinkedHashMap<>();
@@ -55,7 +52,7 @@ final class BenchRecording {
             try {
                 periodsNs.put(parts[0], Durations.parseNanos(parts[1]));
             } catch (RuntimeException e) {
-                throw new UserError(file + ": task entry '" + entry + "' of its metadata is not name:period:work");
+                throw new IllegalArgumentException(file + ": task entry '" + entry + "' of its metadata is not name:period:work");
             }
             Recording.TaskTimeline timeline = recording.tasks().get(parts[0]);
             if (timeline != null && !timeline.inputs().isEmpty()) {
