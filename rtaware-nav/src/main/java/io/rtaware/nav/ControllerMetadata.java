@@ -85,13 +85,13 @@ public final class ControllerMetadata {
      * @param recorded the recorded configuration
      * @param periodsNs period of each behavior, and optionally of the mediator, by task name
      * @return the configuration to run
-     * @throws IllegalArgumentException if a name is not a behavior's task (the mediator's period is derived)
+     * @throws IllegalArgumentException if a name is neither a behavior's task nor the mediator
      */
     public static NavConfig withPeriods(NavConfig recorded, Map<String, Long> periodsNs) {
         for (String task : periodsNs.keySet()) {
-            if (!Behavior.taskNames().contains(task)) {
+            if (!Behavior.taskNames().contains(task) && !task.equals(NavConfig.MEDIATOR)) {
                 throw new IllegalArgumentException("unknown task '" + task + "'; tasks whose period can be set: "
-                        + String.join(", ", Behavior.taskNames()));
+                        + String.join(", ", Behavior.taskNames()) + ", " + NavConfig.MEDIATOR);
             }
         }
         NavConfig.Grid g = recorded.grid();

@@ -47,10 +47,12 @@ class ControllerMetadataTest {
     }
 
     @Test
-    void aPeriodOfATaskThatIsNotABehaviorIsRefused() {
+    void aPeriodOfATaskOfNoSuchNameIsRefusedAndTheMediatorsIsKept() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> ControllerMetadata.withPeriods(config(), Map.of("mediator", 10 * MS)));
-        assertTrue(e.getMessage().contains("unknown task 'mediator'"), e.getMessage());
+                () -> ControllerMetadata.withPeriods(config(), Map.of("planer", 10 * MS)));
+        assertTrue(e.getMessage().contains("unknown task 'planer'"), e.getMessage());
+        assertEquals(10 * MS, ControllerMetadata.withPeriods(config(), Map.of("mediator", 10 * MS)).periods().mediatorNs(),
+                "a mediator period named (as the period advice names it) is kept, not derived");
     }
 
     @Test
