@@ -12,11 +12,10 @@ import io.rtaware.nav.ControllerMetadata;
 import io.rtaware.core.conditions.MachineVerdict;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
-import io.rtaware.nav.NavConfig;
-import io.rtaware.nav.NavController;
 import io.rtaware.record.mcap.McapFormatException;
 import io.rtaware.replay.AdviceCheck;
 import io.rtaware.replay.Recording;
+import io.rtaware.replay.ReplayProviders;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Path;
@@ -93,20 +92,22 @@ public final class AnalyzeCommand implements Callable<Integer> {
             }
             settable = recording.tasks().keySet();
         } else {
-            NavConfig recorded;
+            // Any controller with a replay provider on the class path (the paper's nav controller is one).
+            ReplayProviders.RecordedController recorded;
+            Map<String, Long> recordedNs;
             try {
-                recorded = ControllerMetadata.navConfig(recording.runMetadata());
+                recorded = ReplayProviders.load(AnalyzeCommand.class.getClassLoader())
+                        .controllerOf(recording.runMetadata());
+                recordedNs = recorded.recordedPeriodsNs();
             } catch (IllegalArgumentException e) {
                 throw new UserError(verify + ": " + e.getMessage());
             }
-            long mediatorNs = recorded.periodNs(NavConfig.MEDIATOR);
             controller = periods -> {
-                Map<String, Long> all = new LinkedHashMap<>();
-                all.put(NavConfig.MEDIATOR, mediatorNs); // a period of its own, as the advice gives it one
+                Map<String, Long> all = new LinkedHashMap<>(recordedNs); // every period pinned (the mediator's too)
                 all.putAll(periods);
-                return new NavController(ControllerMetadata.withPeriods(recorded, all)).taskSpecs();
+                return recorded.tasks(all);
             };
-            settable = Set.copyOf(NavConfig.TASK_NAMES);
+            settable = recordedNs.keySet();
         }
         try {
             return verify(out, doc, recording, controller, settable);
