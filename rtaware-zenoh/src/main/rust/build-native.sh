@@ -57,7 +57,10 @@ esac
 features=()
 dds_missing=""
 command -v cmake >/dev/null 2>&1 || dds_missing="no cmake on the PATH"
-if [ -z "$dds_missing" ] && [ -z "${LIBCLANG_PATH:-}" ] && ! ldconfig -p 2>/dev/null | grep -q 'libclang[-.0-9]*\.so'; then
+# The library list is read whole before it is searched: 'ldconfig -p | grep -q' under pipefail fails
+# whenever grep stops at the first match before ldconfig has written its last line (SIGPIPE).
+shared_libraries="$(ldconfig -p 2>/dev/null || true)"
+if [ -z "$dds_missing" ] && [ -z "${LIBCLANG_PATH:-}" ] && ! grep -q 'libclang[-.0-9]*\.so' <<<"$shared_libraries"; then
   dds_missing="no libclang (install libclang-dev, or set LIBCLANG_PATH)"
 fi
 if [ -z "$dds_missing" ]; then
