@@ -583,10 +583,11 @@ public final class PeriodAdvisor {
         evidence.put("exec_mean_ms", Num.round3(execMeanMs));
         evidence.put("slowdown_factor", Num.round2(p.chosenMs / p.periodMs));
         evidence.put("freed_cpu_ms_per_s", Num.round2(freedMsPerS));
+        String limit = upper == null ? "no rule bounds it from above" : "up to " + upper.label();
         return new AdviceNote("mostly_stale", evidence, String.format(Locale.ROOT,
-                "'%s' found no new data in %.0f%% of its runs; at %s (%.1fx slower, up to %s) it frees %s of CPU per"
+                "'%s' found no new data in %.0f%% of its runs; at %s (%.1fx slower, %s) it frees %s of CPU per"
                         + " second", p.name(), p.stalePct(), Num.ms(p.chosenMs), p.chosenMs / p.periodMs,
-                upper.label(), Num.ms(Num.round2(freedMsPerS))));
+                limit, Num.ms(Num.round2(freedMsPerS))));
     }
 
     private static String bound(PeriodBound b) {
