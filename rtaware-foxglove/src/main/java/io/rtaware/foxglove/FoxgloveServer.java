@@ -429,7 +429,7 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
         timeSentNs = logTimeNs;
         for (Client c : clients) {
             Channel ch = c.channel;
-            if (ch.isActive() && ch.bytesBeforeUnwritable() >= FoxgloveProtocol.TIME_BYTES) {
+            if (hasRoom(ch, FoxgloveProtocol.TIME_BYTES)) {
                 ByteBuf frame = ch.alloc().buffer(FoxgloveProtocol.TIME_BYTES, FoxgloveProtocol.TIME_BYTES);
                 FoxgloveProtocol.time(frame, logTimeNs);
                 ch.writeAndFlush(new BinaryWebSocketFrame(frame), ch.voidPromise());
@@ -437,11 +437,16 @@ public final class FoxgloveServer implements RecordingTap, AutoCloseable {
         }
     }
 
+    /** @return whether a connected client's send buffer has room for a frame of {@code bytes} */
+    private static boolean hasRoom(Channel ch, int bytes) {
+        return ch.isActive() && ch.bytesBeforeUnwritable() >= bytes;
+    }
+
     /** Sends one Message Data frame, or drops and counts it if the client's send buffer has no room. */
     private void send(Subscriber subscriber, long logTimeNs, byte[] data, int offset, int length) {
         Channel ch = subscriber.client().channel;
         int frameBytes = FoxgloveProtocol.MESSAGE_DATA_HEADER_BYTES + length;
-        if (!ch.isActive() || ch.bytesBeforeUnwritable() < frameBytes) {
+        if (!hasRoom(ch, frameBytes)) {
             dropped.incrementAndGet();
             return;
         }
