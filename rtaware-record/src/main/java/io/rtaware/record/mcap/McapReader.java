@@ -87,13 +87,13 @@ public final class McapReader {
             long size = ch.size();
             int m = Opcode.MAGIC.length;
             byte[] head = new byte[m];
-            if (size < m || !readFully(ch, 0, head, 0, m) || !Arrays.equals(head, Opcode.MAGIC)) {
+            if (size < m || !McapBytes.readFully(ch, 0, head, 0, m) || !Arrays.equals(head, Opcode.MAGIC)) {
                 throw new McapFormatException(path + ": not an MCAP file (no leading magic) at byte 0");
             }
             boolean finished = false;
             if (size >= 2L * m + McapBytes.FOOTER_BYTES) {
                 byte[] tail = new byte[m];
-                finished = readFully(ch, size - m, tail, 0, m) && Arrays.equals(tail, Opcode.MAGIC);
+                finished = McapBytes.readFully(ch, size - m, tail, 0, m) && Arrays.equals(tail, Opcode.MAGIC);
             }
             return new McapReader(path, size, finished);
         }
@@ -118,17 +118,6 @@ public final class McapReader {
         return McapBytes.error(path, at, what);
     }
 
-    private static boolean readFully(FileChannel ch, long position, byte[] into, int offset, int n) throws IOException {
-        return McapBytes.readFully(ch, position, into, offset, n);
-    }
-
-    private static long u64(byte[] b, int at) {
-        return McapBytes.u64(b, at);
-    }
-
-    private static long u32(byte[] b, int at) {
-        return McapBytes.u32(b, at);
-    }
 
     /**
      * Hands every schema, channel, metadata and message record of the data section to the
@@ -204,7 +193,7 @@ public final class McapReader {
 
         /** Reads {@code n} bytes at the pass's position into {@code into}, adding them to the CRC. */
         private void take(byte[] into, int offset, int n, long recordAt) throws IOException {
-            if (n > size - position || !readFully(ch, position, into, offset, n)) {
+            if (n > size - position || !McapBytes.readFully(ch, position, into, offset, n)) {
                 throw error(recordAt, "file ends inside the record");
             }
             crc.update(into, offset, n);
@@ -221,7 +210,7 @@ public final class McapReader {
                 long crcBefore = crc.getValue();
                 take(head, 0, RECORD_HEAD, recordAt);
                 int opcode = head[0] & 0xff;
-                long length = u64(head, 1);
+                long length = McapBytes.u64(head, 1);
                 long left = size - position;
                 if (length < 0 || length > left) {
                     throw error(recordAt, "record of " + Long.toUnsignedString(length) + " bytes overruns the file ("
@@ -230,7 +219,7 @@ public final class McapReader {
                 if (opcode == Opcode.DATA_END) {
                     byte[] b = body(length, recordAt);
                     take(b, 0, (int) length, recordAt);
-                    long recorded = length >= 4 ? u32(b, 0) : 0;
+                    long recorded = length >= 4 ? McapBytes.u32(b, 0) : 0;
                     if (recorded != 0 && recorded != crcBefore) {
                         throw error(recordAt, String.format("data section CRC %08x differs from the recorded %08x",
                                 crcBefore, recorded));
@@ -264,18 +253,18 @@ public final class McapReader {
             }
             byte[] fixed = new byte[CHUNK_FIXED];
             take(fixed, 0, CHUNK_FIXED, chunkAt);
-            long startNs = u64(fixed, 0);
-            long endNs = u64(fixed, 8);
-            long uncompressed = u64(fixed, 16);
-            long recordedCrc = u32(fixed, 24);
-            long nameLength = u32(fixed, 28);
+            long startNs = McapBytes.u64(fixed, 0);
+            long endNs = McapBytes.u64(fixed, 8);
+            long uncompressed = McapBytes.u64(fixed, 16);
+            long recordedCrc = McapBytes.u32(fixed, 24);
+            long nameLength = McapBytes.u32(fixed, 28);
             if (nameLength > MAX_COMPRESSION_NAME || nameLength > length - CHUNK_FIXED - 8) {
                 throw error(chunkAt, "chunk compression name of " + nameLength + " bytes overruns its record");
             }
             byte[] rest = new byte[(int) nameLength + 8];
             take(rest, 0, rest.length, chunkAt);
             String compression = new String(rest, 0, (int) nameLength, StandardCharsets.UTF_8);
-            long storedLength = u64(rest, (int) nameLength);
+            long storedLength = McapBytes.u64(rest, (int) nameLength);
             long available = length - CHUNK_FIXED - rest.length;
             if (storedLength < 0 || storedLength > available) {
                 throw error(chunkAt, "chunk records of " + Long.toUnsignedString(storedLength)
