@@ -25,8 +25,6 @@ public final class RealtimeThreads implements ThreadSetup {
 
     /** Default SCHED_FIFO priority of the highest-rate task. */
     public static final int DEFAULT_TOP_PRIORITY = 80;
-    /** Timer slack set on every task thread, ns. */
-    public static final long TIMER_SLACK_NS = 1;
     private static final int EPERM = 1;
 
     private final LinuxSched sched;
@@ -129,7 +127,7 @@ public final class RealtimeThreads implements ThreadSetup {
 
     @Override
     public void onTaskThreadStart(TaskInfo task, int rmRank, int taskCount) {
-        sched.timerSlack(TIMER_SLACK_NS);
+        sched.timerSlack(MinimalTimerSlack.SLACK_NS);
         Integer cpu = cpuByTask.get(task.name());
         if (cpu != null) {
             int e = sched.pinTo(cpu);
@@ -153,7 +151,7 @@ public final class RealtimeThreads implements ThreadSetup {
      */
     @Override
     public void onPoolWorkerStart(int worker, int rmRank, int taskCount) {
-        sched.timerSlack(TIMER_SLACK_NS);
+        sched.timerSlack(MinimalTimerSlack.SLACK_NS);
         if (fifo) {
             int e = sched.setFifo(priorityOf(rmRank));
             if (e == 0) {

@@ -35,6 +35,7 @@ import io.rtaware.core.monitor.AdaptivePolicy;
 import io.rtaware.core.monitor.ConsoleReporter;
 import io.rtaware.core.monitor.ExecutorKind;
 import io.rtaware.core.monitor.Monitor;
+import io.rtaware.core.monitor.ThreadSetup;
 import io.rtaware.core.output.OutputFiles;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
@@ -56,6 +57,7 @@ import io.rtaware.ros2.export.MonitorExporter;
 import io.rtaware.ros2.graph.Ros2Distro;
 import io.rtaware.rt.ClockNanosleep;
 import io.rtaware.rt.CpuLatencyRequest;
+import io.rtaware.rt.MinimalTimerSlack;
 import io.rtaware.rt.RealtimeThreads;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -184,6 +186,11 @@ public final class BenchCommand implements Callable<Integer> {
             description = "SCHED_FIFO task threads in rate-monotonic order, 1 ns timer slack, and the CPUs held out of "
                     + "deep idle for the run through /dev/cpu_dma_latency, as cyclictest does (Linux, root or CAP_SYS_NICE).")
     boolean realtime;
+
+    @Option(names = "--kernel-timer-slack",
+            description = "Leave the task threads and workers the kernel's timer slack (50 us by default on Linux) "
+                    + "instead of asking for 1 ns, to compare; the slack they had is in the conditions (timer_slack_ns).")
+    boolean kernelTimerSlack;
 
     @Option(names = "--rt-priority", paramLabel = "P", defaultValue = "80",
             description = "SCHED_FIFO priority of the shortest-period task with --realtime (default: ${DEFAULT-VALUE}).")
@@ -331,7 +338,7 @@ public final class BenchCommand implements Callable<Integer> {
         PrintStream out = System.out;
         List<Integer> counts = sweepTasks.stream().sorted().distinct().toList();
         TaskSweep sweep = new TaskSweep().run(counts, TaskSweep.comparison(n -> uniform(n), work, durationNs,
-                segmentNs, System.err, family(), workerCount(), sleeper), System.err);
+                segmentNs, System.err, family(), workerCount(), sleeper, comparedThreadSetup()), System.err);
         out.printf(Locale.ROOT, "sweep: period %s, work %s, %s measured per executor and count; %s, %s%n",
                 Durations.format(periodNs), Durations.format(workNs), Durations.format(durationNs),
                 System.getProperty("java.vm.version"), CompareRun.collectors());
@@ -344,11 +351,16 @@ public final class BenchCommand implements Callable<Integer> {
         return writes.exitStatus(0);
     }
 
+    /** rtaware's rows ask for the smallest timer slack, as a run does, unless --kernel-timer-slack. */
+    private ThreadSetup comparedThreadSetup() {
+        return kernelTimerSlack ? null : MinimalTimerSlack.load().orElse(null);
+    }
+
     private int compare(List<BenchSpec> specs, BusyWork work) throws IOException, InterruptedException {
         PrintStream out = System.out;
         CompareRun.Family family = family();
         CompareRun run = new CompareRun(specs, work, durationNs, segmentNs, System.err, family, workerCount(),
-                sleeper);
+                sleeper, comparedThreadSetup());
         ConditionsMeter.Span span = ConditionsMeter.ofThisProcess().start(1.0, "none");
         List<RunResult> runs = run.run();
         Conditions measured = span.finish(specs.stream().mapToLong(BenchSpec::periodNs).min().orElse(0) / 1e6);
@@ -381,6 +393,8 @@ public final class BenchCommand implements Callable<Integer> {
         Monitor.Builder builder = tasks(Monitor.builder(clock), specs, work);
         if (realtime) {
             builder.threadSetup(RealtimeThreads.configure(rtPriority, affinity, System.err));
+        } else if (!kernelTimerSlack) {
+            MinimalTimerSlack.load().ifPresent(builder::threadSetup);
         }
         LatenessHistogram histogram = null;
         if (latenessHistogram != null) {
@@ -429,7 +443,7 @@ public final class BenchCommand implements Callable<Integer> {
         ThreadAllocation.prepare();
         conditions = ConditionsMeter.ofThisProcess().start(timeScale, realtime
                 ? "--realtime: SCHED_FIFO priority " + rtPriority + (affinity.isEmpty() ? "" : ", affinity " + affinity)
-                + ", CPU latency request 0 us" : "none");
+                + ", CPU latency request 0 us" : "none").timerSlackOf(monitor.timerSlack());
         monitor.start();
         long wallNs = clock.toWallNanos(durationNs);
         // Steady state: the last two thirds of the run (the first third warms up the JIT).

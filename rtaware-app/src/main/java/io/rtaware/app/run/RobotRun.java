@@ -33,6 +33,7 @@ import io.rtaware.robotrun.RunState;
 import io.rtaware.ros2.export.MonitorExporter;
 import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.rt.CpuLatencyRequest;
+import io.rtaware.rt.MinimalTimerSlack;
 import io.rtaware.rt.RealtimeThreads;
 import io.rtaware.sim.map.OccupancyMap;
 import io.rtaware.sim.scenario.Scenario;
@@ -202,6 +203,8 @@ public final class RobotRun {
         Monitor.Builder builder = run.monitorBuilder();
         if (options.realtime()) {
             builder.threadSetup(RealtimeThreads.configure(RealtimeThreads.DEFAULT_TOP_PRIORITY, Map.of(), err));
+        } else if (!options.kernelTimerSlack()) {
+            MinimalTimerSlack.load().ifPresent(builder::threadSetup);
         }
         Monitor monitor = CommandMonitor.build(builder);
         if (options.realtime()) {
@@ -227,7 +230,7 @@ public final class RobotRun {
         RunArtifacts artifacts = new RunArtifacts(options, scenario, run.navConfig(), out, err);
         ConditionsMeter.Span conditions = ConditionsMeter.ofThisProcess().start(options.timeScale(), options.realtime()
                 ? "--realtime: SCHED_FIFO from priority " + RealtimeThreads.DEFAULT_TOP_PRIORITY + ", CPU latency request 0 us"
-                : "none");
+                : "none").timerSlackOf(monitor.timerSlack());
         LiveView live;
         try {
             live = LiveView.start(options.live(), monitor, new RunScene(scenario.name(),

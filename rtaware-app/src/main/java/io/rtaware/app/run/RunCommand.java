@@ -108,6 +108,11 @@ public final class RunCommand implements Callable<Integer> {
                     + "normal threads otherwise.")
     boolean realtime;
 
+    @Option(names = "--kernel-timer-slack",
+            description = "Leave the task threads the kernel's timer slack (50 us by default on Linux) instead of "
+                    + "asking for 1 ns, to compare; the slack they had is in the report's conditions (timer_slack_ns).")
+    boolean kernelTimerSlack;
+
     @Mixin
     LiveMixin live;
 
@@ -194,6 +199,6 @@ public final class RunCommand implements Callable<Integer> {
         trace.checkOutput();
         record.checkOutput();
         return new RunOptions(scenario, taskPeriods, timeScale, host, port, seed, dir, quiet, stuckAfterS,
-                gridResolutionM, model, trace, realtime, live.options(), robot, topSpeedMps, inflationMarginM, robotSeed);
+                gridResolutionM, model, trace, realtime, kernelTimerSlack, live.options(), robot, topSpeedMps, inflationMarginM, robotSeed);
     }
 }

@@ -20,6 +20,7 @@ import java.nio.file.Path;
  * @param modelName the robot's model name for {@code simulation:0} ground truth
  * @param trace the {@code --trace} options
  * @param realtime SCHED_FIFO task threads in rate-monotonic order, when permitted
+ * @param kernelTimerSlack leave the task threads the kernel's timer slack instead of asking for 1 ns
  * @param live whether and where to serve the live view
  * @param robot {@code koala}, {@code ideal}, or null for the scenario's model (default koala)
  * @param topSpeedMps the controller's top speed in m/s, or null for the scenario's (default 0.1)
@@ -28,7 +29,7 @@ import java.nio.file.Path;
  */
 public record RunOptions(String scenario, TaskPeriods periods, double timeScale, String playerHost, int playerPort,
                          long seed, Path outDir, boolean quiet, double stuckAfterS, double gridResolutionM,
-                         String modelName, TraceOptions trace, boolean realtime, LiveOptions live,
+                         String modelName, TraceOptions trace, boolean realtime, boolean kernelTimerSlack, LiveOptions live,
                          String robot, Double topSpeedMps, double inflationMarginM, long robotSeed) {
 
     /** @return true when the robot is the built-in simulator */

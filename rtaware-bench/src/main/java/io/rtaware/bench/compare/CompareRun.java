@@ -3,6 +3,7 @@ package io.rtaware.bench.compare;
 import io.rtaware.bench.load.BenchSpec;
 import io.rtaware.bench.load.BusyWork;
 import io.rtaware.core.monitor.ExecutorKind;
+import io.rtaware.core.monitor.ThreadSetup;
 import io.rtaware.core.testing.ThreadAllocation;
 import io.rtaware.core.time.MonotonicSleeper;
 import java.io.PrintStream;
@@ -41,6 +42,7 @@ public final class CompareRun {
     private final Family family;
     private final int workers;
     private final MonotonicSleeper sleeper;
+    private final ThreadSetup threadSetup;
 
     /**
      * Most tasks per core for which the executors with a thread per task run. Beyond, their
@@ -77,12 +79,15 @@ public final class CompareRun {
      * @param family which executors to compare (the park loop runs too: it is the floor; see {@link #THREAD_PER_TASK_LIMIT_PER_CORE})
      * @param workers threads of the pooled executors (rtaware's pool and the pooled STPE)
      * @param sleeper how rtaware's threaded executor sleeps its task threads (null: they park)
+     * @param threadSetup run on rtaware's task threads and workers (e.g. the smallest timer slack); null for none.
+     *     The other rows' threads keep the JVM's and the kernel's defaults, as a user's would
      */
     public CompareRun(List<BenchSpec> specs, BusyWork work, long measuredNs, long segmentNs, PrintStream progress,
-                      Family family, int workers, MonotonicSleeper sleeper) {
+                      Family family, int workers, MonotonicSleeper sleeper, ThreadSetup threadSetup) {
         this.family = family;
         this.workers = workers;
         this.sleeper = sleeper;
+        this.threadSetup = threadSetup;
         this.specs = List.copyOf(specs);
         this.work = work;
         this.segmentNs = segmentNs;
@@ -129,11 +134,11 @@ public final class CompareRun {
                     + "(rtaware, stpe, park-loop) are left out%n", specs.size(), THREAD_PER_TASK_LIMIT_PER_CORE);
         }
         if (family != Family.POOLED && threadPerTask) {
-            executors.put("rtaware", () -> new RtawareSegment(work, "rtaware", ExecutorKind.threaded(), sleeper));
+            executors.put("rtaware", () -> new RtawareSegment(work, "rtaware", ExecutorKind.threaded(), sleeper, threadSetup));
         }
         if (family != Family.THREADED) {
             executors.put("rtaware-pooled", () -> new RtawareSegment(work, "rtaware-pooled",
-                    ExecutorKind.pooled(workers, ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST), sleeper));
+                    ExecutorKind.pooled(workers, ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST), sleeper, threadSetup));
         }
         if (family != Family.POOLED && threadPerTask) {
             executors.put("stpe", () -> new StpeSegment(work, 0));

@@ -7,6 +7,7 @@ import io.rtaware.core.monitor.ExecutorKind;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.MonitorListener;
 import io.rtaware.core.monitor.TaskInfo;
+import io.rtaware.core.monitor.ThreadSetup;
 import io.rtaware.core.task.Task;
 import io.rtaware.core.task.TaskSetup;
 import io.rtaware.core.time.MonotonicSleeper;
@@ -31,6 +32,7 @@ final class RtawareSegment implements SegmentExecutor {
     private final String name;
     private final ExecutorKind kind;
     private final MonotonicSleeper sleeper;
+    private final ThreadSetup threadSetup;
     private Monitor monitor;
 
     /**
@@ -38,8 +40,10 @@ final class RtawareSegment implements SegmentExecutor {
      * @param name the row's name
      * @param kind the executor
      * @param sleeper how the threaded executor's task threads sleep (null: they park)
+     * @param threadSetup run on the task threads and workers, or null
      */
-    RtawareSegment(BusyWork work, String name, ExecutorKind kind, MonotonicSleeper sleeper) {
+    RtawareSegment(BusyWork work, String name, ExecutorKind kind, MonotonicSleeper sleeper, ThreadSetup threadSetup) {
+        this.threadSetup = threadSetup;
         this.work = work;
         this.name = name;
         this.kind = kind;
@@ -53,7 +57,8 @@ final class RtawareSegment implements SegmentExecutor {
 
     @Override
     public void prepare(List<BenchSpec> specs, List<ReleaseStats> stats) {
-        Monitor.Builder builder = Monitor.builder(new SystemClock()).executor(kind).sleeper(sleeper);
+        Monitor.Builder builder = Monitor.builder(new SystemClock()).executor(kind).sleeper(sleeper)
+                .threadSetup(threadSetup);
         for (BenchSpec s : specs) {
             builder.task(s.name(), s.schedule(), new BurnTask(s.workNs(), work));
         }

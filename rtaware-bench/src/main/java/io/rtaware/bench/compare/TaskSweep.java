@@ -2,6 +2,7 @@ package io.rtaware.bench.compare;
 
 import io.rtaware.bench.load.BenchSpec;
 import io.rtaware.bench.load.BusyWork;
+import io.rtaware.core.monitor.ThreadSetup;
 import io.rtaware.core.time.MonotonicSleeper;
 import java.awt.BasicStroke;
 import java.awt.Color;
@@ -88,13 +89,15 @@ public final class TaskSweep {
      * @param family the executors
      * @param workers pool size
      * @param sleeper how rtaware's threaded executor sleeps its task threads (null: they park)
+     * @param threadSetup run on rtaware's task threads and workers, or null
      * @return how each count's comparison is built
      */
     public static Comparison comparison(java.util.function.IntFunction<List<BenchSpec>> specsOf, BusyWork work,
                                         long measuredNs, long segmentNs, PrintStream progress,
-                                        CompareRun.Family family, int workers, MonotonicSleeper sleeper) {
+                                        CompareRun.Family family, int workers, MonotonicSleeper sleeper,
+                                        ThreadSetup threadSetup) {
         return tasks -> new CompareRun(specsOf.apply(tasks), work, measuredNs, segmentNs, progress, family, workers,
-                sleeper);
+                sleeper, threadSetup);
     }
 
     /**

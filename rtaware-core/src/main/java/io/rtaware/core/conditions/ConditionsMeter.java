@@ -59,12 +59,25 @@ public final class ConditionsMeter {
         private final StaticConditions setup;
         private final HostSample start;
         private final JvmProbe.PauseWatch pauses;
+        private ThreadTimerSlack timerSlack;
         private Conditions finished;
 
         private Span(StaticConditions setup, HostSample start, JvmProbe.PauseWatch pauses) {
             this.setup = setup;
             this.start = start;
             this.pauses = pauses;
+        }
+
+        /**
+         * Reports, with the conditions, the timer slack of the run's cycle threads (a monitor's
+         * {@code timerSlack()}), read when the conditions are made.
+         *
+         * @param slack the observation
+         * @return this span
+         */
+        public synchronized Span timerSlackOf(ThreadTimerSlack slack) {
+            this.timerSlack = slack;
+            return this;
         }
 
         /**
@@ -98,8 +111,9 @@ public final class ConditionsMeter {
 
         private Conditions between(HostSample end, double shortestPeriodWorldMs) {
             double wallPeriodMs = shortestPeriodWorldMs / setup.timeScale();
-            MeasuredConditions measured = MeasuredConditions.between(start, end, pauses,
+            MeasuredConditions between = MeasuredConditions.between(start, end, pauses,
                     MachineVerdict.PAUSE_PERIOD_FRACTION * wallPeriodMs);
+            MeasuredConditions measured = timerSlack == null ? between : between.withTimerSlack(timerSlack);
             return Conditions.of(setup, measured, MachineVerdict.of(measured, wallPeriodMs));
         }
     }

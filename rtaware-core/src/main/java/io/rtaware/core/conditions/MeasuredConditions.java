@@ -34,12 +34,15 @@ import java.util.Map;
  * @param involuntarySwitches involuntary context switches of this process's threads over the span
  * @param longestStallMs the longest the whole process was stopped over the span, ms, as its own
  *     watcher thread saw it ({@link JvmProbe.PauseWatch#longestStallMs()}), or NaN where not measured
+ * @param timerSlackNs the largest timer slack, ns, of the threads that ran the cycles, as each read
+ *     it from {@code /proc} after its setup ({@link ThreadTimerSlack}): Linux's default is 50 000 ns,
+ *     rtaware's real-time layer asks for 1; null where not known (no such threads, no {@code /proc})
  */
 public record MeasuredConditions(double durationS, double loadStart, double loadEnd, int machineCpus,
                                  double otherCpus, double stealPct, long gcCount, double gcTotalMs,
                                  double gcMaxPauseMs, long safepoints, Double timeToSafepointMaxMs, String safepointNote,
                                  double longStopLimitMs, long longStops, long involuntarySwitches,
-                                 double longestStallMs) {
+                                 double longestStallMs, Long timerSlackNs) {
 
     /**
      * How far, as a share of this process's own CPU, the machine's tick-sampled busy time minus
@@ -95,7 +98,7 @@ public record MeasuredConditions(double durationS, double loadStart, double load
                 pauses == null ? null : pauses.maxTimeToSafepointMs(),
                 pauses == null ? "not part of this span" : pauses.safepointNote(), longStopLimitMs,
                 pauses == null || Double.isNaN(longStopLimitMs) ? -1 : pauses.stopsLongerThan(longStopLimitMs), switches,
-                pauses == null ? Double.NaN : pauses.longestStallMs());
+                pauses == null ? Double.NaN : pauses.longestStallMs(), null);
     }
 
     /**
@@ -107,6 +110,17 @@ public record MeasuredConditions(double durationS, double loadStart, double load
      *
      * @return ticks, or -1 when either table is missing
      */
+    /**
+     * @param slack the observation of the threads that ran the cycles
+     * @return these conditions with the largest slack observed, or null if none was
+     */
+    public MeasuredConditions withTimerSlack(ThreadTimerSlack slack) {
+        Long ns = slack.largestNs().isPresent() ? slack.largestNs().getAsLong() : null;
+        return new MeasuredConditions(durationS, loadStart, loadEnd, machineCpus, otherCpus, stealPct, gcCount,
+                gcTotalMs, gcMaxPauseMs, safepoints, timeToSafepointMaxMs, safepointNote, longStopLimitMs, longStops,
+                involuntarySwitches, longestStallMs, ns);
+    }
+
     static long othersTicks(Map<Long, Long> start, Map<Long, Long> end) {
         if (start == null || end == null) {
             return -1;

@@ -1,5 +1,6 @@
 package io.rtaware.core.monitor;
 
+import io.rtaware.core.conditions.ThreadTimerSlack;
 import io.rtaware.core.data.FeedStats;
 import io.rtaware.core.data.Key;
 import io.rtaware.core.data.StateValue;
@@ -54,6 +55,7 @@ public final class Monitor {
     private final List<Consumer<Report>> terminationHandlers = new CopyOnWriteArrayList<>();
     private final List<MonitorListener> listeners;
     private final ThreadSetup threadSetup;
+    private final ThreadTimerSlack timerSlack = ThreadTimerSlack.ofThisMachine();
     /** How task threads of the threaded executor sleep on a real clock; null: they park. */
     private final MonotonicSleeper sleeper;
     private final ExecutorKind executorKind;
@@ -263,11 +265,49 @@ public final class Monitor {
      * @throws IllegalStateException if already started
      */
     public void start() {
+        ThreadSetup setup = new ObservedSetup(threadSetup, timerSlack);
         if (executorKind instanceof ExecutorKind.Pooled pool) {
             begin(new PooledExecutor(clock, newWaiter(), runtimes, pool.workers(), pool.order(), this::requestStopFromTask,
-                    threadSetup, faults));
+                    setup, faults));
         } else {
-            begin(new ThreadedExecutor(clock, newWaiter(), runtimes, this::requestStopFromTask, threadSetup, faults));
+            begin(new ThreadedExecutor(clock, newWaiter(), runtimes, this::requestStopFromTask, setup, faults));
+        }
+    }
+
+    /**
+     * The timer slack of the threads that run this monitor's cycles (task threads and pool
+     * workers), as each read it once its {@link ThreadSetup} had run: 50 000 ns is Linux's
+     * default, 1 ns what {@code io.rtaware.rt.MinimalTimerSlack} asks for. Empty before
+     * {@link #start()}, under the step executor, and where {@code /proc} does not tell.
+     *
+     * @return the observation (thread-safe)
+     */
+    public ThreadTimerSlack timerSlack() {
+        return timerSlack;
+    }
+
+    /** The builder's setup, then a look at what the thread's timer slack became. */
+    private record ObservedSetup(ThreadSetup setup, ThreadTimerSlack slack) implements ThreadSetup {
+        @Override
+        public void onTaskThreadStart(TaskInfo task, int rmRank, int taskCount) {
+            try {
+                if (setup != null) {
+                    setup.onTaskThreadStart(task, rmRank, taskCount);
+                }
+            } finally {
+                slack.observeCurrentThread();
+            }
+        }
+
+        @Override
+        public void onPoolWorkerStart(int worker, int rmRank, int taskCount) {
+            try {
+                if (setup != null) {
+                    setup.onPoolWorkerStart(worker, rmRank, taskCount);
+                }
+            } finally {
+                slack.observeCurrentThread();
+            }
         }
     }
 
