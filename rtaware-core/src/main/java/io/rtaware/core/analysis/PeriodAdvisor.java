@@ -31,7 +31,8 @@ import java.util.TreeSet;
  *   <li>upper, <b>sampling</b>, once per input: a task that samples an input must run at least
  *   twice as fast as the input changes, {@code period <= 1 / (2 * rate)}, the rate measured (and,
  *   where the input's producer is a periodic task whose period the advice changes, scaled by
- *   the ratio of its periods);</li>
+ *   the ratio of its periods), but never more than the fastest of the producer's own inputs
+ *   changes: a task that commits faster than its inputs change repeats their information;</li>
  *   <li>upper, <b>reaction</b>, for a task that declared a {@link ReactionConstraint}:
  *   {@code speed * (period + input age p99) + stopping distance <= range}, the input's age at a
  *   read being its declared delay plus 0.99 of its commit interval;</li>
@@ -371,9 +372,37 @@ public final class PeriodAdvisor {
     }
 
     /** @return the commit rate of a key at its producer's chosen period, Hz (the measured rate, scaled) */
-    private static double rateAtChosen(DataReport d, Map<String, Plan> byName) {
+    private static double commitRateAtChosen(DataReport d, Map<String, Plan> byName) {
         Plan producer = byName.get(d.producer());
         return producer == null ? d.rateHz() : d.rateHz() * producer.periodMs / producer.chosenMs;
+    }
+
+    /**
+     * The rate at which a key's value can change, Hz, for the sampling rule: its commit rate at
+     * its producer's chosen period, but no more than the fastest of the producer's own inputs
+     * changes, when it has inputs: a task that commits faster than its inputs change commits the
+     * same information again (a chain of 1 ms tasks would otherwise ask each consumer to run twice
+     * as fast as the one before it). A producer without inputs (a sensor, a source of its own)
+     * counts by its commits.
+     */
+    private static double rateAtChosen(DataReport d, Map<String, Plan> byName) {
+        return rateAtChosen(d, byName, new HashSet<>());
+    }
+
+    private static double rateAtChosen(DataReport d, Map<String, Plan> byName, Set<String> visiting) {
+        double commits = commitRateAtChosen(d, byName);
+        Plan producer = byName.get(d.producer());
+        if (producer == null || producer.inputs.isEmpty() || !visiting.add(d.name())) {
+            return commits; // no inputs, or a cycle of data: by commits
+        }
+        double fastestInput = 0;
+        for (DataReport input : producer.inputs) {
+            if (input.rateHz() > 0) {
+                fastestInput = Math.max(fastestInput, rateAtChosen(input, byName, visiting));
+            }
+        }
+        visiting.remove(d.name());
+        return fastestInput > 0 ? Math.min(commits, fastestInput) : commits;
     }
 
     private static List<PeriodBound> upperBounds(Plan p, Report report, Map<String, Plan> byName) {
@@ -382,18 +411,25 @@ public final class PeriodAdvisor {
             if (d.rateHz() <= 0) {
                 continue;
             }
+            double commits = commitRateAtChosen(d, byName);
             double rate = rateAtChosen(d, byName);
-            boolean scaled = rate != d.rateHz();
+            boolean scaled = commits != d.rateHz();
+            boolean capped = rate < commits;
             Map<String, Object> evidence = new LinkedHashMap<>();
             evidence.put("input", d.name());
             evidence.put("producer", d.producer());
             evidence.put("input_rate_hz", d.rateHz());
             if (scaled) {
-                evidence.put("input_rate_at_suggested_hz", Num.round2(rate));
+                evidence.put("input_rate_at_suggested_hz", Num.round2(commits));
             }
+            if (capped) {
+                evidence.put("input_change_rate_hz", Num.round2(rate));
+            }
+            String why = capped ? ": '" + d.producer() + "' commits faster than its inputs change"
+                    : scaled ? " at '" + d.producer() + "''s suggested period" : "";
             bounds.add(new PeriodBound(PeriodBound.SAMPLING, PeriodBound.UPPER, Num.round3(samplingBoundMs(rate)),
-                    String.format(Locale.ROOT, "sampling of '%s' (%s Hz%s)", d.name(), Num.num(Num.round2(rate)),
-                            scaled ? " at '" + d.producer() + "''s suggested period" : ""), evidence));
+                    String.format(Locale.ROOT, "sampling of '%s' (%s Hz%s)", d.name(), Num.num(Num.round2(rate)), why),
+                    evidence));
         }
         ReactionConstraint r = p.task.reaction();
         if (r != null) {
