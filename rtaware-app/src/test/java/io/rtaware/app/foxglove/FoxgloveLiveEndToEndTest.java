@@ -2,14 +2,16 @@ package io.rtaware.app.foxglove;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.app.RtawareCli;
 import io.rtaware.app.ros2.Ros2PythonPeer;
-import io.rtaware.app.ros2.Ros2RunEndToEndTest;
 import io.rtaware.app.ros2.Ros2Wiring;
+import io.rtaware.core.testing.NpmPeers;
+import io.rtaware.core.testing.PythonPeers;
+import io.rtaware.core.testing.Requires;
+import io.rtaware.zenoh.NativeZenohLayer;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -39,6 +41,7 @@ import org.junit.jupiter.api.io.TempDir;
  * packages under {@code RTAWARE_NPM_PEERS} (.ci/run installs them); skipped without them, except
  * under {@code CI=true}.
  */
+@Requires(NpmPeers.class)
 class FoxgloveLiveEndToEndTest {
 
     private static final Pattern URL = Pattern.compile("foxglove: (ws://127\\.0\\.0\\.1:\\d+)");
@@ -53,13 +56,7 @@ class FoxgloveLiveEndToEndTest {
 
     @BeforeEach
     void captureStdout() {
-        peers = System.getenv("RTAWARE_NPM_PEERS");
-        if (peers == null || peers.isBlank()) {
-            if ("true".equals(System.getenv("CI"))) {
-                throw new AssertionError("CI=true but RTAWARE_NPM_PEERS is unset: .ci/run must install .ci/npm-peers.json");
-            }
-            assumeTrue(false, "SKIPPED: RTAWARE_NPM_PEERS unset: no Foxglove client to connect with");
-        }
+        peers = NpmPeers.folder();
         saved = System.out;
         System.setOut(new PrintStream(stdout, true, StandardCharsets.UTF_8));
     }
@@ -136,9 +133,9 @@ class FoxgloveLiveEndToEndTest {
      * endpoint decodes /scan and /odom, checks the frames and drives the robot on /cmd_vel.
      */
     @Test
+    @Requires(NativeZenohLayer.class)
     void simServesFoxgloveAndRos2AtOnce() throws Exception {
-        Ros2RunEndToEndTest.requireNativeZenoh();
-        String python = Ros2PythonPeer.python();
+        String python = PythonPeers.python();
         Path script = Ros2PythonPeer.script(dir);
         String endpoint = Ros2Wiring.freeLoopbackEndpoint();
         Command sim = Command.start("rtaware-sim-under-test", "sim", "--port", "0", "--ros2", "--listen", endpoint,
@@ -199,7 +196,7 @@ class FoxgloveLiveEndToEndTest {
         Process node;
         try {
             ProcessBuilder pb = new ProcessBuilder(command).redirectErrorStream(true);
-            pb.environment().put("RTAWARE_NPM_PEERS", peers);
+            pb.environment().put(NpmPeers.VARIABLE, peers);
             node = pb.start();
         } catch (IOException e) {
             throw new AssertionError("cannot run node: " + e.getMessage(), e);

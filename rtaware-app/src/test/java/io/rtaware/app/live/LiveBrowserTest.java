@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import io.rtaware.app.RtawareCli;
+import io.rtaware.core.testing.Requires;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
@@ -15,7 +16,6 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -25,8 +25,7 @@ import org.junit.jupiter.api.io.TempDir;
  * appear, the numbers move, each task's strip chart draws its lateness and execution time on a
  * minute-long time axis, the header shows the machine verdict so far, a screenshot is saved to
  * {@code target/live-view.png}, and after the run the page shows the final summary, which names
- * the figures by odometry and those in truth, also on reload. Skipped, saying so, without Chromium
- * ({@code apt-get install -y chromium}).
+ * the figures by odometry and those in truth, also on reload. Needs {@link HeadlessChromium}.
  */
 class LiveBrowserTest {
 
@@ -36,10 +35,9 @@ class LiveBrowserTest {
     Path dir;
 
     @Test
+    @Requires(HeadlessChromium.class)
     void pageShowsTheRobotAndLiveTaskRowsThenTheFinalSummary() throws Exception {
         Path chromium = Cdp.chromium();
-        Assumptions.assumeTrue(chromium != null,
-                "SKIPPED: headless Chromium not found (/usr/bin/chromium); install it with apt-get install -y chromium");
         Path scenario = Path.of(Objects.requireNonNull(getClass().getResource("/scenarios/short-leg.yaml")).toURI());
         ByteArrayOutputStream stdout = new ByteArrayOutputStream();
         PrintStream saved = System.out;

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.rtaware.app.RtawareCli;
+import io.rtaware.core.testing.Requires;
 import io.rtaware.ros2.graph.QosProfile;
 import io.rtaware.ros2.graph.Ros2Context;
 import io.rtaware.ros2.graph.Ros2Names;
@@ -16,6 +17,7 @@ import io.rtaware.ros2msg.TransformMessages;
 import io.rtaware.ros2msg.cdr.CdrReader;
 import io.rtaware.ros2msg.value.DiagnosticArray;
 import io.rtaware.ros2msg.value.PlanarPose;
+import io.rtaware.zenoh.NativeZenohLayer;
 import io.rtaware.zenoh.SampleBuffer;
 import io.rtaware.zenoh.ZenohConfig;
 import io.rtaware.zenoh.ZenohMailbox;
@@ -54,8 +56,8 @@ class ExportEndToEndTest {
     private ZenohMailbox mailbox;
 
     @BeforeEach
+    @Requires(NativeZenohLayer.class)
     void listen() throws Exception {
-        Ros2RunEndToEndTest.requireNativeZenoh();
         try (ServerSocket s = new ServerSocket(0)) {
             endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
         }

@@ -3,6 +3,7 @@ package io.rtaware.app.ros2;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.rtaware.core.testing.Requires;
 import io.rtaware.core.time.SystemClock;
 import io.rtaware.robot.msg.VelocityCommand;
 import io.rtaware.ros2.graph.QosProfile;
@@ -16,6 +17,7 @@ import io.rtaware.sim.scenario.ScenarioLoader;
 import io.rtaware.sim.server.PlayerSimServer;
 import io.rtaware.sim.server.ServerConfig;
 import io.rtaware.sim.server.SimCommandSupport;
+import io.rtaware.zenoh.NativeZenohLayer;
 import io.rtaware.zenoh.ZenohConfig;
 import java.net.ServerSocket;
 import java.util.List;
@@ -43,8 +45,8 @@ class Ros2SimRobotCommandersTest {
     }
 
     @Test
+    @Requires(NativeZenohLayer.class)
     void aForeignCmdVelPublisherIsReportedOnceAndDoesNotDriveTheRobot() throws Exception {
-        Ros2RunEndToEndTest.requireNativeZenoh();
         String endpoint;
         try (ServerSocket s = new ServerSocket(0)) {
             endpoint = "tcp/127.0.0.1:" + s.getLocalPort();

@@ -9,10 +9,10 @@ import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.Task;
 import io.rtaware.core.task.TaskSetup;
+import io.rtaware.core.testing.Requires;
 import io.rtaware.core.time.ManualClock;
 import io.rtaware.robot.msg.LaserScan;
 import io.rtaware.robot.msg.RobotKeys;
-import io.rtaware.ros2.NativeZenohAssumption;
 import io.rtaware.ros2.graph.Ros2Context;
 import io.rtaware.ros2.graph.Ros2Names;
 import io.rtaware.ros2msg.DiagnosticArrayCodec;
@@ -24,6 +24,7 @@ import io.rtaware.ros2msg.cdr.CdrReader;
 import io.rtaware.ros2msg.value.DiagnosticArray;
 import io.rtaware.ros2msg.value.DiagnosticStatus;
 import io.rtaware.ros2msg.value.MetricsMessage;
+import io.rtaware.zenoh.NativeZenohLayer;
 import io.rtaware.zenoh.SampleBuffer;
 import io.rtaware.zenoh.ZenohConfig;
 import io.rtaware.zenoh.ZenohMailbox;
@@ -93,8 +94,8 @@ class MonitorExporterTest {
     }
 
     @Test
+    @Requires(NativeZenohLayer.class)
     void keysAndHealthReachAnotherSession() throws Exception {
-        NativeZenohAssumption.require();
         ManualClock clock = new ManualClock();
         Monitor monitor = scanning(clock);
         String endpoint = loopbackEndpoint();
@@ -139,8 +140,8 @@ class MonitorExporterTest {
     }
 
     @Test
+    @Requires(NativeZenohLayer.class)
     void statisticsOfEveryTaskAndKeyReachAnotherSessionOnceTheirSecondIsOver() throws Exception {
-        NativeZenohAssumption.require();
         ManualClock clock = new ManualClock();
         Monitor monitor = scanning(clock);
         String endpoint = loopbackEndpoint();

@@ -4,8 +4,9 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import io.rtaware.ros2.NativeZenohAssumption;
+import io.rtaware.core.testing.Requires;
 import io.rtaware.ros2msg.Ros2Types;
+import io.rtaware.zenoh.NativeZenohLayer;
 import io.rtaware.zenoh.SampleBuffer;
 import io.rtaware.zenoh.ZenohConfig;
 import io.rtaware.zenoh.ZenohMailbox;
@@ -27,6 +28,7 @@ import org.junit.jupiter.api.Timeout;
  * and entity ids count from 0 within a context.
  */
 @Timeout(60)
+@Requires(NativeZenohLayer.class)
 class Ros2NodeKeysTest {
 
     private static final String SCAN_TYPE = "sensor_msgs::msg::dds_::LaserScan_/" + Ros2Types.LASER_SCAN.typeHash();
@@ -40,7 +42,6 @@ class Ros2NodeKeysTest {
 
     @BeforeEach
     void open() throws Exception {
-        NativeZenohAssumption.require();
         try (ServerSocket s = new ServerSocket(0)) {
             endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
         }

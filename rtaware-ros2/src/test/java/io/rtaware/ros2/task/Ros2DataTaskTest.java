@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import io.rtaware.core.data.Key;
+import io.rtaware.core.testing.Requires;
 import io.rtaware.core.testing.TaskHarness;
 import io.rtaware.robot.msg.LaserScan;
 import io.rtaware.robot.msg.Odometry;
@@ -15,7 +16,6 @@ import io.rtaware.robot.msg.RobotKeys;
 import io.rtaware.robot.msg.VelocityCommand;
 import io.rtaware.robot.validate.ImpossibleDataException;
 import io.rtaware.robot.validate.SampleValidator;
-import io.rtaware.ros2.NativeZenohAssumption;
 import io.rtaware.ros2.graph.QosProfile;
 import io.rtaware.ros2.graph.Ros2Context;
 import io.rtaware.ros2.graph.Ros2Names;
@@ -29,6 +29,7 @@ import io.rtaware.ros2msg.Ros2Types;
 import io.rtaware.ros2msg.TwistCodec;
 import io.rtaware.ros2msg.cdr.CdrReader;
 import io.rtaware.ros2msg.cdr.CdrWriter;
+import io.rtaware.zenoh.NativeZenohLayer;
 import io.rtaware.zenoh.SampleBuffer;
 import io.rtaware.zenoh.ZenohConfig;
 import io.rtaware.zenoh.ZenohMailbox;
@@ -52,6 +53,7 @@ import org.junit.jupiter.api.Timeout;
  * clock, the controller's motor commands committed as a scripted input.
  */
 @Timeout(60)
+@Requires(NativeZenohLayer.class)
 class Ros2DataTaskTest {
 
     private static final int MAX_MESSAGE_BYTES = 20_000;
@@ -73,7 +75,6 @@ class Ros2DataTaskTest {
 
     @BeforeEach
     void connect() throws Exception {
-        NativeZenohAssumption.require();
         String endpoint;
         try (ServerSocket s = new ServerSocket(0)) {
             endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
