@@ -10,6 +10,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.TaskCounters;
 import io.rtaware.core.task.Schedule;
+import io.rtaware.core.testing.Waits;
 import io.rtaware.core.time.SystemClock;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
@@ -200,12 +201,12 @@ class LiveServerTest {
             assertTrue(received.contains("text/event-stream"), received);
             assertEquals(1, server.eventClients());
         }
-        long deadline = System.nanoTime() + 10_000_000_000L;
-        for (int seq = 2; server.eventClients() > 0 && System.nanoTime() < deadline; seq++) {
-            server.publish(("{\"seq\":" + seq + "}").getBytes(StandardCharsets.UTF_8));
-            Thread.sleep(20);
-        }
-        assertEquals(0, server.eventClients(), "the closed client is dropped");
+        int[] seq = {1};
+        Waits.until(() -> { // a write to the closed socket finds it closed
+            seq[0]++;
+            server.publish(("{\"seq\":" + seq[0] + "}").getBytes(StandardCharsets.UTF_8));
+            return server.eventClients() == 0;
+        }, Duration.ofSeconds(10), "the closed client dropped");
         assertEquals(1, server.eventClientsEver());
     }
 
@@ -258,11 +259,9 @@ class LiveServerTest {
         return seen.toString();
     }
 
-    private static void awaitClients(LiveServer server, int n) throws InterruptedException {
-        long deadline = System.nanoTime() + 5_000_000_000L;
-        while (server.eventClients() < n && System.nanoTime() < deadline) {
-            Thread.sleep(10);
-        }
+    private static void awaitClients(LiveServer server, int n) throws Exception {
+        Waits.until(() -> server.eventClients() >= n, Duration.ofSeconds(10), () -> n + " event clients, "
+                + server.eventClients() + " seen");
         assertEquals(n, server.eventClients());
     }
 }

@@ -7,16 +7,19 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.app.RtawareCli;
 import io.rtaware.app.ros2.Ros2PythonPeer;
+import io.rtaware.app.ros2.Ros2RunEndToEndTest;
 import io.rtaware.app.ros2.Ros2Wiring;
 import io.rtaware.core.testing.NpmPeers;
 import io.rtaware.core.testing.PythonPeers;
 import io.rtaware.core.testing.Requires;
+import io.rtaware.core.testing.Waits;
 import io.rtaware.zenoh.NativeZenohLayer;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -211,14 +214,12 @@ class FoxgloveLiveEndToEndTest {
     }
 
     private String awaitUrl(Command command) throws Exception {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
-        while (System.nanoTime() < deadline && !command.result.isDone()) {
-            Matcher m = URL.matcher(stdout.toString(StandardCharsets.UTF_8));
-            if (m.find()) {
-                return m.group(1);
-            }
-            Thread.sleep(20);
+        Matcher m = URL.matcher("");
+        Waits.until(() -> m.reset(stdout.toString(StandardCharsets.UTF_8)).find() || command.result.isDone(),
+                Duration.ofSeconds(60), () -> "a 'foxglove: ws://...' line; output:\n" + stdout);
+        if (!m.reset(stdout.toString(StandardCharsets.UTF_8)).find()) {
+            throw new AssertionError("the run ended without a 'foxglove: ws://...' line; output:\n" + stdout);
         }
-        throw new AssertionError("no 'foxglove: ws://...' line; output:\n" + stdout);
+        return m.group(1);
     }
 }

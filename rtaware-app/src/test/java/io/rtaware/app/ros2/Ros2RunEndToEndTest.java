@@ -8,6 +8,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.app.RtawareCli;
 import io.rtaware.core.testing.Requires;
+import io.rtaware.core.testing.Waits;
 import io.rtaware.record.RecordingPlan;
 import io.rtaware.record.mcap.McapChannel;
 import io.rtaware.record.mcap.McapReader;
@@ -24,12 +25,12 @@ import java.io.PrintStream;
 import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -198,11 +199,8 @@ public class Ros2RunEndToEndTest {
             System.setErr(new PrintStream(stderr, true, StandardCharsets.UTF_8));
             status = quietly("run", "--ros2", "--zenoh", endpoint, "--scenario", shortLeg().toString(),
                     "--time-scale", "1", "--out", out.toString(), "--quiet");
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-            while (robot.lastTwist() == null || !robot.lastTwist().isStop()) {
-                assertTrue(System.nanoTime() < deadline, "the robot received a zero Twist last");
-                Thread.onSpinWait();
-            }
+            Waits.until(() -> robot.lastTwist() != null && robot.lastTwist().isStop(), Duration.ofSeconds(10),
+                    "a zero Twist, the last the robot received");
         } finally {
             System.setErr(savedErr);
             robot.close();

@@ -5,12 +5,14 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.rtaware.core.testing.Requires;
+import io.rtaware.core.testing.Waits;
 import io.rtaware.ros2msg.Ros2Types;
 import io.rtaware.zenoh.NativeZenohLayer;
 import io.rtaware.zenoh.SampleBuffer;
 import io.rtaware.zenoh.ZenohConfig;
 import io.rtaware.zenoh.ZenohMailbox;
 import java.net.ServerSocket;
+import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
@@ -65,13 +67,10 @@ class Ros2NodeKeysTest {
         mailbox.subscribe(key, 3);
         SampleBuffer sample = new SampleBuffer(1024, 64);
         byte[] message = {0, 1, 0, 0, 42};
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        ZenohMailbox.Take took = ZenohMailbox.Take.TIMEOUT;
-        while (took != ZenohMailbox.Take.SAMPLE) {
-            assertTrue(System.nanoTime() < deadline, "nothing arrived on " + key);
+        Waits.until(() -> {
             publisher.publish(message, message.length, 1);
-            took = mailbox.take(TimeUnit.MILLISECONDS.toNanos(50), sample);
-        }
+            return mailbox.take(TimeUnit.MILLISECONDS.toNanos(50), sample) == ZenohMailbox.Take.SAMPLE;
+        }, Duration.ofSeconds(10), "a sample on " + key);
         assertEquals(3, sample.channel());
         assertTrue(SampleAttachment.valid(sample.attachment(), sample.attachmentLength()), "rmw_zenoh attachment");
         lastGid = new byte[SampleAttachment.GID_BYTES];
