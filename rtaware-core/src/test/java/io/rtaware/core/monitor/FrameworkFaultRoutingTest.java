@@ -34,6 +34,17 @@ class FrameworkFaultRoutingTest {
         first.countDown();
     };
 
+    /** A task that does nothing. */
+    private static class Idle implements Task {
+        @Override
+        public void initialize(TaskSetup setup) {
+        }
+
+        @Override
+        public void execute(long nowNs) {
+        }
+    }
+
     @Test
     void aThreadThatDoesNotReturnAtStopIsAFaultBeforeItIsInterrupted() throws Exception {
         FrameworkFaults faults = new FrameworkFaults(handler);
@@ -54,15 +65,7 @@ class FrameworkFaultRoutingTest {
     @Test
     void aTaskWhoseTerminateThrowsIsAFrameworkFault() {
         Monitor monitor = Monitor.builder(new ManualClock()).errorHandler(handler)
-                .task("leaky", Schedule.periodic(10 * MS), new Task() {
-                    @Override
-                    public void initialize(TaskSetup setup) {
-                    }
-
-                    @Override
-                    public void execute(long nowNs) {
-                    }
-
+                .task("leaky", Schedule.periodic(10 * MS), new Idle() {
                     @Override
                     public void terminate() {
                         throw new IllegalStateException("the port was closed already");
@@ -77,15 +80,7 @@ class FrameworkFaultRoutingTest {
     @Test
     void aFaultOfTheConsoleReportersPrinterGoesToTheMonitorItListensTo() throws Exception {
         Monitor monitor = Monitor.builder(new ManualClock()).errorHandler(handler)
-                .task("planner", Schedule.periodic(10 * MS), new Task() {
-                    @Override
-                    public void initialize(TaskSetup setup) {
-                    }
-
-                    @Override
-                    public void execute(long nowNs) {
-                    }
-                }).build();
+                .task("planner", Schedule.periodic(10 * MS), new Idle()).build();
         PrintStream brokenTerminal = new PrintStream(new OutputStream() {
             @Override
             public void write(int b) {

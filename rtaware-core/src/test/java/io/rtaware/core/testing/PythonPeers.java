@@ -8,31 +8,26 @@ import java.nio.file.Path;
  * them, named by {@code RTAWARE_PEER_PYTHON} ({@code .ci/run} makes one under
  * {@code ~/.cache/rtaware/peer-venv}).
  */
-public final class PythonPeers implements Requirement {
+public final class PythonPeers extends VariableRequirement {
 
     /** The environment variable that names the peers' Python. */
     public static final String VARIABLE = "RTAWARE_PEER_PYTHON";
+
+    /** As {@link Requires} makes it. */
+    public PythonPeers() {
+        super(VARIABLE, "the Python peers", "a Python with the packages of .ci/python-peers.txt");
+    }
 
     /**
      * @return the peers' Python, as {@code RTAWARE_PEER_PYTHON} names it; skips the test without it, and
      *     fails it under {@code CI=true} ({@link RequiresExtension#require})
      */
     public static String python() {
-        RequiresExtension.require(new PythonPeers());
-        return System.getenv(VARIABLE);
+        return new PythonPeers().required();
     }
 
     @Override
-    public String name() {
-        return "the Python peers (" + VARIABLE + ")";
-    }
-
-    @Override
-    public String missingReason() {
-        String python = System.getenv(VARIABLE);
-        if (python == null || python.isBlank()) {
-            return VARIABLE + " is unset (.ci/run sets it to a Python with the packages of .ci/python-peers.txt)";
-        }
-        return Files.isExecutable(Path.of(python)) ? null : VARIABLE + "=" + python + " is not an executable";
+    String unusable(String value) {
+        return Files.isExecutable(Path.of(value)) ? null : "is not an executable";
     }
 }

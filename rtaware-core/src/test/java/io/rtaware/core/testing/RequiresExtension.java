@@ -64,7 +64,7 @@ public final class RequiresExtension implements BeforeAllCallback, BeforeEachCal
         if (reason == null) {
             return;
         }
-        String missing = requirement.name() + " is missing: " + reason;
+        String missing = "missing " + requirement.name() + ": " + reason;
         if (!ci) {
             Assumptions.abort("skipped: " + missing);
         }

@@ -21,47 +21,55 @@ import org.junit.platform.launcher.core.LauncherFactory;
  */
 class RequiresExtensionTest {
 
-    /** Never present. */
-    public static final class Unicorn implements Requirement {
+    /** A requirement whose answers are fixed. */
+    private abstract static class Fixed implements Requirement {
+        private final String name;
+        private final String missing;
+        private final String excuse;
+
+        Fixed(String name, String missing, String excuse) {
+            this.name = name;
+            this.missing = missing;
+            this.excuse = excuse;
+        }
+
         @Override
         public String name() {
-            return "the unicorn";
+            return name;
         }
 
         @Override
         public String missingReason() {
-            return "none was ever seen here";
-        }
-    }
-
-    /** Never present, and CI may lack it. */
-    public static final class ExcusedUnicorn implements Requirement {
-        @Override
-        public String name() {
-            return "the excused unicorn";
-        }
-
-        @Override
-        public String missingReason() {
-            return "none was ever seen here";
+            return missing;
         }
 
         @Override
         public String excusedUnderCi() {
-            return "CI said it has none";
+            return excuse;
+        }
+    }
+
+    /** Never present. */
+    public static final class Unicorn extends Fixed {
+        /** As {@link Requires} makes it. */
+        public Unicorn() {
+            super("the unicorn", "none was ever seen here", null);
+        }
+    }
+
+    /** Never present, and CI may lack it. */
+    public static final class ExcusedUnicorn extends Fixed {
+        /** As {@link Requires} makes it. */
+        public ExcusedUnicorn() {
+            super("the excused unicorn", "none was ever seen here", "CI said it has none");
         }
     }
 
     /** Always present. */
-    public static final class Air implements Requirement {
-        @Override
-        public String name() {
-            return "air";
-        }
-
-        @Override
-        public String missingReason() {
-            return null;
+    public static final class Air extends Fixed {
+        /** As {@link Requires} makes it. */
+        public Air() {
+            super("air", null, null);
         }
     }
 
@@ -120,20 +128,20 @@ class RequiresExtensionTest {
 
     @Test
     void outsideCiAMissingRequirementSkipsTheTestNamingIt() {
-        assertEquals(List.of("ridesIt() ABORTED: TestAbortedException: skipped: the unicorn is missing: "
+        assertEquals(List.of("ridesIt() ABORTED: TestAbortedException: skipped: missing the unicorn: "
                 + "none was ever seen here"), run(NeedsAUnicorn.class, false));
     }
 
     @Test
     void underCiAMissingRequirementFailsTheTestNamingIt() {
-        assertEquals(List.of("ridesIt() FAILED: AssertionFailedError: CI=true but the unicorn is missing: "
+        assertEquals(List.of("ridesIt() FAILED: AssertionFailedError: CI=true but missing the unicorn: "
                 + "none was ever seen here"), run(NeedsAUnicorn.class, true));
     }
 
     @Test
     void underCiAnExcusedRequirementSkipsTheWholeClassSayingWhy() {
         assertEquals(List.of("RequiresExtensionTest$NeedsAnExcusedUnicorn ABORTED: TestAbortedException: skipped under CI=true "
-                + "(CI said it has none): the excused unicorn is missing: none was ever seen here"),
+                + "(CI said it has none): missing the excused unicorn: none was ever seen here"),
                 run(NeedsAnExcusedUnicorn.class, true));
     }
 
