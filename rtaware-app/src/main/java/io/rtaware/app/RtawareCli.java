@@ -17,7 +17,8 @@ import picocli.CommandLine.Command;
 
 /**
  * The {@code rtaware} command: entry point and composition root. User errors end with one line
- * and exit status 2; anything else is a bug and shows its stack trace with status 1.
+ * and exit status 2; the system's refusal of another thread ends with one line and status 1;
+ * anything else is a bug and shows its stack trace with status 1.
  */
 @Command(name = "rtaware", mixinStandardHelpOptions = true, version = "rtaware 0.1.0",
         description = "Run robot controllers whose tasks are aware of time.",
@@ -84,6 +85,16 @@ public final class RtawareCli {
             }
             throw ex;
         });
-        return cli.execute(args);
+        try {
+            return cli.execute(args); // picocli hands Exceptions to the handlers above, not Errors
+        } catch (OutOfMemoryError e) {
+            if (!String.valueOf(e.getMessage()).startsWith("unable to create native thread")) {
+                throw e;
+            }
+            // the system's limit on threads, met while starting tasks, workers or a server's loops
+            cli.getErr().println("rtaware: the system refused another thread (" + e.getMessage() + "); run fewer "
+                    + "tasks or --workers, or raise the limit on threads (ulimit -u, pid_max, a container's pids limit)");
+            return 1;
+        }
     }
 }

@@ -67,7 +67,7 @@ class CliErrorsTest {
     @Test
     void unknownExecutorAndBadSweepAreOneLineWithStatus2() {
         assertOneLineUserError(runCapturingErr("bench", "--executor", "fibers"), "--executor must be threaded or pooled, got fibers");
-        assertOneLineUserError(runCapturingErr("bench", "--executor", "pooled", "--workers", "0"), "--workers must be at least 1, got 0");
+        assertOneLineUserError(runCapturingErr("bench", "--executor", "pooled", "--workers", "0"), "--workers must be 1 to 4 (");
         assertOneLineUserError(runCapturingErr("bench", "--sweep-tasks", "10,0"), "--sweep-tasks needs task counts of at least 1");
     }
 

@@ -1,6 +1,9 @@
 package io.rtaware.app;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.rtaware.app.bench.BenchCommand;
@@ -56,6 +59,52 @@ class LimitsCliTest {
                 .assertOneLineUserError("10000 task(s) (43 KB of monitor and comparison bookkeeping per task)");
         CliRun.of(HEAP_512, "bench", "--sweep-tasks", "10,10000", "--duration", "1s")
                 .assertOneLineUserError("10000 task(s) (43 KB of monitor and comparison bookkeeping per task)");
+    }
+
+    /**
+     * Issue 38: {@code --workers 5000} ended in a 20-line OutOfMemoryError (unable to create native
+     * thread). A worker runs one task at a time, and past 16 per core a pool is a thread per task.
+     */
+    @Test
+    void moreWorkersThanTasksOrSixteenPerCoreAreRefusedUpFront() {
+        int cores = Runtime.getRuntime().availableProcessors();
+        CliRun.of("bench", "--executor", "pooled", "--workers", "5000", "--duration", "1s")
+                .assertOneLineUserError("--workers must be 1 to 4 (at most one per task, 4 here, and 16 per core, "
+                        + cores + " cores here), got 5000");
+        int perCore = 16 * cores;
+        CliRun.of(HEAP_512, "bench", "--executor", "pooled", "--tasks", Integer.toString(perCore + 1), "--workers",
+                Integer.toString(perCore + 1), "--duration", "1s")
+                .assertOneLineUserError("--workers must be 1 to " + perCore + " (at most one per task, " + (perCore + 1)
+                        + " here, and 16 per core, " + cores + " cores here), got " + (perCore + 1));
+    }
+
+    /** The system's refusal of another thread, wherever a command meets it, is one line and status 1. */
+    @Test
+    void aThreadTheSystemRefusesIsOneLineAndStatusOne() {
+        String refusal = "unable to create native thread: possibly out of memory or process/resource limits reached";
+        CliRun r = CliRun.of(failingWith(new OutOfMemoryError(refusal)), "bench", "--duration", "1s");
+        assertEquals(1, r.status(), r.toString());
+        assertEquals("rtaware: the system refused another thread (" + refusal + "); run fewer tasks or --workers, or "
+                + "raise the limit on threads (ulimit -u, pid_max, a container's pids limit)", r.err().strip());
+        OutOfMemoryError heap = new OutOfMemoryError("Java heap space");
+        assertSame(heap, assertThrows(OutOfMemoryError.class, () -> CliRun.of(failingWith(heap), "bench")),
+                "any other OutOfMemoryError is not hidden");
+    }
+
+    /** A bench whose first look at the heap throws {@code error}, as a thread's start would. */
+    private static CommandLine.IFactory failingWith(OutOfMemoryError error) {
+        return new CommandLine.IFactory() {
+            @Override
+            @SuppressWarnings("unchecked")
+            public <K> K create(Class<K> cls) throws Exception {
+                if (cls == BenchCommand.class) {
+                    return (K) new BenchCommand(() -> {
+                        throw error;
+                    });
+                }
+                return CommandLine.defaultFactory().create(cls);
+            }
+        };
     }
 
     @Test

@@ -15,7 +15,6 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -25,7 +24,6 @@ import org.junit.jupiter.api.io.TempDir;
  * is quiet without the burner (other engineers' builds may load it: then skipped, saying so);
  * the waiting rule itself is tested exactly in {@code QuietGateTest}.
  */
-@Tag("wall-clock")
 class QuietGateEndToEndTest {
 
     @TempDir

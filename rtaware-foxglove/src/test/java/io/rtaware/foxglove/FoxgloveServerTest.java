@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import io.rtaware.core.testing.Waits;
 import io.rtaware.record.TapChannel;
 import java.io.IOException;
 import java.lang.management.ManagementFactory;
@@ -14,6 +15,7 @@ import java.net.Socket;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -313,8 +315,8 @@ class FoxgloveServerTest {
             for (int i = 0; i < frames; i++) {
                 hostile.write(frame);
             }
-            TestWaits.until(() -> server.requestsHandled() == frames || server.stats().statusesDropped() > 0,
-                    "the server read the requests");
+            Waits.until(() -> server.requestsHandled() == frames || server.stats().statusesDropped() > 0,
+                    Duration.ofSeconds(30), "the server read the requests");
             assertTrue(server.mostBytesWaiting() <= bufferBytes,
                     server.mostBytesWaiting() + " bytes wait for one client, more than its " + bufferBytes);
             WsClient other = connected(server);
@@ -356,7 +358,7 @@ class FoxgloveServerTest {
                     server.mostBytesWaiting() + " bytes wait for the slow client");
         }
         assertEquals(1, server.stats().clientsClosedSlow(), server.stats().toString());
-        TestWaits.until(() -> server.clients() == 0, "the slow client is gone");
+        Waits.until(() -> server.clients() == 0, Duration.ofSeconds(30), "the slow client is gone");
     }
 
     @Test

@@ -11,6 +11,7 @@ import io.rtaware.core.monitor.TaskInfo;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.Task;
 import io.rtaware.core.task.TaskSetup;
+import io.rtaware.core.testing.Waits;
 import io.rtaware.core.time.SystemClock;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
@@ -147,10 +148,7 @@ class RealtimeThreadsTest {
         Monitor monitor = Monitor.builder(new SystemClock()).threadSetup(rt)
                 .task("rt", Schedule.periodic(Duration.ofMillis(5)), task).build();
         monitor.start();
-        long deadline = System.nanoTime() + 5_000_000_000L;
-        while (policies.isEmpty() && System.nanoTime() < deadline) {
-            Thread.onSpinWait();
-        }
+        Waits.until(() -> !policies.isEmpty(), Duration.ofSeconds(10), "a cycle of the task");
         monitor.stop();
         assertEquals(List.of(LinuxSched.SCHED_FIFO), policies);
         assertEquals(1, rt.fifoThreads());
@@ -197,12 +195,8 @@ class RealtimeThreadsTest {
         }
         Monitor monitor = builder.build();
         monitor.start();
-        long deadline = System.nanoTime() + 5_000_000_000L;
-        while (seen.isEmpty() && System.nanoTime() < deadline) {
-            Thread.sleep(10);
-        }
-        Thread.sleep(100);
-        monitor.stop();
+        Waits.until(() -> !seen.isEmpty(), Duration.ofSeconds(10), "a cycle of a pooled task");
+        monitor.stop(); // every worker ran its thread setup before start returned
         assertFalse(seen.isEmpty(), "the pooled tasks ran");
         for (String thread : seen) {
             assertTrue(thread.matches("rtaware-pool-[01] policy 1 priority 70"),

@@ -3,6 +3,7 @@ package io.rtaware.zenoh;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.rtaware.core.testing.Requires;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -23,8 +24,8 @@ class JniCheckTest {
     static final int ELEMENTS = 100;
 
     @Test
+    @Requires(NativeZenohLayer.class)
     void longStringArraysCrossTheJniLayerWithoutAWarningUnderXcheckJni() throws Exception {
-        ZenohAssumptions.requireNativeZenoh();
         Process jvm = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xcheck:jni",
                 "-cp", System.getProperty("java.class.path"), JniCheckTest.class.getName()).redirectErrorStream(true).start();
         String output = new String(jvm.getInputStream().readAllBytes(), StandardCharsets.UTF_8);

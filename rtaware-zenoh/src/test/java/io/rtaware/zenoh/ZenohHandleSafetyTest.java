@@ -4,13 +4,13 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.rtaware.core.testing.Requires;
 import java.nio.ByteBuffer;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicReference;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.function.Executable;
@@ -20,14 +20,10 @@ import org.junit.jupiter.api.function.Executable;
  * close and a handle of the wrong kind end in a {@link ZenohException} or a defined result, never
  * in freed memory (before handles were table entries, each of these used or freed freed memory).
  */
+@Requires(NativeZenohLayer.class)
 class ZenohHandleSafetyTest {
 
     private static final long LONG_WAIT_NS = TimeUnit.SECONDS.toNanos(30);
-
-    @BeforeEach
-    void nativeLayer() {
-        ZenohAssumptions.requireNativeZenoh();
-    }
 
     private static void assertClosedError(Executable call, String what) {
         ZenohException e = assertThrows(ZenohException.class, call, what);

@@ -5,22 +5,18 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.rtaware.core.testing.Requires;
 import java.net.ServerSocket;
 import java.nio.ByteBuffer;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
 /** Two sessions on loopback: the real Zenoh engine behind the JNI layer. */
+@Requires(NativeZenohLayer.class)
 class ZenohSessionTest {
 
     private static final long WAIT_NS = TimeUnit.SECONDS.toNanos(10);
-
-    @BeforeEach
-    void nativeLayer() {
-        ZenohAssumptions.requireNativeZenoh();
-    }
 
     private static int freePort() throws Exception {
         try (ServerSocket s = new ServerSocket(0)) {

@@ -309,8 +309,11 @@ public final class BenchCommand implements Callable<Integer> {
         if (executor != null && !executor.equals("threaded") && !executor.equals("pooled")) {
             throw new UserError("--executor must be threaded or pooled, got " + executor);
         }
-        if (workers != null && workers < 1) {
-            throw new UserError("--workers must be at least 1, got " + workers);
+        if (workers != null && (workers < 1 || workers > Math.min(taskCount, ExecutorKind.Pooled.maxWorkers()))) {
+            // a worker runs one task at a time; past 16 per core a pool is a thread per task (ExecutorKind.Pooled)
+            throw new UserError("--workers must be 1 to " + Math.min(taskCount, ExecutorKind.Pooled.maxWorkers())
+                    + " (at most one per task, " + taskCount + " here, and " + ExecutorKind.Pooled.MAX_WORKERS_PER_CORE
+                    + " per core, " + Runtime.getRuntime().availableProcessors() + " cores here), got " + workers);
         }
         if (!sleep.equals("nanosleep") && !sleep.equals("park")) {
             throw new UserError("--sleep must be nanosleep or park, got " + sleep);

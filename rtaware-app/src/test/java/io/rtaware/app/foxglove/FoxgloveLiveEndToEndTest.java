@@ -2,7 +2,6 @@ package io.rtaware.app.foxglove;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -10,11 +9,17 @@ import io.rtaware.app.RtawareCli;
 import io.rtaware.app.ros2.Ros2PythonPeer;
 import io.rtaware.app.ros2.Ros2RunEndToEndTest;
 import io.rtaware.app.ros2.Ros2Wiring;
+import io.rtaware.core.testing.NpmPeers;
+import io.rtaware.core.testing.PythonPeers;
+import io.rtaware.core.testing.Requires;
+import io.rtaware.core.testing.Waits;
+import io.rtaware.zenoh.NativeZenohLayer;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -39,6 +44,7 @@ import org.junit.jupiter.api.io.TempDir;
  * packages under {@code RTAWARE_NPM_PEERS} (.ci/run installs them); skipped without them, except
  * under {@code CI=true}.
  */
+@Requires(NpmPeers.class)
 class FoxgloveLiveEndToEndTest {
 
     private static final Pattern URL = Pattern.compile("foxglove: (ws://127\\.0\\.0\\.1:\\d+)");
@@ -53,13 +59,7 @@ class FoxgloveLiveEndToEndTest {
 
     @BeforeEach
     void captureStdout() {
-        peers = System.getenv("RTAWARE_NPM_PEERS");
-        if (peers == null || peers.isBlank()) {
-            if ("true".equals(System.getenv("CI"))) {
-                throw new AssertionError("CI=true but RTAWARE_NPM_PEERS is unset: .ci/run must install .ci/npm-peers.json");
-            }
-            assumeTrue(false, "SKIPPED: RTAWARE_NPM_PEERS unset: no Foxglove client to connect with");
-        }
+        peers = NpmPeers.folder();
         saved = System.out;
         System.setOut(new PrintStream(stdout, true, StandardCharsets.UTF_8));
     }
@@ -136,9 +136,9 @@ class FoxgloveLiveEndToEndTest {
      * endpoint decodes /scan and /odom, checks the frames and drives the robot on /cmd_vel.
      */
     @Test
+    @Requires(NativeZenohLayer.class)
     void simServesFoxgloveAndRos2AtOnce() throws Exception {
-        Ros2RunEndToEndTest.requireNativeZenoh();
-        String python = Ros2PythonPeer.python();
+        String python = PythonPeers.python();
         Path script = Ros2PythonPeer.script(dir);
         String endpoint = Ros2Wiring.freeLoopbackEndpoint();
         Command sim = Command.start("rtaware-sim-under-test", "sim", "--port", "0", "--ros2", "--listen", endpoint,
@@ -199,7 +199,7 @@ class FoxgloveLiveEndToEndTest {
         Process node;
         try {
             ProcessBuilder pb = new ProcessBuilder(command).redirectErrorStream(true);
-            pb.environment().put("RTAWARE_NPM_PEERS", peers);
+            pb.environment().put(NpmPeers.VARIABLE, peers);
             node = pb.start();
         } catch (IOException e) {
             throw new AssertionError("cannot run node: " + e.getMessage(), e);
@@ -214,14 +214,12 @@ class FoxgloveLiveEndToEndTest {
     }
 
     private String awaitUrl(Command command) throws Exception {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
-        while (System.nanoTime() < deadline && !command.result.isDone()) {
-            Matcher m = URL.matcher(stdout.toString(StandardCharsets.UTF_8));
-            if (m.find()) {
-                return m.group(1);
-            }
-            Thread.sleep(20);
+        Matcher m = URL.matcher("");
+        Waits.until(() -> m.reset(stdout.toString(StandardCharsets.UTF_8)).find() || command.result.isDone(),
+                Duration.ofSeconds(60), () -> "a 'foxglove: ws://...' line; output:\n" + stdout);
+        if (!m.reset(stdout.toString(StandardCharsets.UTF_8)).find()) {
+            throw new AssertionError("the run ended without a 'foxglove: ws://...' line; output:\n" + stdout);
         }
-        throw new AssertionError("no 'foxglove: ws://...' line; output:\n" + stdout);
+        return m.group(1);
     }
 }

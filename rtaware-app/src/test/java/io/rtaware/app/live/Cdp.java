@@ -3,6 +3,7 @@ package io.rtaware.app.live;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import io.rtaware.core.testing.Waits;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStreamReader;
@@ -14,6 +15,7 @@ import java.net.http.WebSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
@@ -79,24 +81,24 @@ final class Cdp implements AutoCloseable {
         URI http = URI.create(browserWs.replace("ws://", "http://"));
         // HTTP/1.1 throughout: the DevTools endpoint speaks neither h2c upgrades nor HTTP/2.
         HttpClient client = HttpClient.newBuilder().version(HttpClient.Version.HTTP_1_1).build();
-        String pageWs = null;
-        for (int attempt = 0; pageWs == null && attempt < 50; attempt++) {
-            JsonNode targets = JSON.readTree(client.send(HttpRequest.newBuilder(
-                    URI.create("http://" + http.getAuthority() + "/json/list")).build(),
-                    HttpResponse.BodyHandlers.ofString()).body());
-            for (JsonNode t : targets) {
-                if (t.path("type").asText().equals("page")) {
-                    pageWs = t.path("webSocketDebuggerUrl").asText();
+        String[] page = {null};
+        try {
+            Waits.until(() -> {
+                JsonNode targets = JSON.readTree(client.send(HttpRequest.newBuilder(
+                        URI.create("http://" + http.getAuthority() + "/json/list")).build(),
+                        HttpResponse.BodyHandlers.ofString()).body());
+                for (JsonNode t : targets) {
+                    if (t.path("type").asText().equals("page")) {
+                        page[0] = t.path("webSocketDebuggerUrl").asText();
+                    }
                 }
-            }
-            if (pageWs == null) {
-                Thread.sleep(100);
-            }
-        }
-        if (pageWs == null) {
+                return page[0] != null;
+            }, Duration.ofSeconds(5), "a page target of chromium");
+        } catch (AssertionError e) {
             p.destroyForcibly();
-            throw new IOException("chromium has no page target");
+            throw e;
         }
+        String pageWs = page[0];
         Cdp[] self = new Cdp[1];
         WebSocket ws = client.newWebSocketBuilder().buildAsync(URI.create(pageWs), new WebSocket.Listener() {
             private final StringBuilder text = new StringBuilder();

@@ -5,17 +5,19 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import io.rtaware.app.RtawareCli;
+import io.rtaware.core.testing.Requires;
+import io.rtaware.core.testing.Waits;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.Objects;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -25,8 +27,7 @@ import org.junit.jupiter.api.io.TempDir;
  * appear, the numbers move, each task's strip chart draws its lateness and execution time on a
  * minute-long time axis, the header shows the machine verdict so far, a screenshot is saved to
  * {@code target/live-view.png}, and after the run the page shows the final summary, which names
- * the figures by odometry and those in truth, also on reload. Skipped, saying so, without Chromium
- * ({@code apt-get install -y chromium}).
+ * the figures by odometry and those in truth, also on reload. Needs {@link HeadlessChromium}.
  */
 class LiveBrowserTest {
 
@@ -36,10 +37,9 @@ class LiveBrowserTest {
     Path dir;
 
     @Test
+    @Requires(HeadlessChromium.class)
     void pageShowsTheRobotAndLiveTaskRowsThenTheFinalSummary() throws Exception {
         Path chromium = Cdp.chromium();
-        Assumptions.assumeTrue(chromium != null,
-                "SKIPPED: headless Chromium not found (/usr/bin/chromium); install it with apt-get install -y chromium");
         Path scenario = Path.of(Objects.requireNonNull(getClass().getResource("/scenarios/short-leg.yaml")).toURI());
         ByteArrayOutputStream stdout = new ByteArrayOutputStream();
         PrintStream saved = System.out;
@@ -68,9 +68,13 @@ class LiveBrowserTest {
                 JsonNode first = awaitPage(browser, "rows.length === 6 && document.getElementById('map').dataset.robot",
                         15);
                 assertEquals("running", first.path("state").asText(), "the run is still going: " + first);
-                Thread.sleep(1_500);
-                JsonNode second = state(browser);
-                assertTrue(second.path("runs").asLong() > first.path("runs").asLong(),
+                // the next looks until the runs have grown and the robot has moved (or the run ended)
+                JsonNode second = awaitPage(browser, "(rows.length > 0 && [...rows].reduce((n, r) => n + "
+                        + "Number(r.children[2].textContent), 0) > " + first.path("runs").asLong()
+                        + " && document.getElementById('map').dataset.robot !== '" + first.path("robot").asText() + "')"
+                        + " || document.getElementById('state').textContent === 'finished'", 30);
+                assertTrue(second.path("runs").asLong() > first.path("runs").asLong()
+                        || second.path("state").asText().equals("finished"),
                         "task runs grow between two looks: " + first + " then " + second);
                 assertTrue(!second.path("robot").asText().equals(first.path("robot").asText())
                         || second.path("state").asText().equals("finished"), "the robot moves: " + first + " " + second);
@@ -109,15 +113,13 @@ class LiveBrowserTest {
     }
 
     private static String awaitUrl(ByteArrayOutputStream stdout, CompletableFuture<Integer> run) throws Exception {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
-        while (System.nanoTime() < deadline && !run.isDone()) {
-            Matcher m = URL.matcher(stdout.toString(StandardCharsets.UTF_8));
-            if (m.find()) {
-                return m.group(1);
-            }
-            Thread.sleep(20);
+        Matcher m = URL.matcher("");
+        Waits.until(() -> m.reset(stdout.toString(StandardCharsets.UTF_8)).find() || run.isDone(),
+                Duration.ofSeconds(60), () -> "a 'live view: URL' line; output:\n" + stdout);
+        if (!m.reset(stdout.toString(StandardCharsets.UTF_8)).find()) {
+            throw new AssertionError("the run ended without a 'live view: URL' line; output:\n" + stdout);
         }
-        throw new AssertionError("no 'live view: URL' line; output:\n" + stdout);
+        return m.group(1);
     }
 
     private static final String STATE = "(() => { const rows = document.querySelectorAll('#tasks tbody tr');"
@@ -138,13 +140,8 @@ class LiveBrowserTest {
     private static JsonNode awaitPage(Cdp browser, String condition, int seconds) throws Exception {
         String test = "(() => { const rows = document.querySelectorAll('#tasks tbody tr');"
                 + " try { return !!(" + condition + "); } catch (e) { return false; } })()";
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
-        while (System.nanoTime() < deadline) {
-            if (browser.eval(test).asBoolean()) {
-                return state(browser);
-            }
-            Thread.sleep(100);
-        }
-        throw new AssertionError("page never met: " + condition + "; page: " + state(browser));
+        Waits.until(() -> browser.eval(test).asBoolean(), Duration.ofSeconds(seconds),
+                () -> "the page to meet " + condition);
+        return state(browser);
     }
 }

@@ -7,6 +7,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.app.RtawareCli;
+import io.rtaware.core.testing.Requires;
+import io.rtaware.zenoh.NativeZenohLayer;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.net.ServerSocket;
@@ -62,8 +64,8 @@ class BlindedLaserEndToEndTest {
     }
 
     @Test
+    @Requires(NativeZenohLayer.class)
     void aLaserSeeingEverythingCloserThanItsMinimumRangeIsNeverDrivenInto() throws Exception {
-        Ros2RunEndToEndTest.requireNativeZenoh();
         String endpoint = freeEndpoint();
         ScriptedRos2Robot robot = ScriptedRos2Robot.scanning(endpoint, 181, Float.NEGATIVE_INFINITY, 0);
         Outcome o = run(robot, endpoint, dir.resolve("minus-inf"));
@@ -79,8 +81,8 @@ class BlindedLaserEndToEndTest {
     }
 
     @Test
+    @Requires(NativeZenohLayer.class)
     void scansOfNoBeamsAreImpossibleDataAndHaltTheRobot() throws Exception {
-        Ros2RunEndToEndTest.requireNativeZenoh();
         String endpoint = freeEndpoint();
         ScriptedRos2Robot robot = ScriptedRos2Robot.scanning(endpoint, 0, 4f, 100_000_000_000L);
         Outcome o = run(robot, endpoint, dir.resolve("empty"));

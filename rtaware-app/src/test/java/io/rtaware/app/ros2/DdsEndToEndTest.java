@@ -3,12 +3,13 @@ package io.rtaware.app.ros2;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.app.RtawareCli;
+import io.rtaware.core.testing.PythonPeers;
+import io.rtaware.core.testing.Requires;
 import io.rtaware.core.time.ScaledClock;
 import io.rtaware.robot.geometry.Pose2d;
 import io.rtaware.ros2.graph.DdsSettings;
@@ -20,7 +21,7 @@ import io.rtaware.sim.scenario.ScenarioLoader;
 import io.rtaware.sim.server.PlayerSimServer;
 import io.rtaware.sim.server.ServerConfig;
 import io.rtaware.sim.server.SimCommandSupport;
-import io.rtaware.zenoh.DdsBridge;
+import io.rtaware.zenoh.DdsBridgeBuilt;
 import java.io.BufferedReader;
 import java.io.ByteArrayOutputStream;
 import java.io.InputStream;
@@ -57,23 +58,8 @@ class DdsEndToEndTest {
 
     private static final ObjectMapper JSON = new ObjectMapper();
 
-    /** Skips without the bridge, saying why; under CI=true with Rust, its absence fails. */
-    static void requireDdsBridge() {
-        Ros2RunEndToEndTest.requireNativeZenoh();
-        String reason = DdsBridge.unavailableReason();
-        if (reason != null && "true".equals(System.getenv("CI"))) {
-            fail("CI=true but " + reason);
-        }
-        assumeTrue(reason == null, () -> "skipped: " + reason);
-    }
-
     private Path peerScript() throws Exception {
-        String python = System.getenv("RTAWARE_PEER_PYTHON");
-        boolean present = python != null && Files.isExecutable(Path.of(python));
-        if (!present && "true".equals(System.getenv("CI"))) {
-            fail("CI=true but RTAWARE_PEER_PYTHON does not name a Python with cyclonedds (.ci/run creates one)");
-        }
-        assumeTrue(present, "skipped: RTAWARE_PEER_PYTHON does not name a Python with cyclonedds");
+        PythonPeers.python(); // with cyclonedds
         Path script = dir.resolve("dds_peer.py");
         try (InputStream in = Objects.requireNonNull(getClass().getResourceAsStream("/ros2/dds_peer.py"))) {
             Files.copy(in, script);
@@ -82,7 +68,7 @@ class DdsEndToEndTest {
     }
 
     private static Process peer(Path script, String... args) throws Exception {
-        List<String> command = new ArrayList<>(List.of(System.getenv("RTAWARE_PEER_PYTHON"), script.toString()));
+        List<String> command = new ArrayList<>(List.of(PythonPeers.python(), script.toString()));
         command.addAll(List.of(args));
         return new ProcessBuilder(command).redirectError(ProcessBuilder.Redirect.INHERIT).start();
     }
@@ -105,8 +91,8 @@ class DdsEndToEndTest {
     }
 
     @Test
+    @Requires(DdsBridgeBuilt.class)
     void aCycloneDdsNodeReadsTheSimulatorOverDdsAndDrivesIt() throws Exception {
-        requireDdsBridge();
         Path script = peerScript();
         try (PlayerSimServer server = simulator("paper-room", 10);
              Ros2SimRobot robot = Ros2SimRobot.start(server, ddsContext(41), "/", line -> { })) {
@@ -129,8 +115,8 @@ class DdsEndToEndTest {
     }
 
     @Test
+    @Requires(DdsBridgeBuilt.class)
     void runRos2DdsCompletesTheShortLegAgainstACycloneDdsRobotAndStopsIt() throws Exception {
-        requireDdsBridge();
         Path script = peerScript();
         Path out = dir.resolve("run");
         try (PlayerSimServer server = simulator(shortLeg(), 10);
@@ -175,8 +161,8 @@ class DdsEndToEndTest {
      * announces its own entities on ros_discovery_info), so the routes come up on both sides.
      */
     @Test
+    @Requires(DdsBridgeBuilt.class)
     void runRos2DdsDrivesTheSimulatorServedOverDdsOnTheSameDomain() throws Exception {
-        requireDdsBridge();
         Path out = dir.resolve("bridges");
         try (PlayerSimServer server = simulator(shortLeg(), 10);
              Ros2SimRobot robot = Ros2SimRobot.start(server, ddsContext(46), "/", line -> { })) {
@@ -191,8 +177,8 @@ class DdsEndToEndTest {
     }
 
     @Test
+    @Requires(DdsBridgeBuilt.class)
     void aCycloneDdsRobotSendingNanPosesIsHaltedWithZeroVelocityAndTheRunEndsAsAnError() throws Exception {
-        requireDdsBridge();
         Path script = peerScript();
         Path out = dir.resolve("nan");
         ByteArrayOutputStream stderr = new ByteArrayOutputStream();
@@ -239,7 +225,6 @@ class DdsEndToEndTest {
      * @return what the node saw, once it and the bench ended well
      */
     private JsonNode besideBenchExportDds(String mode) throws Exception {
-        requireDdsBridge();
         Path script = peerScript();
         assumeTrue(System.getenv("ROS_DOMAIN_ID") == null, "bench exports on ROS_DOMAIN_ID, set here");
         AtomicInteger status = new AtomicInteger(-1);
@@ -261,6 +246,7 @@ class DdsEndToEndTest {
     }
 
     @Test
+    @Requires(DdsBridgeBuilt.class)
     void aCycloneDdsNodeReadsTheExportedDiagnosticsOverDds() throws Exception {
         JsonNode seen = besideBenchExportDds("diagnostics");
         assertTrue(seen.path("messages").asInt() >= 3, "one DiagnosticArray a second: " + seen);
@@ -269,6 +255,7 @@ class DdsEndToEndTest {
 
     /** Issue 37: ROS 2's topic statistics of every task and key, read by a stock DDS node. */
     @Test
+    @Requires(DdsBridgeBuilt.class)
     void aCycloneDdsNodeReadsTheExportedTopicStatisticsOfEveryTaskAndKeyOverDds() throws Exception {
         Ros2PythonPeer.assertStatisticsOfEveryTaskAndKey(besideBenchExportDds("statistics"));
     }
@@ -280,8 +267,8 @@ class DdsEndToEndTest {
      * {@code /proc/net/udp} and {@code /proc/net/udp6}, matched to the processes' socket inodes.
      */
     @Test
+    @Requires(DdsBridgeBuilt.class)
     void aDdsContextOnLoopbackBindsEveryUdpSocketTo127001() throws Exception {
-        requireDdsBridge();
         assumeTrue(Files.isReadable(Path.of("/proc/net/udp")), "skipped: no /proc/net/udp (Linux only)");
         try (Ros2Context ignored = ddsContext(47)) {
             List<ProcessHandle> processes = new ArrayList<>(List.of(ProcessHandle.current()));
@@ -315,8 +302,8 @@ class DdsEndToEndTest {
      * start timeout): the reason can come only from the bridge's refusal, not from a timeout.
      */
     @Test
+    @Requires(DdsBridgeBuilt.class)
     void aCycloneConfigurationCycloneDdsRefusesIsOneLineWithItsReason() throws Exception {
-        requireDdsBridge();
         String uri = "<CycloneDDS><Domain><General><Interfaces><NetworkInterface name=\"rtaware9\"/></Interfaces>"
                 + "</General></Domain></CycloneDDS>";
         assertEquals(List.of("rtaware: --dds: cannot join DDS domain 0 (configured by CYCLONEDDS_URI) through "

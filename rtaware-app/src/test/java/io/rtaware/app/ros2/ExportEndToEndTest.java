@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.rtaware.app.RtawareCli;
+import io.rtaware.core.testing.Requires;
+import io.rtaware.core.testing.Waits;
 import io.rtaware.ros2.graph.QosProfile;
 import io.rtaware.ros2.graph.Ros2Context;
 import io.rtaware.ros2.graph.Ros2Names;
@@ -16,6 +18,7 @@ import io.rtaware.ros2msg.TransformMessages;
 import io.rtaware.ros2msg.cdr.CdrReader;
 import io.rtaware.ros2msg.value.DiagnosticArray;
 import io.rtaware.ros2msg.value.PlanarPose;
+import io.rtaware.zenoh.NativeZenohLayer;
 import io.rtaware.zenoh.SampleBuffer;
 import io.rtaware.zenoh.ZenohConfig;
 import io.rtaware.zenoh.ZenohMailbox;
@@ -24,6 +27,7 @@ import java.io.PrintStream;
 import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
@@ -54,8 +58,8 @@ class ExportEndToEndTest {
     private ZenohMailbox mailbox;
 
     @BeforeEach
+    @Requires(NativeZenohLayer.class)
     void listen() throws Exception {
-        Ros2RunEndToEndTest.requireNativeZenoh();
         try (ServerSocket s = new ServerSocket(0)) {
             endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
         }
@@ -137,8 +141,7 @@ class ExportEndToEndTest {
             CompletableFuture<Integer> run = command("run", "--export", "--export-zenoh", endpoint, "--scenario",
                     scenario.toString(), "--time-scale", "4", "--quiet", "--out", dir.resolve("run").toString());
             SampleBuffer sample = new SampleBuffer(1 << 16, 64);
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
-            while (seen.size() < topics.size() && System.nanoTime() < deadline) {
+            Waits.until(() -> {
                 ZenohMailbox.Take took = mailbox.take(TimeUnit.MILLISECONDS.toNanos(100), sample);
                 if (took == ZenohMailbox.Take.SAMPLE || took == ZenohMailbox.Take.TOO_LARGE) {
                     String topic = topics.get(sample.channel());
@@ -147,7 +150,8 @@ class ExportEndToEndTest {
                         frames.addAll(transforms(topic, sample));
                     }
                 }
-            }
+                return seen.size() == topics.size();
+            }, Duration.ofSeconds(60), () -> "a sample on every exported topic; seen " + seen);
             status = run.get(120, TimeUnit.SECONDS);
         } finally {
             System.setErr(savedErr);

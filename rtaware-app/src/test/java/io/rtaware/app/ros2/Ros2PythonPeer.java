@@ -2,10 +2,9 @@ package io.rtaware.app.ros2;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import io.rtaware.core.testing.PythonPeers;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.file.Files;
@@ -16,27 +15,11 @@ import java.util.Objects;
 /**
  * The tests' independent ROS 2 node: {@code src/test/resources/ros2/ros2_peer.py} (eclipse-zenoh,
  * zenoh-ros2-sdk and rosbags) and the Python that runs it, named by {@code RTAWARE_PEER_PYTHON}
- * (.ci/run makes one).
+ * (.ci/run makes one; {@link PythonPeers#python()} finds it).
  */
 public final class Ros2PythonPeer {
 
     private Ros2PythonPeer() {
-    }
-
-    /**
-     * @return the peers' Python; skips the test without it, except under {@code CI=true}, where
-     *     its absence fails
-     */
-    public static String python() {
-        String python = System.getenv("RTAWARE_PEER_PYTHON");
-        boolean present = python != null && Files.isExecutable(Path.of(python));
-        String why = "RTAWARE_PEER_PYTHON does not name a Python with eclipse-zenoh, zenoh-ros2-sdk and rosbags "
-                + "(.ci/run creates one)";
-        if (!present && "true".equals(System.getenv("CI"))) {
-            fail("CI=true but " + why);
-        }
-        assumeTrue(present, () -> "skipped: " + why);
-        return python;
     }
 
     /**

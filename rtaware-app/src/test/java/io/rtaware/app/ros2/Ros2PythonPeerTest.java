@@ -2,12 +2,12 @@ package io.rtaware.app.ros2;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.app.RtawareCli;
+import io.rtaware.core.testing.PythonPeers;
+import io.rtaware.core.testing.Requires;
 import io.rtaware.core.time.SystemClock;
 import io.rtaware.robot.geometry.Pose2d;
 import io.rtaware.ros2.graph.Ros2Context;
@@ -16,9 +16,9 @@ import io.rtaware.sim.scenario.ScenarioLoader;
 import io.rtaware.sim.server.PlayerSimServer;
 import io.rtaware.sim.server.ServerConfig;
 import io.rtaware.sim.server.SimCommandSupport;
+import io.rtaware.zenoh.NativeZenohLayer;
 import io.rtaware.zenoh.ZenohConfig;
 import io.rtaware.zenoh.ZenohException;
-import io.rtaware.zenoh.ZenohLibrary;
 import java.io.BufferedReader;
 import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
@@ -42,21 +42,11 @@ import org.junit.jupiter.api.io.TempDir;
  * where it fails.
  */
 @Timeout(180)
+@Requires({NativeZenohLayer.class, PythonPeers.class})
 class Ros2PythonPeerTest {
 
     @TempDir
     Path dir;
-
-    private static boolean ci() {
-        return "true".equals(System.getenv("CI"));
-    }
-
-    private static void require(boolean present, String why) {
-        if (!present && ci()) {
-            fail("CI=true but " + why);
-        }
-        assumeTrue(present, () -> "skipped: " + why);
-    }
 
     /** What a test does while the Python router runs on {@code endpoint}. */
     private interface WithRouter {
@@ -65,12 +55,7 @@ class Ros2PythonPeerTest {
 
     /** Starts the Python router on a free loopback endpoint, runs {@code test}, stops the router. */
     private void withRouter(WithRouter test) throws Exception {
-        String reason = ZenohLibrary.unavailableReason();
-        if (reason != null && "1".equals(System.getenv("RTAWARE_NO_RUST"))) {
-            assumeTrue(false, () -> "skipped: " + reason + " (no Rust toolchain on this machine)");
-        }
-        require(reason == null, String.valueOf(reason));
-        String python = Ros2PythonPeer.python();
+        String python = PythonPeers.python();
         Path script = Ros2PythonPeer.script(dir);
         String endpoint = Ros2Wiring.freeLoopbackEndpoint();
         Process router = new ProcessBuilder(python, script.toString(), "router", "--listen", endpoint)

@@ -2,12 +2,13 @@ package io.rtaware.app.ros2;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.app.RtawareCli;
+import io.rtaware.core.testing.Requires;
+import io.rtaware.core.testing.Waits;
 import io.rtaware.record.RecordingPlan;
 import io.rtaware.record.mcap.McapChannel;
 import io.rtaware.record.mcap.McapReader;
@@ -17,18 +18,19 @@ import io.rtaware.ros2.task.Ros2DataTask;
 import io.rtaware.ros2msg.LaserScanCodec;
 import io.rtaware.ros2msg.Ros2Header;
 import io.rtaware.ros2msg.cdr.CdrReader;
+import io.rtaware.zenoh.NativeZenohLayer;
 import io.rtaware.zenoh.ZenohLibrary;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -43,15 +45,6 @@ public class Ros2RunEndToEndTest {
 
     @TempDir
     Path dir;
-
-    /** Skips without the native layer, saying why; under CI=true with Rust, its absence fails. */
-    public static void requireNativeZenoh() {
-        String reason = ZenohLibrary.unavailableReason();
-        if (reason != null && "true".equals(System.getenv("CI")) && !"1".equals(System.getenv("RTAWARE_NO_RUST"))) {
-            fail("CI=true but " + reason + " (.ci/run sets RTAWARE_NO_RUST=1 when the machine has no Rust toolchain)");
-        }
-        assumeTrue(reason == null, () -> "skipped: " + reason);
-    }
 
     private Path shortLeg() throws Exception {
         return Path.of(Objects.requireNonNull(getClass().getResource("/scenarios/short-leg.yaml")).toURI());
@@ -101,8 +94,8 @@ public class Ros2RunEndToEndTest {
     }
 
     @Test
+    @Requires(NativeZenohLayer.class)
     void runRos2DrivesTheBuiltInSimulatorAsARos2Robot() throws Exception {
-        requireNativeZenoh();
         Path out = dir.resolve("run");
         Path recording = dir.resolve("run.mcap");
         int status = quietly("run", "--ros2", "--scenario", shortLeg().toString(), "--time-scale", "10",
@@ -150,8 +143,8 @@ public class Ros2RunEndToEndTest {
     }
 
     @Test
+    @Requires(NativeZenohLayer.class)
     void runRos2WithHumbleConventionsDrivesTheBuiltInSimulatorAndSaysSoInTheReport() throws Exception {
-        requireNativeZenoh();
         Path out = dir.resolve("humble");
         int status = quietly("run", "--ros2", "--ros-distro", "humble", "--scenario", shortLeg().toString(),
                 "--time-scale", "10", "--out", out.toString(), "--quiet", "--seed", "7");
@@ -160,8 +153,8 @@ public class Ros2RunEndToEndTest {
     }
 
     @Test
+    @Requires(NativeZenohLayer.class)
     void runRos2DrivesASimulatorServingRos2InAnotherSession() throws Exception {
-        requireNativeZenoh();
         int port;
         try (ServerSocket s = new ServerSocket(0)) {
             port = s.getLocalPort();
@@ -191,8 +184,8 @@ public class Ros2RunEndToEndTest {
     }
 
     @Test
+    @Requires(NativeZenohLayer.class)
     void aRos2RobotThatSendsNanPosesIsHaltedAndTheRunEndsAsAnError() throws Exception {
-        requireNativeZenoh();
         String endpoint;
         try (ServerSocket s = new ServerSocket(0)) {
             endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
@@ -206,11 +199,8 @@ public class Ros2RunEndToEndTest {
             System.setErr(new PrintStream(stderr, true, StandardCharsets.UTF_8));
             status = quietly("run", "--ros2", "--zenoh", endpoint, "--scenario", shortLeg().toString(),
                     "--time-scale", "1", "--out", out.toString(), "--quiet");
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-            while (robot.lastTwist() == null || !robot.lastTwist().isStop()) {
-                assertTrue(System.nanoTime() < deadline, "the robot received a zero Twist last");
-                Thread.onSpinWait();
-            }
+            Waits.until(() -> robot.lastTwist() != null && robot.lastTwist().isStop(), Duration.ofSeconds(10),
+                    "a zero Twist, the last the robot received");
         } finally {
             System.setErr(savedErr);
             robot.close();
@@ -247,8 +237,8 @@ public class Ros2RunEndToEndTest {
     }
 
     @Test
+    @Requires(NativeZenohLayer.class)
     void unreachableRouterIsOneLineAndExitTwo() throws Exception {
-        requireNativeZenoh();
         int port;
         try (ServerSocket s = new ServerSocket(0)) {
             port = s.getLocalPort();

@@ -3,6 +3,8 @@ package io.rtaware.app.ros2;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.rtaware.core.testing.Requires;
+import io.rtaware.core.testing.Waits;
 import io.rtaware.core.time.SystemClock;
 import io.rtaware.robot.msg.VelocityCommand;
 import io.rtaware.ros2.graph.QosProfile;
@@ -16,11 +18,12 @@ import io.rtaware.sim.scenario.ScenarioLoader;
 import io.rtaware.sim.server.PlayerSimServer;
 import io.rtaware.sim.server.ServerConfig;
 import io.rtaware.sim.server.SimCommandSupport;
+import io.rtaware.zenoh.NativeZenohLayer;
 import io.rtaware.zenoh.ZenohConfig;
 import java.net.ServerSocket;
+import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -43,8 +46,8 @@ class Ros2SimRobotCommandersTest {
     }
 
     @Test
+    @Requires(NativeZenohLayer.class)
     void aForeignCmdVelPublisherIsReportedOnceAndDoesNotDriveTheRobot() throws Exception {
-        Ros2RunEndToEndTest.requireNativeZenoh();
         String endpoint;
         try (ServerSocket s = new ServerSocket(0)) {
             endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
@@ -60,18 +63,15 @@ class Ros2SimRobotCommandersTest {
                     .createPublisher("cmd_vel", codec.type(), QosProfile.defaults(), 256);
             Ros2Publisher theirs = intruder.createNode("/", "intruder")
                     .createPublisher("cmd_vel", codec.type(), QosProfile.defaults(), 256);
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
-            while (robot.commands() == 0) {
-                assertTrue(System.nanoTime() < deadline, "the controller's Twist never arrived");
+            Waits.until(() -> { // the subscription propagates asynchronously: send until one arrives
                 send(mine, 0.1, 0.0);
-                Thread.sleep(10); // waits for the subscription to propagate, not for a timing
-            }
-            while (robot.foreignCommands() < 20) {
-                assertTrue(System.nanoTime() < deadline, "the intruder's Twists never arrived; " + reported);
+                return robot.commands() > 0;
+            }, Duration.ofSeconds(30), "the controller's Twist");
+            Waits.until(() -> {
                 send(mine, 0.1, 0.0);
                 send(theirs, 0.5, 1.0);
-                Thread.sleep(10); // paces the publishers, not a timing assumption
-            }
+                return robot.foreignCommands() >= 20;
+            }, Duration.ofSeconds(30), () -> "20 of the intruder's Twists; reported " + reported);
             assertTrue(robot.commands() <= mine.published(), "only the controller's Twists are obeyed: "
                     + robot.commands() + " obeyed, " + mine.published() + " sent by the controller");
             assertEquals(1, reported.size(), "reported once: " + reported);

@@ -2,8 +2,8 @@ package io.rtaware.app.run;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import io.rtaware.core.testing.NpmPeers;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
@@ -26,18 +26,12 @@ public final class FoxgloveReadersCheck {
      * @throws Exception if it cannot be run
      */
     public static String run(Path recording) throws Exception {
-        String peers = System.getenv("RTAWARE_NPM_PEERS");
-        if (peers == null || peers.isBlank()) {
-            if ("true".equals(System.getenv("CI"))) {
-                throw new AssertionError("CI=true but RTAWARE_NPM_PEERS is unset: .ci/run must install .ci/npm-peers.json");
-            }
-            assumeTrue(false, "RTAWARE_NPM_PEERS unset: skipping the check with Foxglove's readers");
-        }
+        String peers = NpmPeers.folder();
         Process p;
         try {
             ProcessBuilder pb = new ProcessBuilder("node", "src/test/node/check_foxglove.mjs", recording.toString())
                     .redirectErrorStream(true);
-            pb.environment().put("RTAWARE_NPM_PEERS", peers);
+            pb.environment().put(NpmPeers.VARIABLE, peers);
             p = pb.start();
         } catch (IOException e) {
             throw new AssertionError("cannot run node: " + e.getMessage(), e);

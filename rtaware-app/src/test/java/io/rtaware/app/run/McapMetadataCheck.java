@@ -2,8 +2,8 @@ package io.rtaware.app.run;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import io.rtaware.core.testing.PythonPeers;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
@@ -29,13 +29,7 @@ final class McapMetadataCheck {
      * @param machine the verdict its {@code rtaware.conditions} record must carry
      */
     static void assertConditionsRecord(Path file, String machine) throws Exception {
-        String python = System.getenv("RTAWARE_PEER_PYTHON");
-        if (python == null || python.isBlank()) {
-            if ("true".equals(System.getenv("CI"))) {
-                throw new AssertionError("CI=true but RTAWARE_PEER_PYTHON is unset: .ci/run must set up the Python peers");
-            }
-            assumeTrue(false, "RTAWARE_PEER_PYTHON unset: skipping the independent MCAP metadata check");
-        }
+        String python = PythonPeers.python();
         Process p = new ProcessBuilder(python, "-c", SCRIPT, file.toString()).redirectErrorStream(true).start();
         String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         assertTrue(p.waitFor(60, TimeUnit.SECONDS), "the Python reader finished");

@@ -12,6 +12,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import io.rtaware.app.CliRun;
 import io.rtaware.app.RtawareCli;
 import io.rtaware.app.foxglove.FoxgloveLayoutCheck;
+import io.rtaware.core.testing.PythonPeers;
 import io.rtaware.record.RecordingPlan;
 import io.rtaware.record.StateJsonMessage;
 import io.rtaware.record.mcap.McapChannel;
@@ -200,14 +201,7 @@ class RecordRunTest {
 
     @Test
     void independentPythonReadersDecodeEveryRos2MessageAndAgreeWithTheRun() throws Exception {
-        String python = System.getenv("RTAWARE_PEER_PYTHON");
-        if (python == null || python.isBlank()) {
-            if ("true".equals(System.getenv("CI"))) {
-                throw new AssertionError("CI=true but RTAWARE_PEER_PYTHON is unset: .ci/run must set up the Python peers");
-            }
-            assumeTrue(false, "RTAWARE_PEER_PYTHON unset: skipping the independent MCAP reader check "
-                    + "(set it to a Python with the packages of .ci/python-peers.txt)");
-        }
+        String python = PythonPeers.python();
         Process p = new ProcessBuilder(python, "src/test/python/check_recording.py", recording.toString(), out.toString())
                 .redirectErrorStream(true).start();
         String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);

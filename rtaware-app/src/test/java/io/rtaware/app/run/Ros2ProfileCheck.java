@@ -2,8 +2,8 @@ package io.rtaware.app.run;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import io.rtaware.core.testing.PythonPeers;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
@@ -24,13 +24,7 @@ public final class Ros2ProfileCheck {
      * @throws Exception if it cannot be run
      */
     public static String run(Path recording) throws Exception {
-        String python = System.getenv("RTAWARE_PEER_PYTHON");
-        if (python == null || python.isBlank()) {
-            if ("true".equals(System.getenv("CI"))) {
-                throw new AssertionError("CI=true but RTAWARE_PEER_PYTHON is unset: .ci/run must set up the Python peers");
-            }
-            assumeTrue(false, "RTAWARE_PEER_PYTHON unset: skipping the check with rosbags and mcap");
-        }
+        String python = PythonPeers.python();
         Process p = new ProcessBuilder(python, "src/test/python/check_ros2_profile.py", recording.toString())
                 .redirectErrorStream(true).start();
         String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);

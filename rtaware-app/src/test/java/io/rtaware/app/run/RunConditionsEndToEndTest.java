@@ -14,7 +14,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Objects;
 import java.util.concurrent.TimeUnit;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -26,7 +25,6 @@ import org.junit.jupiter.api.io.TempDir;
  * the rule itself is tested exactly on fixtures ({@code MachineVerdictTest},
  * {@code ConditionsMeterTest}).
  */
-@Tag("wall-clock")
 class RunConditionsEndToEndTest {
 
     @TempDir

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.app.RtawareCli;
+import io.rtaware.core.testing.Waits;
 import io.rtaware.core.time.Clock;
 import io.rtaware.sim.scenario.Scenario;
 import io.rtaware.sim.scenario.ScenarioLoader;
@@ -23,6 +24,7 @@ import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.CompletableFuture;
@@ -63,14 +65,8 @@ class RunRecoveryEndToEndTest {
                 out.toString(), "--quiet", "--seed", Long.toString(SEED)));
     }
 
-    private static void await(BooleanSupplier condition, String what) throws InterruptedException {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
-        while (!condition.getAsBoolean()) {
-            if (System.nanoTime() > deadline) {
-                throw new AssertionError("never happened: " + what);
-            }
-            Thread.sleep(5); // polling a condition, not a timing assumption
-        }
+    private static void await(BooleanSupplier condition, String what) throws Exception {
+        Waits.until(condition::getAsBoolean, Duration.ofSeconds(60), what);
     }
 
     private static double distanceFromStart(PlayerSimServer sim, Scenario scenario) {

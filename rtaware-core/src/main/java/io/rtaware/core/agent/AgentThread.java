@@ -14,7 +14,8 @@ import org.agrona.concurrent.IdleStrategy;
  * {@link Agent#roleName() role}, run by Agrona's {@link AgentRunner}: {@link Agent#onStart()},
  * then {@link Agent#doWork()} and {@link IdleStrategy#idle(int)} in turn until closed, then
  * {@link Agent#onClose()}, all on that thread. Every throwable of the agent, {@link Error}s
- * included, goes to one {@link ErrorHandler} and is counted ({@link #errors()}); the loop goes on
+ * included, goes to one {@link ErrorHandler} and is counted ({@link #errors()}), and so does a
+ * thread that has not returned when {@link #close()} gives up waiting; the loop goes on
  * (an {@link org.agrona.concurrent.AgentTerminationException} ends it), and {@link Agent#onClose()}
  * runs when it ends, whatever was thrown before. (Agrona's runner rethrows an {@code Error} and
  * skips {@code onClose}; this class hands it to the handler itself, so that, for instance, a
@@ -56,13 +57,15 @@ public final class AgentThread implements AutoCloseable {
     private final AgentRunner runner;
     private final Thread thread;
     private final AtomicLong errors = new AtomicLong();
+    /** The error handler, counting. */
+    private final ErrorHandler counting;
     private final CloseWait closeWait;
     private volatile boolean stopRequested;
 
     private AgentThread(Agent agent, IdleStrategy idle, ErrorHandler errorHandler, CloseWait closeWait) {
         Objects.requireNonNull(errorHandler, "errorHandler");
         this.closeWait = Objects.requireNonNull(closeWait, "closeWait");
-        ErrorHandler counting = error -> {
+        this.counting = error -> {
             if (error != STOP) {
                 errors.incrementAndGet();
                 errorHandler.onError(error);
@@ -111,7 +114,8 @@ public final class AgentThread implements AutoCloseable {
      * @param agent the loop's work; its role name names the thread
      * @param idle what to do after a duty cycle (e.g. Agrona's
      *     {@link org.agrona.concurrent.SleepingMillisIdleStrategy} for a loop that polls)
-     * @param errorHandler where every throwable of the agent goes, on the agent's thread
+     * @param errorHandler where every throwable of the agent goes, on the agent's thread (a
+     *     thread stuck past close's wait: on the closing thread)
      * @return the running loop, closed with {@link CloseWait#INTERRUPT_AFTER_TIMEOUT}
      */
     public static AgentThread start(Agent agent, IdleStrategy idle, ErrorHandler errorHandler) {
@@ -123,7 +127,8 @@ public final class AgentThread implements AutoCloseable {
      *
      * @param agent the loop's work; its role name names the thread
      * @param idle what to do after a duty cycle
-     * @param errorHandler where every throwable of the agent goes, on the agent's thread
+     * @param errorHandler where every throwable of the agent goes, on the agent's thread (a
+     *     thread stuck past close's wait: on the closing thread)
      * @param closeWait how {@link #close()} waits for the thread
      * @return the running loop
      */
@@ -133,7 +138,7 @@ public final class AgentThread implements AutoCloseable {
         return loop;
     }
 
-    /** @return how many throwables the agent has thrown so far */
+    /** @return how many throwables the agent has thrown so far, and how often close found it stuck */
     public long errors() {
         return errors.get();
     }
@@ -160,8 +165,8 @@ public final class AgentThread implements AutoCloseable {
             if (closeWait == CloseWait.UNTIL_CLOSED) {
                 thread.join();
             } else {
-                runner.close(CLOSE_TIMEOUT_MS, stuck -> System.err.println("rtaware: " + stuck.getName()
-                        + " did not return within " + CLOSE_TIMEOUT_MS + " ms of close; interrupting it"));
+                runner.close(CLOSE_TIMEOUT_MS, stuck -> counting.onError(new IllegalStateException(stuck.getName()
+                        + " did not return within " + CLOSE_TIMEOUT_MS + " ms of close; interrupting it")));
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt(); // interrupted while waiting: returns at once

@@ -21,7 +21,9 @@ import org.agrona.concurrent.SleepingMillisIdleStrategy;
  *
  * <p>Events only bump counters (no allocation, no I/O on task threads); a daemon thread of
  * the reporter's own prints every {@value #POLL_MS} ms. {@link #flush()} prints what is left,
- * e.g. before the termination summary. Thread-safe.
+ * e.g. before the termination summary. A fault of that thread goes to the framework error
+ * handler of the monitor the reporter listens to, and is counted there
+ * ({@link Monitor#frameworkErrors()}). Thread-safe.
  */
 public final class ConsoleReporter implements MonitorListener, AutoCloseable {
 
@@ -46,6 +48,11 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
     private final AtomicReferenceArray<PeriodChange> lastPeriodChange;
     private final long[] lastLineWallNs;
     private final AgentThread printer;
+    /**
+     * Where a fault of the printer's thread goes: the framework's default printer until the
+     * monitor this reporter listens to starts, then that monitor's error handler and count.
+     */
+    private volatile FrameworkFaults faults = new FrameworkFaults(new RateLimitedErrorPrinter());
     /** World time when the first task started running: the origin of printed times. */
     private volatile long originNs = Long.MIN_VALUE;
 
@@ -82,7 +89,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         this.lastLineWallNs = new long[n];
         java.util.Arrays.fill(lastLineWallNs, Long.MIN_VALUE / 2);
         this.printer = printerThread ? AgentThread.start(new Printer(), new SleepingMillisIdleStrategy(POLL_MS),
-                error -> System.err.println("rtaware: console reporter: " + error)) : null;
+                error -> faults.report("console reporter", error)) : null;
     }
 
     @Override
@@ -151,6 +158,11 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
     /** Prints every task's folded counts now, regardless of the one-line-per-second limit. */
     public void flush() {
         printDue(true);
+    }
+
+    /** @param monitorFaults the framework faults of the monitor this reporter listens to, as it starts */
+    void reportFaultsTo(FrameworkFaults monitorFaults) {
+        faults = monitorFaults;
     }
 
     private synchronized void printDue(boolean force) {

@@ -27,7 +27,7 @@ public sealed interface ExecutorKind permits ExecutorKind.Threaded, ExecutorKind
     }
 
     /**
-     * @param workers worker threads, at least 1
+     * @param workers worker threads, 1 to {@link Pooled#maxWorkers()}
      * @param order which due release a free worker runs first
      * @return a pool
      */
@@ -42,22 +42,42 @@ public sealed interface ExecutorKind permits ExecutorKind.Threaded, ExecutorKind
     /**
      * A pool of worker threads for the periodic tasks that do not block.
      *
-     * @param workers worker threads, at least 1
+     * <p>At most {@value #MAX_WORKERS_PER_CORE} workers per available core: the pooled tasks do
+     * not block, so no more than one worker per core runs at a time; the others are there so that
+     * a release need not wait behind cycles that overrun, and {@value #MAX_WORKERS_PER_CORE} per
+     * core covers that many overruns at once on every core. Past that a pool is a thread per task
+     * by another name (the threaded executor says so plainly), and thousands of workers end in
+     * the operating system's refusal of another thread.
+     *
+     * @param workers worker threads, 1 to {@link #maxWorkers()}
      * @param order which due release a free worker runs first
      */
     record Pooled(int workers, PoolOrder order) implements ExecutorKind {
 
+        /** Most workers a pool may have per available core. */
+        public static final int MAX_WORKERS_PER_CORE = 16;
+
         /**
          * Checks the values.
          *
-         * @param workers worker threads, at least 1
+         * @param workers worker threads, 1 to {@link #maxWorkers()}
          * @param order which due release a free worker runs first
          */
         public Pooled {
             if (workers < 1) {
                 throw new IllegalArgumentException("a pool needs at least 1 worker, got " + workers);
             }
+            if (workers > maxWorkers()) {
+                throw new IllegalArgumentException("a pool may have at most " + maxWorkers() + " workers ("
+                        + MAX_WORKERS_PER_CORE + " per core, " + Runtime.getRuntime().availableProcessors()
+                        + " cores), got " + workers);
+            }
             java.util.Objects.requireNonNull(order, "order");
+        }
+
+        /** @return the most workers a pool may have here: {@value #MAX_WORKERS_PER_CORE} per available core */
+        public static int maxWorkers() {
+            return MAX_WORKERS_PER_CORE * Runtime.getRuntime().availableProcessors();
         }
     }
 

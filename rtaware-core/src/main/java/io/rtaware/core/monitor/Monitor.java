@@ -352,6 +352,11 @@ public final class Monitor {
             phase = Phase.RUNNING;
             executor = newExecutor;
             events.listeners(listeners.toArray(new MonitorListener[0]));
+            for (MonitorListener listener : listeners) {
+                if (listener instanceof ConsoleReporter console) {
+                    console.reportFaultsTo(faults); // its printer's faults, as the listeners' own
+                }
+            }
         }
         long started = executor.start();
         synchronized (lifecycle) {
@@ -410,13 +415,13 @@ public final class Monitor {
                 executor.stopReleasing();
                 executor.joinThreadsOf(stopFirst);
             }
-            terminate(stopFirst, clock.nanos());
+            terminate(stopFirst, clock.nanos(), faults);
             if (executor != null) {
                 executor.stopAndJoin();
             }
             tasksStopped = true;
             stopNs = clock.nanos();
-            terminate(stopAfter, stopNs);
+            terminate(stopAfter, stopNs, faults);
             report = ReportBuilder.build(clock.timeScale(), stopNs - startNs, runtimes, graph, faults.count(),
                     reactions);
             for (Consumer<Report> handler : terminationHandlers) {
@@ -432,12 +437,12 @@ public final class Monitor {
         return report;
     }
 
-    private static void terminate(List<TaskRuntime> tasks, long nowNs) {
+    private static void terminate(List<TaskRuntime> tasks, long nowNs, FrameworkFaults faults) {
         for (TaskRuntime runtime : tasks) {
             try {
                 runtime.spec().task().terminate();
             } catch (Exception e) {
-                System.err.println("rtaware: task '" + runtime.name() + "' failed to terminate: " + e);
+                faults.report("terminate() of task '" + runtime.name() + "'", e);
             }
             runtime.setState(TaskState.TERMINATED, nowNs);
         }

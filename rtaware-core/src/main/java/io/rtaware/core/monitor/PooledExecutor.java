@@ -403,7 +403,7 @@ final class PooledExecutor implements Executor {
         }
         if (tasks.stream().anyMatch(PooledExecutor::isPooled)) {
             for (Thread worker : workers) {
-                Watchdog.joinOrInterrupt(worker);
+                Watchdog.joinOrInterrupt(worker, Watchdog.JOIN_TIMEOUT_MS, faults);
             }
         }
     }
@@ -420,7 +420,7 @@ final class PooledExecutor implements Executor {
             dedicated.stopWithoutClosing();
         }
         for (Thread worker : workers) {
-            Watchdog.joinOrInterrupt(worker);
+            Watchdog.joinOrInterrupt(worker, Watchdog.JOIN_TIMEOUT_MS, faults);
         }
         watchdog.stopAndJoin();
         waiter.close();

@@ -211,7 +211,7 @@ final class ThreadedExecutor implements Executor {
     public void joinThreadsOf(Collection<TaskRuntime> tasks) {
         for (int slot = 0; slot < threads.size(); slot++) {
             if (tasks.contains(runtimes.get(slot))) {
-                Watchdog.joinOrInterrupt(threads.get(slot));
+                Watchdog.joinOrInterrupt(threads.get(slot), Watchdog.JOIN_TIMEOUT_MS, faults);
             }
         }
     }
@@ -225,7 +225,7 @@ final class ThreadedExecutor implements Executor {
     void stopWithoutClosing() {
         stopReleasing();
         for (Thread thread : threads) {
-            Watchdog.joinOrInterrupt(thread);
+            Watchdog.joinOrInterrupt(thread, Watchdog.JOIN_TIMEOUT_MS, faults);
         }
         watchdog.stopAndJoin();
     }

@@ -163,7 +163,7 @@ final class Watchdog {
         running = false;
         if (thread != null) {
             LockSupport.unpark(thread);
-            joinOrInterrupt(thread);
+            joinOrInterrupt(thread, JOIN_TIMEOUT_MS, faults);
         }
     }
 
@@ -171,23 +171,26 @@ final class Watchdog {
     static final long JOIN_TIMEOUT_MS = 5_000;
 
     /**
-     * Waits for a thread the executor has asked to stop; after {@value #JOIN_TIMEOUT_MS} ms says
-     * so on stderr, interrupts it and waits as long again. Returns at once for the calling
-     * thread itself (a task that stops its own monitor) and keeps the caller's interrupt.
+     * Waits for a thread the executor has asked to stop; after {@code timeoutMs} reports it as a
+     * framework fault (to the monitor's error handler, counted), interrupts it and waits as long
+     * again. Returns at once for the calling thread itself (a task that stops its own monitor) and
+     * keeps the caller's interrupt.
      *
      * @param thread the thread, or null
+     * @param timeoutMs how long to wait before the fault and the interrupt ({@link #JOIN_TIMEOUT_MS})
+     * @param faults where a thread that did not return is reported
      */
-    static void joinOrInterrupt(Thread thread) {
+    static void joinOrInterrupt(Thread thread, long timeoutMs, FrameworkFaults faults) {
         if (thread == null || thread == Thread.currentThread()) {
             return;
         }
         try {
-            thread.join(JOIN_TIMEOUT_MS);
+            thread.join(timeoutMs);
             if (thread.isAlive()) {
-                System.err.println("rtaware: " + thread.getName() + " did not return within "
-                        + JOIN_TIMEOUT_MS + " ms of stop; interrupting it");
+                faults.report("stop", new IllegalStateException(thread.getName() + " did not return within "
+                        + timeoutMs + " ms of stop; interrupting it"));
                 thread.interrupt();
-                thread.join(JOIN_TIMEOUT_MS);
+                thread.join(timeoutMs);
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();

@@ -13,7 +13,6 @@ import io.rtaware.core.time.ManualClock;
 import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -21,7 +20,6 @@ import org.junit.jupiter.api.Test;
  * lateness of a release that waits for a worker, and the tasks that keep a thread of their own.
  * Real threads on a manual clock stepped by the test ({@link SteppedThreads}), exact counts.
  */
-@Tag("threads")
 class PooledExecutorTest {
 
     private final ManualClock clock = new ManualClock();

@@ -17,7 +17,6 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
-import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -28,7 +27,6 @@ import org.junit.jupiter.params.provider.EnumSource;
  * follow the one rulebook in {@link TaskRuntime}. Every rule test runs on both executors (the
  * pool with two workers); one test on the wall clock proves the real waiting.
  */
-@Tag("threads")
 class ThreadedExecutorTest {
 
     /** The executors under test. */

@@ -32,6 +32,7 @@ import io.rtaware.robot.msg.RobotKeys;
 import io.rtaware.robot.msg.VelocityCommand;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.Semaphore;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -145,14 +146,18 @@ class PlayerDataTaskSafetyTest {
     @Test
     void aNanPoseThatPersistsForASecondHaltsTheRobotAndIsNeverCommitted() throws Exception {
         List<VelocityCmd> commands = new CopyOnWriteArrayList<>();
+        Semaphore maySend = new Semaphore(0); // one true pose at a time, once the consumer saw the last
         try (ScriptedServer server = new ScriptedServer(conn -> {
             conn.banner();
             for (int i = 0; i < 4; i++) { // DATAMODE, ADD_REPLACE_RULE, DEV position2d, DEV laser
                 conn.send(ack(conn.readMessage()));
             }
+            maySend.acquire();
             conn.send(odometry(0.1, 2.0));
             conn.send(scan(0.1, 1f, 2f, 3f));
+            maySend.acquire();
             conn.send(odometry(0.2, 2.1));
+            maySend.acquire();
             conn.send(odometry(0.3, Double.NaN)); // from here on the pose cannot be true
             int closesAfterStop = 0;
             while (closesAfterStop < 2) {
@@ -175,6 +180,12 @@ class PlayerDataTaskSafetyTest {
             Consumer consumer = new Consumer();
             Monitor monitor = monitor(clock, player, consumer);
             StepExecutor step = monitor.startStepped();
+            for (int pose = 1; pose <= 2; pose++) {
+                maySend.release();
+                stepUntilSamples(step, player, "position2d:0", pose);
+                step.runFor(20 * MS); // the consumer's next cycle reads it
+            }
+            maySend.release(); // the first impossible pose
             long firstRejectionNs = -1;
             for (int i = 0; i < 5000 && player.fault() == null; i++) {
                 step.step();
@@ -195,8 +206,7 @@ class PlayerDataTaskSafetyTest {
             monitor.stop();
             server.await();
 
-            assertTrue(consumer.odometry.get() >= 1 && consumer.odometry.get() <= 2,
-                    "only the two true poses may be committed: " + consumer.odometry.get());
+            assertEquals(2, consumer.odometry.get(), "the two true poses, each read once, and no other");
             assertEquals(2.1, consumer.lastXM, 1e-12, "the newest true pose is the last committed one");
             assertEquals(1, monitor.counters("player").errors(), "the halt is counted as the task's error");
             DeviceSamples pose = player.deviceSamples().get("position2d:0");
@@ -254,6 +264,22 @@ class PlayerDataTaskSafetyTest {
         }
     }
 
+    /**
+     * Steps until the data task has taken the device's {@code n}th sample (it crosses a loopback
+     * socket: a cycle may find none yet); fails after 5000 steps of at most 1 ms of polling each.
+     */
+    private static void stepUntilSamples(StepExecutor step, PlayerDataTask player, String device, int n) {
+        for (int i = 0; i < 5000 && samples(player, device) < n; i++) {
+            step.step();
+        }
+        assertEquals(n, samples(player, device), device + " samples taken");
+    }
+
+    private static long samples(PlayerDataTask player, String device) {
+        DeviceSamples d = player.deviceSamples().get(device);
+        return d == null ? 0 : d.samples();
+    }
+
     private static int indexOfFirstStop(List<VelocityCmd> commands) {
         for (int i = 0; i < commands.size(); i++) {
             if (commands.get(i).vxMps() == 0.0) {
@@ -265,21 +291,27 @@ class PlayerDataTaskSafetyTest {
 
     @Test
     void readingsAreKeptInTheirMeaningBeamsThatSayNothingDroppedAndImpossibleScansRejected() throws Exception {
+        List<byte[]> scans = List.of(
+                scan(0.1, 1f, 2f, 3f),
+                scan(0.2, 1f, Float.NaN, 3f), // one beam says nothing: dropped, the scan kept
+                scan(0.3, Float.POSITIVE_INFINITY, 2f, 3f), // nothing hit: the maximum
+                scan(0.4, 1f, 2f, Float.NEGATIVE_INFINITY), // too close to measure: an obstacle at 0 m
+                scan(0.5, 1f, -0.5f, 3f), // below the minimum: an obstacle at 0 m
+                scan(0.6, 1f, 2f, 12f), // beyond the 8 m maximum the scan declares: dropped
+                scan(0.65, Float.NaN, Float.NaN, Float.NaN), // no usable beam: impossible
+                scan(0.05, 1f, 2f, 3f), // earlier than the last true scan: impossible
+                scan(0.7, 1f, 2f, 3f));
+        Semaphore maySend = new Semaphore(0); // one scan at a time, once the consumer saw the last
         try (ScriptedServer server = new ScriptedServer(conn -> {
             conn.banner();
             for (int i = 0; i < 4; i++) {
                 conn.send(ack(conn.readMessage()));
             }
             conn.send(odometry(0.1, 0.0));
-            conn.send(scan(0.1, 1f, 2f, 3f));
-            conn.send(scan(0.2, 1f, Float.NaN, 3f)); // one beam says nothing: dropped, the scan kept
-            conn.send(scan(0.3, Float.POSITIVE_INFINITY, 2f, 3f)); // nothing hit: the maximum
-            conn.send(scan(0.4, 1f, 2f, Float.NEGATIVE_INFINITY)); // too close to measure: an obstacle at 0 m
-            conn.send(scan(0.5, 1f, -0.5f, 3f)); // below the minimum: an obstacle at 0 m
-            conn.send(scan(0.6, 1f, 2f, 12f)); // beyond the 8 m maximum the scan declares: dropped
-            conn.send(scan(0.65, Float.NaN, Float.NaN, Float.NaN)); // no usable beam: impossible
-            conn.send(scan(0.05, 1f, 2f, 3f)); // earlier than the last true scan: impossible
-            conn.send(scan(0.7, 1f, 2f, 3f));
+            for (byte[] scan : scans) {
+                maySend.acquire();
+                conn.send(scan);
+            }
             while (true) { // acknowledges the unsubscriptions when the test stops the monitor
                 byte[] msg;
                 try {
@@ -297,16 +329,16 @@ class PlayerDataTaskSafetyTest {
             Consumer consumer = new Consumer();
             Monitor monitor = monitor(clock, player, consumer);
             StepExecutor step = monitor.startStepped();
-            for (int i = 0; i < 5000 && player.deviceSamples().get("laser:0").samples() < 9; i++) {
-                step.step();
+            for (int n = 1; n <= scans.size(); n++) {
+                maySend.release();
+                stepUntilSamples(step, player, "laser:0", n);
+                step.runFor(20 * MS); // the consumer's next cycle reads what was committed, if anything
             }
-            step.runFor(100 * MS);
             DeviceSamples laser = player.deviceSamples().get("laser:0");
             assertEquals(new DeviceSamples(9, 2, "timestamp = 0.05 s is earlier than the previous sample's 0.6 s", 5),
                     laser, "1 + 1 + 3 beams dropped");
             assertNull(player.fault(), "true scans came in between: no fault");
-            assertTrue(consumer.scans.get() >= 1 && consumer.scans.get() <= 7,
-                    "only the seven kept scans may be committed: " + consumer.scans.get());
+            assertEquals(7, consumer.scans.get(), "the seven kept scans, each read once, and not the two impossible ones");
             assertEquals(2, player.stats().rejectedScans());
             assertEquals(0, monitor.counters("player").errors());
             monitor.stop();

@@ -3,6 +3,8 @@ package io.rtaware.record.mcap;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.rtaware.core.testing.PythonPeers;
+import io.rtaware.core.testing.Requires;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -23,6 +25,7 @@ class ForeignMcapFilesTest {
 
     @ParameterizedTest
     @ValueSource(booleans = {true, false})
+    @Requires(PythonPeers.class)
     void lz4ChunksWithAndWithoutASummaryReadExactly(boolean withSummary) throws Exception {
         int count = 500;
         Path file = dir.resolve("foreign.mcap");

@@ -2,8 +2,8 @@ package io.rtaware.record.mcap;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import io.rtaware.core.testing.PythonPeers;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
@@ -12,8 +12,8 @@ import java.util.concurrent.TimeUnit;
 
 /**
  * Runs a script of {@code src/test/python} with the Python named by {@code RTAWARE_PEER_PYTHON}
- * (.ci/run sets it up with the packages of .ci/python-peers.txt); skips without one, except
- * under {@code CI=true}, where its absence fails.
+ * (.ci/run sets it up with the packages of .ci/python-peers.txt); a test that calls it is
+ * {@code @Requires(PythonPeers.class)}.
  */
 final class PeerPython {
 
@@ -27,13 +27,7 @@ final class PeerPython {
      * @throws Exception if it cannot be run; fails the test if it exits non-zero
      */
     static String run(String script, String... args) throws Exception {
-        String python = System.getenv("RTAWARE_PEER_PYTHON");
-        if (python == null || python.isBlank()) {
-            if ("true".equals(System.getenv("CI"))) {
-                throw new AssertionError("CI=true but RTAWARE_PEER_PYTHON is unset: .ci/run must set up the Python peers");
-            }
-            assumeTrue(false, "RTAWARE_PEER_PYTHON unset: skipping the check against an independent implementation");
-        }
+        String python = PythonPeers.python();
         List<String> command = new ArrayList<>(List.of(python, "src/test/python/" + script));
         command.addAll(List.of(args));
         Process p;

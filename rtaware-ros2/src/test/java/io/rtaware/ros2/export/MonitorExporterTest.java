@@ -9,10 +9,11 @@ import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.Task;
 import io.rtaware.core.task.TaskSetup;
+import io.rtaware.core.testing.Requires;
+import io.rtaware.core.testing.Waits;
 import io.rtaware.core.time.ManualClock;
 import io.rtaware.robot.msg.LaserScan;
 import io.rtaware.robot.msg.RobotKeys;
-import io.rtaware.ros2.NativeZenohAssumption;
 import io.rtaware.ros2.graph.Ros2Context;
 import io.rtaware.ros2.graph.Ros2Names;
 import io.rtaware.ros2msg.DiagnosticArrayCodec;
@@ -24,6 +25,7 @@ import io.rtaware.ros2msg.cdr.CdrReader;
 import io.rtaware.ros2msg.value.DiagnosticArray;
 import io.rtaware.ros2msg.value.DiagnosticStatus;
 import io.rtaware.ros2msg.value.MetricsMessage;
+import io.rtaware.zenoh.NativeZenohLayer;
 import io.rtaware.zenoh.SampleBuffer;
 import io.rtaware.zenoh.ZenohConfig;
 import io.rtaware.zenoh.ZenohMailbox;
@@ -77,24 +79,26 @@ class MonitorExporterTest {
         }
     }
 
-    /** Takes samples until {@code done} says so or 20 s pass; each sample's CDR to {@code sampled}. */
-    private static void take(ZenohMailbox mailbox, java.util.function.BooleanSupplier done,
+    /** Takes samples until {@code done} says so (fails after 20 s, naming {@code awaited}); each sample's CDR to {@code sampled}. */
+    private static void take(ZenohMailbox mailbox, java.util.function.BooleanSupplier done, String awaited,
                              java.util.function.ObjIntConsumer<CdrReader> sampled) throws Exception {
         SampleBuffer sample = new SampleBuffer(1 << 16, 64);
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
-        while (!done.getAsBoolean() && System.nanoTime() < deadline) {
-            if (mailbox.take(TimeUnit.MILLISECONDS.toNanos(100), sample) != ZenohMailbox.Take.SAMPLE) {
-                continue;
+        Waits.until(() -> {
+            if (done.getAsBoolean()) {
+                return true;
             }
-            byte[] bytes = new byte[sample.payloadLength()];
-            sample.payload().get(0, bytes);
-            sampled.accept(new CdrReader().wrap(bytes, 0, bytes.length), sample.channel());
-        }
+            if (mailbox.take(TimeUnit.MILLISECONDS.toNanos(100), sample) == ZenohMailbox.Take.SAMPLE) {
+                byte[] bytes = new byte[sample.payloadLength()];
+                sample.payload().get(0, bytes);
+                sampled.accept(new CdrReader().wrap(bytes, 0, bytes.length), sample.channel());
+            }
+            return false;
+        }, Duration.ofSeconds(20), awaited);
     }
 
     @Test
+    @Requires(NativeZenohLayer.class)
     void keysAndHealthReachAnotherSession() throws Exception {
-        NativeZenohAssumption.require();
         ManualClock clock = new ManualClock();
         Monitor monitor = scanning(clock);
         String endpoint = loopbackEndpoint();
@@ -112,7 +116,7 @@ class MonitorExporterTest {
                     List.of(new ExportedKey<>(RobotKeys.LASER, new LaserScanCodec(), "laser")), List.of(), 10)) {
                 monitor.startStepped().runUntil(100 * MS);
                 assertEquals("/rtaware/laser", exporter.topics().get("laser"));
-                take(mailbox, () -> saw[0] && saw[1], (in, channel) -> {
+                take(mailbox, () -> saw[0] && saw[1], "the keys' and the health's samples", (in, channel) -> {
                     if (channel == 0) { // the first arrays may come before the run: wait for one after it
                         new DiagnosticArrayCodec().decode(in, new Ros2Header(), array);
                         DiagnosticStatus task = find(array, "rtaware: task scanner");
@@ -139,8 +143,8 @@ class MonitorExporterTest {
     }
 
     @Test
+    @Requires(NativeZenohLayer.class)
     void statisticsOfEveryTaskAndKeyReachAnotherSessionOnceTheirSecondIsOver() throws Exception {
-        NativeZenohAssumption.require();
         ManualClock clock = new ManualClock();
         Monitor monitor = scanning(clock);
         String endpoint = loopbackEndpoint();
@@ -153,16 +157,14 @@ class MonitorExporterTest {
             Ros2Context exporting = Ros2Context.open(ZenohConfig.loopbackPeer().withConnect(List.of(endpoint)), 0);
             try (MonitorExporter exporter = MonitorExporter.start(monitor, exporting, List.of(), List.of(), 10)) {
                 monitor.startStepped().runUntil(1500 * MS); // the first second is over; the scanner is past it
-                take(mailbox, () -> firstSecond.size() == 6, (in, channel) -> {
+                take(mailbox, () -> firstSecond.size() == 6, "six statistics sources of the first second", (in, channel) -> {
                     MetricsMessage m = new MetricsMessage(5);
                     new MetricsMessageCodec().decode(in, new Ros2Header(), m);
                     firstSecond.putIfAbsent(m.measurementSourceName + " " + m.metricsSource, m);
                 });
                 // The exporter counts a message after publishing it: the viewer may hold the sixth first.
-                long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-                while (exporter.statisticsPublished() < 6 && System.nanoTime() - deadline < 0) {
-                    Thread.onSpinWait();
-                }
+                Waits.until(() -> exporter.statisticsPublished() >= 6, Duration.ofSeconds(10),
+                        "the exporter counting the sixth statistics message it published");
                 published = exporter.statisticsPublished();
                 assertEquals(0, exporter.statisticsLost());
             }

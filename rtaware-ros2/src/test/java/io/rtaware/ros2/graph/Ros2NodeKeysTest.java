@@ -4,12 +4,15 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import io.rtaware.ros2.NativeZenohAssumption;
+import io.rtaware.core.testing.Requires;
+import io.rtaware.core.testing.Waits;
 import io.rtaware.ros2msg.Ros2Types;
+import io.rtaware.zenoh.NativeZenohLayer;
 import io.rtaware.zenoh.SampleBuffer;
 import io.rtaware.zenoh.ZenohConfig;
 import io.rtaware.zenoh.ZenohMailbox;
 import java.net.ServerSocket;
+import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
@@ -27,6 +30,7 @@ import org.junit.jupiter.api.Timeout;
  * and entity ids count from 0 within a context.
  */
 @Timeout(60)
+@Requires(NativeZenohLayer.class)
 class Ros2NodeKeysTest {
 
     private static final String SCAN_TYPE = "sensor_msgs::msg::dds_::LaserScan_/" + Ros2Types.LASER_SCAN.typeHash();
@@ -40,7 +44,6 @@ class Ros2NodeKeysTest {
 
     @BeforeEach
     void open() throws Exception {
-        NativeZenohAssumption.require();
         try (ServerSocket s = new ServerSocket(0)) {
             endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
         }
@@ -64,13 +67,10 @@ class Ros2NodeKeysTest {
         mailbox.subscribe(key, 3);
         SampleBuffer sample = new SampleBuffer(1024, 64);
         byte[] message = {0, 1, 0, 0, 42};
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        ZenohMailbox.Take took = ZenohMailbox.Take.TIMEOUT;
-        while (took != ZenohMailbox.Take.SAMPLE) {
-            assertTrue(System.nanoTime() < deadline, "nothing arrived on " + key);
+        Waits.until(() -> {
             publisher.publish(message, message.length, 1);
-            took = mailbox.take(TimeUnit.MILLISECONDS.toNanos(50), sample);
-        }
+            return mailbox.take(TimeUnit.MILLISECONDS.toNanos(50), sample) == ZenohMailbox.Take.SAMPLE;
+        }, Duration.ofSeconds(10), "a sample on " + key);
         assertEquals(3, sample.channel());
         assertTrue(SampleAttachment.valid(sample.attachment(), sample.attachmentLength()), "rmw_zenoh attachment");
         lastGid = new byte[SampleAttachment.GID_BYTES];

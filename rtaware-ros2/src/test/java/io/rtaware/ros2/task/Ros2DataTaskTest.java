@@ -8,14 +8,15 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import io.rtaware.core.data.Key;
+import io.rtaware.core.testing.Requires;
 import io.rtaware.core.testing.TaskHarness;
+import io.rtaware.core.testing.Waits;
 import io.rtaware.robot.msg.LaserScan;
 import io.rtaware.robot.msg.Odometry;
 import io.rtaware.robot.msg.RobotKeys;
 import io.rtaware.robot.msg.VelocityCommand;
 import io.rtaware.robot.validate.ImpossibleDataException;
 import io.rtaware.robot.validate.SampleValidator;
-import io.rtaware.ros2.NativeZenohAssumption;
 import io.rtaware.ros2.graph.QosProfile;
 import io.rtaware.ros2.graph.Ros2Context;
 import io.rtaware.ros2.graph.Ros2Names;
@@ -29,6 +30,7 @@ import io.rtaware.ros2msg.Ros2Types;
 import io.rtaware.ros2msg.TwistCodec;
 import io.rtaware.ros2msg.cdr.CdrReader;
 import io.rtaware.ros2msg.cdr.CdrWriter;
+import io.rtaware.zenoh.NativeZenohLayer;
 import io.rtaware.zenoh.SampleBuffer;
 import io.rtaware.zenoh.ZenohConfig;
 import io.rtaware.zenoh.ZenohMailbox;
@@ -37,6 +39,7 @@ import java.lang.management.ManagementFactory;
 import java.net.ServerSocket;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
@@ -52,6 +55,7 @@ import org.junit.jupiter.api.Timeout;
  * clock, the controller's motor commands committed as a scripted input.
  */
 @Timeout(60)
+@Requires(NativeZenohLayer.class)
 class Ros2DataTaskTest {
 
     private static final int MAX_MESSAGE_BYTES = 20_000;
@@ -73,7 +77,6 @@ class Ros2DataTaskTest {
 
     @BeforeEach
     void connect() throws Exception {
-        NativeZenohAssumption.require();
         String endpoint;
         try (ServerSocket s = new ServerSocket(0)) {
             endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
@@ -147,13 +150,24 @@ class Ros2DataTaskTest {
         odomPub.publish(writer.buffer(), writer.size(), System.currentTimeMillis() * 1_000_000L);
     }
 
-    /** Runs cycles (each waits up to 20 ms for data) until the condition holds, at most 10 s. */
-    private void executeUntil(BooleanSupplier done, String what) throws Exception {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (!done.getAsBoolean()) {
-            assertTrue(System.nanoTime() < deadline, "timed out waiting for " + what + "; " + task.stats());
+    /**
+     * Publishes with {@code step} and runs a cycle (each waits up to 20 ms for data) until
+     * {@code done} holds, at most 10 s: subscriptions propagate and samples arrive asynchronously.
+     */
+    private void stepUntil(BooleanSupplier done, Publish step, String what) throws Exception {
+        Waits.until(() -> {
+            if (done.getAsBoolean()) {
+                return true;
+            }
+            step.next();
             cycle();
-        }
+            return false;
+        }, Duration.ofSeconds(10), () -> what + "; " + task.stats());
+    }
+
+    /** Runs cycles until the condition holds, at most 10 s. */
+    private void executeUntil(BooleanSupplier done, String what) throws Exception {
+        stepUntil(done, () -> { }, what);
     }
 
     /**
@@ -162,24 +176,16 @@ class Ros2DataTaskTest {
      * right after the first scan arrived may find no route yet.
      */
     private void publishOdomUntil(long stampNs, BooleanSupplier done, String what) throws Exception {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (!done.getAsBoolean()) {
-            assertTrue(System.nanoTime() < deadline, "timed out waiting for " + what + "; " + task.stats());
-            publishOdom(stampNs);
-            cycle();
-        }
+        stepUntil(done, () -> publishOdom(stampNs), what);
     }
 
     /** Publishes scans until the task, whose subscription propagates asynchronously, sees one. */
     private void firstScan() throws Exception {
-        long stamp = 1_000_000_000L;
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (published(RobotKeys.LASER) == 0) {
-            assertTrue(System.nanoTime() < deadline, "no scan arrived; " + task.stats());
-            publishScan(stamp);
-            stamp += 1_000_000;
-            cycle();
-        }
+        long[] stamp = {1_000_000_000L};
+        stepUntil(() -> published(RobotKeys.LASER) > 0, () -> {
+            publishScan(stamp[0]);
+            stamp[0] += 1_000_000;
+        }, "a first scan");
     }
 
     @Test
@@ -203,15 +209,11 @@ class Ros2DataTaskTest {
         scan.minRangeM = 0.02;
         scan.rangesM[1] = Float.POSITIVE_INFINITY; // no return within range
         scan.rangesM[3] = Float.NEGATIVE_INFINITY; // too close to measure
-        long stamp = 3_000_000_000L;
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        long[] stamp = {3_000_000_000L};
         // Copies of the first scan published while waiting for it may still be in flight: wait for
         // a scan stamped after them, not for any new commit.
-        while (harness.read(RobotKeys.LASER).serverTimeS < 3.0) {
-            assertTrue(System.nanoTime() < deadline, "the scan with infinite beams was not committed; " + task.stats());
-            publishScan(stamp++);
-            cycle();
-        }
+        stepUntil(() -> harness.read(RobotKeys.LASER).serverTimeS >= 3.0, () -> publishScan(stamp[0]++),
+                "the scan with infinite beams committed");
         LaserScan got = harness.read(RobotKeys.LASER);
         assertEquals(4.0f, got.rangesM[1], "+Inf is a free beam to the maximum range");
         assertEquals(0.02f, got.rangesM[3], "-Inf is an obstacle at the minimum range (issue 24)");
@@ -219,13 +221,9 @@ class Ros2DataTaskTest {
         assertEquals(0, task.stats().scanRejected());
 
         scan.rangesM[2] = Float.NaN; // an erroneous beam: it says nothing, the others still do
-        double nanFromS = stamp / 1e9;
-        deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (harness.read(RobotKeys.LASER).serverTimeS < nanFromS) {
-            assertTrue(System.nanoTime() < deadline, "the scan with a NaN beam was not committed; " + task.stats());
-            publishScan(stamp++);
-            cycle();
-        }
+        double nanFromS = stamp[0] / 1e9;
+        stepUntil(() -> harness.read(RobotKeys.LASER).serverTimeS >= nanFromS, () -> publishScan(stamp[0]++),
+                "the scan with a NaN beam committed");
         assertTrue(Float.isNaN(harness.read(RobotKeys.LASER).rangesM[2]), "the beam is dropped: no reading");
         assertEquals(0.02f, harness.read(RobotKeys.LASER).rangesM[3], "the other beams are kept");
         assertEquals(0, task.stats().scanRejected());
@@ -338,13 +336,9 @@ class Ros2DataTaskTest {
      * (the start of the streak).
      */
     private long cyclesUntilRejected(boolean scanTopic, Publish publish) throws Exception {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
         long before = scanTopic ? task.stats().scanRejected() : task.stats().odomRejected();
-        while ((scanTopic ? task.stats().scanRejected() : task.stats().odomRejected()) == before) {
-            assertTrue(System.nanoTime() < deadline, "no rejection; " + task.stats());
-            publish.next();
-            cycle();
-        }
+        stepUntil(() -> (scanTopic ? task.stats().scanRejected() : task.stats().odomRejected()) != before, publish,
+                "a rejection");
         return nowNs;
     }
 
@@ -432,12 +426,7 @@ class Ros2DataTaskTest {
             bytes.put(0, writer.buffer(), 0, writer.size());
             Publish truncated = () -> raw.put(bytes, writer.size() - 7, null, 0);
             long before = task.stats().malformed();
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-            while (task.stats().malformed() == before) {
-                assertTrue(System.nanoTime() < deadline, "no malformed sample counted; " + task.stats());
-                truncated.next();
-                cycle();
-            }
+            stepUntil(() -> task.stats().malformed() != before, truncated, "a malformed sample counted");
             long committed = published(RobotKeys.LASER);
             ImpossibleDataException e = cyclesUntilHalted(nowNs, truncated);
             assertTrue(e.getMessage().startsWith("ROS 2 topic /robot1/scan sent only malformed samples for 1.0 s of world "
@@ -577,17 +566,16 @@ class Ros2DataTaskTest {
         Odometry elsewhere = new Odometry();
         elsewhere.copyFrom(odom);
         elsewhere.xM = odom.xM + 2.7; // the same robot 2.7 m away, as seen in the field
-        long stampNs = 2_000_000_000L;
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (task.stats().otherPublishers() < 20) {
-            assertTrue(System.nanoTime() < deadline, "the second publisher was not heard; " + task.stats());
-            stampNs += CYCLE_NS;
-            publishOdom(stampNs);
-            codec.encode(header.set(stampNs, "odom"), elsewhere, writer);
-            intruder.publish(writer.buffer(), writer.size(), System.currentTimeMillis() * 1_000_000L);
-            cycle();
+        long[] stampNs = {2_000_000_000L};
+        stepUntil(() -> {
             assertEquals(1.5, harness.read(RobotKeys.ODOMETRY).xM, 1e-9, "only the first publisher's pose is committed");
-        }
+            return task.stats().otherPublishers() >= 20;
+        }, () -> {
+            stampNs[0] += CYCLE_NS;
+            publishOdom(stampNs[0]);
+            codec.encode(header.set(stampNs[0], "odom"), elsewhere, writer);
+            intruder.publish(writer.buffer(), writer.size(), System.currentTimeMillis() * 1_000_000L);
+        }, "20 samples of the second publisher");
         List<String> notices = task.notices();
         assertEquals(1, notices.size(), notices.toString());
         assertTrue(notices.get(0).matches("/robot1/odom: another publisher \\(gid [0-9a-f]{32}\\) besides the one "

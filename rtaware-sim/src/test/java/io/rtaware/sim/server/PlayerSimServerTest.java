@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.rtaware.core.testing.Waits;
 import io.rtaware.core.time.ManualClock;
 import io.rtaware.player.protocol.DeviceAddress;
 import io.rtaware.player.protocol.DeviceRequest;
@@ -25,6 +26,7 @@ import io.rtaware.sim.world.World;
 import java.io.EOFException;
 import java.io.IOException;
 import java.net.SocketException;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.AfterEach;
@@ -264,10 +266,7 @@ class PlayerSimServerTest {
         server = PlayerSimServer.start(world(), clock, ServerConfig.defaults(0));
         assertEquals(7_000 * MS, server.clockOriginNs(), "world time 0 at the clock's reading when stepping began");
         clock.advance(500 * MS);
-        long deadline = System.nanoTime() + 10_000 * MS;
-        while (server.simTimeS() < 0.5 && System.nanoTime() < deadline) {
-            Thread.sleep(1);
-        }
+        Waits.until(() -> server.simTimeS() >= 0.5, Duration.ofSeconds(10), "the server's world time at 0.5 s");
         assertEquals(clock.nanos() - server.clockOriginNs(), Math.round(server.simTimeS() * 1e9),
                 "world time = the clock's reading minus the origin, in whole steps");
         PlayerSimServer manual = PlayerSimServer.startManual(world(), ServerConfig.defaults(0));

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.rtaware.core.testing.Waits;
 import io.rtaware.core.time.SystemClock;
 import io.rtaware.player.protocol.Interfaces;
 import io.rtaware.player.protocol.MessageType;
@@ -16,11 +17,11 @@ import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.SocketException;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.function.BooleanSupplier;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
@@ -58,14 +59,6 @@ class ServerLimitsTest {
             }
             return n;
         }
-    }
-
-    private static void await(BooleanSupplier condition, String what) throws InterruptedException {
-        long deadline = System.nanoTime() + 10_000 * MS;
-        while (!condition.getAsBoolean() && System.nanoTime() < deadline) {
-            Thread.sleep(5);
-        }
-        assertTrue(condition.getAsBoolean(), what);
     }
 
     @Test
@@ -150,7 +143,7 @@ class ServerLimitsTest {
                 assertEquals(0, bytesUntilClosed(server.port()), "fourth client: closed, no banner");
                 assertEquals(2, server.clientCount());
                 a.close();
-                await(() -> server.clientCount() == 1, "the server notices the client that left");
+                Waits.until(() -> server.clientCount() == 1, Duration.ofSeconds(10), "the server notices the client that left");
                 try (RawClient c = new RawClient(server.port())) {
                     assertEquals(PlayerSimServer.VERSION, c.banner, "a freed slot is taken");
                     assertEquals(MessageType.RESP_ACK,
