@@ -79,6 +79,69 @@ class NavRunTest {
         assertEquals(4L, section.robotSeed());
     }
 
+    /** A finish 0.2 m ahead of the start, within the 0.3 m tolerance: reached at once. */
+    private static Scenario finishAtTheStart() {
+        Scenario room = ScenarioLoader.load(ScenarioLoader.PAPER_ROOM);
+        return new Scenario("finish-at-start", room.map(), room.start(),
+                List.of(new Point2d(room.start().xM() + 0.2, room.start().yM())), 0.3, 30.0);
+    }
+
+    /** Runs the course to its ending on the given robot and returns the ending and the run section. */
+    private static RunSection runToTheEnd(Scenario scenario, RobotLink robot, NavRun.Settings settings,
+                                          ScaledClock clock, AtomicReference<RunState.Ending> ending) {
+        RobotModel model = RobotModel.koala(RobotModel.PAPER_TOP_SPEED_MPS);
+        AtomicReference<RunSection> finished = new AtomicReference<>();
+        NavRun run = new NavRun(scenario, model, settings, robot, clock);
+        Monitor monitor = run.monitorBuilder().build();
+        run.attach(monitor, null);
+        monitor.onTermination(report -> finished.set(run.finish()));
+        monitor.start();
+        run.started();
+        ending.set(run.superviseUntilEnd(elapsedS -> { }));
+        monitor.stop();
+        return finished.get();
+    }
+
+    @Test
+    void aFinishReachedByOdometrySaysHowFarTheTruePoseWasFromIt() throws Exception {
+        Scenario scenario = finishAtTheStart();
+        RobotModel model = RobotModel.koala(RobotModel.PAPER_TOP_SPEED_MPS);
+        ScaledClock clock = new ScaledClock(10);
+        NavRun.Settings settings = new NavRun.Settings(Map.of(), 10, 1, 4, 0.05, 0, 60, "r0");
+        AtomicReference<RunState.Ending> ending = new AtomicReference<>();
+        RunSection section;
+        try (RobotLink robot = RobotLink.simulator(SimCommandSupport.start(scenario, model, clock,
+                ServerConfig.defaults(0), settings.seed(), settings.robotSeed()))) {
+            section = runToTheEnd(scenario, robot, settings, clock, ending);
+        }
+        assertEquals(RunOutcome.COMPLETED, ending.get().outcome());
+        RunSection.WaypointPass finish = section.waypointPasses().get(section.waypointPasses().size() - 1);
+        assertNotNull(finish.trueDistanceM(), "the simulator knows the true pose: " + section);
+        // Measured on the true pose of the look that saw the finish, the same the finish's pass records.
+        assertEquals(String.format(java.util.Locale.ROOT, "finish reached by odometry; %.2f m from it in truth",
+                finish.trueDistanceM()), ending.get().reason());
+        assertEquals(ending.get().reason(), section.reason(), "the report says the same");
+    }
+
+    @Test
+    void withoutATruthSourceTheFinishIsReachedByOdometryOnly() throws Exception {
+        Scenario scenario = finishAtTheStart();
+        RobotModel model = RobotModel.koala(RobotModel.PAPER_TOP_SPEED_MPS);
+        ScaledClock clock = new ScaledClock(10);
+        // A Player server whose simulation:0 does not know the model: the referee falls back to odometry.
+        NavRun.Settings settings = new NavRun.Settings(Map.of(), 10, 1, 4, 0.05, 0, 60, "no-such-model");
+        AtomicReference<RunState.Ending> ending = new AtomicReference<>();
+        RunSection section;
+        try (var server = SimCommandSupport.start(scenario, model, clock, ServerConfig.defaults(0), 1, 4);
+             RobotLink robot = RobotLink.player("127.0.0.1", server.port())) {
+            section = runToTheEnd(scenario, robot, settings, clock, ending);
+        }
+        assertEquals("odometry", section.measuredOn());
+        assertEquals(new RunState.Ending(RunOutcome.COMPLETED, "finish reached by odometry"), ending.get(),
+                "no truth claimed where none was measured");
+        assertNull(section.waypointPasses().get(0).trueDistanceM(), "nor a true distance at the pass: " + section);
+    }
+
     @Test
     void aRunStoppedBeforeItsStartIsInterrupted() throws Exception {
         Scenario scenario = oneSecondCourse();
