@@ -79,26 +79,37 @@ final class Cdp implements AutoCloseable {
         URI http = URI.create(browserWs.replace("ws://", "http://"));
         // HTTP/1.1 throughout: the DevTools endpoint speaks neither h2c upgrades nor HTTP/2.
         HttpClient client = HttpClient.newBuilder().version(HttpClient.Version.HTTP_1_1).build();
-        String pageWs = null;
-        for (int attempt = 0; pageWs == null && attempt < 50; attempt++) {
-            JsonNode targets = JSON.readTree(client.send(HttpRequest.newBuilder(
-                    URI.create("http://" + http.getAuthority() + "/json/list")).build(),
-                    HttpResponse.BodyHandlers.ofString()).body());
-            for (JsonNode t : targets) {
-                if (t.path("type").asText().equals("page")) {
-                    pageWs = t.path("webSocketDebuggerUrl").asText();
+        Cdp[] self = new Cdp[1];
+        WebSocket ws;
+        try {
+            String pageWs = null;
+            for (int attempt = 0; pageWs == null && attempt < 50; attempt++) {
+                JsonNode targets = JSON.readTree(client.send(HttpRequest.newBuilder(
+                        URI.create("http://" + http.getAuthority() + "/json/list")).build(),
+                        HttpResponse.BodyHandlers.ofString()).body());
+                for (JsonNode t : targets) {
+                    if (t.path("type").asText().equals("page")) {
+                        pageWs = t.path("webSocketDebuggerUrl").asText();
+                    }
+                }
+                if (pageWs == null) {
+                    Thread.sleep(100);
                 }
             }
             if (pageWs == null) {
-                Thread.sleep(100);
+                throw new IOException("chromium has no page target");
             }
+            ws = connect(client, pageWs, self);
+        } catch (Exception e) {
+            p.destroyForcibly(); // a browser whose page cannot be reached must not outlive the test
+            throw e;
         }
-        if (pageWs == null) {
-            p.destroyForcibly();
-            throw new IOException("chromium has no page target");
-        }
-        Cdp[] self = new Cdp[1];
-        WebSocket ws = client.newWebSocketBuilder().buildAsync(URI.create(pageWs), new WebSocket.Listener() {
+        self[0] = new Cdp(p, ws);
+        return self[0];
+    }
+
+    private static WebSocket connect(HttpClient client, String pageWs, Cdp[] self) throws Exception {
+        return client.newWebSocketBuilder().buildAsync(URI.create(pageWs), new WebSocket.Listener() {
             private final StringBuilder text = new StringBuilder();
 
             @Override
@@ -112,8 +123,6 @@ final class Cdp implements AutoCloseable {
                 return null;
             }
         }).get(10, TimeUnit.SECONDS);
-        self[0] = new Cdp(p, ws);
-        return self[0];
     }
 
     private void receive(String message) {
