@@ -86,60 +86,69 @@ class NavRunTest {
                 List.of(new Point2d(room.start().xM() + 0.2, room.start().yM())), 0.3, 30.0);
     }
 
-    /** Runs the course to its ending on the given robot and returns the ending and the run section. */
-    private static RunSection runToTheEnd(Scenario scenario, RobotLink robot, NavRun.Settings settings,
-                                          ScaledClock clock, AtomicReference<RunState.Ending> ending) {
+    /** How a run of {@link #finishAtTheStart()} ended, and its {@code run} section. */
+    private record Ended(RunState.Ending ending, RunSection section) {
+    }
+
+    /**
+     * Runs {@link #finishAtTheStart()} at time scale 10 on the built-in simulator, reached as the
+     * built-in simulator or over Player as an external server.
+     *
+     * @param overPlayer reach the simulator as an external Player server (truth from its simulation:0)
+     * @param groundTruthModel the robot's name in simulation:0 (an unknown name: no truth source)
+     */
+    private static Ended runToTheFinish(boolean overPlayer, String groundTruthModel) throws Exception {
+        Scenario scenario = finishAtTheStart();
         RobotModel model = RobotModel.koala(RobotModel.PAPER_TOP_SPEED_MPS);
+        ScaledClock clock = new ScaledClock(10);
+        NavRun.Settings settings = new NavRun.Settings(Map.of(), 10, 1, 4, 0.05, 0, 60, groundTruthModel);
         AtomicReference<RunSection> finished = new AtomicReference<>();
-        NavRun run = new NavRun(scenario, model, settings, robot, clock);
-        Monitor monitor = run.monitorBuilder().build();
-        run.attach(monitor, null);
-        monitor.onTermination(report -> finished.set(run.finish()));
-        monitor.start();
-        run.started();
-        ending.set(run.superviseUntilEnd(elapsedS -> { }));
-        monitor.stop();
-        return finished.get();
+        try (var server = SimCommandSupport.start(scenario, model, clock, ServerConfig.defaults(0), 1, 4);
+             RobotLink robot = overPlayer ? RobotLink.player("127.0.0.1", server.port()) : RobotLink.simulator(server)) {
+            NavRun run = new NavRun(scenario, model, settings, robot, clock);
+            Monitor monitor = run.monitorBuilder().build();
+            run.attach(monitor, null);
+            monitor.onTermination(report -> finished.set(run.finish()));
+            monitor.start();
+            run.started();
+            RunState.Ending ending = run.superviseUntilEnd(elapsedS -> { });
+            monitor.stop();
+            return new Ended(ending, finished.get());
+        }
+    }
+
+    /** The ending names the true distance of the finish's pass, measured on the same look's true pose. */
+    private static void assertTheTruthIsMeasured(Ended run) {
+        assertEquals(RunOutcome.COMPLETED, run.ending().outcome());
+        RunSection section = run.section();
+        RunSection.WaypointPass finish = section.waypointPasses().get(section.waypointPasses().size() - 1);
+        assertNotNull(finish.trueDistanceM(), "the true pose is known: " + section);
+        assertEquals(String.format(java.util.Locale.ROOT, "finish reached by odometry; %.2f m from it in truth",
+                finish.trueDistanceM()), run.ending().reason());
+        assertEquals(run.ending().reason(), section.reason(), "the report says the same");
     }
 
     @Test
     void aFinishReachedByOdometrySaysHowFarTheTruePoseWasFromIt() throws Exception {
-        Scenario scenario = finishAtTheStart();
-        RobotModel model = RobotModel.koala(RobotModel.PAPER_TOP_SPEED_MPS);
-        ScaledClock clock = new ScaledClock(10);
-        NavRun.Settings settings = new NavRun.Settings(Map.of(), 10, 1, 4, 0.05, 0, 60, "r0");
-        AtomicReference<RunState.Ending> ending = new AtomicReference<>();
-        RunSection section;
-        try (RobotLink robot = RobotLink.simulator(SimCommandSupport.start(scenario, model, clock,
-                ServerConfig.defaults(0), settings.seed(), settings.robotSeed()))) {
-            section = runToTheEnd(scenario, robot, settings, clock, ending);
-        }
-        assertEquals(RunOutcome.COMPLETED, ending.get().outcome());
-        RunSection.WaypointPass finish = section.waypointPasses().get(section.waypointPasses().size() - 1);
-        assertNotNull(finish.trueDistanceM(), "the simulator knows the true pose: " + section);
-        // Measured on the true pose of the look that saw the finish, the same the finish's pass records.
-        assertEquals(String.format(java.util.Locale.ROOT, "finish reached by odometry; %.2f m from it in truth",
-                finish.trueDistanceM()), ending.get().reason());
-        assertEquals(ending.get().reason(), section.reason(), "the report says the same");
+        assertTheTruthIsMeasured(runToTheFinish(false, "r0")); // the built-in simulator's own pose
+    }
+
+    @Test
+    void aPlayerServersSimulationDeviceMeasuresTheTruthOfTheFinish() throws Exception {
+        Ended run = runToTheFinish(true, "r0");
+        assertEquals("ground_truth", run.section().measuredOn());
+        assertTheTruthIsMeasured(run);
     }
 
     @Test
     void withoutATruthSourceTheFinishIsReachedByOdometryOnly() throws Exception {
-        Scenario scenario = finishAtTheStart();
-        RobotModel model = RobotModel.koala(RobotModel.PAPER_TOP_SPEED_MPS);
-        ScaledClock clock = new ScaledClock(10);
         // A Player server whose simulation:0 does not know the model: the referee falls back to odometry.
-        NavRun.Settings settings = new NavRun.Settings(Map.of(), 10, 1, 4, 0.05, 0, 60, "no-such-model");
-        AtomicReference<RunState.Ending> ending = new AtomicReference<>();
-        RunSection section;
-        try (var server = SimCommandSupport.start(scenario, model, clock, ServerConfig.defaults(0), 1, 4);
-             RobotLink robot = RobotLink.player("127.0.0.1", server.port())) {
-            section = runToTheEnd(scenario, robot, settings, clock, ending);
-        }
-        assertEquals("odometry", section.measuredOn());
-        assertEquals(new RunState.Ending(RunOutcome.COMPLETED, "finish reached by odometry"), ending.get(),
+        Ended run = runToTheFinish(true, "no-such-model");
+        assertEquals("odometry", run.section().measuredOn());
+        assertEquals(new RunState.Ending(RunOutcome.COMPLETED, "finish reached by odometry"), run.ending(),
                 "no truth claimed where none was measured");
-        assertNull(section.waypointPasses().get(0).trueDistanceM(), "nor a true distance at the pass: " + section);
+        assertNull(run.section().waypointPasses().get(0).trueDistanceM(), "nor a true distance at the pass: "
+                + run.section());
     }
 
     @Test
