@@ -210,7 +210,7 @@ public final class NavRun {
         Odometry believed = new Odometry();
         referee = new Referee(clock, startNs, SAMPLE_PERIOD_NS, truth, () -> totalMisses(monitor),
                 () -> monitor.read(RobotKeys.ODOMETRY, believed) == 0 ? null : believed.pose()).start();
-        view = new MonitorView(monitor, nav, referee, link);
+        view = new MonitorView(monitor, nav, referee, link, scenario.finish());
         supervisor = new Supervisor(view, clock, System::nanoTime, startNs, scenario.timeLimitS(),
                 settings.stuckAfterS());
         state.started(startNs, referee, supervisor);
@@ -244,21 +244,21 @@ public final class NavRun {
     }
 
     /**
-     * Records each waypoint the controller has newly counted as passed, with the true and the
-     * believed distance from it at this moment (polled, so up to one poll late).
+     * Records each waypoint the controller has newly counted as passed, with the true (where
+     * ground truth exists) and the believed distance from it at this look (polled, so up to one
+     * poll late): the same true pose the supervisor's ending measured.
      */
     private void recordPasses(double elapsedS) {
         int reached = Math.min(view.course().waypointsReached, scenario.waypoints().size());
         if (reached <= passes.size()) {
             return;
         }
-        PlayerSimServer simulator = link.simulator().orElse(null);
-        Pose2d truthNow = simulator != null ? simulator.withWorld(World::pose) : referee.latest();
+        Pose2d truthNow = view.truePose();
         for (int i = passes.size(); i < reached; i++) {
             Point2d wp = scenario.waypoints().get(i);
-            double trueM = truthNow == null ? Double.NaN : truthNow.position().distanceTo(wp);
+            Double trueM = truthNow == null ? null : round3(truthNow.position().distanceTo(wp));
             double believedM = view.odometry().pose().position().distanceTo(wp);
-            passes.add(new RunSection.WaypointPass(i, round3(elapsedS), round3(trueM), round3(believedM)));
+            passes.add(new RunSection.WaypointPass(i, round3(elapsedS), trueM, round3(believedM)));
         }
     }
 
@@ -415,22 +415,31 @@ public final class NavRun {
         return Rounding.toDecimals(v, 3);
     }
 
-    /** The supervisor's view of a running monitor: the keys' newest values, the referee, the data task's fault. */
+    /**
+     * The supervisor's view of a running monitor: the keys' newest values, the referee, the data
+     * task's fault, and the true pose at each look: the built-in simulator's own pose of the
+     * robot, else the referee's newest sample when its source measures the truth
+     * ({@code simulation:0} of a Player server) and is not lost; none for a robot without a truth
+     * source (an external ROS 2 robot, a Player server without {@code simulation:0}).
+     */
     private static final class MonitorView implements Supervisor.View {
         private final Monitor monitor;
         private final NavController nav;
         private final Referee referee;
         private final RobotLink link;
+        private final Point2d finish;
         private final CourseStatus course = new CourseStatus();
         private final Odometry odometry = new Odometry();
         private final VelocityCommand motor = new VelocityCommand();
         private long odometryGeneration;
+        private Pose2d truePose;
 
-        MonitorView(Monitor monitor, NavController nav, Referee referee, RobotLink link) {
+        MonitorView(Monitor monitor, NavController nav, Referee referee, RobotLink link, Point2d finish) {
             this.monitor = monitor;
             this.nav = nav;
             this.referee = referee;
             this.link = link;
+            this.finish = finish;
         }
 
         @Override
@@ -438,6 +447,18 @@ public final class NavRun {
             monitor.read(nav.keys().course(), course);
             odometryGeneration = monitor.read(RobotKeys.ODOMETRY, odometry);
             monitor.read(RobotKeys.MOTOR, motor);
+            PlayerSimServer simulator = link.simulator().orElse(null);
+            truePose = simulator != null ? simulator.withWorld(World::pose) : referee.latestTrue();
+        }
+
+        @Override
+        public double trueDistanceToFinishM() {
+            return truePose == null ? Double.NaN : truePose.position().distanceTo(finish);
+        }
+
+        /** @return the true pose read at the last refresh, or null where none is known */
+        Pose2d truePose() {
+            return truePose;
         }
 
         @Override

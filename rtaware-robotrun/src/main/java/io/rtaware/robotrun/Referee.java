@@ -221,6 +221,15 @@ public final class Referee implements AutoCloseable {
     }
 
     /**
+     * @return the latest pose if it is the truth now: the source measures the true pose (kind
+     *     {@code ground_truth}) and no gap is open (it has not failed since); else null
+     */
+    public synchronized Pose2d latestTrue() {
+        return failing || samples.isEmpty() || !"ground_truth".equals(source.kind()) ? null
+                : samples.get(samples.size() - 1).pose();
+    }
+
+    /**
      * @param endS world seconds since the start at which the run ended
      * @return the gaps in the measurement, including one still open at {@code endS}
      */

@@ -70,9 +70,11 @@ public record RunSection(String scenario, Map<String, Double> periodsMs, String 
      *
      * @param index the waypoint's index in the course (the last is the finish)
      * @param tS world seconds from the start
-     * @param trueDistanceM distance from the true pose to the waypoint then, metres
+     * @param trueDistanceM distance from the true pose to the waypoint then, metres; null where no
+     *     ground truth exists (an external ROS 2 robot, a Player server without {@code simulation:0})
+     *     or it was lost then
      * @param believedDistanceM distance from the robot's odometry pose to the waypoint then, metres
      */
-    public record WaypointPass(int index, double tS, double trueDistanceM, double believedDistanceM) {
+    public record WaypointPass(int index, double tS, Double trueDistanceM, double believedDistanceM) {
     }
 }

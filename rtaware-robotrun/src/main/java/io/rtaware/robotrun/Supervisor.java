@@ -5,8 +5,9 @@ import java.util.Locale;
 import java.util.function.LongSupplier;
 
 /**
- * Decides, one look at a time, whether a robot run is over and why: the finish reached, the
- * time limit passed, the robot stuck (commanded to move, moved less than
+ * Decides, one look at a time, whether a robot run is over and why: the finish reached (by
+ * the robot's own estimate, its odometry, as the paper counts it; the reason also says how far
+ * the true pose was from the finish then, where ground truth exists), the time limit passed, the robot stuck (commanded to move, moved less than
  * {@link #STUCK_MIN_MOVE_M} in the stuck window), the robot server lost (no odometry for
  * {@link #LOST_SERVER_AFTER_S} of world time and {@link #LOST_SERVER_AFTER_WALL_S} of wall time),
  * or a safety fault (a device sent only impossible data). World time comes from the monitor's
@@ -47,6 +48,13 @@ public final class Supervisor {
 
         /** @return one line describing a safety fault of the robot's data, or null */
         String safetyFault();
+
+        /**
+         * @return the distance from the robot's true pose at this look to the finish, metres, or
+         *     NaN where no ground truth exists (a robot without a simulation truth source) or it
+         *     is lost at this moment
+         */
+        double trueDistanceToFinishM();
     }
 
     private final View view;
@@ -105,7 +113,7 @@ public final class Supervisor {
             return new RunState.Ending(RunOutcome.ERROR, fault);
         }
         if (view.courseDone()) {
-            return new RunState.Ending(RunOutcome.COMPLETED, "finish reached");
+            return new RunState.Ending(RunOutcome.COMPLETED, finishReached(view.trueDistanceToFinishM()));
         }
         if ((nowNs - startNs) / 1e9 >= timeLimitS) {
             return new RunState.Ending(RunOutcome.TIMEOUT,
@@ -122,6 +130,21 @@ public final class Supervisor {
                     LOST_SERVER_AFTER_S, LOST_SERVER_AFTER_WALL_S));
         }
         return null;
+    }
+
+    /**
+     * Why a completed run ended, in words that claim only what was measured: the finish is
+     * reached by odometry (the controller's belief decides it), and where the true pose is known,
+     * how far it was from the finish.
+     *
+     * @param trueDistanceM the true pose's distance from the finish at the ending, metres, or NaN
+     *     where no ground truth exists
+     * @return e.g. {@code finish reached by odometry; 1.06 m from it in truth}
+     */
+    public static String finishReached(double trueDistanceM) {
+        return Double.isFinite(trueDistanceM)
+                ? String.format(Locale.ROOT, "finish reached by odometry; %.2f m from it in truth", trueDistanceM)
+                : "finish reached by odometry";
     }
 
     /** @return rising edges of the stall flag seen so far (contacts, for a server without a contact count) */

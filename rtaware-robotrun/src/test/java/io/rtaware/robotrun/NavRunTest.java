@@ -79,6 +79,78 @@ class NavRunTest {
         assertEquals(4L, section.robotSeed());
     }
 
+    /** A finish 0.2 m ahead of the start, within the 0.3 m tolerance: reached at once. */
+    private static Scenario finishAtTheStart() {
+        Scenario room = ScenarioLoader.load(ScenarioLoader.PAPER_ROOM);
+        return new Scenario("finish-at-start", room.map(), room.start(),
+                List.of(new Point2d(room.start().xM() + 0.2, room.start().yM())), 0.3, 30.0);
+    }
+
+    /** How a run of {@link #finishAtTheStart()} ended, and its {@code run} section. */
+    private record Ended(RunState.Ending ending, RunSection section) {
+    }
+
+    /**
+     * Runs {@link #finishAtTheStart()} at time scale 10 on the built-in simulator, reached as the
+     * built-in simulator or over Player as an external server.
+     *
+     * @param overPlayer reach the simulator as an external Player server (truth from its simulation:0)
+     * @param groundTruthModel the robot's name in simulation:0 (an unknown name: no truth source)
+     */
+    private static Ended runToTheFinish(boolean overPlayer, String groundTruthModel) throws Exception {
+        Scenario scenario = finishAtTheStart();
+        RobotModel model = RobotModel.koala(RobotModel.PAPER_TOP_SPEED_MPS);
+        ScaledClock clock = new ScaledClock(10);
+        NavRun.Settings settings = new NavRun.Settings(Map.of(), 10, 1, 4, 0.05, 0, 60, groundTruthModel);
+        AtomicReference<RunSection> finished = new AtomicReference<>();
+        try (var server = SimCommandSupport.start(scenario, model, clock, ServerConfig.defaults(0), 1, 4);
+             RobotLink robot = overPlayer ? RobotLink.player("127.0.0.1", server.port()) : RobotLink.simulator(server)) {
+            NavRun run = new NavRun(scenario, model, settings, robot, clock);
+            Monitor monitor = run.monitorBuilder().build();
+            run.attach(monitor, null);
+            monitor.onTermination(report -> finished.set(run.finish()));
+            monitor.start();
+            run.started();
+            RunState.Ending ending = run.superviseUntilEnd(elapsedS -> { });
+            monitor.stop();
+            return new Ended(ending, finished.get());
+        }
+    }
+
+    /** The ending names the true distance of the finish's pass, measured on the same look's true pose. */
+    private static void assertTheTruthIsMeasured(Ended run) {
+        assertEquals(RunOutcome.COMPLETED, run.ending().outcome());
+        RunSection section = run.section();
+        RunSection.WaypointPass finish = section.waypointPasses().get(section.waypointPasses().size() - 1);
+        assertNotNull(finish.trueDistanceM(), "the true pose is known: " + section);
+        assertEquals(String.format(java.util.Locale.ROOT, "finish reached by odometry; %.2f m from it in truth",
+                finish.trueDistanceM()), run.ending().reason());
+        assertEquals(run.ending().reason(), section.reason(), "the report says the same");
+    }
+
+    @Test
+    void aFinishReachedByOdometrySaysHowFarTheTruePoseWasFromIt() throws Exception {
+        assertTheTruthIsMeasured(runToTheFinish(false, "r0")); // the built-in simulator's own pose
+    }
+
+    @Test
+    void aPlayerServersSimulationDeviceMeasuresTheTruthOfTheFinish() throws Exception {
+        Ended run = runToTheFinish(true, "r0");
+        assertEquals("ground_truth", run.section().measuredOn());
+        assertTheTruthIsMeasured(run);
+    }
+
+    @Test
+    void withoutATruthSourceTheFinishIsReachedByOdometryOnly() throws Exception {
+        // A Player server whose simulation:0 does not know the model: the referee falls back to odometry.
+        Ended run = runToTheFinish(true, "no-such-model");
+        assertEquals("odometry", run.section().measuredOn());
+        assertEquals(new RunState.Ending(RunOutcome.COMPLETED, "finish reached by odometry"), run.ending(),
+                "no truth claimed where none was measured");
+        assertNull(run.section().waypointPasses().get(0).trueDistanceM(), "nor a true distance at the pass: "
+                + run.section());
+    }
+
     @Test
     void aRunStoppedBeforeItsStartIsInterrupted() throws Exception {
         Scenario scenario = oneSecondCourse();

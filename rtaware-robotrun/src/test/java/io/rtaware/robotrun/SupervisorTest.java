@@ -20,6 +20,7 @@ class SupervisorTest {
         boolean moving;
         double displacementM = Double.NaN;
         String fault;
+        double trueDistanceM = Double.NaN;
         int refreshes;
 
         @Override
@@ -57,6 +58,11 @@ class SupervisorTest {
         public String safetyFault() {
             return fault;
         }
+
+        @Override
+        public double trueDistanceToFinishM() {
+            return trueDistanceM;
+        }
     }
 
     private final ManualClock world = new ManualClock(100 * S);
@@ -87,7 +93,16 @@ class SupervisorTest {
     void theFinishWinsOverTheTimeLimit() {
         advance(400 * S, S);
         view.done = true;
-        assertEquals(new RunState.Ending(RunOutcome.COMPLETED, "finish reached"), supervisor.check());
+        view.trueDistanceM = 1.0649;
+        assertEquals(new RunState.Ending(RunOutcome.COMPLETED, "finish reached by odometry; 1.06 m from it in truth"),
+                supervisor.check(), "the finish is the controller's belief; the truth is measured beside it");
+    }
+
+    @Test
+    void withoutGroundTruthTheFinishClaimsOnlyOdometry() {
+        advance(S, S);
+        view.done = true;
+        assertEquals(new RunState.Ending(RunOutcome.COMPLETED, "finish reached by odometry"), supervisor.check());
     }
 
     @Test

@@ -2,7 +2,9 @@ package io.rtaware.app.record;
 
 import io.rtaware.app.UserError;
 import io.rtaware.app.output.OutputFile;
+import io.rtaware.core.output.FigureText;
 import io.rtaware.core.output.OutputWrites;
+import io.rtaware.core.output.Palette;
 import io.rtaware.record.RecordingPlan;
 import io.rtaware.record.TaskCycleMessage;
 import io.rtaware.record.mcap.McapChannel;
@@ -73,7 +75,7 @@ public final class InspectCommand implements Callable<Integer> {
      * deadline plus skipped releases), stale runs (no input's generation changed since the task's
      * run before) and errors.
      */
-    private static final class TaskTiming {
+    static final class TaskTiming {
         final Histogram latenessNs = new Histogram(1, HIGHEST_NS, 2);
         final Histogram execNs = new Histogram(1, HIGHEST_NS, 2);
         final List<Double> timeS = new ArrayList<>();
@@ -274,11 +276,18 @@ public final class InspectCommand implements Callable<Integer> {
      * {@code /dev/full.png}, {@code --plot ''} wrote {@code ./.png}).
      */
     private static byte[] plotPng(Map<String, TaskTiming> tasks) throws IOException {
+        return BitmapEncoder.getBitmapBytes(latenessChart(tasks), BitmapEncoder.BitmapFormat.PNG);
+    }
+
+    /** Each task's lateness over time, one colour of {@link Palette} per task, the legend right of the plot. */
+    static XYChart latenessChart(Map<String, TaskTiming> tasks) {
         XYChart chart = new XYChartBuilder().width(1000).height(500)
                 .title("Release lateness per task (start - release)").xAxisTitle("world time since the first message (s)")
                 .yAxisTitle("lateness (ms)").build();
-        chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.InsideNW);
+        chart.getStyler().setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.OutsideE);
+        chart.getStyler().setChartBackgroundColor(java.awt.Color.WHITE);
         chart.getStyler().setMarkerSize(2);
+        int colour = 0;
         for (Map.Entry<String, TaskTiming> e : tasks.entrySet()) {
             TaskTiming t = e.getValue();
             if (t.timeS.isEmpty()) {
@@ -288,7 +297,10 @@ public final class InspectCommand implements Callable<Integer> {
             s.setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Line);
             s.setMarker(SeriesMarkers.NONE);
             s.setLineStyle(new BasicStroke(1f));
+            s.setLineColor(Palette.colour(colour++));
         }
-        return BitmapEncoder.getBitmapBytes(chart, BitmapEncoder.BitmapFormat.PNG);
+        FigureText.fitTitle(chart.getStyler().getChartTitleFont(), chart.getStyler()::setChartTitleFont,
+                () -> BitmapEncoder.getBufferedImage(chart), chart.getStyler().getChartPadding());
+        return chart;
     }
 }

@@ -130,8 +130,9 @@ final class RunArtifacts {
             // The believed path only beside a measured true one (with odometry as the referee's source they are the same).
             List<Pose2d> believed = referee == null || !"ground_truth".equals(referee.kind()) ? List.of()
                     : samples.stream().map(Referee.Sample::believed).filter(java.util.Objects::nonNull).toList();
+            String ending = run.outcome() + ": " + run.reason();
             if (writes.writeFile(dir.resolve("trajectory.png"), OutputFiles.png(new WorldRenderer().render(scenario,
-                    worldMap, poses, believed, referee == null ? List.of() : referee.missMarkers())))) {
+                    worldMap, poses, believed, referee == null ? List.of() : referee.missMarkers(), ending)))) {
                 names.add("trajectory.png");
             }
         }
@@ -184,8 +185,10 @@ final class RunArtifacts {
         sb.append(String.format(Locale.ROOT, "     mediator: obstacle won %d cycles, waypoint %d, stop %d (%d because a request was too old)%n",
                 r.mediator().get("obstacle"), r.mediator().get("waypoint"), r.mediator().get("stop"), r.staleStops()));
         for (RunSection.WaypointPass p : r.waypointPasses()) {
-            sb.append(String.format(Locale.ROOT, "     waypoint %d believed passed at %.1f s: %.2f m from it in truth (%.2f m by odometry)%n",
-                    p.index() + 1, p.tS(), p.trueDistanceM(), p.believedDistanceM()));
+            sb.append(String.format(Locale.ROOT, "     waypoint %d believed passed at %.1f s: %s%.2f m by odometry%s%n",
+                    p.index() + 1, p.tS(), p.trueDistanceM() == null ? ""
+                            : String.format(Locale.ROOT, "%.2f m from it in truth (", p.trueDistanceM()),
+                    p.believedDistanceM(), p.trueDistanceM() == null ? "" : ")"));
         }
         sb.append(String.format(Locale.ROOT, "     scenario %s, periods %s, time scale x%s, seed %d, grid %.2f m, robot %s at %s m/s%s%n",
                 r.scenario(), options.periods(), r.timeScale(), r.seed(), navConfig.grid().resolutionM(),

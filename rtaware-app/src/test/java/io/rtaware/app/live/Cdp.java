@@ -81,8 +81,10 @@ final class Cdp implements AutoCloseable {
         URI http = URI.create(browserWs.replace("ws://", "http://"));
         // HTTP/1.1 throughout: the DevTools endpoint speaks neither h2c upgrades nor HTTP/2.
         HttpClient client = HttpClient.newBuilder().version(HttpClient.Version.HTTP_1_1).build();
-        String[] page = {null};
+        Cdp[] self = new Cdp[1];
+        WebSocket ws;
         try {
+            String[] page = {null};
             Waits.until(() -> {
                 JsonNode targets = JSON.readTree(client.send(HttpRequest.newBuilder(
                         URI.create("http://" + http.getAuthority() + "/json/list")).build(),
@@ -94,13 +96,18 @@ final class Cdp implements AutoCloseable {
                 }
                 return page[0] != null;
             }, Duration.ofSeconds(5), "a page target of chromium");
-        } catch (AssertionError e) {
-            p.destroyForcibly();
+            String pageWs = page[0];
+            ws = connect(client, pageWs, self);
+        } catch (Exception | AssertionError e) {
+            p.destroyForcibly(); // a browser whose page cannot be reached must not outlive the test
             throw e;
         }
-        String pageWs = page[0];
-        Cdp[] self = new Cdp[1];
-        WebSocket ws = client.newWebSocketBuilder().buildAsync(URI.create(pageWs), new WebSocket.Listener() {
+        self[0] = new Cdp(p, ws);
+        return self[0];
+    }
+
+    private static WebSocket connect(HttpClient client, String pageWs, Cdp[] self) throws Exception {
+        return client.newWebSocketBuilder().buildAsync(URI.create(pageWs), new WebSocket.Listener() {
             private final StringBuilder text = new StringBuilder();
 
             @Override
@@ -114,8 +121,6 @@ final class Cdp implements AutoCloseable {
                 return null;
             }
         }).get(10, TimeUnit.SECONDS);
-        self[0] = new Cdp(p, ws);
-        return self[0];
     }
 
     private void receive(String message) {

@@ -99,6 +99,8 @@ class LiveBrowserTest {
                 JsonNode reloaded = awaitPage(browser, "!!latest && latest.state === 'finished' && rows.length === 6", 15);
                 assertTrue(reloaded.path("final").asText().contains("completed"), "the same summary after a reload: "
                         + reloaded);
+                assertTrue(reloaded.path("final").asText().matches("(?s).*completed: finish reached by odometry; "
+                        + "\\d+\\.\\d\\d m from it in truth.*"), "the ending says what is true: " + reloaded);
                 assertTrue(reloaded.path("final").asText().contains("1 of 1 by odometry"),
                         "the final page says which figures are the robot's belief: " + reloaded);
                 assertTrue(reloaded.path("final").asText().contains("in truth (ground truth)")

@@ -59,6 +59,11 @@ class RunEndToEndTest {
         assertEquals(0, pass.path("index").asInt(), "the finish was believed passed: " + run);
         assertTrue(pass.path("believed_distance_m").asDouble() <= 0.3 + 1e-9, "by odometry within tolerance: " + run);
         assertTrue(pass.path("true_distance_m").asDouble() >= 0, "and measured in truth: " + run);
+        String ending = String.format(java.util.Locale.ROOT, "completed (finish reached by odometry; %.2f m from it in truth)",
+                pass.path("true_distance_m").asDouble());
+        assertTrue(printed.contains("run: " + ending), "the terminal says the finish is odometry's and how far the"
+                + " truth was: " + ending + " in\n" + printed);
+        assertTrue(Files.readString(out.resolve("report.md")).contains("run: " + ending), "and report.md");
         assertTrue(run.path("distance_to_finish_m").asDouble() < 1.0, "near the finish in truth: " + run);
         assertTrue(run.path("mediator").has("obstacle") && run.path("mediator").has("waypoint"), run.toString());
         assertTrue(run.path("distance_travelled_m").asDouble() > 1.2, "the robot drove the leg (odometry may stop it short): " + run);

@@ -3,6 +3,8 @@ package io.rtaware.bench.compare;
 import io.rtaware.bench.load.BenchSpec;
 import io.rtaware.bench.load.BusyWork;
 import io.rtaware.core.monitor.ThreadSetup;
+import io.rtaware.core.output.FigureText;
+import io.rtaware.core.output.Palette;
 import io.rtaware.core.time.MonotonicSleeper;
 import java.awt.BasicStroke;
 import java.awt.Color;
@@ -15,6 +17,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
@@ -142,12 +145,16 @@ public final class TaskSweep {
         int colour = 0;
         for (Map.Entry<String, List<Point>> e : byExecutor.entrySet()) {
             double[] x = e.getValue().stream().mapToDouble(Point::tasks).toArray();
-            Color c = COLOURS[colour++ % COLOURS.length];
+            Color c = Palette.colour(colour++);
             line(misses.addSeries(e.getKey(), x, e.getValue().stream().mapToDouble(Point::missPct).toArray()), c, false);
             line(lateness.addSeries(e.getKey() + " p99", x,
                     e.getValue().stream().mapToDouble(p -> Math.max(1, p.run().latenessUs().p99())).toArray()), c, false);
             line(lateness.addSeries(e.getKey() + " p99.9", x,
                     e.getValue().stream().mapToDouble(p -> Math.max(1, p.run().latenessUs().p999())).toArray()), c, true);
+        }
+        for (XYChart chart : List.of(misses, lateness)) {
+            FigureText.fitTitle(chart.getStyler().getChartTitleFont(), chart.getStyler()::setChartTitleFont,
+                    () -> BitmapEncoder.getBufferedImage(chart), chart.getStyler().getChartPadding());
         }
         BufferedImage image = new BufferedImage(WIDTH, 2 * HEIGHT, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
@@ -157,9 +164,6 @@ public final class TaskSweep {
         g.dispose();
         return image;
     }
-
-    private static final Color[] COLOURS = {new Color(0x1f77b4), new Color(0xd62728), new Color(0x2ca02c),
-        new Color(0xff7f0e), new Color(0x7f7f7f)};
 
     private static XYChart chart(String title, String yTitle, boolean logY) {
         XYChart chart = new XYChartBuilder().width(WIDTH).height(HEIGHT).title(title)

@@ -1,6 +1,8 @@
 package io.rtaware.experiment.report;
 
+import io.rtaware.core.output.FigureText;
 import io.rtaware.core.output.OutputFiles;
+import io.rtaware.core.output.Palette;
 import io.rtaware.experiment.ExperimentSummary;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
 import io.rtaware.experiment.PeriodSet;
@@ -17,8 +19,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import org.knowm.xchart.BitmapEncoder;
-import org.knowm.xchart.BoxChart;
-import org.knowm.xchart.BoxChartBuilder;
 import org.knowm.xchart.CategoryChart;
 import org.knowm.xchart.CategoryChartBuilder;
 import org.knowm.xchart.VectorGraphicsEncoder;
@@ -32,7 +32,9 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
 /**
  * Draws the experiment's figures with XChart, each as PNG and SVG: missed deadlines per task
  * per set (the paper's Fig. 7), per set over all four tasks (Fig. 8), box plots of run time and
- * distance to the finish per set, and every run's path over the course.
+ * distance to the finish per set (with every run as a dot), and every run's path over the course.
+ * Every figure takes its colours from {@link Palette}, keeps its legend outside the plot, and
+ * shrinks a title that would not fit ({@link #fitTitle}).
  */
 public final class Figures {
 
@@ -47,11 +49,11 @@ public final class Figures {
     /** Every run's path, one colour per set. */
     public static final String TRAJECTORIES = "trajectories";
 
-    /** Colour-blind-safe palette (Okabe and Ito), cycled for sets and tasks. */
-    static final Color[] PALETTE = {new Color(0x0072B2), new Color(0xE69F00), new Color(0x009E73),
-            new Color(0xD55E00), new Color(0xCC79A7), new Color(0x56B4E9), new Color(0xF0E442), Color.BLACK};
-
     private static final int WIDTH = 1000;
+    /** The fewest values a set needs for a box. */
+    static final int BOX_FROM = 3;
+    private static final double BOX_HALF_WIDTH = 0.25;
+    private static final double DOT_SPREAD = 0.15;
     private static final int HEIGHT = 600;
     private static final Color TRANSPARENT = new Color(0, 0, 0, 0);
 
@@ -60,10 +62,10 @@ public final class Figures {
 
     /**
      * @param index a zero-based set or task index
-     * @return its colour
+     * @return its colour, from the one palette of every figure ({@link Palette})
      */
     public static Color colour(int index) {
-        return PALETTE[index % PALETTE.length];
+        return Palette.colour(index);
     }
 
     /**
@@ -101,7 +103,9 @@ public final class Figures {
     }
 
     /**
-     * Writes a box plot per set of one quantity.
+     * Writes a box plot per set of one quantity, with every value drawn as a dot beside its box: a
+     * set of fewer than three values has no box (its quartiles would say nothing), only its dots,
+     * so a single run still shows. Each set has its colour and its legend entry with its count.
      *
      * @param samples per set label, the values
      * @param title the chart's title
@@ -116,18 +120,64 @@ public final class Figures {
             noData(title, dir, name);
             return;
         }
-        BoxChart chart = new BoxChartBuilder().width(WIDTH).height(HEIGHT).title(title)
-                .xAxisTitle("experiment set (series with no values are left out)").yAxisTitle(yTitle).build();
+        save(boxChart(samples, title, yTitle), dir, name);
+    }
+
+    /** The box plot of {@link #boxPlot} as a chart: set i (from 1) at x = i, its dots spread across the box. */
+    static XYChart boxChart(Map<String, double[]> samples, String title, String yTitle) {
+        XYChart chart = new XYChartBuilder().width(WIDTH).height(HEIGHT).title(title)
+                .xAxisTitle("experiment set; box: quartiles and median, whiskers to the extremes (3 runs or more);"
+                        + " dots: each run").yAxisTitle(yTitle).build();
         style(chart.getStyler());
-        chart.getStyler().setLegendVisible(false);
-        int i = 0;
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.OutsideE);
+        chart.getStyler().setXAxisTicksVisible(false);
+        chart.getStyler().setMarkerSize(9);
+        int colour = 0;
+        int x = 0;
         for (Map.Entry<String, double[]> e : samples.entrySet()) {
-            if (e.getValue().length > 0) {
-                chart.addSeries(e.getKey() + " (n=" + e.getValue().length + ")", e.getValue()).setFillColor(colour(i));
+            double[] values = e.getValue().clone();
+            Color c = colour(colour++);
+            if (values.length == 0) {
+                continue;
             }
-            i++;
+            x++;
+            java.util.Arrays.sort(values);
+            if (values.length >= BOX_FROM) {
+                box(chart, e.getKey(), x, values, c);
+            }
+            double[] xs = new double[values.length];
+            double spread = Math.min(DOT_SPREAD, DOT_SPREAD * (values.length - 1) / 10.0);
+            for (int i = 0; i < values.length; i++) {
+                xs[i] = values.length == 1 ? x : x - spread + 2 * spread * i / (values.length - 1);
+            }
+            XYSeries dots = chart.addSeries(e.getKey() + " (n=" + values.length + ")", xs, values);
+            dots.setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter);
+            dots.setMarker(SeriesMarkers.CIRCLE).setMarkerColor(c);
         }
-        save(chart, dir, name);
+        chart.getStyler().setXAxisMin(0.4).setXAxisMax(x + 0.6);
+        return chart;
+    }
+
+    /** A box from the lower to the upper quartile with the median across it, whiskers to the extremes. */
+    private static void box(XYChart chart, String set, int x, double[] sorted, Color c) {
+        org.apache.commons.math3.stat.descriptive.rank.Percentile p = new org.apache.commons.math3.stat.descriptive.rank.Percentile();
+        p.setData(sorted);
+        double q1 = p.evaluate(25);
+        double median = p.evaluate(50);
+        double q3 = p.evaluate(75);
+        double l = x - BOX_HALF_WIDTH;
+        double r = x + BOX_HALF_WIDTH;
+        segment(chart, set + " box", new double[] {l, r, r, l, l}, new double[] {q1, q1, q3, q3, q1}, c, 1.5f);
+        segment(chart, set + " median", new double[] {l, r}, new double[] {median, median}, c, 3f);
+        segment(chart, set + " low", new double[] {x, x}, new double[] {sorted[0], q1}, c, 1.5f);
+        segment(chart, set + " high", new double[] {x, x}, new double[] {q3, sorted[sorted.length - 1]}, c, 1.5f);
+    }
+
+    private static void segment(XYChart chart, String name, double[] xs, double[] ys, Color c, float width) {
+        XYSeries s = chart.addSeries(name, xs, ys);
+        s.setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Line);
+        s.setMarker(SeriesMarkers.NONE).setLineColor(c).setLineStyle(new BasicStroke(width));
+        s.setShowInLegend(false);
     }
 
     /**
@@ -213,8 +263,7 @@ public final class Figures {
     private static XYChart trajectoryChart(ExperimentSummary summary, List<Trajectory> paths, MapBackground background,
                                            WorldBounds frame, int height) {
         XYChart chart = new XYChartBuilder().width(WIDTH).height(height)
-                .title("Paths driven: true (solid) and believed (dashed), one colour per set"
-                        + (background.image().isPresent() ? ", over the course" : ""))
+                .title("Paths driven, one colour per set: true (solid), believed by odometry (dashed)")
                 .xAxisTitle("x (m)").yAxisTitle("y (m)").build();
         style(chart.getStyler());
         chart.getStyler().setXAxisMin(frame.minXM()).setXAxisMax(frame.maxXM());
@@ -250,6 +299,7 @@ public final class Figures {
             s.setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter);
             s.setMarker(SeriesMarkers.DIAMOND).setMarkerColor(Color.BLACK);
         }
+        fitTitle(chart);
         return chart;
     }
 
@@ -257,7 +307,7 @@ public final class Figures {
         CategoryChart chart = new CategoryChartBuilder().width(WIDTH).height(HEIGHT).title(title)
                 .xAxisTitle("experiment set").yAxisTitle(yTitle).build();
         style(chart.getStyler());
-        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNE);
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.OutsideE);
         chart.getStyler().setYAxisMin(0.0);
         chart.getStyler().setLabelsVisible(true);
         chart.getStyler().setLabelsFont(new Font(Font.SANS_SERIF, Font.BOLD, 11));
@@ -294,8 +344,21 @@ public final class Figures {
     }
 
     static void save(Chart<?, ?> chart, Path dir, String name) throws IOException {
+        fitTitle(chart);
         OutputFiles.write(dir.resolve(name + ".png"), OutputFiles.png(BitmapEncoder.getBufferedImage(chart)));
         saveSvg(chart, dir, name);
+    }
+
+    /**
+     * Shrinks the chart's title font until the title, as the chart paints it (centred over the
+     * plot, which a legend beside it moves), stays clear of the chart's padding on both sides.
+     *
+     * @param chart a chart with its title and series set
+     */
+    static void fitTitle(Chart<?, ?> chart) {
+        Styler styler = chart.getStyler();
+        FigureText.fitTitle(styler.getChartTitleFont(), styler::setChartTitleFont,
+                () -> BitmapEncoder.getBufferedImage(chart), styler.getChartPadding());
     }
 
     /**

@@ -23,8 +23,11 @@ import java.util.List;
  * grey, the start as a green disc of the robot's size with a heading line, waypoints as blue
  * tolerance circles numbered 1..n, the finish in red, and optionally a driven trajectory (a
  * dark blue polyline), the path the robot believed it drove (its odometry, a dashed purple
- * polyline) and markers (orange crosses, e.g. where deadlines were missed); a legend of what is
- * drawn (top right) and a 1 m scale bar (bottom left). The scenario's actors are drawn where
+ * polyline) and markers (orange crosses, e.g. where deadlines were missed). Beside the map, in a
+ * panel of its own on the right so that it never covers what is drawn, an optional caption (e.g.
+ * how a run ended, wrapped to the panel), a legend of what is drawn and a 1 m scale bar. The
+ * map keeps its pixels: a point (x, y) of the world is at the same pixel with and without the
+ * panel. The scenario's actors are drawn where
  * they start, bodies filled in orange with their paths dashed, doors and obstacles outlined with
  * the time they close or appear.
  * Without a map, the picture spans the scenario's points with a margin. Write an image with
@@ -37,14 +40,23 @@ public final class WorldRenderer {
     private static final Color OBSTACLE = Color.BLACK;
     private static final Color UNKNOWN = new Color(0xB0, 0xB0, 0xB0);
     private static final Color START = new Color(0x1B, 0x9E, 0x3E);
-    private static final Color WAYPOINT = new Color(0x1F, 0x5F, 0xD0);
-    private static final Color FINISH = new Color(0xD0, 0x20, 0x20);
+    /** The waypoints' tolerance circles. */
+    static final Color WAYPOINT = new Color(0x1F, 0x5F, 0xD0);
+    /** The finish's tolerance circle. */
+    static final Color FINISH = new Color(0xD0, 0x20, 0x20);
     private static final Color PATH = new Color(0x10, 0x20, 0x70);
-    private static final Color MARKER = new Color(0xF0, 0x80, 0x00);
+    /** The markers' crosses. */
+    static final Color MARKER = new Color(0xF0, 0x80, 0x00);
     private static final Color BELIEVED = new Color(0xC0, 0x30, 0xB0);
     private static final Color ACTOR = new Color(0xE0, 0x60, 0x10);
     private static final Color ACTOR_PATH = new Color(0x90, 0x60, 0x30);
     private static final int LEGEND_FONT_PX = 13;
+    /** Space between the map and the panel, and around the panel's contents, pixels. */
+    private static final int PANEL_MARGIN_PX = 10;
+    /** The narrowest panel: the caption wraps to this width less the margins. */
+    private static final int PANEL_MIN_WIDTH_PX = 300;
+    /** Height the scale bar and its label take, pixels. */
+    private static final int SCALE_BAR_HEIGHT_PX = LEGEND_FONT_PX + 18;
 
     private final double pixelsPerM;
     private final double robotRadiusM;
@@ -106,6 +118,23 @@ public final class WorldRenderer {
      */
     public BufferedImage render(Scenario scenario, OccupancyMap map, List<Pose2d> trajectory, List<Pose2d> believed,
                                 List<Point2d> markers) {
+        return render(scenario, map, trajectory, believed, markers, null);
+    }
+
+    /**
+     * Draws the scenario, the true path, the believed path and markers, with a caption, a legend
+     * and a 1 m scale bar in a panel right of the map.
+     *
+     * @param scenario start and waypoints
+     * @param map the map to draw, or null to draw a blank area around the points
+     * @param trajectory poses driven in truth, in order (may be empty)
+     * @param believed the robot's own pose estimates at the same moments (may be empty)
+     * @param markers points to mark (may be empty)
+     * @param caption a sentence above the legend (e.g. how the run ended), wrapped to the panel, or null
+     * @return the image
+     */
+    public BufferedImage render(Scenario scenario, OccupancyMap map, List<Pose2d> trajectory, List<Pose2d> believed,
+                                List<Point2d> markers, String caption) {
         double minX;
         double minY;
         double maxX;
@@ -139,11 +168,23 @@ public final class WorldRenderer {
         }
         int w = Math.max(1, (int) Math.ceil((maxX - minX) * pixelsPerM));
         int h = Math.max(1, (int) Math.ceil((maxY - minY) * pixelsPerM));
-        BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        Legend legend = legend(trajectory.size() >= 2, believed.size() >= 2, !markers.isEmpty(), scenario.actors());
+        Font legendFont = new Font(Font.SANS_SERIF, Font.PLAIN, LEGEND_FONT_PX);
+        int panelW = Math.max(Math.max(PANEL_MIN_WIDTH_PX, legend.width(legendFont) + 2 * PANEL_MARGIN_PX),
+                (int) Math.ceil(pixelsPerM) + 3 * PANEL_MARGIN_PX); // the 1 m scale bar fits too
+        Font captionFont = new Font(Font.SANS_SERIF, Font.BOLD, LEGEND_FONT_PX + 1);
+        List<String> captionLines = caption == null ? List.of()
+                : wrap(caption, captionFont, panelW - 2 * PANEL_MARGIN_PX);
+        int captionH = captionLines.size() * (LEGEND_FONT_PX + 5) + (captionLines.isEmpty() ? 0 : PANEL_MARGIN_PX);
+        int panelH = PANEL_MARGIN_PX + captionH + legend.height() + PANEL_MARGIN_PX + SCALE_BAR_HEIGHT_PX
+                + PANEL_MARGIN_PX;
+        int imageW = w + PANEL_MARGIN_PX + panelW;
+        int imageH = Math.max(h, panelH);
+        BufferedImage img = new BufferedImage(imageW, imageH, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = img.createGraphics();
         try {
             g.setColor(FREE);
-            g.fillRect(0, 0, w, h);
+            g.fillRect(0, 0, imageW, imageH);
             if (map != null) {
                 drawMap(img, map, minX, maxY);
             }
@@ -155,12 +196,49 @@ public final class WorldRenderer {
             drawPath(g, v, believed, BELIEVED, true);
             drawPath(g, v, trajectory, PATH, false);
             drawMarkers(g, v, markers);
-            drawLegend(g, w, h, trajectory.size() >= 2, believed.size() >= 2, !markers.isEmpty(), scenario.actors());
-            drawScaleBar(g, h);
+            // The panel, right of the map: its background covers labels that ran past the map's edge.
+            int x0 = w + PANEL_MARGIN_PX;
+            g.setColor(FREE);
+            g.fillRect(x0, 0, panelW, imageH);
+            g.setColor(Color.GRAY);
+            g.setStroke(new BasicStroke(1f));
+            g.drawLine(w, 0, w, h - 1);
+            int y = PANEL_MARGIN_PX;
+            g.setFont(captionFont);
+            g.setColor(Color.BLACK);
+            for (String line : captionLines) {
+                y += LEGEND_FONT_PX + 5;
+                g.drawString(line, x0 + PANEL_MARGIN_PX, y - 4);
+            }
+            y += captionLines.isEmpty() ? 0 : PANEL_MARGIN_PX;
+            drawLegend(g, legend, legendFont, x0 + PANEL_MARGIN_PX, y);
+            drawScaleBar(g, x0 + PANEL_MARGIN_PX, y + legend.height() + PANEL_MARGIN_PX + SCALE_BAR_HEIGHT_PX - 8);
         } finally {
             g.dispose();
         }
         return img;
+    }
+
+    /** Breaks a sentence at spaces into lines no wider than {@code widthPx} (a longer word stands alone). */
+    private static List<String> wrap(String text, Font font, int widthPx) {
+        java.awt.font.FontRenderContext frc = new java.awt.font.FontRenderContext(null, true, true);
+        List<String> lines = new ArrayList<>();
+        StringBuilder line = new StringBuilder();
+        for (String word : text.split(" ")) {
+            String candidate = line.length() == 0 ? word : line + " " + word;
+            if (line.length() > 0 && font.getStringBounds(candidate, frc).getWidth() > widthPx) {
+                lines.add(line.toString());
+                line.setLength(0);
+                line.append(word);
+            } else {
+                line.setLength(0);
+                line.append(candidate);
+            }
+        }
+        if (line.length() > 0) {
+            lines.add(line.toString());
+        }
+        return lines;
     }
 
     private static List<Pose2d> concat(List<Pose2d> a, List<Pose2d> b) {
@@ -310,65 +388,66 @@ public final class WorldRenderer {
         return new java.awt.geom.Rectangle2D.Double(cx - w / 2, cy - h / 2, w, h);
     }
 
-    /** The legend, top right: one line per kind of thing drawn. */
-    private void drawLegend(Graphics2D g, int w, int h, boolean truePath, boolean believedPath, boolean markers,
-                            List<ActorSpec> actors) {
-        List<String> labels = new ArrayList<>();
-        List<Color> colours = new ArrayList<>();
-        List<Integer> kinds = new ArrayList<>(); // 0 line, 1 dashed, 2 cross, 3 circle
+    /** The legend's entries: one line per kind of thing drawn; kind 0 line, 1 dashed, 2 cross, 3 circle, 4 disc, 5 box. */
+    private record Legend(List<String> labels, List<Color> colours, List<Integer> kinds) {
+        int height() {
+            return labels.size() * (LEGEND_FONT_PX + 4) + 8;
+        }
+
+        int width(Font font) {
+            java.awt.font.FontRenderContext frc = new java.awt.font.FontRenderContext(null, true, true);
+            double textW = 0;
+            for (String l : labels) {
+                textW = Math.max(textW, font.getStringBounds(l, frc).getWidth());
+            }
+            return (int) Math.ceil(textW) + 40;
+        }
+
+        void add(String label, Color colour, int kind) {
+            labels.add(label);
+            colours.add(colour);
+            kinds.add(kind);
+        }
+    }
+
+    private static Legend legend(boolean truePath, boolean believedPath, boolean markers, List<ActorSpec> actors) {
+        Legend legend = new Legend(new ArrayList<>(), new ArrayList<>(), new ArrayList<>());
         if (truePath) {
-            labels.add("true path (ground truth)");
-            colours.add(PATH);
-            kinds.add(0);
+            legend.add("true path (ground truth)", PATH, 0);
         }
         if (believedPath) {
-            labels.add("believed path (odometry)");
-            colours.add(BELIEVED);
-            kinds.add(1);
+            legend.add("believed path (odometry)", BELIEVED, 1);
         }
         if (markers) {
-            labels.add("deadline missed");
-            colours.add(MARKER);
-            kinds.add(2);
+            legend.add("deadline missed", MARKER, 2);
         }
         if (actors.stream().anyMatch(ActorSpec::moves)) {
-            labels.add("person or body at its start, its path");
-            colours.add(ACTOR);
-            kinds.add(4);
+            legend.add("person or body at its start, its path", ACTOR, 4);
         }
         if (actors.stream().anyMatch(a -> a.kind() != ActorSpec.Kind.BODY)) {
-            labels.add("door or obstacle, from the time shown");
-            colours.add(ACTOR);
-            kinds.add(5);
+            legend.add("door or obstacle, from the time shown", ACTOR, 5);
         }
-        labels.add("waypoint (tolerance)");
-        colours.add(WAYPOINT);
-        kinds.add(3);
-        labels.add("finish");
-        colours.add(FINISH);
-        kinds.add(3);
-        Font font = new Font(Font.SANS_SERIF, Font.PLAIN, LEGEND_FONT_PX);
+        legend.add("waypoint (tolerance)", WAYPOINT, 3);
+        legend.add("finish", FINISH, 3);
+        return legend;
+    }
+
+    /** The legend in the panel, its top left corner at ({@code x0}, {@code y0}). */
+    private void drawLegend(Graphics2D g, Legend legend, Font font, int x0, int y0) {
         g.setFont(font);
         int line = LEGEND_FONT_PX + 4;
-        int textW = 0;
-        for (String l : labels) {
-            textW = Math.max(textW, g.getFontMetrics().stringWidth(l));
-        }
-        int boxW = textW + 40;
-        int boxH = labels.size() * line + 8;
-        int x0 = Math.max(0, w - boxW - 8);
-        int y0 = 8;
-        g.setColor(new Color(255, 255, 255, 220));
-        g.fillRect(x0, y0, boxW, boxH);
+        int boxW = legend.width(font);
         g.setColor(Color.GRAY);
         g.setStroke(new BasicStroke(1f));
-        g.drawRect(x0, y0, boxW, boxH);
+        g.drawRect(x0, y0, boxW, legend.height());
+        List<String> labels = legend.labels();
         for (int i = 0; i < labels.size(); i++) {
             int cy = y0 + 4 + i * line + line / 2;
-            g.setColor(colours.get(i));
-            switch (kinds.get(i)) {
+            int kind = legend.kinds().get(i);
+            g.setColor(legend.colours().get(i));
+            switch (kind) {
                 case 0, 1 -> {
-                    g.setStroke(stroke(kinds.get(i) == 1));
+                    g.setStroke(stroke(kind == 1));
                     g.draw(new Line2D.Double(x0 + 6, cy, x0 + 30, cy));
                 }
                 case 2 -> {
@@ -391,13 +470,9 @@ public final class WorldRenderer {
         }
     }
 
-    /** A 1 m scale bar, bottom left. */
-    private void drawScaleBar(Graphics2D g, int h) {
+    /** A 1 m scale bar in the panel, its line at ({@code x0}, {@code y}). */
+    private void drawScaleBar(Graphics2D g, int x0, int y) {
         double len = pixelsPerM;
-        int x0 = 10;
-        int y = h - 12;
-        g.setColor(new Color(255, 255, 255, 220));
-        g.fillRect(x0 - 4, y - LEGEND_FONT_PX - 10, (int) len + 8, LEGEND_FONT_PX + 18);
         g.setColor(Color.BLACK);
         g.setStroke(new BasicStroke(2f));
         g.draw(new Line2D.Double(x0, y, x0 + len, y));
