@@ -37,20 +37,18 @@ final class ParkLoopSegment implements SegmentExecutor {
         long t0 = System.nanoTime();
         for (int i = 0; i < specs.size(); i++) {
             BenchSpec spec = specs.get(i);
-            ReleaseStats taskStats = stats.get(i);
-            long firstNs = t0 + spec.offsetNs();
-            Thread thread = new Thread(() -> loop(firstNs, spec.periodNs(), spec.workNs(), taskStats),
-                    "park-" + spec.name());
+            GridTask task = new GridTask(t0 + spec.offsetNs(), spec.periodNs(), spec.workNs(), work, stats.get(i),
+                    System::nanoTime);
+            Thread thread = new Thread(() -> loop(task), "park-" + spec.name());
             thread.setDaemon(true);
             threads.add(thread);
         }
         threads.forEach(Thread::start);
     }
 
-    private void loop(long t0Ns, long periodNs, long workNs, ReleaseStats stats) {
-        long k = 0;
+    private void loop(GridTask task) {
         while (running) {
-            long releaseNs = t0Ns + k * periodNs;
+            long releaseNs = task.releaseNs();
             long remainingNs;
             while ((remainingNs = releaseNs - System.nanoTime()) > 0 && running) {
                 LockSupport.parkNanos(remainingNs);
@@ -58,15 +56,7 @@ final class ParkLoopSegment implements SegmentExecutor {
             if (!running) {
                 return;
             }
-            long startNs = System.nanoTime();
-            work.burn(workNs);
-            long endNs = System.nanoTime();
-            stats.onRun(releaseNs, startNs, endNs);
-            long next = Math.max(k + 1, Math.floorDiv(endNs - t0Ns + periodNs - 1, periodNs));
-            if (next > k + 1) {
-                stats.onSkipped(next - k - 1, endNs);
-            }
-            k = next;
+            task.run();
         }
     }
 

@@ -2,6 +2,8 @@ package io.rtaware.bench.compare;
 
 import io.rtaware.bench.load.BenchSpec;
 import io.rtaware.bench.load.BusyWork;
+import io.rtaware.core.conditions.Conditions;
+import io.rtaware.core.conditions.StaticConditions;
 import io.rtaware.core.time.MonotonicSleeper;
 import java.awt.BasicStroke;
 import java.awt.Color;
@@ -9,6 +11,9 @@ import java.awt.Font;
 import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;
 import java.io.PrintStream;
+import java.time.Instant;
+import java.time.ZoneOffset;
+import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -32,6 +37,8 @@ public final class TaskSweep {
 
     private static final int WIDTH = 900;
     private static final int HEIGHT = 420;
+    private static final int CAPTION_LINE = 18;
+    private static final int CAPTION_MARGIN = 10;
 
     /**
      * One executor at one task count.
@@ -48,6 +55,8 @@ public final class TaskSweep {
     }
 
     private final List<Point> points = new ArrayList<>();
+    /** Rows asked for but not run, by task count. */
+    private final Map<Integer, List<String>> leftOut = new LinkedHashMap<>();
 
     /**
      * Runs one comparison per task count.
@@ -62,7 +71,11 @@ public final class TaskSweep {
             throws InterruptedException {
         for (int count : counts) {
             progress.printf("sweep: %d task(s)%n", count);
-            for (RunResult r : comparison.forTasks(count).run()) {
+            CompareRun run = comparison.forTasks(count);
+            if (!run.leftOut().isEmpty()) {
+                leftOut(count, run.leftOut());
+            }
+            for (RunResult r : run.run()) {
                 add(count, r);
             }
         }
@@ -85,15 +98,15 @@ public final class TaskSweep {
      * @param measuredNs measured time per executor
      * @param segmentNs segment length
      * @param progress progress lines
-     * @param family the executors
+     * @param rows the rows, labels of {@link CompareRun#ROWS}
      * @param workers pool size
      * @param sleeper how rtaware's threaded executor sleeps its task threads (null: they park)
      * @return how each count's comparison is built
      */
     public static Comparison comparison(java.util.function.IntFunction<List<BenchSpec>> specsOf, BusyWork work,
                                         long measuredNs, long segmentNs, PrintStream progress,
-                                        CompareRun.Family family, int workers, MonotonicSleeper sleeper) {
-        return tasks -> new CompareRun(specsOf.apply(tasks), work, measuredNs, segmentNs, progress, family, workers,
+                                        List<String> rows, int workers, MonotonicSleeper sleeper) {
+        return tasks -> new CompareRun(specsOf.apply(tasks), work, measuredNs, segmentNs, progress, rows, workers,
                 sleeper);
     }
 
@@ -105,12 +118,50 @@ public final class TaskSweep {
         points.add(new Point(tasks, run));
     }
 
+    /**
+     * @param tasks a task count
+     * @param rows the rows asked for that its comparison left out
+     */
+    void leftOut(int tasks, List<String> rows) {
+        leftOut.put(tasks, List.copyOf(rows));
+    }
+
+    /**
+     * @return one line per task count at which rows asked for were not run, e.g. {@code not run at
+     *     10000 tasks: rtaware, stpe, park-loop (a thread per task, more than 1000 per core)}
+     */
+    public List<String> leftOutLines() {
+        return leftOut.entrySet().stream().map(e -> String.format(Locale.ROOT,
+                "not run at %d tasks: %s (a thread per task, more than %d per core)", e.getKey(),
+                String.join(", ", e.getValue()), CompareRun.THREAD_PER_TASK_LIMIT_PER_CORE)).toList();
+    }
+
+    /**
+     * The conditions a figure shows under its plots.
+     *
+     * @param conditions measured over the sweep
+     * @param date when it ran
+     * @return the lines: machine, JVM, the load verdict, the date
+     */
+    public static List<String> caption(Conditions conditions, Instant date) {
+        StaticConditions setup = conditions.setup();
+        String virtual = Boolean.TRUE.equals(setup.virtualized())
+                ? ", virtual" + (setup.hypervisor() == null ? "" : " (" + setup.hypervisor() + ")") : "";
+        return List.of(
+                String.format(Locale.ROOT, "machine: %s, %d CPUs%s, %s", setup.cpuModel(), setup.logicalCpus(), virtual,
+                        setup.kernel()),
+                "JVM: " + setup.jvmVendor() + " " + setup.jvmVersion() + ", " + String.join(", ", setup.collectors()),
+                conditions.summaryLine(),
+                "run " + DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm 'UTC'", Locale.ROOT)
+                        .format(date.atZone(ZoneOffset.UTC)));
+    }
+
     /** @return every executor at every task count */
     public List<Point> points() {
         return List.copyOf(points);
     }
 
-    /** @return the table: one line per executor and task count */
+    /** @return the table: one line per executor and task count, then the rows left out */
     public String table() {
         StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "%-14s %7s %9s %8s | %10s %10s%n",
                 "executor", "tasks", "releases", "misses%", "late p99", "p99.9"));
@@ -119,17 +170,19 @@ public final class TaskSweep {
                     p.tasks(), p.run().releases(), p.missPct(), p.run().latenessUs().p99(),
                     p.run().latenessUs().p999()));
         }
+        leftOutLines().forEach(line -> sb.append(line).append(System.lineSeparator()));
         return sb.toString();
     }
 
     /**
-     * Draws the two plots, one above the other, as one image (write it with
-     * {@code OutputFiles.png}).
+     * Draws the two plots, one above the other, and under them the caption and a line for each
+     * task count at which rows were left out, as one image (write it with {@code OutputFiles.png}).
      *
      * @param subtitle what was run (period, work, machine), shown in the titles
+     * @param caption the conditions ({@link #caption}), one line each
      * @return the image
      */
-    public BufferedImage plot(String subtitle) {
+    public BufferedImage plot(String subtitle, List<String> caption) {
         Map<String, List<Point>> byExecutor = new LinkedHashMap<>();
         for (Point p : points) {
             byExecutor.computeIfAbsent(p.run().executor(), k -> new ArrayList<>()).add(p);
@@ -146,17 +199,28 @@ public final class TaskSweep {
             line(lateness.addSeries(e.getKey() + " p99.9", x,
                     e.getValue().stream().mapToDouble(p -> Math.max(1, p.run().latenessUs().p999())).toArray()), c, true);
         }
-        BufferedImage image = new BufferedImage(WIDTH, 2 * HEIGHT, BufferedImage.TYPE_INT_RGB);
+        List<String> notes = new ArrayList<>(leftOutLines());
+        notes.addAll(caption);
+        BufferedImage image = new BufferedImage(WIDTH, 2 * HEIGHT + CAPTION_MARGIN + notes.size() * CAPTION_LINE,
+                BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
         misses.paint(g, WIDTH, HEIGHT);
         g.translate(0, HEIGHT);
         lateness.paint(g, WIDTH, HEIGHT);
+        g.translate(0, HEIGHT);
+        g.setColor(Color.WHITE);
+        g.fillRect(0, 0, WIDTH, image.getHeight() - 2 * HEIGHT);
+        g.setColor(Color.BLACK);
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+        for (int i = 0; i < notes.size(); i++) {
+            g.drawString(notes.get(i), CAPTION_MARGIN, (i + 1) * CAPTION_LINE);
+        }
         g.dispose();
         return image;
     }
 
     private static final Color[] COLOURS = {new Color(0x1f77b4), new Color(0xd62728), new Color(0x2ca02c),
-        new Color(0xff7f0e), new Color(0x7f7f7f)};
+        new Color(0xff7f0e), new Color(0x7f7f7f), new Color(0x9467bd), new Color(0x8c564b)};
 
     private static XYChart chart(String title, String yTitle, boolean logY) {
         XYChart chart = new XYChartBuilder().width(WIDTH).height(HEIGHT).title(title)
