@@ -48,12 +48,7 @@ final class AgronaWheelSegment implements SegmentExecutor {
     @Override
     public void start(List<BenchSpec> specs, List<ReleaseStats> stats) {
         long t0 = System.nanoTime();
-        GridTask[] tasks = new GridTask[specs.size()];
-        for (int i = 0; i < tasks.length; i++) {
-            BenchSpec spec = specs.get(i);
-            tasks[i] = new GridTask(t0 + spec.offsetNs(), spec.periodNs(), spec.workNs(), work, stats.get(i),
-                    System::nanoTime);
-        }
+        GridTask[] tasks = GridTask.of(specs, stats, t0, work);
         long longestNs = specs.stream().mapToLong(BenchSpec::periodNs).max().orElse(0);
         WheelLoop loop = new WheelLoop(tasks, t0, ticksPerWheel(longestNs), System::nanoTime);
         running = true;

@@ -1,6 +1,8 @@
 package io.rtaware.bench.compare;
 
+import io.rtaware.bench.load.BenchSpec;
 import io.rtaware.bench.load.BusyWork;
+import java.util.List;
 import java.util.function.LongSupplier;
 
 /**
@@ -40,6 +42,23 @@ final class GridTask {
         this.work = work;
         this.stats = stats;
         this.nanoTime = nanoTime;
+    }
+
+    /**
+     * @param specs the tasks
+     * @param stats their bookkeeping, in the same order
+     * @param t0Ns the instant every task's offset counts from
+     * @param work the calibrated busy loop
+     * @return one task each, on {@link System#nanoTime()}, first released at {@code t0 + offset}
+     */
+    static GridTask[] of(List<BenchSpec> specs, List<ReleaseStats> stats, long t0Ns, BusyWork work) {
+        GridTask[] tasks = new GridTask[specs.size()];
+        for (int i = 0; i < tasks.length; i++) {
+            BenchSpec spec = specs.get(i);
+            tasks[i] = new GridTask(t0Ns + spec.offsetNs(), spec.periodNs(), spec.workNs(), work, stats.get(i),
+                    System::nanoTime);
+        }
+        return tasks;
     }
 
     /** @return the release due next, ns */

@@ -57,10 +57,7 @@ final class NettyWheelSegment implements SegmentExecutor {
         timer.start();
         running = true;
         long t0 = System.nanoTime();
-        for (int i = 0; i < specs.size(); i++) {
-            BenchSpec spec = specs.get(i);
-            GridTask task = new GridTask(t0 + spec.offsetNs(), spec.periodNs(), spec.workNs(), work, stats.get(i),
-                    System::nanoTime);
+        for (GridTask task : GridTask.of(specs, stats, t0, work)) {
             new Rearming(task, timer, () -> running, System::nanoTime).arm();
         }
     }

@@ -35,11 +35,10 @@ final class ParkLoopSegment implements SegmentExecutor {
     public void start(List<BenchSpec> specs, List<ReleaseStats> stats) {
         running = true;
         long t0 = System.nanoTime();
-        for (int i = 0; i < specs.size(); i++) {
-            BenchSpec spec = specs.get(i);
-            GridTask task = new GridTask(t0 + spec.offsetNs(), spec.periodNs(), spec.workNs(), work, stats.get(i),
-                    System::nanoTime);
-            Thread thread = new Thread(() -> loop(task), "park-" + spec.name());
+        GridTask[] tasks = GridTask.of(specs, stats, t0, work);
+        for (int i = 0; i < tasks.length; i++) {
+            GridTask task = tasks[i];
+            Thread thread = new Thread(() -> loop(task), "park-" + specs.get(i).name());
             thread.setDaemon(true);
             threads.add(thread);
         }
