@@ -8,6 +8,7 @@ import io.rtaware.core.time.MonotonicSleeper;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
+import java.awt.FontMetrics;
 import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;
 import java.io.PrintStream;
@@ -39,6 +40,7 @@ public final class TaskSweep {
     private static final int HEIGHT = 420;
     private static final int CAPTION_LINE = 18;
     private static final int CAPTION_MARGIN = 10;
+    private static final Font CAPTION_FONT = new Font(Font.SANS_SERIF, Font.PLAIN, 12);
 
     /**
      * One executor at one task count.
@@ -141,14 +143,14 @@ public final class TaskSweep {
      *
      * @param conditions measured over the sweep
      * @param date when it ran
-     * @return the lines: machine, JVM, the load verdict, the date
+     * @return the lines: the host, the JVM, rtaware's verdict on the machine's load, the date
      */
     public static List<String> caption(Conditions conditions, Instant date) {
         StaticConditions setup = conditions.setup();
         String virtual = Boolean.TRUE.equals(setup.virtualized())
                 ? ", virtual" + (setup.hypervisor() == null ? "" : " (" + setup.hypervisor() + ")") : "";
         return List.of(
-                String.format(Locale.ROOT, "machine: %s, %d CPUs%s, %s", setup.cpuModel(), setup.logicalCpus(), virtual,
+                String.format(Locale.ROOT, "host: %s, %d CPUs%s, %s", setup.cpuModel(), setup.logicalCpus(), virtual,
                         setup.kernel()),
                 "JVM: " + setup.jvmVendor() + " " + setup.jvmVersion() + ", " + String.join(", ", setup.collectors()),
                 conditions.summaryLine(),
@@ -199,8 +201,10 @@ public final class TaskSweep {
             line(lateness.addSeries(e.getKey() + " p99.9", x,
                     e.getValue().stream().mapToDouble(p -> Math.max(1, p.run().latenessUs().p999())).toArray()), c, true);
         }
-        List<String> notes = new ArrayList<>(leftOutLines());
-        notes.addAll(caption);
+        List<String> given = new ArrayList<>(leftOutLines());
+        given.addAll(caption);
+        List<String> notes = wrap(given, new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB).createGraphics()
+                .getFontMetrics(CAPTION_FONT), WIDTH - 2 * CAPTION_MARGIN);
         BufferedImage image = new BufferedImage(WIDTH, 2 * HEIGHT + CAPTION_MARGIN + notes.size() * CAPTION_LINE,
                 BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
@@ -211,12 +215,40 @@ public final class TaskSweep {
         g.setColor(Color.WHITE);
         g.fillRect(0, 0, WIDTH, image.getHeight() - 2 * HEIGHT);
         g.setColor(Color.BLACK);
-        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+        g.setFont(CAPTION_FONT);
         for (int i = 0; i < notes.size(); i++) {
             g.drawString(notes.get(i), CAPTION_MARGIN, (i + 1) * CAPTION_LINE);
         }
         g.dispose();
         return image;
+    }
+
+    /**
+     * Breaks each line at spaces so that it fits the width (a word wider than it stays whole).
+     *
+     * @param lines the lines
+     * @param metrics the font's
+     * @param widthPx the width
+     * @return the lines as drawn
+     */
+    static List<String> wrap(List<String> lines, FontMetrics metrics, int widthPx) {
+        List<String> wrapped = new ArrayList<>();
+        for (String line : lines) {
+            StringBuilder current = new StringBuilder();
+            for (String word : line.split(" ")) {
+                String candidate = current.length() == 0 ? word : current + " " + word;
+                if (current.length() > 0 && metrics.stringWidth(candidate) > widthPx) {
+                    wrapped.add(current.toString());
+                    current.setLength(0);
+                    current.append("    ").append(word);
+                } else {
+                    current.setLength(0);
+                    current.append(candidate);
+                }
+            }
+            wrapped.add(current.toString());
+        }
+        return wrapped;
     }
 
     private static final Color[] COLOURS = {new Color(0x1f77b4), new Color(0xd62728), new Color(0x2ca02c),

@@ -5,6 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.rtaware.core.conditions.Conditions;
 import io.rtaware.core.conditions.ConditionsMeter;
+import java.awt.Font;
+import java.awt.FontMetrics;
 import java.awt.image.BufferedImage;
 import java.time.Instant;
 import java.util.List;
@@ -50,10 +52,24 @@ class TaskSweepTest {
         Conditions conditions = ConditionsMeter.ofThisProcess().start(1.0, "none").finish(10);
         List<String> caption = TaskSweep.caption(conditions, Instant.parse("2026-11-27T23:40:12Z"));
         assertEquals(4, caption.size(), "machine, JVM, load verdict, date");
-        assertTrue(caption.get(0).startsWith("machine: "), caption.get(0));
+        assertTrue(caption.get(0).startsWith("host: "), caption.get(0));
         assertTrue(caption.get(1).startsWith("JVM: "), caption.get(1));
         assertEquals(conditions.summaryLine(), caption.get(2));
         assertEquals("run 2026-11-27 23:40 UTC", caption.get(3));
-        assertEquals(850 + 5 * 18, sweep.plot("period 10 ms", caption).getHeight(), "a line each under the plots");
+        assertEquals(850 + 5 * 18, sweep.plot("period 10 ms", List.of("a", "b", "c", "d")).getHeight(),
+                "a line each under the plots, the row left out first");
+    }
+
+    @Test
+    void aCaptionLineWiderThanTheFigureIsBrokenAtSpaces() {
+        FontMetrics metrics = new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB).createGraphics()
+                .getFontMetrics(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
+        String verdict = "machine: busy (other processes used 1.6 of 2 CPUs (more than 0.10); 40 JVM stops longer "
+                + "than 1.00 ms (0.1 of the shortest period, 10.0 ms of wall time) in 5000 such periods)";
+        List<String> lines = TaskSweep.wrap(List.of("run 2026-11-27 23:34 UTC", verdict), metrics, 400);
+        assertEquals("run 2026-11-27 23:34 UTC", lines.get(0));
+        assertTrue(lines.size() > 2, lines.toString());
+        assertTrue(lines.stream().allMatch(l -> metrics.stringWidth(l) <= 400), lines.toString());
+        assertEquals(verdict, String.join(" ", lines.subList(1, lines.size())).replaceAll(" +", " "));
     }
 }
