@@ -94,7 +94,8 @@ import picocli.CommandLine.Option;
                 "",
                 "--compare runs the same task set on rtaware (threaded and pooled executors), on",
                 "ScheduledThreadPoolExecutor (one thread per task, and one pool of --workers threads)",
-                "and on a bare parkNanos loop (the floor for a Java thread), interleaved in segments",
+                "on a bare parkNanos loop (the floor for a Java thread) and on the timer wheels of Netty",
+                "and Agrona (netty-wheel, agrona-wheel), interleaved in segments",
                 "so all of them see the same machine noise, and prints",
                 "lateness, misses, bursts, CPU and bytes allocated per release side by side",
                 "(JSON schema rtaware.bench-compare/1 with --json)."})
@@ -155,8 +156,8 @@ public final class BenchCommand implements Callable<Integer> {
     boolean failOnAlloc;
 
     @Option(names = "--compare", description = "Run the task set on rtaware (threaded, pooled), ScheduledThreadPoolExecutor "
-            + "(per task, pooled) and a bare parkNanos loop, interleaved, and compare them; --duration is the "
-            + "measured time per executor.")
+            + "(per task, pooled), a bare parkNanos loop and the timer wheels of Netty (netty-wheel) and Agrona "
+            + "(agrona-wheel), interleaved, and compare them; --duration is the measured time per executor.")
     boolean compare;
 
     @Option(names = "--segment", converter = DurationConverter.class, defaultValue = "2s",
@@ -202,8 +203,9 @@ public final class BenchCommand implements Callable<Integer> {
 
     @Option(names = "--executor", paramLabel = "threaded|pooled",
             description = "Executor of the periodic tasks: threaded (a thread per task) or pooled (--workers "
-                    + "threads, earliest deadline first). With --compare: compare only that family "
-                    + "(default: threaded for a run, both for --compare).")
+                    + "threads, earliest deadline first). With --compare: compare only that family, or the rows "
+                    + "named, e.g. rtaware-pooled,netty-wheel,agrona-wheel (default: threaded for a run, every row "
+                    + "for --compare).")
     String executor;
 
     @Option(names = "--sleep", paramLabel = "nanosleep|park",
@@ -307,7 +309,10 @@ public final class BenchCommand implements Callable<Integer> {
             throw new UserError("--segment must be at least two periods, got " + Durations.format(segmentNs));
         }
         if (executor != null && !executor.equals("threaded") && !executor.equals("pooled")) {
-            throw new UserError("--executor must be threaded or pooled, got " + executor);
+            if (!compare) {
+                throw new UserError("--executor must be threaded or pooled, got " + executor);
+            }
+            compareRows(); // a comparison's rows by their labels: a bad one ends the command here
         }
         if (workers != null && (workers < 1 || workers > Math.min(taskCount, ExecutorKind.Pooled.maxWorkers()))) {
             // a worker runs one task at a time; past 16 per core a pool is a thread per task (ExecutorKind.Pooled)
@@ -332,23 +337,35 @@ public final class BenchCommand implements Callable<Integer> {
         }
     }
 
-    private CompareRun.Family family() {
-        return executor == null ? CompareRun.Family.ALL
-                : executor.equals("pooled") ? CompareRun.Family.POOLED : CompareRun.Family.THREADED;
+    /** @return the rows --executor asks a comparison for: a family, or row labels such as netty-wheel,agrona-wheel */
+    private List<String> compareRows() {
+        if (executor == null || executor.equals("threaded") || executor.equals("pooled")) {
+            return (executor == null ? CompareRun.Family.ALL : executor.equals("pooled") ? CompareRun.Family.POOLED
+                    : CompareRun.Family.THREADED).rows();
+        }
+        try {
+            return CompareRun.rows(executor);
+        } catch (IllegalArgumentException e) {
+            throw new UserError("--executor: " + e.getMessage());
+        }
     }
 
     private int sweep(BusyWork work) throws IOException, InterruptedException {
         PrintStream out = System.out;
         List<Integer> counts = sweepTasks.stream().sorted().distinct().toList();
+        ConditionsMeter.Span span = ConditionsMeter.ofThisProcess().start(1.0, "none");
+        java.time.Instant started = java.time.Instant.now();
         TaskSweep sweep = new TaskSweep().run(counts, TaskSweep.comparison(n -> uniform(n), work, durationNs,
-                segmentNs, System.err, family(), workerCount(), sleeper, comparedThreadSetup()), System.err);
+                segmentNs, System.err, compareRows(), workerCount(), sleeper, comparedThreadSetup()), System.err);
+        Conditions measured = span.finish(periodNs / 1e6);
         out.printf(Locale.ROOT, "sweep: period %s, work %s, %s measured per executor and count; %s, %s%n",
                 Durations.format(periodNs), Durations.format(workNs), Durations.format(durationNs),
                 System.getProperty("java.vm.version"), CompareRun.collectors());
         out.print(sweep.table());
         OutputWrites writes = new OutputWrites(System.err);
         if (writes.writeFile(plot, OutputFiles.png(sweep.plot("period " + Durations.format(periodNs) + ", work "
-                + Durations.format(workNs) + ", " + Runtime.getRuntime().availableProcessors() + " cores")))) {
+                + Durations.format(workNs) + ", " + Runtime.getRuntime().availableProcessors() + " cores",
+                TaskSweep.caption(measured, started))))) {
             out.println("plot written to " + plot);
         }
         return writes.exitStatus(0);
@@ -361,9 +378,12 @@ public final class BenchCommand implements Callable<Integer> {
 
     private int compare(List<BenchSpec> specs, BusyWork work) throws IOException, InterruptedException {
         PrintStream out = System.out;
-        CompareRun.Family family = family();
-        CompareRun run = new CompareRun(specs, work, durationNs, segmentNs, System.err, family, workerCount(),
+        CompareRun run = new CompareRun(specs, work, durationNs, segmentNs, System.err, compareRows(), workerCount(),
                 sleeper, comparedThreadSetup());
+        if (run.rows().isEmpty()) {
+            throw new UserError("--compare: " + String.join(", ", run.leftOut()) + " need a thread per task, and "
+                    + specs.size() + " tasks are too many for this machine's cores; choose a pooled row");
+        }
         ConditionsMeter.Span span = ConditionsMeter.ofThisProcess().start(1.0, "none");
         List<RunResult> runs = run.run();
         Conditions measured = span.finish(specs.stream().mapToLong(BenchSpec::periodNs).min().orElse(0) / 1e6);

@@ -13,13 +13,13 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.function.Supplier;
+import java.util.Set;
 import java.util.concurrent.locks.LockSupport;
 import java.util.stream.Collectors;
 
 /**
- * Runs the same task set on rtaware, on {@code ScheduledThreadPoolExecutor} and on a bare
- * parkNanos loop, <b>interleaved in segments</b>: round r runs one segment of each executor, in
+ * Runs the same task set on rtaware, on {@code ScheduledThreadPoolExecutor}, on a bare
+ * parkNanos loop and on the timer wheels of Netty and Agrona, <b>interleaved in segments</b>: round r runs one segment of each executor, in
  * an order rotated by r, so every executor sees the same machine noise (on a shared host, back
  * to back runs of a minute differ by up to 10x in the tail). Round 0 is a warm-up (JIT) and is
  * not counted. Each segment starts fresh threads; the {@link #settleNs} after its executor's
@@ -39,7 +39,8 @@ public final class CompareRun {
     private final int rounds;
     private final PrintStream progress;
     private final com.sun.management.ThreadMXBean threads;
-    private final Family family;
+    private final List<String> rows;
+    private final List<String> leftOut;
     private final int workers;
     private final MonotonicSleeper sleeper;
     private final ThreadSetup threadSetup;
@@ -60,14 +61,54 @@ public final class CompareRun {
         return tasks <= (long) THREAD_PER_TASK_LIMIT_PER_CORE * Runtime.getRuntime().availableProcessors();
     }
 
-    /** Which executors a comparison runs, besides the park loop (left out with the thread-per-task ones). */
+    /** Every row a comparison can run, by its executor label, in the table's order. */
+    public static final List<String> ROWS = List.of("rtaware", "rtaware-pooled", "stpe", "stpe-pooled", "park-loop",
+            "netty-wheel", "agrona-wheel");
+
+    /** The rows with a thread per task, left out beyond {@link #THREAD_PER_TASK_LIMIT_PER_CORE}. */
+    public static final Set<String> THREAD_PER_TASK_ROWS = Set.of("rtaware", "stpe", "park-loop");
+
+    /** The sets of rows {@code bench --executor} names; each has the park loop, the floor. */
     public enum Family {
-        /** rtaware threaded and pooled, STPE per task and pooled. */
-        ALL,
+        /** Every row. */
+        ALL(ROWS),
         /** rtaware threaded and STPE with a thread per task. */
-        THREADED,
-        /** rtaware pooled and STPE with one pool of the same size. */
-        POOLED
+        THREADED(List.of("rtaware", "stpe", "park-loop")),
+        /**
+         * rtaware pooled, STPE with one pool of the same size, and the timer wheels (one thread
+         * each, for many timers).
+         */
+        POOLED(List.of("rtaware-pooled", "stpe-pooled", "park-loop", "netty-wheel", "agrona-wheel"));
+
+        private final List<String> rows;
+
+        Family(List<String> rows) {
+            this.rows = rows;
+        }
+
+        /** @return the family's rows, in the table's order */
+        public List<String> rows() {
+            return rows;
+        }
+    }
+
+    /**
+     * Reads a list of row labels, as {@code bench --compare --executor netty-wheel,agrona-wheel} gives it.
+     *
+     * @param labels labels of {@link #ROWS}, comma-separated
+     * @return them in the table's order, each once
+     * @throws IllegalArgumentException naming the first label that is not a row
+     */
+    public static List<String> rows(String labels) {
+        Set<String> wanted = new java.util.HashSet<>();
+        for (String label : labels.split(",", -1)) {
+            if (!ROWS.contains(label.strip())) {
+                throw new IllegalArgumentException("no comparison row '" + label.strip() + "'; rows: "
+                        + String.join(", ", ROWS));
+            }
+            wanted.add(label.strip());
+        }
+        return ROWS.stream().filter(wanted::contains).toList();
     }
 
     /**
@@ -76,18 +117,22 @@ public final class CompareRun {
      * @param measuredNs measured time wanted per executor; rounded up to whole segments
      * @param segmentNs length of one executor's turn
      * @param progress where to print one line per round
-     * @param family which executors to compare (the park loop runs too: it is the floor; see {@link #THREAD_PER_TASK_LIMIT_PER_CORE})
+     * @param rows the rows to run, labels of {@link #ROWS} (those of {@link #THREAD_PER_TASK_ROWS} are left
+     *     out beyond {@link #THREAD_PER_TASK_LIMIT_PER_CORE})
      * @param workers threads of the pooled executors (rtaware's pool and the pooled STPE)
      * @param sleeper how rtaware's threaded executor sleeps its task threads (null: they park)
      * @param threadSetup run on rtaware's task threads and workers (e.g. the smallest timer slack); null for none.
      *     The other rows' threads keep the JVM's and the kernel's defaults, as a user's would
      */
     public CompareRun(List<BenchSpec> specs, BusyWork work, long measuredNs, long segmentNs, PrintStream progress,
-                      Family family, int workers, MonotonicSleeper sleeper, ThreadSetup threadSetup) {
-        this.family = family;
+                      List<String> rows, int workers, MonotonicSleeper sleeper, ThreadSetup threadSetup) {
+        this.threadSetup = threadSetup;
+        boolean threadPerTask = threadPerTaskFits(specs.size());
+        this.rows = ROWS.stream().filter(rows::contains)
+                .filter(r -> threadPerTask || !THREAD_PER_TASK_ROWS.contains(r)).toList();
+        this.leftOut = ROWS.stream().filter(rows::contains).filter(r -> !this.rows.contains(r)).toList();
         this.workers = workers;
         this.sleeper = sleeper;
-        this.threadSetup = threadSetup;
         this.specs = List.copyOf(specs);
         this.work = work;
         this.segmentNs = segmentNs;
@@ -110,6 +155,16 @@ public final class CompareRun {
         return Math.min(segmentNs / 2, Math.max(200_000_000L, 3 * longest));
     }
 
+    /** @return the rows this comparison runs, in the table's order */
+    public List<String> rows() {
+        return rows;
+    }
+
+    /** @return the rows asked for that this task count leaves out (too many threads for the cores) */
+    public List<String> leftOut() {
+        return leftOut;
+    }
+
     /** @return measured time per executor, ns */
     public long measuredNs() {
         return rounds * (segmentNs - settleNs);
@@ -118,8 +173,7 @@ public final class CompareRun {
     /**
      * Runs warm-up and measured rounds.
      *
-     * @return one row per executor: rtaware, rtaware-pooled, stpe, stpe-pooled, park-loop (those
-     *     of the family)
+     * @return one row per executor run, in the order of {@link #ROWS}
      * @throws InterruptedException if interrupted
      */
     public List<RunResult> run() throws InterruptedException {
@@ -127,43 +181,39 @@ public final class CompareRun {
             threads.setThreadCpuTimeEnabled(true);
         }
         ThreadAllocation.prepare();
-        Map<String, Supplier<SegmentExecutor>> executors = new LinkedHashMap<>();
-        boolean threadPerTask = threadPerTaskFits(specs.size());
-        if (!threadPerTask) {
+        if (!leftOut.isEmpty()) {
             progress.printf("compare: %d tasks is more than %d per core: the executors with a thread per task "
-                    + "(rtaware, stpe, park-loop) are left out%n", specs.size(), THREAD_PER_TASK_LIMIT_PER_CORE);
-        }
-        if (family != Family.POOLED && threadPerTask) {
-            executors.put("rtaware", () -> new RtawareSegment(work, "rtaware", ExecutorKind.threaded(), sleeper, threadSetup));
-        }
-        if (family != Family.THREADED) {
-            executors.put("rtaware-pooled", () -> new RtawareSegment(work, "rtaware-pooled",
-                    ExecutorKind.pooled(workers, ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST), sleeper, threadSetup));
-        }
-        if (family != Family.POOLED && threadPerTask) {
-            executors.put("stpe", () -> new StpeSegment(work, 0));
-        }
-        if (family != Family.THREADED) {
-            executors.put("stpe-pooled", () -> new StpeSegment(work, workers));
-        }
-        if (threadPerTask) {
-            executors.put("park-loop", () -> new ParkLoopSegment(work));
+                    + "(%s) are left out%n", specs.size(), THREAD_PER_TASK_LIMIT_PER_CORE, String.join(", ", leftOut));
         }
         Map<String, ExecutorTotals> totals = new LinkedHashMap<>();
-        executors.keySet().forEach(name -> totals.put(name, new ExecutorTotals(name)));
+        rows.forEach(name -> totals.put(name, new ExecutorTotals(name)));
         List<ReleaseStats> stats = new ArrayList<>();
         for (BenchSpec spec : specs) {
             stats.add(new ReleaseStats(spec.periodNs()));
         }
-        List<String> names = new ArrayList<>(executors.keySet());
         for (int round = 0; round <= rounds; round++) {
             progress.printf("compare: round %d/%d%s%n", round, rounds, round == 0 ? " (warm-up, not counted)" : "");
-            for (int i = 0; i < names.size(); i++) {
-                String name = names.get((round + i) % names.size());
-                runSegment(executors.get(name).get(), stats, round == 0 ? null : totals.get(name));
+            for (int i = 0; i < rows.size(); i++) {
+                String name = rows.get((round + i) % rows.size());
+                runSegment(segment(name), stats, round == 0 ? null : totals.get(name));
             }
         }
         return totals.values().stream().map(ExecutorTotals::result).toList();
+    }
+
+    /** @return a new executor of the row, for one segment */
+    private SegmentExecutor segment(String row) {
+        return switch (row) {
+            case "rtaware" -> new RtawareSegment(work, row, ExecutorKind.threaded(), sleeper, threadSetup);
+            case "rtaware-pooled" -> new RtawareSegment(work, row,
+                    ExecutorKind.pooled(workers, ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST), sleeper, threadSetup);
+            case "stpe" -> new StpeSegment(work, 0);
+            case "stpe-pooled" -> new StpeSegment(work, workers);
+            case "park-loop" -> new ParkLoopSegment(work);
+            case "netty-wheel" -> new NettyWheelSegment(work);
+            case "agrona-wheel" -> new AgronaWheelSegment(work);
+            default -> throw new IllegalArgumentException("no comparison row '" + row + "'");
+        };
     }
 
     private void runSegment(SegmentExecutor executor, List<ReleaseStats> stats, ExecutorTotals totals)

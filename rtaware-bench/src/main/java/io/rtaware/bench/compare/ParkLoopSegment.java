@@ -35,22 +35,19 @@ final class ParkLoopSegment implements SegmentExecutor {
     public void start(List<BenchSpec> specs, List<ReleaseStats> stats) {
         running = true;
         long t0 = System.nanoTime();
-        for (int i = 0; i < specs.size(); i++) {
-            BenchSpec spec = specs.get(i);
-            ReleaseStats taskStats = stats.get(i);
-            long firstNs = t0 + spec.offsetNs();
-            Thread thread = new Thread(() -> loop(firstNs, spec.periodNs(), spec.workNs(), taskStats),
-                    "park-" + spec.name());
+        GridTask[] tasks = GridTask.of(specs, stats, t0, work);
+        for (int i = 0; i < tasks.length; i++) {
+            GridTask task = tasks[i];
+            Thread thread = new Thread(() -> loop(task), "park-" + specs.get(i).name());
             thread.setDaemon(true);
             threads.add(thread);
         }
         threads.forEach(Thread::start);
     }
 
-    private void loop(long t0Ns, long periodNs, long workNs, ReleaseStats stats) {
-        long k = 0;
+    private void loop(GridTask task) {
         while (running) {
-            long releaseNs = t0Ns + k * periodNs;
+            long releaseNs = task.releaseNs();
             long remainingNs;
             while ((remainingNs = releaseNs - System.nanoTime()) > 0 && running) {
                 LockSupport.parkNanos(remainingNs);
@@ -58,15 +55,7 @@ final class ParkLoopSegment implements SegmentExecutor {
             if (!running) {
                 return;
             }
-            long startNs = System.nanoTime();
-            work.burn(workNs);
-            long endNs = System.nanoTime();
-            stats.onRun(releaseNs, startNs, endNs);
-            long next = Math.max(k + 1, Math.floorDiv(endNs - t0Ns + periodNs - 1, periodNs));
-            if (next > k + 1) {
-                stats.onSkipped(next - k - 1, endNs);
-            }
-            k = next;
+            task.run();
         }
     }
 

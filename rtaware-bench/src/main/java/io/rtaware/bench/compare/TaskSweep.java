@@ -2,6 +2,8 @@ package io.rtaware.bench.compare;
 
 import io.rtaware.bench.load.BenchSpec;
 import io.rtaware.bench.load.BusyWork;
+import io.rtaware.core.conditions.Conditions;
+import io.rtaware.core.conditions.StaticConditions;
 import io.rtaware.core.monitor.ThreadSetup;
 import io.rtaware.core.output.FigureText;
 import io.rtaware.core.output.Palette;
@@ -9,9 +11,13 @@ import io.rtaware.core.time.MonotonicSleeper;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
+import java.awt.FontMetrics;
 import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;
 import java.io.PrintStream;
+import java.time.Instant;
+import java.time.ZoneOffset;
+import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -36,6 +42,9 @@ public final class TaskSweep {
 
     private static final int WIDTH = 900;
     private static final int HEIGHT = 420;
+    private static final int CAPTION_LINE = 18;
+    private static final int CAPTION_MARGIN = 10;
+    private static final Font CAPTION_FONT = new Font(Font.SANS_SERIF, Font.PLAIN, 12);
 
     /**
      * One executor at one task count.
@@ -52,6 +61,8 @@ public final class TaskSweep {
     }
 
     private final List<Point> points = new ArrayList<>();
+    /** Rows asked for but not run, by task count. */
+    private final Map<Integer, List<String>> leftOut = new LinkedHashMap<>();
 
     /**
      * Runs one comparison per task count.
@@ -66,7 +77,11 @@ public final class TaskSweep {
             throws InterruptedException {
         for (int count : counts) {
             progress.printf("sweep: %d task(s)%n", count);
-            for (RunResult r : comparison.forTasks(count).run()) {
+            CompareRun run = comparison.forTasks(count);
+            if (!run.leftOut().isEmpty()) {
+                leftOut(count, run.leftOut());
+            }
+            for (RunResult r : run.run()) {
                 add(count, r);
             }
         }
@@ -89,7 +104,7 @@ public final class TaskSweep {
      * @param measuredNs measured time per executor
      * @param segmentNs segment length
      * @param progress progress lines
-     * @param family the executors
+     * @param rows the rows, labels of {@link CompareRun#ROWS}
      * @param workers pool size
      * @param sleeper how rtaware's threaded executor sleeps its task threads (null: they park)
      * @param threadSetup run on rtaware's task threads and workers, or null
@@ -97,9 +112,9 @@ public final class TaskSweep {
      */
     public static Comparison comparison(java.util.function.IntFunction<List<BenchSpec>> specsOf, BusyWork work,
                                         long measuredNs, long segmentNs, PrintStream progress,
-                                        CompareRun.Family family, int workers, MonotonicSleeper sleeper,
+                                        List<String> rows, int workers, MonotonicSleeper sleeper,
                                         ThreadSetup threadSetup) {
-        return tasks -> new CompareRun(specsOf.apply(tasks), work, measuredNs, segmentNs, progress, family, workers,
+        return tasks -> new CompareRun(specsOf.apply(tasks), work, measuredNs, segmentNs, progress, rows, workers,
                 sleeper, threadSetup);
     }
 
@@ -111,12 +126,50 @@ public final class TaskSweep {
         points.add(new Point(tasks, run));
     }
 
+    /**
+     * @param tasks a task count
+     * @param rows the rows asked for that its comparison left out
+     */
+    void leftOut(int tasks, List<String> rows) {
+        leftOut.put(tasks, List.copyOf(rows));
+    }
+
+    /**
+     * @return one line per task count at which rows asked for were not run, e.g. {@code not run at
+     *     10000 tasks: rtaware, stpe, park-loop (a thread per task, more than 1000 per core)}
+     */
+    public List<String> leftOutLines() {
+        return leftOut.entrySet().stream().map(e -> String.format(Locale.ROOT,
+                "not run at %d tasks: %s (a thread per task, more than %d per core)", e.getKey(),
+                String.join(", ", e.getValue()), CompareRun.THREAD_PER_TASK_LIMIT_PER_CORE)).toList();
+    }
+
+    /**
+     * The conditions a figure shows under its plots.
+     *
+     * @param conditions measured over the sweep
+     * @param date when it ran
+     * @return the lines: the host, the JVM, rtaware's verdict on the machine's load, the date
+     */
+    public static List<String> caption(Conditions conditions, Instant date) {
+        StaticConditions setup = conditions.setup();
+        String virtual = Boolean.TRUE.equals(setup.virtualized())
+                ? ", virtual" + (setup.hypervisor() == null ? "" : " (" + setup.hypervisor() + ")") : "";
+        return List.of(
+                String.format(Locale.ROOT, "host: %s, %d CPUs%s, %s", setup.cpuModel(), setup.logicalCpus(), virtual,
+                        setup.kernel()),
+                "JVM: " + setup.jvmVendor() + " " + setup.jvmVersion() + ", " + String.join(", ", setup.collectors()),
+                conditions.summaryLine(),
+                "run " + DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm 'UTC'", Locale.ROOT)
+                        .format(date.atZone(ZoneOffset.UTC)));
+    }
+
     /** @return every executor at every task count */
     public List<Point> points() {
         return List.copyOf(points);
     }
 
-    /** @return the table: one line per executor and task count */
+    /** @return the table: one line per executor and task count, then the rows left out */
     public String table() {
         StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "%-14s %7s %9s %8s | %10s %10s%n",
                 "executor", "tasks", "releases", "misses%", "late p99", "p99.9"));
@@ -125,17 +178,19 @@ public final class TaskSweep {
                     p.tasks(), p.run().releases(), p.missPct(), p.run().latenessUs().p99(),
                     p.run().latenessUs().p999()));
         }
+        leftOutLines().forEach(line -> sb.append(line).append(System.lineSeparator()));
         return sb.toString();
     }
 
     /**
-     * Draws the two plots, one above the other, as one image (write it with
-     * {@code OutputFiles.png}).
+     * Draws the two plots, one above the other, and under them the caption and a line for each
+     * task count at which rows were left out, as one image (write it with {@code OutputFiles.png}).
      *
      * @param subtitle what was run (period, work, machine), shown in the titles
+     * @param caption the conditions ({@link #caption}), one line each
      * @return the image
      */
-    public BufferedImage plot(String subtitle) {
+    public BufferedImage plot(String subtitle, List<String> caption) {
         Map<String, List<Point>> byExecutor = new LinkedHashMap<>();
         for (Point p : points) {
             byExecutor.computeIfAbsent(p.run().executor(), k -> new ArrayList<>()).add(p);
@@ -156,14 +211,56 @@ public final class TaskSweep {
             FigureText.fitTitle(chart.getStyler().getChartTitleFont(), chart.getStyler()::setChartTitleFont,
                     () -> BitmapEncoder.getBufferedImage(chart), chart.getStyler().getChartPadding());
         }
-        BufferedImage image = new BufferedImage(WIDTH, 2 * HEIGHT, BufferedImage.TYPE_INT_RGB);
+        List<String> given = new ArrayList<>(leftOutLines());
+        given.addAll(caption);
+        List<String> notes = wrap(given, new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB).createGraphics()
+                .getFontMetrics(CAPTION_FONT), WIDTH - 2 * CAPTION_MARGIN);
+        BufferedImage image = new BufferedImage(WIDTH, 2 * HEIGHT + CAPTION_MARGIN + notes.size() * CAPTION_LINE,
+                BufferedImage.TYPE_INT_RGB);
         Graphics2D g = image.createGraphics();
         misses.paint(g, WIDTH, HEIGHT);
         g.translate(0, HEIGHT);
         lateness.paint(g, WIDTH, HEIGHT);
+        g.translate(0, HEIGHT);
+        g.setColor(Color.WHITE);
+        g.fillRect(0, 0, WIDTH, image.getHeight() - 2 * HEIGHT);
+        g.setColor(Color.BLACK);
+        g.setFont(CAPTION_FONT);
+        for (int i = 0; i < notes.size(); i++) {
+            g.drawString(notes.get(i), CAPTION_MARGIN, (i + 1) * CAPTION_LINE);
+        }
         g.dispose();
         return image;
     }
+
+    /**
+     * Breaks each line at spaces so that it fits the width (a word wider than it stays whole).
+     *
+     * @param lines the lines
+     * @param metrics the font's
+     * @param widthPx the width
+     * @return the lines as drawn
+     */
+    static List<String> wrap(List<String> lines, FontMetrics metrics, int widthPx) {
+        List<String> wrapped = new ArrayList<>();
+        for (String line : lines) {
+            StringBuilder current = new StringBuilder();
+            for (String word : line.split(" ")) {
+                String candidate = current.length() == 0 ? word : current + " " + word;
+                if (current.length() > 0 && metrics.stringWidth(candidate) > widthPx) {
+                    wrapped.add(current.toString());
+                    current.setLength(0);
+                    current.append("    ").append(word);
+                } else {
+                    current.setLength(0);
+                    current.append(candidate);
+                }
+            }
+            wrapped.add(current.toString());
+        }
+        return wrapped;
+    }
+
 
     private static XYChart chart(String title, String yTitle, boolean logY) {
         XYChart chart = new XYChartBuilder().width(WIDTH).height(HEIGHT).title(title)
