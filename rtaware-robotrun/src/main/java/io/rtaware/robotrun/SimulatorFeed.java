@@ -83,6 +83,7 @@ public final class SimulatorFeed implements AutoCloseable, Agent {
         int cells = walls == null ? 1 : walls.width() * walls.height();
         Key<OccupancyGrid> mapKey = Key.of(NavKeys.MAP, OccupancyGrid.class, () -> new OccupancyGrid(cells));
         RecordingPlan plan = RobotRecordingPlan.create()
+                .withGroundTruth() // the world's own pose of the robot
                 .topic(NavKeys.MAP, RobotTopics.MAP, RobotTopics.MAP_FRAME)
                 .latched(NavKeys.MAP)
                 .metadata("command", "sim")

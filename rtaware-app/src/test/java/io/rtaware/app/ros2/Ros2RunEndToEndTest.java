@@ -174,20 +174,56 @@ public class Ros2RunEndToEndTest {
         sim.start();
         try {
             Path out = dir.resolve("run");
+            Path recording = dir.resolve("external.mcap");
             int status = -1;
             // The simulator binds its endpoint asynchronously: an unreachable router is exit 2, retry.
             for (int attempt = 0; attempt < 50 && status != 0; attempt++) {
                 status = quietly("run", "--ros2", "--zenoh", endpoint, "--namespace", "/robot1", "--scenario",
-                        shortLegUnchecked(), "--time-scale", "10", "--out", out.toString(), "--quiet");
+                        shortLegUnchecked(), "--time-scale", "10", "--out", out.toString(), "--quiet",
+                        "--record", recording.toString());
                 assertTrue(status == 0 || status == 2, "exit status " + status);
                 assertTrue(sim.isAlive(), "the simulator is serving (its exit status: " + simStatus.get() + ")");
             }
             assertEquals(0, status);
             completedReport(out, "odometry");
+            assertRecordedAsAnExternalRobot(recording, "ROS 2 robot through Zenoh at " + endpoint);
         } finally {
             sim.interrupt();
             sim.join(10_000);
         }
+    }
+
+    /**
+     * A robot reached through a router is not known to be the simulator: the file has no
+     * {@code /ground_truth} (the referee watched odometry, which is not truth), names the robot as
+     * it was reached, and gives the model only as the controller's assumption.
+     */
+    private static void assertRecordedAsAnExternalRobot(Path recording, String robot) throws Exception {
+        Map<String, String> run = new HashMap<>();
+        List<String> topics = new ArrayList<>();
+        McapReader.open(recording).read(new McapVisitor() {
+            @Override
+            public void metadata(String name, Map<String, String> entries) {
+                if (name.equals("rtaware.run")) {
+                    run.putAll(entries);
+                }
+            }
+
+            @Override
+            public void channel(McapChannel channel) {
+                topics.add(channel.topic());
+            }
+
+            @Override
+            public void message(McapChannel channel, long sequence, long logTimeNs, long publishTimeNs, byte[] data,
+                                int offset, int length) {
+                // the channels and the metadata say it
+            }
+        });
+        assertTrue(topics.contains("/odom") && !topics.contains("/ground_truth"), "no ground truth: " + topics);
+        assertEquals(robot, run.get("robot"), "metadata: " + run);
+        assertEquals(null, run.get("robot_model"), "metadata: " + run);
+        assertEquals("koala", run.get("assumed_robot_model"), "metadata: " + run);
     }
 
     @Test
