@@ -241,7 +241,7 @@ public final class RunRecorder {
                         Map.of()) : 0;
                 truth = new GroundTruthRing(layout.add(RobotTopics.GROUND_TRUTH, poseCodec.type().name(),
                         poseCodec.type().schemaText(), poseCodec.type().typeHash(), Ros2Channels.Qos.RELIABLE_VOLATILE,
-                        Map.of("frame_id", RobotTopics.MAP_FRAME)), truthTf, poseCodec, plan.valueSlots() * 8, plan.logTimeOffsetNs());
+                        Map.of("frame_id", RobotTopics.WORLD_FRAME)), truthTf, poseCodec, plan.valueSlots() * 8, plan.logTimeOffsetNs());
                 rings.add(truth);
             } else {
                 truth = null;

@@ -20,8 +20,9 @@ import java.util.Map;
  * What a nav run records where: the robot's keys as {@link RobotRecordingPlan} puts them
  * ({@code /scan}, {@code /odom}, {@code /cmd_vel}, {@code /tf}, {@code /tf_static}), the true
  * pose on {@code /ground_truth} only when something knows it (the built-in simulator's or a
- * Player server's {@code simulation:0}; never the robot's own odometry), the controller's map
- * and plan on {@code /map} (latched) and {@code /plan}, and the run's settings as the file's
+ * Player server's {@code simulation:0}; never the robot's own odometry; frame {@code world}), the
+ * controller's map and plan on {@code /map} (latched) and {@code /plan} in {@code odom}, the frame
+ * the controller builds and plans them in, and the run's settings as the file's
  * {@code rtaware.run} metadata, with the controller's configuration ({@link ControllerMetadata}:
  * what {@code rtaware replay} rebuilds the controller from). The robot is described as it was
  * ({@code robot}); its model is {@code robot_model} only for the built-in simulator, which
@@ -57,9 +58,9 @@ final class NavRecording {
                     .append(Durations.format(navConfig.periods().ns(b)));
         }
         RecordingPlan plan = RobotRecordingPlan.create()
-                .topic(NavKeys.MAP, RobotTopics.MAP, RobotTopics.MAP_FRAME)
+                .topic(NavKeys.MAP, RobotTopics.MAP, RobotTopics.ODOM_FRAME)
                 .latched(NavKeys.MAP)
-                .topic(NavKeys.PATH, RobotTopics.PLAN, RobotTopics.MAP_FRAME)
+                .topic(NavKeys.PATH, RobotTopics.PLAN, RobotTopics.ODOM_FRAME)
                 .metadata("scenario", scenario.name())
                 .metadata("periods", periods.toString())
                 .metadata("time_scale", Double.toString(settings.timeScale()))
