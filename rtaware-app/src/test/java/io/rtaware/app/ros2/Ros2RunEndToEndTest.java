@@ -117,19 +117,11 @@ public class Ros2RunEndToEndTest {
      * the URG-04LX (on its 100 ms turn grid), as sim --ros2 stamps it and the data task passes it on.
      */
     private static void assertScansStampedAtTheirFirstBeam(Path recording) throws Exception {
-        Map<String, String> run = new HashMap<>();
         List<Long> stamps = new ArrayList<>();
         LaserScanCodec codec = new LaserScanCodec();
         Ros2Header header = new Ros2Header();
         LaserScan scan = new LaserScan();
-        McapReader.open(recording).read(new McapVisitor() {
-            @Override
-            public void metadata(String name, Map<String, String> entries) {
-                if (name.equals("rtaware.run")) {
-                    run.putAll(entries);
-                }
-            }
-
+        RunMetadata file = new RunMetadata() {
             @Override
             public void message(McapChannel channel, long sequence, long logTimeNs, long publishTimeNs, byte[] data,
                                 int offset, int length) {
@@ -138,7 +130,9 @@ public class Ros2RunEndToEndTest {
                     stamps.add(header.stampNs);
                 }
             }
-        });
+        };
+        McapReader.open(recording).read(file);
+        Map<String, String> run = file.run;
         assertEquals(RecordingPlan.STAMPS_MEASURED, run.get(RecordingPlan.HEADER_STAMPS), "metadata: " + run);
         long originNs = Long.parseLong(run.get(RecordingPlan.LOG_TIME_OFFSET_NS))
                 + Long.parseLong(run.get(RecordingPlan.ROBOT_CLOCK_ORIGIN_NS));
@@ -199,31 +193,38 @@ public class Ros2RunEndToEndTest {
      * it was reached, and gives the model only as the controller's assumption.
      */
     private static void assertRecordedAsAnExternalRobot(Path recording, String robot) throws Exception {
-        Map<String, String> run = new HashMap<>();
-        List<String> topics = new ArrayList<>();
-        McapReader.open(recording).read(new McapVisitor() {
-            @Override
-            public void metadata(String name, Map<String, String> entries) {
-                if (name.equals("rtaware.run")) {
-                    run.putAll(entries);
-                }
-            }
-
-            @Override
-            public void channel(McapChannel channel) {
-                topics.add(channel.topic());
-            }
-
-            @Override
-            public void message(McapChannel channel, long sequence, long logTimeNs, long publishTimeNs, byte[] data,
-                                int offset, int length) {
-                // the channels and the metadata say it
-            }
-        });
+        RunMetadata file = new RunMetadata();
+        McapReader.open(recording).read(file);
+        List<String> topics = file.topics;
+        Map<String, String> run = file.run;
         assertTrue(topics.contains("/odom") && !topics.contains("/ground_truth"), "no ground truth: " + topics);
         assertEquals(robot, run.get("robot"), "metadata: " + run);
         assertEquals(null, run.get("robot_model"), "metadata: " + run);
         assertEquals("koala", run.get("assumed_robot_model"), "metadata: " + run);
+    }
+
+    /** A recording's {@code rtaware.run} metadata and its channels' topics; messages are read by subclasses. */
+    private static class RunMetadata implements McapVisitor {
+        final Map<String, String> run = new HashMap<>();
+        final List<String> topics = new ArrayList<>();
+
+        @Override
+        public void metadata(String name, Map<String, String> entries) {
+            if (name.equals("rtaware.run")) {
+                run.putAll(entries);
+            }
+        }
+
+        @Override
+        public void channel(McapChannel channel) {
+            topics.add(channel.topic());
+        }
+
+        @Override
+        public void message(McapChannel channel, long sequence, long logTimeNs, long publishTimeNs, byte[] data,
+                            int offset, int length) {
+            // the metadata and the channels are what this reads
+        }
     }
 
     @Test
