@@ -2,7 +2,8 @@
 // own client, @foxglove/ws-protocol (over the ws package), as Foxglove connects to a ROS 2 robot:
 // checks the Server Info and every advertised channel (cdr with a ros2msg schema), subscribes to
 // every channel, decodes every message with @foxglove/rosmsg2-serialization from the advertised
-// schema, checks the fields of /scan, /tf_static and the timing channels, and when the server
+// schema, checks the fields of /scan, /tf_static and the timing channels and that no channel goes
+// back in log time (/tf: odometry's and the ground truth's transforms), and when the server
 // closes the connection (the run is over), or once it has MIN_SCANS scans if given (a simulator,
 // which runs until stopped), prints one line "counts: {JSON}" and exits 0.
 // Exits 1 on the first failure (a line "FAIL: ...").
@@ -84,13 +85,14 @@ function done() {
 }
 
 function check(sub, timestamp, message) {
+  // Every channel in log-time order (/tf carries odometry's and the ground truth's transforms).
+  if (timestamp < sub.last) fail(`${sub.topic}: log time goes back: ${timestamp} after ${sub.last}`);
+  sub.last = timestamp;
   if (sub.topic === "/scan") {
     if (message.header.frame_id !== "laser") fail(`/scan frame '${message.header.frame_id}'`);
     if (!(message.ranges.length > 0) || !(message.angle_increment > 0) || !(message.range_max > 0)) {
       fail(`/scan without beams: ${message.ranges.length} ranges, increment ${message.angle_increment}`);
     }
-    if (timestamp < sub.last) fail(`/scan log time goes back: ${timestamp} after ${sub.last}`);
-    sub.last = timestamp;
   } else if (sub.topic.startsWith("/rtaware/timing/")) {
     if (!OUTCOMES.has(message.outcome)) fail(`${sub.topic}: outcome '${message.outcome}'`);
     if (message.end_ns < message.start_ns) {
@@ -99,8 +101,6 @@ function check(sub, timestamp, message) {
     if (!(message.exec >= 0) || !(message.lateness >= 0)) {
       fail(`${sub.topic}: exec ${message.exec} ms, lateness ${message.lateness} ms`);
     }
-    if (timestamp < sub.last) fail(`${sub.topic}: log time goes back: ${timestamp} after ${sub.last}`);
-    sub.last = timestamp;
   } else if (sub.topic === "/tf_static") {
     const children = message.transforms.map((t) => t.child_frame_id);
     if (!children.includes("laser")) fail(`/tf_static without base_link -> laser: ${children}`);

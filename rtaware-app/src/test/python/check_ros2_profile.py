@@ -11,8 +11,10 @@ Usage: check_ros2_profile.py FILE.mcap
 - ``rosbags`` ``AnyReader`` (profile check, typestore from the definitions in the file)
   deserializes every message of every channel; each ``topic_type_hash`` equals the RIHS01 hash
   rosbags computes for the Jazzy type, or, for rtaware's own ``rtaware_msgs`` types, for the
-  definition in the file; where the file has transforms, ``/tf`` and ``/tf_static`` connect
-  every header's frame to ``map`` (REP 105); no header stamp (nor transform stamp) is later
+  definition in the file; where the file has transforms, every frame has one parent and
+  ``/tf`` and ``/tf_static`` connect every header's frame to exactly one root (REP 105: a
+  frame name means one thing, e.g. ``world`` for truth and ``odom`` for odometry, never both
+  joined by a transform nobody measured); no header stamp (nor transform stamp) is later
   than its message's log time (stamps are when the data was measured, at the latest when it
   was committed).
 - ``/clock`` (where the file has it): ``rosgraph_msgs/msg/Clock`` ticks, each carrying its own
@@ -159,16 +161,32 @@ def main(path):
     print("ok: no header stamp after its log time; stamped before it (when measured): %s"
           % (", ".join("%s %d" % kv for kv in sorted(measured.items())) or "none"))
     if edges:
-        reached, todo = {"map"}, ["map"]
-        while todo:
-            parent = todo.pop()
-            for a, b in edges:
-                if a == parent and b not in reached:
-                    reached.add(b)
-                    todo.append(b)
-        check(frames <= reached, "frames not connected to map by /tf and /tf_static: %s" % sorted(frames - reached))
-        print("ok: /tf and /tf_static connect every header frame to map (%s)"
-              % ", ".join("%s->%s" % e for e in sorted(edges)))
+        # tf's rule: a frame has one parent. REP 105's: each tree is rooted at a fixed frame, and a
+        # frame name means one thing, so no frame hangs below two roots (that would claim the
+        # roots, e.g. the world's and odometry's frames, are one).
+        parents = {}
+        for a, b in edges:
+            parents.setdefault(b, set()).add(a)
+        check(all(len(p) == 1 for p in parents.values()),
+              "frames with more than one parent: %s" % sorted((b, sorted(p)) for b, p in parents.items() if len(p) > 1))
+        roots = sorted({a for a, _ in edges} - set(parents))
+
+        def below(root):
+            reached, todo = {root}, [root]
+            while todo:
+                parent = todo.pop()
+                for a, b in edges:
+                    if a == parent and b not in reached:
+                        reached.add(b)
+                        todo.append(b)
+            return reached
+
+        trees = {r: below(r) for r in roots}
+        for frame in frames | {b for _, b in edges}:
+            under = [r for r in roots if frame in trees[r]]
+            check(len(under) == 1, "frame %s is under %s of the roots %s" % (frame, len(under), roots))
+        print("ok: /tf and /tf_static connect every header frame to one root of %s (%s)"
+              % (", ".join(roots), ", ".join("%s->%s" % e for e in sorted(edges))))
 
 
 TASK_METRICS = ("release_lateness", "execution_time", "input_age", "deadline_misses")

@@ -18,6 +18,8 @@ public final class ControllerMetadata {
 
     /** Metadata entry holding the controller's configuration as JSON. */
     public static final String NAV_CONFIG = "nav_config";
+    /** Metadata entry naming the robot model the controller's configuration was derived from. */
+    public static final String ROBOT_MODEL = "robot_model";
     /** Metadata entry holding the recording machine's core count. */
     public static final String CORES = "cores";
 
@@ -42,11 +44,11 @@ public final class ControllerMetadata {
      * @param config the controller's configuration
      * @param robotModel the robot model's name
      * @param cores the recording machine's core count
-     * @return the readable metadata entries to add to {@code rtaware.run}
+     * @return the readable metadata entries to add to {@code rtaware.run} (a map the caller may change)
      */
     public static Map<String, String> entries(NavConfig config, String robotModel, int cores) {
         Map<String, String> m = new LinkedHashMap<>();
-        m.put("robot_model", robotModel);
+        m.put(ROBOT_MODEL, robotModel);
         m.put("top_speed_mps", Double.toString(config.robot().topSpeedMps()));
         m.put("inflation_margin_m", Double.toString(config.planner().inflationMarginM()));
         m.put("grid", String.format(Locale.ROOT, "%s m cells, origin (%s, %s), %s x %s m",

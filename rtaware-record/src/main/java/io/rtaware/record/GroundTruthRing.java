@@ -10,8 +10,8 @@ import java.io.IOException;
 
 /**
  * Ground-truth poses: filled by the one thread that samples them (the run's referee), written as
- * {@code geometry_msgs/msg/PoseStamped} in the {@code map} frame and, in a recording with
- * transforms, as the transform {@code map} to {@code ground_truth} on {@code /tf}.
+ * {@code geometry_msgs/msg/PoseStamped} in the {@code world} frame and, in a recording with
+ * transforms, as the transform {@code world} to {@code ground_truth} on {@code /tf}.
  */
 final class GroundTruthRing implements RecorderRing {
 
@@ -63,12 +63,12 @@ final class GroundTruthRing implements RecorderRing {
     @SuppressWarnings("unchecked")
     private void write(Sample s, long position, MessageSink sink, WriterScratch scratch) throws IOException {
         pose.set(s.xM, s.yM, s.yawRad);
-        scratch.header.set(stampOffsetNs + s.timeNs, RobotTopics.MAP_FRAME);
+        scratch.header.set(stampOffsetNs + s.timeNs, RobotTopics.WORLD_FRAME);
         codec.encode(scratch.header, pose, scratch.cdr);
         sink.write(channel, position, s.timeNs, s.timeNs, scratch.cdr.buffer(), 0, scratch.cdr.size());
         if (tfChannel != 0) {
             TransformMessages.begin(scratch.cdr, 1);
-            TransformMessages.transform(scratch.cdr, stampOffsetNs + s.timeNs, RobotTopics.MAP_FRAME, RobotTopics.GROUND_TRUTH_FRAME, s.xM, s.yM,
+            TransformMessages.transform(scratch.cdr, stampOffsetNs + s.timeNs, RobotTopics.WORLD_FRAME, RobotTopics.GROUND_TRUTH_FRAME, s.xM, s.yM,
                     s.yawRad);
             sink.write(tfChannel, position, s.timeNs, s.timeNs, scratch.cdr.buffer(), 0, scratch.cdr.size());
         }

@@ -1,28 +1,34 @@
 package io.rtaware.record;
 
-import io.rtaware.record.mcap.McapWriter;
 import java.io.IOException;
 import java.util.function.LongSupplier;
 
 /**
- * Puts the writer thread's messages into the file in log-time order, within and across chunks,
- * through a bounded reorder window: a message is held until a message {@code windowNs} of world
- * time newer has arrived (or the window's message or byte budget is full), then written with
- * every held message older than it. The rings are drained one after another, so a message can
- * arrive after a later one of another ring; within the window that is put right. A message that
- * arrives after a newer one was already written falls outside the window: it is written all the
- * same (nothing is lost) and counted ({@link #outOfOrder()}), never silently misordered.
+ * Puts the writer thread's messages in log-time order through a bounded reorder window before
+ * they go on: into the file (within and across chunks), or to a live {@link RecordingTap}. A
+ * message is held until a message {@code windowNs} of world time newer has arrived (or the
+ * window's message or byte budget is full), then passed on with every held message older than
+ * it. The rings are drained one after another, so a message can arrive after a later one of
+ * another ring (on {@code /tf}, odometry's transforms and the ground truth's); within the window
+ * that is put right. A message that arrives after a newer one was already passed on falls
+ * outside the window: the file's sink writes it all the same (nothing is lost) and counts it
+ * ({@link #outOfOrder()}, reported with the recording), never silently misordered; a tap's sink
+ * drops it (a viewer's transforms must not go back in time), so a tap gets every channel in
+ * log-time order.
  *
- * <p>Log times in the file are the world time plus {@code logTimeOffsetNs} (the Unix-epoch time
+ * <p>Log times passed on are the world time plus {@code logTimeOffsetNs} (the Unix-epoch time
  * of world time 0), publish times likewise. With {@link ClockTicks}, the {@code /clock} ticks
  * due up to each message are written just before it. With a {@link #holdAfter} limit (the end of
- * the {@code /statistics} window still to be published), nothing later than the limit is written
- * until the limit moves on, unless the window's message or byte budget is full. Writer thread
+ * the {@code /statistics} window still to be published), nothing later than the limit is passed
+ * on until the limit moves on, unless the window's message or byte budget is full. Writer thread
  * only; once its slots have grown to the run's message sizes it allocates nothing.
  */
 final class LogTimeOrderedSink implements MessageSink {
 
-    private final McapWriter writer;
+    /** Where ordered messages go, with Unix-epoch log and publish times. */
+    private final MessageSink out;
+    /** Whether a message outside the window is dropped (a tap) rather than written late (a file). */
+    private final boolean dropLate;
     private final long offsetNs;
     private final long windowNs;
     private final long budgetBytes;
@@ -50,14 +56,18 @@ final class LogTimeOrderedSink implements MessageSink {
     private LongSupplier limit;
 
     /**
-     * @param writer the file
-     * @param logTimeOffsetNs added to every world time to make the file's log time
+     * @param out where ordered messages go (the file's writer, or a tap), their times Unix-epoch
+     * @param dropLate true to drop a message that comes after a newer one was passed on (a tap),
+     *     false to pass it on late (a file, which loses nothing)
+     * @param logTimeOffsetNs added to every world time to make the log time passed on
      * @param windowNs world time a message is held for later, earlier messages
      * @param slots most messages held at once
      * @param budgetBytes most message bytes held at once
      */
-    LogTimeOrderedSink(McapWriter writer, long logTimeOffsetNs, long windowNs, int slots, long budgetBytes) {
-        this.writer = writer;
+    LogTimeOrderedSink(MessageSink out, boolean dropLate, long logTimeOffsetNs, long windowNs, int slots,
+                       long budgetBytes) {
+        this.out = out;
+        this.dropLate = dropLate;
         this.offsetNs = logTimeOffsetNs;
         this.windowNs = windowNs;
         this.budgetBytes = budgetBytes;
@@ -136,7 +146,7 @@ final class LogTimeOrderedSink implements MessageSink {
         }
     }
 
-    /** @return messages written after a message with a later log time (outside the window) */
+    /** @return messages that came after a message with a later log time was passed on (outside the window) */
     long outOfOrder() {
         return outOfOrder;
     }
@@ -153,14 +163,16 @@ final class LogTimeOrderedSink implements MessageSink {
         long t = time[slot];
         if (t < lastWrittenNs) {
             outOfOrder++;
+            if (dropLate) {
+                return;
+            }
         } else {
             lastWrittenNs = t;
             if (clock != null) {
                 clock.upTo(t);
             }
         }
-        writer.writeMessage(channel[slot], sequence[slot], t + offsetNs, publish[slot] + offsetNs, data[slot], 0,
-                length[slot]);
+        out.write(channel[slot], sequence[slot], t + offsetNs, publish[slot] + offsetNs, data[slot], 0, length[slot]);
     }
 
     private boolean before(int a, int b) {

@@ -339,10 +339,11 @@ public final class RecordingPlan {
 
     /**
      * @param key a key name
-     * @return its header's frame id ({@code map} unless set)
+     * @return its header's frame id ({@value RobotTopics#ODOM_FRAME} unless set: a controller
+     *     without localization works in its odometry frame)
      */
     public String frameOf(String key) {
-        return frames.getOrDefault(key, RobotTopics.MAP_FRAME);
+        return frames.getOrDefault(key, RobotTopics.ODOM_FRAME);
     }
 
     /**

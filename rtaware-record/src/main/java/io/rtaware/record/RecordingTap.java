@@ -8,10 +8,11 @@ package io.rtaware.record;
  *
  * <p>Channels come first, from the thread that creates the recorder, before any message.
  * Messages come from one thread at a time: the recorder's writer thread (and, for
- * {@code /tf_static}, the creating thread before the writer thread starts), in the order the
- * writer drains the rings, before the file's reorder window: within a few milliseconds of their
- * commit, in log-time order per channel but not across channels. The task threads never call a
- * tap. A tap must not block and must not throw: what it cannot send it drops and counts.
+ * {@code /tf_static}, the creating thread, at the latest when the writer thread finishes), in
+ * log-time order on every channel and across channels: through a reorder window of the tap's own
+ * (the plan's {@link RecordingPlan#reorderWindowNs}), so at most that much world time after
+ * their commit; a message that comes later than that, after a newer one was sent, is not sent.
+ * The task threads never call a tap. A tap must not block and must not throw: what it cannot send it drops and counts.
  */
 public interface RecordingTap {
 

@@ -12,11 +12,11 @@ import io.rtaware.ros2msg.value.PlanarTransform;
  * {@link RobotKeys#ODOMETRY} on {@value RobotTopics#ODOM} (frame {@value RobotTopics#ODOM_FRAME},
  * and each sample as the transform {@value RobotTopics#ODOM_FRAME} to
  * {@value RobotTopics#BASE_FRAME} on {@value RobotTopics#TF}), {@link RobotKeys#MOTOR} on
- * {@value RobotTopics#CMD_VEL}, the true pose on {@value RobotTopics#GROUND_TRUTH} (and as
- * {@value RobotTopics#MAP_FRAME} to {@value RobotTopics#GROUND_TRUTH_FRAME} on
- * {@value RobotTopics#TF}), and on {@value RobotTopics#TF_STATIC} the transforms of
+ * {@value RobotTopics#CMD_VEL}, and on {@value RobotTopics#TF_STATIC} the transforms of
  * {@link RobotTopics#STATIC_TRANSFORMS}. A key the recorder is not given is simply not recorded.
- * Add a controller's own topics and the run's metadata to the plan it returns. Stateless.
+ * Add a controller's own topics and the run's metadata to the plan it returns, and
+ * {@link RecordingPlan#withGroundTruth()} where something knows the true pose (a simulator):
+ * a robot's own odometry is not ground truth, so the plan has none of its own. Stateless.
  */
 public final class RobotRecordingPlan {
 
@@ -29,7 +29,6 @@ public final class RobotRecordingPlan {
                 .topic(RobotKeys.LASER.name(), RobotTopics.SCAN, RobotTopics.LASER_FRAME)
                 .topic(RobotKeys.ODOMETRY.name(), RobotTopics.ODOM, RobotTopics.ODOM_FRAME)
                 .topic(RobotKeys.MOTOR.name(), RobotTopics.CMD_VEL, RobotTopics.BASE_FRAME)
-                .withGroundTruth()
                 .transformsFrom(RobotKeys.ODOMETRY.name(), RobotTopics.ODOM_FRAME, RobotTopics.BASE_FRAME);
         for (PlanarTransform t : RobotTopics.STATIC_TRANSFORMS) {
             plan.staticTransform(t.parent(), t.child(), t.xM(), t.yM(), t.yawRad());

@@ -48,8 +48,9 @@ import java.util.concurrent.atomic.AtomicLong;
  * statistics window's end) plus the plan's log-time offset (Unix-epoch ns),
  * and messages are written in log-time order through a reorder window
  * ({@link LogTimeOrderedSink}). A plan's {@link RecordingTap} (a live server) is told of every
- * channel and handed every message as the writer thread encodes it, before the reorder window
- * ({@link TappedSink}); without a file the recorder works for the tap alone.
+ * channel and handed every message through a reorder window of its own ({@link TappedSink}): in
+ * log-time order on every channel, at most the plan's reorder window of world time after the
+ * writer thread encoded it; without a file the recorder works for the tap alone.
  *
  * <p>{@link #finish()} drains everything, writes the summary and the footer: call it on every exit
  * path (the run's termination handler). Thread-safety, as the rings' types say:
@@ -132,6 +133,8 @@ public final class RunRecorder {
     private final LogTimeOrderedSink ordered;
     /** {@code /statistics}, or null for a recording of no task and no key. */
     private final StatisticsChannel statistics;
+    /** The tap's and the file's sinks, or null without a tap. */
+    private final TappedSink tapped;
     /** Where the writer thread writes: the file's sink, the tap's, or both. */
     private final MessageSink sink;
     private boolean closed;
@@ -182,9 +185,11 @@ public final class RunRecorder {
         this.keyNames = names;
         List<RecorderRing> rings = new ArrayList<>();
         layout = new Ros2Channels(writer, plan.tap());
-        ordered = writer == null ? null : new LogTimeOrderedSink(writer, plan.logTimeOffsetNs(),
+        ordered = writer == null ? null : new LogTimeOrderedSink(writer::writeMessage, false, plan.logTimeOffsetNs(),
                 plan.reorderWindowNs(), REORDER_SLOTS, REORDER_BYTES);
-        sink = plan.tap() == null ? ordered : new TappedSink(plan.tap(), ordered, plan.logTimeOffsetNs());
+        tapped = plan.tap() == null ? null : new TappedSink(TappedSink.forTap(plan.tap(), plan.logTimeOffsetNs(),
+                plan.reorderWindowNs(), REORDER_SLOTS, REORDER_BYTES), ordered);
+        sink = tapped == null ? ordered : tapped;
         try {
             if (writer != null) {
                 writer.addMetadata("rtaware.run", plan.metadata());
@@ -236,7 +241,7 @@ public final class RunRecorder {
                         Map.of()) : 0;
                 truth = new GroundTruthRing(layout.add(RobotTopics.GROUND_TRUTH, poseCodec.type().name(),
                         poseCodec.type().schemaText(), poseCodec.type().typeHash(), Ros2Channels.Qos.RELIABLE_VOLATILE,
-                        Map.of("frame_id", RobotTopics.MAP_FRAME)), truthTf, poseCodec, plan.valueSlots() * 8, plan.logTimeOffsetNs());
+                        Map.of("frame_id", RobotTopics.WORLD_FRAME)), truthTf, poseCodec, plan.valueSlots() * 8, plan.logTimeOffsetNs());
                 rings.add(truth);
             } else {
                 truth = null;
@@ -407,6 +412,9 @@ public final class RunRecorder {
         try {
             if (error == null && statistics != null) {
                 statistics.finish();
+            }
+            if (error == null && tapped != null) {
+                tapped.flush();
             }
             if (error == null && writer != null) {
                 ordered.flush();

@@ -13,6 +13,8 @@ import io.rtaware.record.mcap.McapSchema;
 import io.rtaware.record.mcap.McapVisitor;
 import io.rtaware.robot.msg.LaserScan;
 import io.rtaware.robot.msg.MotionRequest;
+import io.rtaware.robot.msg.Odometry;
+import io.rtaware.robot.msg.RobotKeys;
 import io.rtaware.ros2msg.RobotTopics;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -24,6 +26,8 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -60,7 +64,7 @@ class RecordingTapTest {
     }
 
     /** Collects what the recorder hands its tap. */
-    private static final class CollectingTap implements RecordingTap {
+    private static class CollectingTap implements RecordingTap {
         final List<TapChannel> channels = new CopyOnWriteArrayList<>();
         final List<Msg> messages = new CopyOnWriteArrayList<>();
 
@@ -73,6 +77,10 @@ class RecordingTapTest {
         public void message(int channelId, long logTimeNs, byte[] data, int offset, int length) {
             assertTrue(channels.stream().anyMatch(c -> c.id() == channelId), "a message after its channel: " + channelId);
             messages.add(new Msg(channelId, logTimeNs, Arrays.copyOfRange(data, offset, offset + length)));
+        }
+
+        String topic(int channelId) {
+            return channels.stream().filter(c -> c.id() == channelId).findFirst().orElseThrow().topic();
         }
     }
 
@@ -181,6 +189,68 @@ class RecordingTapTest {
         assertEquals(1, scans, "one scan");
         assertEquals(OFFSET_NS + 1_000, tap.messages.stream().filter(m -> m.channel() == scan.id()).findFirst()
                 .orElseThrow().logTimeNs(), "the scan's log time: its commit plus the offset");
+    }
+
+    /**
+     * {@code /tf} comes from two rings (odometry's transforms and the ground truth's), which the
+     * writer drains one after the other: odometry's ring first in each pass. The tap holds the
+     * writer inside its first {@code /odom} message until the test has handed both rings a run of
+     * samples, so the writer then finds odometry's transforms up to 290 ms before the ground
+     * truth's from 210 ms on: handed on in drain order, {@code /tf} would go back in time.
+     */
+    @Test
+    void theTapGetsEveryChannelInLogTimeOrderWhenTheRingsAreDrainedOutOfOrder() throws Exception {
+        CountDownLatch inFirstOdom = new CountDownLatch(1);
+        CountDownLatch handedOver = new CountDownLatch(1);
+        CollectingTap tap = new CollectingTap() {
+            private boolean first = true;
+
+            @Override
+            public void message(int channelId, long logTimeNs, byte[] data, int offset, int length) {
+                super.message(channelId, logTimeNs, data, offset, length);
+                if (first && topic(channelId).equals(RobotTopics.ODOM)) {
+                    first = false;
+                    inFirstOdom.countDown();
+                    await(handedOver);
+                }
+            }
+        };
+        long msNs = 1_000_000L;
+        RecordingPlan plan = RobotRecordingPlan.create().withGroundTruth().logTimeOffsetNs(OFFSET_NS).reorderWindowNs(100 * msNs).tap(tap);
+        RunRecorder recorder = new RunRecorder((Path) null, List.of(), List.of(), List.of(RobotKeys.ODOMETRY), plan);
+        Odometry odometry = new Odometry();
+        recorder.commit(0, 1, 0, odometry);
+        recorder.commit(0, 2, 200 * msNs, odometry); // with a reorder window, what releases the first
+        assertTrue(inFirstOdom.await(30, TimeUnit.SECONDS), "the writer reached the first /odom");
+        for (int i = 0; i < 9; i++) {
+            long t = (210 + 10 * i) * msNs;
+            recorder.groundTruth(t, 1, 2, 0.5);
+            odometry.xM = i;
+            recorder.commit(0, 3 + i, t, odometry);
+        }
+        handedOver.countDown();
+        RecordingStats stats = recorder.finish();
+        assertNull(stats.error());
+
+        Map<Integer, Long> last = new HashMap<>();
+        for (Msg m : tap.messages) {
+            long before = last.getOrDefault(m.channel(), Long.MIN_VALUE);
+            assertTrue(m.logTimeNs() >= before, tap.topic(m.channel()) + " went back in time from "
+                    + (before - OFFSET_NS) + " to " + (m.logTimeNs() - OFFSET_NS) + " ns");
+            last.put(m.channel(), m.logTimeNs());
+        }
+        int tf = tap.channels.stream().filter(c -> c.topic().equals(RobotTopics.TF)).findFirst().orElseThrow().id();
+        assertEquals(11 + 9, tap.messages.stream().filter(m -> m.channel() == tf).count(),
+                "every odometry and ground-truth transform reached the tap");
+    }
+
+    private static void await(CountDownLatch latch) {
+        try {
+            assertTrue(latch.await(30, TimeUnit.SECONDS), "the test handed the records over");
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new AssertionError(e);
+        }
     }
 
     @Test

@@ -2,6 +2,7 @@ package io.rtaware.record;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.rtaware.robot.msg.RobotKeys;
@@ -23,15 +24,15 @@ class RobotRecordingPlanTest {
         assertEquals("odom", plan.frameOf(RobotKeys.ODOMETRY.name()));
         assertArrayEquals(new String[] {"odom", "base_link"}, plan.transformsOf(RobotKeys.ODOMETRY.name()));
         assertEquals("/cmd_vel", plan.topicOf(RobotKeys.MOTOR.name()));
-        assertTrue(plan.hasGroundTruth());
-        assertEquals(List.of(new PlanarTransform("base_link", "laser", 0, 0, 0), new PlanarTransform("map", "odom", 0, 0, 0)),
-                plan.staticTransforms());
+        assertFalse(plan.hasGroundTruth(), "a robot's odometry is not its true pose: the caller declares a truth source");
+        assertEquals(List.of(new PlanarTransform("base_link", "laser", 0, 0, 0)), plan.staticTransforms(),
+                "no map -> odom: nothing localizes, and world truth is not odometry's frame");
         assertEquals(RecordingPlan.DATA_PREFIX + "course", plan.topicOf("course"), "another key keeps its own topic");
     }
 
     @Test
     void eachCallIsANewPlanToAddAControllersTopicsTo() {
-        RecordingPlan one = RobotRecordingPlan.create().topic("map", RobotTopics.MAP, RobotTopics.MAP_FRAME);
+        RecordingPlan one = RobotRecordingPlan.create().topic("map", RobotTopics.MAP, RobotTopics.ODOM_FRAME);
 
         assertEquals("/map", one.topicOf("map"));
         assertEquals(RecordingPlan.DATA_PREFIX + "map", RobotRecordingPlan.create().topicOf("map"));

@@ -13,7 +13,9 @@ import java.util.List;
 
 /**
  * The keys of a nav run that have a ROS 2 type, in their REP 105 frames, for the ROS 2 exporter
- * ({@code run --export}): odometry also as {@code odom} to {@code base_link} on {@code /tf}; on
+ * ({@code run --export}): odometry also as {@code odom} to {@code base_link} on {@code /tf}, the
+ * occupancy grid and the planned path in {@code odom} (the controller builds and plans them on
+ * odometry, without localization); on
  * {@code /tf_static} the exporter publishes {@link RobotTopics#STATIC_TRANSFORMS}, as recordings
  * do. Stateless.
  */
@@ -32,7 +34,7 @@ final class NavExports {
                 new ExportedKey<>(RobotKeys.ODOMETRY, new OdometryCodec(RobotTopics.BASE_FRAME), RobotTopics.ODOM_FRAME,
                         RobotTopics.BASE_FRAME),
                 new ExportedKey<>(RobotKeys.MOTOR, new TwistCodec(), ""),
-                new ExportedKey<>(nav.keys().map(), new OccupancyGridCodec(), RobotTopics.MAP_FRAME),
-                new ExportedKey<>(nav.keys().path(), new PathCodec(), RobotTopics.MAP_FRAME));
+                new ExportedKey<>(nav.keys().map(), new OccupancyGridCodec(), RobotTopics.ODOM_FRAME),
+                new ExportedKey<>(nav.keys().path(), new PathCodec(), RobotTopics.ODOM_FRAME));
     }
 }

@@ -14,19 +14,28 @@ import io.rtaware.robot.geometry.Pose2d;
 import io.rtaware.ros2msg.RobotTopics;
 import io.rtaware.sim.scenario.Scenario;
 import io.rtaware.sim.server.PlayerSimServer;
+import java.util.Map;
 
 /**
  * What a nav run records where: the robot's keys as {@link RobotRecordingPlan} puts them
- * ({@code /scan}, {@code /odom}, {@code /cmd_vel}, {@code /ground_truth}, {@code /tf},
- * {@code /tf_static}), the controller's map and plan on {@code /map} (latched) and
- * {@code /plan}, and the run's settings as the file's {@code rtaware.run} metadata, with the
- * controller's configuration ({@link ControllerMetadata}: what {@code rtaware replay} rebuilds
- * the controller from). Against the built-in simulator (over Player or ROS 2), whose clock is the
+ * ({@code /scan}, {@code /odom}, {@code /cmd_vel}, {@code /tf}, {@code /tf_static}), the true
+ * pose on {@code /ground_truth} only when something knows it (the built-in simulator's or a
+ * Player server's {@code simulation:0}; never the robot's own odometry; frame {@code world}), the
+ * controller's map and plan on {@code /map} (latched) and {@code /plan} in {@code odom}, the frame
+ * the controller builds and plans them in, and the run's settings as the file's
+ * {@code rtaware.run} metadata, with the controller's configuration ({@link ControllerMetadata}:
+ * what {@code rtaware replay} rebuilds the controller from). The robot is described as it was
+ * ({@code robot}); its model is {@code robot_model} only for the built-in simulator, which
+ * simulates that model: for another robot the controller's assumed model is
+ * {@value #ASSUMED_ROBOT_MODEL}. Against the built-in simulator (over Player or ROS 2), whose clock is the
  * run's, scans and odometry are stamped when the simulator measured them; against another robot,
  * when they were committed. {@code /clock} is recorded when the world runs on simulated time: the
  * simulator, or a time scale other than 1. Stateless.
  */
 final class NavRecording {
+
+    /** Metadata entry naming the model whose parameters the controller assumed for a robot not simulated here. */
+    static final String ASSUMED_ROBOT_MODEL = "assumed_robot_model";
 
     private NavRecording() {
     }
@@ -38,27 +47,35 @@ final class NavRecording {
      * @param modelName the robot model's name
      * @param robot where the robot is, in words
      * @param simulator the built-in simulator, stepping on the run's clock, or null for another robot
+     * @param groundTruth whether something knows the true pose (then it is recorded)
      * @return the plan
      */
     static RecordingPlan plan(Scenario scenario, NavRun.Settings settings, NavConfig navConfig, String modelName,
-                              String robot, PlayerSimServer simulator) {
+                              String robot, PlayerSimServer simulator, boolean groundTruth) {
         StringBuilder periods = new StringBuilder();
         for (Behavior b : Behavior.values()) {
             periods.append(periods.length() == 0 ? "" : ",").append(b.taskName()).append('=')
                     .append(Durations.format(navConfig.periods().ns(b)));
         }
         RecordingPlan plan = RobotRecordingPlan.create()
-                .topic(NavKeys.MAP, RobotTopics.MAP, RobotTopics.MAP_FRAME)
+                .topic(NavKeys.MAP, RobotTopics.MAP, RobotTopics.ODOM_FRAME)
                 .latched(NavKeys.MAP)
-                .topic(NavKeys.PATH, RobotTopics.PLAN, RobotTopics.MAP_FRAME)
+                .topic(NavKeys.PATH, RobotTopics.PLAN, RobotTopics.ODOM_FRAME)
                 .metadata("scenario", scenario.name())
                 .metadata("periods", periods.toString())
                 .metadata("time_scale", Double.toString(settings.timeScale()))
                 .metadata("seed", Long.toString(settings.seed()))
                 .metadata("grid_resolution_m", Double.toString(settings.gridResolutionM()))
                 .metadata("robot", robot);
-        ControllerMetadata.entries(navConfig, modelName, Runtime.getRuntime().availableProcessors())
-                .forEach(plan::metadata);
+        Map<String, String> controller = ControllerMetadata.entries(navConfig, modelName,
+                Runtime.getRuntime().availableProcessors());
+        if (simulator == null) { // the model is the controller's assumption, not the robot's
+            controller.put(ASSUMED_ROBOT_MODEL, controller.remove(ControllerMetadata.ROBOT_MODEL));
+        }
+        controller.forEach(plan::metadata);
+        if (groundTruth) {
+            plan.withGroundTruth();
+        }
         ReplayableController.describe(plan, NavReplayProvider.ID, ControllerMetadata.configuration(navConfig));
         if (simulator != null) {
             plan.robotClockOriginNs(simulator.clockOriginNs()); // the simulator's timestamps are the run's clock

@@ -121,6 +121,10 @@ public final class NavRun {
     private final List<RunSection.WaypointPass> passes = new CopyOnWriteArrayList<>();
     private final CourseStatus course = new CourseStatus();
     private Monitor monitor;
+    /** The true pose's source, or null when nothing knows it; valid once {@link #trueSourceOpened}. */
+    private Referee.PoseSource trueSource;
+    private boolean trueSourceOpened;
+    /** The referee's source: {@link #trueSource}, else the robot's odometry. */
     private Referee.PoseSource truthSource;
     private Referee.PoseSource truth;
     private long startNs;
@@ -189,16 +193,28 @@ public final class NavRun {
 
     /**
      * Connects the referee's pose source to the robot, before the monitor starts (so its first
-     * sample is the pose at the start). From here on {@link #finish()} may run at any moment (a
-     * Ctrl-C during start-up runs the termination handlers).
+     * sample is the pose at the start): the true pose's source when the robot has one
+     * ({@link RobotLink#groundTruth}), else the robot's odometry. From here on {@link #finish()}
+     * may run at any moment (a Ctrl-C during start-up runs the termination handlers).
      *
      * @param monitor the monitor built from {@link #monitorBuilder()}
-     * @param recorder the run's recorder, which then records every true pose on {@code /ground_truth}, or null
+     * @param recorder the run's recorder, which then records every true pose on {@code /ground_truth}
+     *     (none when the referee watches odometry), or null
      */
     public void attach(Monitor monitor, RunRecorder recorder) {
         this.monitor = monitor;
-        this.truthSource = link.groundTruth(settings.groundTruthModel(), clock, monitor);
-        this.truth = NavRecording.recordingGroundTruth(truthSource, recorder, clock);
+        Referee.PoseSource known = trueSource();
+        this.truthSource = known != null ? known : RobotLink.odometry(monitor);
+        this.truth = known != null ? NavRecording.recordingGroundTruth(known, recorder, clock) : truthSource;
+    }
+
+    /** @return the true pose's source, connected on the first call, or null when the robot has none */
+    private Referee.PoseSource trueSource() {
+        if (!trueSourceOpened) {
+            trueSource = link.groundTruth(settings.groundTruthModel(), clock);
+            trueSourceOpened = true;
+        }
+        return trueSource;
     }
 
     /**
@@ -345,15 +361,17 @@ public final class NavRun {
 
     /**
      * What the run records where: the robot's topics ({@link io.rtaware.record.RobotRecordingPlan}),
-     * the controller's map and plan, and as {@code rtaware.run} metadata the scenario, the settings,
-     * the robot and the controller's configuration ({@link io.rtaware.nav.ControllerMetadata}, what
-     * replay rebuilds the controller from). Add the command's own metadata and a tap to it.
+     * the controller's map and plan, the true pose when the robot has a source of it (this
+     * connects that source, which {@link #attach} then uses), and as {@code rtaware.run} metadata
+     * the scenario, the settings, the robot and the controller's configuration
+     * ({@link io.rtaware.nav.ControllerMetadata}, what replay rebuilds the controller from). Add
+     * the command's own metadata and a tap to it.
      *
      * @return a new plan
      */
     public RecordingPlan recordingPlan() {
         return NavRecording.plan(scenario, settings, navConfig, model.name(), link.recordedAs(),
-                link.simulator().orElse(null));
+                link.simulator().orElse(null), trueSource() != null);
     }
 
     /**

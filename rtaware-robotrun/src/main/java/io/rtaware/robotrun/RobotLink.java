@@ -30,8 +30,9 @@ import java.util.Optional;
  * served as one, or a robot through a Zenoh router or over DDS). Gives the monitor's data task
  * (continuous, {@link ErrorPolicy#CONTINUE}: it reconnects on its own), the data task's safety
  * fault (data that cannot be true), and the referee's source of the true pose: the Player
- * server's {@code simulation:0} on a connection of its own when there is one, the robot's
- * odometry otherwise. Owns what it was given: {@link #close()} stops the ROS 2 side, then the
+ * server's {@code simulation:0} on a connection of its own when there is one (the built-in
+ * simulator, also when it serves as a ROS 2 robot; Stage), none otherwise (the referee then
+ * watches the robot's odometry, which is not recorded as ground truth). Owns what it was given: {@link #close()} stops the ROS 2 side, then the
  * simulator. Not thread-safe: opened and closed by the run's thread.
  */
 public final class RobotLink implements AutoCloseable {
@@ -135,35 +136,47 @@ public final class RobotLink implements AutoCloseable {
     }
 
     /**
-     * @return the robot as a recording's {@code robot} metadata names it: {@code built-in simulator},
-     *     {@code player HOST:PORT}, or the ROS 2 robot's description
+     * @return the robot as a recording's {@code robot} metadata names it: {@code built-in simulator}
+     *     (over Player), {@code Player at HOST:PORT}, or the ROS 2 robot's description (the
+     *     built-in simulator as a ROS 2 robot over Zenoh, a ROS 2 robot through Zenoh at a
+     *     router or over DDS)
      */
     public String recordedAs() {
-        if (simulator != null) {
-            return "built-in simulator";
+        if (ros2 != null) {
+            return ros2.describe();
         }
-        return ros2 != null ? ros2.describe() : String.format(Locale.ROOT, "player %s:%d", host, port);
+        return simulator != null ? "built-in simulator" : String.format(Locale.ROOT, "Player at %s:%d", host, port);
     }
 
     /**
-     * The referee's source of the true pose, connected now (before the monitor starts, so that
-     * its first sample is the pose at the start): the Player server's {@code simulation:0} on a
-     * connection of its own, or, when there is no Player server or it has no such device, the
-     * robot's odometry as the monitor holds it.
+     * The source of the robot's true pose, connected now (before the monitor starts, so that the
+     * referee's first sample is the pose at the start): the Player server's {@code simulation:0}
+     * on a connection of its own.
      *
      * @param modelName the robot's model name in the simulation
      * @param clock the world clock (for reconnection back-off)
+     * @return the source, or null when nothing knows the true pose: no Player server (a ROS 2
+     *     robot other than the built-in simulator), or one without {@code simulation:0} or this model
+     */
+    public Referee.PoseSource groundTruth(String modelName, Clock clock) {
+        if (host == null) {
+            return null;
+        }
+        try {
+            return GroundTruthSource.open(host, port, modelName, clock);
+        } catch (IOException e) {
+            return null; // no second connection or no simulation:0: no truth source
+        }
+    }
+
+    /**
+     * The referee's source of the robot's pose when nothing knows the true one: the robot's
+     * odometry as the monitor holds it (kind {@code odometry}).
+     *
      * @param monitor the monitor holding {@link RobotKeys#ODOMETRY}
      * @return the source
      */
-    public Referee.PoseSource groundTruth(String modelName, Clock clock, Monitor monitor) {
-        if (host != null) {
-            try {
-                return GroundTruthSource.open(host, port, modelName, clock);
-            } catch (IOException e) {
-                // No second connection or no simulation:0: fall back to odometry below.
-            }
-        }
+    public static Referee.PoseSource odometry(Monitor monitor) {
         Odometry odometry = new Odometry();
         return new Referee.PoseSource() {
             @Override

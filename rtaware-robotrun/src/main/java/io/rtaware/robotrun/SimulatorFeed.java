@@ -27,10 +27,10 @@ import org.agrona.concurrent.SleepingMillisIdleStrategy;
  * The simulated robot as a recording's tap sees a robot (what {@code rtaware sim --foxglove}
  * shows in Foxglove), through the recorder's channels and encoders (a recorder without a file,
  * feeding the tap alone) and the robot's plan ({@link RobotRecordingPlan}):
- * {@code /scan} (frame {@code laser}), {@code /odom}, {@code /ground_truth}, {@code /tf}
- * ({@code odom} to {@code base_link}, {@code map} to {@code ground_truth}), {@code /tf_static}
- * ({@code map} to {@code odom}, {@code base_link} to {@code laser}) and the scenario's walls on
- * {@code /map} (latched). A sampler ({@value #THREAD_NAME}, an {@link AgentThread}) looks at the
+ * {@code /scan} (frame {@code laser}), {@code /odom}, {@code /ground_truth} (frame {@code world}),
+ * {@code /tf} ({@code odom} to {@code base_link}, {@code world} to {@code ground_truth}),
+ * {@code /tf_static} ({@code base_link} to {@code laser}) and the scenario's walls on
+ * {@code /map} (latched, frame {@code world}). A sampler ({@value #THREAD_NAME}, an {@link AgentThread}) looks at the
  * world every {@value #SAMPLE_PERIOD_MS} ms of wall time and hands each new scan and odometry
  * sample to the recorder (the world is read under its lock, as the Player server does); the
  * recorder's writer thread encodes and sends them. A look that throws is printed once (to
@@ -83,7 +83,8 @@ public final class SimulatorFeed implements AutoCloseable, Agent {
         int cells = walls == null ? 1 : walls.width() * walls.height();
         Key<OccupancyGrid> mapKey = Key.of(NavKeys.MAP, OccupancyGrid.class, () -> new OccupancyGrid(cells));
         RecordingPlan plan = RobotRecordingPlan.create()
-                .topic(NavKeys.MAP, RobotTopics.MAP, RobotTopics.MAP_FRAME)
+                .withGroundTruth() // the world's own pose of the robot
+                .topic(NavKeys.MAP, RobotTopics.MAP, RobotTopics.WORLD_FRAME) // the scenario's walls, where they are
                 .latched(NavKeys.MAP)
                 .metadata("command", "sim")
                 .metadata("scenario", scenario.name())

@@ -1,6 +1,7 @@
 package io.rtaware.robotrun;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -13,6 +14,7 @@ import io.rtaware.replay.ReplayProviders;
 import io.rtaware.robot.geometry.Point2d;
 import io.rtaware.sim.scenario.Scenario;
 import io.rtaware.sim.scenario.ScenarioLoader;
+import io.rtaware.sim.server.PlayerSimServer;
 import io.rtaware.sim.server.ServerConfig;
 import io.rtaware.sim.server.SimCommandSupport;
 import io.rtaware.sim.world.RobotModel;
@@ -60,6 +62,8 @@ class NavRunTest {
             assertEquals("time limit of 1 s passed", ending.reason());
             assertEquals(ending, run.state().ending(), "the ending is recorded once");
             assertEquals("built-in simulator", plan.metadata().get("robot"));
+            assertTrue(plan.hasGroundTruth(), "the simulator's simulation:0 is a truth source: /ground_truth recorded");
+            assertEquals("koala", plan.metadata().get("robot_model"), "the model simulated");
             ReplayProviders.RecordedController controller = ReplayProviders.load(NavRunTest.class.getClassLoader())
                     .controllerOf(plan.metadata());
             assertEquals(NavReplayProvider.ID, controller.provider().id(), "the recording names its replay provider");
@@ -149,6 +153,30 @@ class NavRunTest {
                 "no truth claimed where none was measured");
         assertNull(run.section().waypointPasses().get(0).trueDistanceM(), "nor a true distance at the pass: "
                 + run.section());
+    }
+
+
+    /**
+     * A Player server that cannot give this robot's true pose ({@code simulation:0} does not know
+     * the model): the recording has no {@code /ground_truth} (the referee watches odometry, which
+     * is not truth), names the robot as it is, and calls the model the controller's assumption.
+     */
+    @Test
+    void aRobotWithoutATruthSourceIsRecordedWithoutGroundTruthAndAsWhatItIs() throws Exception {
+        Scenario scenario = oneSecondCourse();
+        RobotModel model = RobotModel.koala(RobotModel.PAPER_TOP_SPEED_MPS);
+        ScaledClock clock = new ScaledClock(10);
+        NavRun.Settings settings = new NavRun.Settings(Map.of(), 10, 1, 4, 0.05, 0, 60, "not-in-this-world");
+        try (PlayerSimServer server = SimCommandSupport.start(scenario, model, clock, ServerConfig.defaults(0),
+                settings.seed(), settings.robotSeed());
+             RobotLink robot = RobotLink.player(ServerConfig.LOOPBACK, server.port())) {
+            RecordingPlan plan = new NavRun(scenario, model, settings, robot, clock).recordingPlan();
+
+            assertFalse(plan.hasGroundTruth(), "no truth source, no /ground_truth");
+            assertEquals("Player at " + ServerConfig.LOOPBACK + ":" + server.port(), plan.metadata().get("robot"));
+            assertNull(plan.metadata().get("robot_model"), "the robot's model is not known: " + plan.metadata());
+            assertEquals("koala", plan.metadata().get("assumed_robot_model"));
+        }
     }
 
     @Test

@@ -8,7 +8,7 @@ public final class Ros2Header {
 
     /** the stamp in nanoseconds since the clock's epoch (world time in rtaware recordings). */
     public long stampNs;
-    /** the coordinate frame, e.g. {@code map}, {@code odom}, {@code laser}. */
+    /** the coordinate frame, e.g. {@code odom}, {@code world}, {@code laser}. */
     public final StringBuilder frameId = new StringBuilder(32);
 
     /**

@@ -14,7 +14,9 @@ import java.util.Set;
  * topic a panel names is a channel, and every message path a panel reads (Foxglove's syntax:
  * {@code /topic.field[:]{other==1}.leaf}, a quoted topic {@code "/a.b".field}) names fields of
  * that channel's {@code ros2msg} schema, array elements only through an index or a slice, and
- * ends on a value where the panel plots or tracks one. The panels read are those the shipped
+ * ends on a value where the panel plots or tracks one; a 3D panel's display frame
+ * ({@code followTf}) is a frame of the recording and every topic it shows is in that frame or in
+ * one below it on the recording's transforms (else Foxglove cannot place it). The panels read are those the shipped
  * layout uses ({@code 3D}, {@code Plot}, {@code StateTransitions}, {@code RosOut}, {@code Table});
  * any other panel type is a problem, so a panel added to the layout is never left unchecked.
  * Field names and config keys as Lichtblick's sources define them (2025-03).
@@ -38,25 +40,30 @@ public final class FoxgloveLayoutCheck {
      *
      * @param schemaName its schema's name, e.g. {@code rtaware_msgs/msg/TaskCycle}
      * @param schemaText its {@code ros2msg} schema, the type's definition and its dependencies'
+     * @param frameId its messages' header frame (the channel's {@code frame_id} metadata), or null
      */
-    public record Channel(String schemaName, String schemaText) {
+    public record Channel(String schemaName, String schemaText, String frameId) {
     }
 
     private final Map<String, Channel> channels;
+    /** Each frame's parent on the recording's {@code /tf} and {@code /tf_static}. */
+    private final Map<String, String> parentOf;
     private final List<String> problems = new ArrayList<>();
     private final Set<String> topicsRead = new LinkedHashSet<>();
 
-    private FoxgloveLayoutCheck(Map<String, Channel> channels) {
+    private FoxgloveLayoutCheck(Map<String, Channel> channels, Map<String, String> parentOf) {
         this.channels = channels;
+        this.parentOf = parentOf;
     }
 
     /**
      * @param layout the layout's JSON (as Foxglove's "Export layout" writes it)
      * @param channels the recording's channels by topic
+     * @param parentOf each frame's parent on the recording's transforms
      * @return every problem found, one line each; empty if the layout reads only what the recording holds
      */
-    public static List<String> problems(JsonNode layout, Map<String, Channel> channels) {
-        FoxgloveLayoutCheck check = new FoxgloveLayoutCheck(channels);
+    public static List<String> problems(JsonNode layout, Map<String, Channel> channels, Map<String, String> parentOf) {
+        FoxgloveLayoutCheck check = new FoxgloveLayoutCheck(channels, parentOf);
         check.layout(layout);
         return check.problems;
     }
@@ -67,7 +74,7 @@ public final class FoxgloveLayoutCheck {
      * @return the topics its panels read
      */
     public static Set<String> topics(JsonNode layout, Map<String, Channel> channels) {
-        FoxgloveLayoutCheck check = new FoxgloveLayoutCheck(channels);
+        FoxgloveLayoutCheck check = new FoxgloveLayoutCheck(channels, Map.of());
         check.layout(layout);
         return check.topicsRead;
     }
@@ -114,7 +121,17 @@ public final class FoxgloveLayoutCheck {
     private void panel(String id, JsonNode config) {
         String type = id.substring(0, Math.max(0, id.indexOf('!')));
         switch (type) {
-            case "3D" -> config.path("topics").fieldNames().forEachRemaining(topic -> topic(id, topic));
+            case "3D" -> {
+                String display = config.path("followTf").asText();
+                if (!parentOf.isEmpty() && !parentOf.containsKey(display) && !parentOf.containsValue(display)) {
+                    problems.add(id + ": display frame '" + display + "' is no frame of the recording's transforms");
+                }
+                config.path("topics").fieldNames().forEachRemaining(topic -> {
+                    if (topic(id, topic)) {
+                        placed(id, topic, display);
+                    }
+                });
+            }
             case "Plot" -> {
                 for (JsonNode path : config.path("paths")) {
                     String value = path.path("value").asText();
@@ -137,6 +154,21 @@ public final class FoxgloveLayoutCheck {
             case "Table" -> path(id, config.path("topicPath").asText(), null);
             default -> problems.add(id + ": panel type '" + type + "' is not checked by this test");
         }
+    }
+
+    /** A 3D panel can place a topic whose frame is its display frame or below it on the transforms. */
+    private void placed(String panel, String topic, String display) {
+        String frame = channels.get(topic).frameId();
+        if (frame == null || parentOf.isEmpty()) {
+            return;
+        }
+        for (String f = frame; f != null; f = parentOf.get(f)) {
+            if (f.equals(display)) {
+                return;
+            }
+        }
+        problems.add(panel + ": " + topic + " is in frame '" + frame + "', which no transform places in the display frame '"
+                + display + "'");
     }
 
     private static boolean isNumber(String s) {

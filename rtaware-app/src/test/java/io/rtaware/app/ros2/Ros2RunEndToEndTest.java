@@ -110,19 +110,11 @@ public class Ros2RunEndToEndTest {
      * the URG-04LX (on its 100 ms turn grid), as sim --ros2 stamps it and the data task passes it on.
      */
     private static void assertScansStampedAtTheirFirstBeam(Path recording) throws Exception {
-        Map<String, String> run = new HashMap<>();
         List<Long> stamps = new ArrayList<>();
         LaserScanCodec codec = new LaserScanCodec();
         Ros2Header header = new Ros2Header();
         LaserScan scan = new LaserScan();
-        McapReader.open(recording).read(new McapVisitor() {
-            @Override
-            public void metadata(String name, Map<String, String> entries) {
-                if (name.equals("rtaware.run")) {
-                    run.putAll(entries);
-                }
-            }
-
+        RunMetadata file = new RunMetadata() {
             @Override
             public void message(McapChannel channel, long sequence, long logTimeNs, long publishTimeNs, byte[] data,
                                 int offset, int length) {
@@ -131,7 +123,9 @@ public class Ros2RunEndToEndTest {
                     stamps.add(header.stampNs);
                 }
             }
-        });
+        };
+        McapReader.open(recording).read(file);
+        Map<String, String> run = file.run;
         assertEquals(RecordingPlan.STAMPS_MEASURED, run.get(RecordingPlan.HEADER_STAMPS), "metadata: " + run);
         long originNs = Long.parseLong(run.get(RecordingPlan.LOG_TIME_OFFSET_NS))
                 + Long.parseLong(run.get(RecordingPlan.ROBOT_CLOCK_ORIGIN_NS));
@@ -167,19 +161,62 @@ public class Ros2RunEndToEndTest {
         sim.start();
         try {
             Path out = dir.resolve("run");
+            Path recording = dir.resolve("external.mcap");
             int status = -1;
             // The simulator binds its endpoint asynchronously: an unreachable router is exit 2, retry.
             for (int attempt = 0; attempt < 50 && status != 0; attempt++) {
                 status = quietly("run", "--ros2", "--zenoh", endpoint, "--namespace", "/robot1", "--scenario",
-                        shortLegUnchecked(), "--time-scale", "10", "--out", out.toString(), "--quiet");
+                        shortLegUnchecked(), "--time-scale", "10", "--out", out.toString(), "--quiet",
+                        "--record", recording.toString());
                 assertTrue(status == 0 || status == 2, "exit status " + status);
                 assertTrue(sim.isAlive(), "the simulator is serving (its exit status: " + simStatus.get() + ")");
             }
             assertEquals(0, status);
             completedReport(out, "odometry");
+            assertRecordedAsAnExternalRobot(recording, "ROS 2 robot through Zenoh at " + endpoint);
         } finally {
             sim.interrupt();
             sim.join(10_000);
+        }
+    }
+
+    /**
+     * A robot reached through a router is not known to be the simulator: the file has no
+     * {@code /ground_truth} (the referee watched odometry, which is not truth), names the robot as
+     * it was reached, and gives the model only as the controller's assumption.
+     */
+    private static void assertRecordedAsAnExternalRobot(Path recording, String robot) throws Exception {
+        RunMetadata file = new RunMetadata();
+        McapReader.open(recording).read(file);
+        List<String> topics = file.topics;
+        Map<String, String> run = file.run;
+        assertTrue(topics.contains("/odom") && !topics.contains("/ground_truth"), "no ground truth: " + topics);
+        assertEquals(robot, run.get("robot"), "metadata: " + run);
+        assertEquals(null, run.get("robot_model"), "metadata: " + run);
+        assertEquals("koala", run.get("assumed_robot_model"), "metadata: " + run);
+    }
+
+    /** A recording's {@code rtaware.run} metadata and its channels' topics; messages are read by subclasses. */
+    private static class RunMetadata implements McapVisitor {
+        final Map<String, String> run = new HashMap<>();
+        final List<String> topics = new ArrayList<>();
+
+        @Override
+        public void metadata(String name, Map<String, String> entries) {
+            if (name.equals("rtaware.run")) {
+                run.putAll(entries);
+            }
+        }
+
+        @Override
+        public void channel(McapChannel channel) {
+            topics.add(channel.topic());
+        }
+
+        @Override
+        public void message(McapChannel channel, long sequence, long logTimeNs, long publishTimeNs, byte[] data,
+                            int offset, int length) {
+            // the metadata and the channels are what this reads
         }
     }
 

@@ -23,7 +23,9 @@ import io.rtaware.record.mcap.McapVisitor;
 import io.rtaware.robot.msg.LaserScan;
 import io.rtaware.ros2msg.LaserScanCodec;
 import io.rtaware.ros2msg.Ros2Header;
+import io.rtaware.ros2msg.TransformMessages;
 import io.rtaware.ros2msg.cdr.CdrReader;
+import io.rtaware.ros2msg.value.PlanarPose;
 import java.io.BufferedReader;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
@@ -246,16 +248,54 @@ class RecordRunTest {
         for (McapChannel c : summary.channels()) {
             McapSchema schema = summary.schemas().stream().filter(s -> s.id() == c.schemaId()).findFirst().orElseThrow();
             assertEquals("ros2msg", schema.encoding(), c.topic());
-            channels.put(c.topic(), new FoxgloveLayoutCheck.Channel(schema.name(), schema.data()));
+            channels.put(c.topic(), new FoxgloveLayoutCheck.Channel(schema.name(), schema.data(),
+                    c.metadata().get("frame_id")));
         }
         return channels;
+    }
+
+    /** Each frame's parent on the recording's {@code /tf} and {@code /tf_static}. */
+    private static Map<String, String> parentOf() throws IOException {
+        Map<String, String> parents = new HashMap<>();
+        Ros2Header header = new Ros2Header();
+        StringBuilder child = new StringBuilder();
+        PlanarPose pose = new PlanarPose();
+        McapReader.open(recording).read(new McapVisitor() {
+            @Override
+            public void message(McapChannel channel, long sequence, long logTimeNs, long publishTimeNs, byte[] data,
+                                int offset, int length) {
+                if (channel.topic().equals("/tf") || channel.topic().equals("/tf_static")) {
+                    CdrReader in = new CdrReader().wrap(data, offset, length);
+                    for (int i = TransformMessages.count(in); i > 0; i--) {
+                        TransformMessages.read(in, header, child, pose);
+                        parents.put(child.toString(), header.frameId.toString());
+                    }
+                }
+            }
+        });
+        return parents;
+    }
+
+    /**
+     * REP 105, one meaning per frame: the controller's map and plan are in its odometry frame
+     * ({@code odom}), the truth in the world's ({@code world}), and no transform claims the two
+     * are one (before, both were {@code map}, with an identity {@code map -> odom}).
+     */
+    @Test
+    void framesFollowRep105WithOneMeaningEach() throws Exception {
+        Map<String, FoxgloveLayoutCheck.Channel> channels = channels();
+        assertEquals("odom", channels.get("/map").frameId(), "the controller's map is built on odometry");
+        assertEquals("odom", channels.get("/plan").frameId(), "and planned on it");
+        assertEquals("world", channels.get("/ground_truth").frameId(), "the truth is in the world's frame");
+        assertEquals(Map.of("base_link", "odom", "laser", "base_link", "ground_truth", "world"), parentOf(),
+                "two trees, odometry's and the world's, joined by nothing");
     }
 
     @Test
     void theShippedFoxgloveLayoutReadsOnlyTopicsAndFieldsTheRecordingAdvertises() throws Exception {
         JsonNode layout = FoxgloveLayoutCheck.shipped();
         Map<String, FoxgloveLayoutCheck.Channel> channels = channels();
-        assertEquals(List.of(), FoxgloveLayoutCheck.problems(layout, channels));
+        assertEquals(List.of(), FoxgloveLayoutCheck.problems(layout, channels, parentOf()));
         Set<String> read = FoxgloveLayoutCheck.topics(layout, channels);
         for (String task : List.of("player", "obstacle", "occupancy", "planner", "waypoint", "mediator")) {
             assertTrue(read.contains("/rtaware/timing/" + task), "every task of the run is plotted: " + read);
@@ -280,11 +320,16 @@ class RecordRunTest {
         ((ObjectNode) configs.path("StateTransitions!winner").path("paths").get(0))
                 .put("value", "\"/rtaware/data/mediator.decision\".winner{stale==true}");
         ((ArrayNode) configs.path("Plot!exec").path("paths")).addObject().put("value", "/odom.pose.pose.position.w");
-        ((ObjectNode) configs.path("3D!map").path("topics")).putObject("/costmap");
+        ((ObjectNode) configs.path("3D!odom").path("topics")).putObject("/costmap");
+        ((ObjectNode) configs.path("3D!world").path("topics")).putObject("/scan");
+        ((ObjectNode) configs.path("3D!world")).put("followTf", "map");
         ((ObjectNode) configs.path("RosOut!events")).put("topicToRender", "/rtaware/events");
         ((ObjectNode) configs.path("Table!tasks")).put("topicPath", "/diagnostics.status.name");
         assertEquals(List.of(
-                "3D!map: topic /costmap is not advertised by the recording",
+                "3D!odom: topic /costmap is not advertised by the recording",
+                "3D!world: display frame 'map' is no frame of the recording's transforms",
+                "3D!world: /ground_truth is in frame 'world', which no transform places in the display frame 'map'",
+                "3D!world: /scan is in frame 'laser', which no transform places in the display frame 'map'",
                 "Plot!lateness: /rtaware/timing/player.latenes: no field 'latenes' in rtaware_msgs/msg/TaskCycle",
                 "Plot!lateness: topic /rtaware/timing/steering is not advertised by the recording",
                 "Plot!lateness: /rtaware/timing/occupancy.input_generations ends on int64[], not a value this panel draws",
@@ -294,7 +339,7 @@ class RecordRunTest {
                         + " names no field of uint8",
                 "Table!tasks: /diagnostics.status.name: field name of an array without an index or slice",
                 "RosOut!events: /rtaware/events is rtaware_msgs/msg/MonitorEvent, not a type the Log panel reads "
-                        + FoxgloveLayoutCheck.LOG_TYPES), FoxgloveLayoutCheck.problems(layout, channels));
+                        + FoxgloveLayoutCheck.LOG_TYPES), FoxgloveLayoutCheck.problems(layout, channels, parentOf()));
     }
 
     @Test

@@ -42,7 +42,8 @@ import org.agrona.concurrent.NoOpIdleStrategy;
  * drives the robot with the {@code geometry_msgs/msg/Twist} messages it receives on
  * {@code cmd_vel}; topic names are relative to the robot's namespace. Frames as REP 105 names
  * them and a robot driver publishes them: scans in {@value RobotTopics#LASER_FRAME}, odometry in
- * {@value RobotTopics#ODOM_FRAME} with child {@value RobotTopics#BASE_FRAME}, ground truth in {@code map}; on
+ * {@value RobotTopics#ODOM_FRAME} with child {@value RobotTopics#BASE_FRAME}, ground truth in {@value RobotTopics#WORLD_FRAME} (the
+ * world's fixed frame; no transform joins it to {@value RobotTopics#ODOM_FRAME}, which drifts from it); on
  * {@code /tf} the transform {@value RobotTopics#ODOM_FRAME} to {@value RobotTopics#BASE_FRAME} of every odometry
  * sample, stamped as the sample; on {@code /tf_static} {@value RobotTopics#BASE_FRAME} to
  * {@value RobotTopics#LASER_FRAME} (the laser at the robot's centre), offered transient local as tf2's
@@ -278,7 +279,7 @@ public final class Ros2SimRobot implements AutoCloseable {
             TransformMessages.begin(writer, 1);
             TransformMessages.transform(writer, stampNs, RobotTopics.ODOM_FRAME, RobotTopics.BASE_FRAME, odom.xM, odom.yM, odom.yawRad);
             tfPub.publish(writer.buffer(), writer.size(), nowEpochNs);
-            odomCodec.encode(header.set(stampNs, RobotTopics.MAP_FRAME), truth, writer);
+            odomCodec.encode(header.set(stampNs, RobotTopics.WORLD_FRAME), truth, writer);
             truthPub.publish(writer.buffer(), writer.size(), nowEpochNs);
         }
         if (worldTimeNs > clockSentNs) {
