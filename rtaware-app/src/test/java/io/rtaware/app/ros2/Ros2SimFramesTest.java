@@ -3,6 +3,7 @@ package io.rtaware.app.ros2;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.rtaware.core.testing.Requires;
 import io.rtaware.robot.geometry.Pose2d;
 import io.rtaware.robot.msg.Odometry;
 import io.rtaware.ros2.graph.QosProfile;
@@ -18,6 +19,7 @@ import io.rtaware.sim.server.ServerConfig;
 import io.rtaware.sim.world.LaserConfig;
 import io.rtaware.sim.world.RobotModel;
 import io.rtaware.sim.world.World;
+import io.rtaware.zenoh.NativeZenohLayer;
 import io.rtaware.zenoh.SampleBuffer;
 import io.rtaware.zenoh.ZenohConfig;
 import io.rtaware.zenoh.ZenohMailbox;
@@ -38,8 +40,8 @@ class Ros2SimFramesTest {
     private static final long MS = 1_000_000L;
 
     @Test
+    @Requires(NativeZenohLayer.class)
     void groundTruthIsInTheWorldFrameAndOdometryInOdom() throws Exception {
-        Ros2RunEndToEndTest.requireNativeZenoh();
         String endpoint;
         try (ServerSocket s = new ServerSocket(0)) {
             endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
