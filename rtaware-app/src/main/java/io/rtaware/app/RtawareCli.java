@@ -65,6 +65,17 @@ public final class RtawareCli {
      * @return the exit status
      */
     public static int execute(CommandLine.IFactory factory, String... args) {
+        return commandLine(factory).execute(args);
+    }
+
+    /**
+     * The {@code rtaware} command line with its error handling, not yet run (tests read its model:
+     * options, help).
+     *
+     * @param factory makes the command objects
+     * @return the command line
+     */
+    public static CommandLine commandLine(CommandLine.IFactory factory) {
         CommandLine cli = new CommandLine(new RtawareCli(), factory);
         cli.setParameterExceptionHandler((ex, a) -> {
             PrintWriter err = ex.getCommandLine().getErr();
@@ -84,6 +95,6 @@ public final class RtawareCli {
             }
             throw ex;
         });
-        return cli.execute(args);
+        return cli;
     }
 }

@@ -109,11 +109,11 @@ public final class BenchCommand implements Callable<Integer> {
     @Option(names = "--tasks", description = "Number of identical tasks (default: ${DEFAULT-VALUE}).", defaultValue = "4")
     int tasks;
 
-    @Option(names = "--period", converter = DurationConverter.class, defaultValue = "10ms",
+    @Option(names = "--period", converter = DurationConverter.class, paramLabel = "DURATION", defaultValue = "10ms",
             description = "Period of each task, e.g. 10ms (default: ${DEFAULT-VALUE}).")
     long periodNs;
 
-    @Option(names = "--work", converter = DurationConverter.class, defaultValue = "2ms",
+    @Option(names = "--work", converter = DurationConverter.class, paramLabel = "DURATION", defaultValue = "2ms",
             description = "CPU work per cycle, e.g. 2ms; 0 for none (default: ${DEFAULT-VALUE}).")
     long workNs;
 
@@ -128,14 +128,14 @@ public final class BenchCommand implements Callable<Integer> {
             + "executor, with --compare and --sweep-tasks too.")
     boolean stagger;
 
-    @Option(names = "--warmup", converter = DurationConverter.class, defaultValue = "2s",
+    @Option(names = "--warmup", converter = DurationConverter.class, paramLabel = "DURATION", defaultValue = "2s",
             description = "Before the measured run, run up to " + WARM_UP_TASKS + " of the tasks on the same "
                     + "executor for this long and discard the numbers: the JIT compiles the cycle's code and the "
                     + "collector settles after the monitor's allocation; 0 for none (default: ${DEFAULT-VALUE}). "
                     + "--compare and --sweep-tasks warm up with a round of their own.")
     long warmUpNs;
 
-    @Option(names = "--duration", converter = DurationConverter.class, defaultValue = "10s",
+    @Option(names = "--duration", converter = DurationConverter.class, paramLabel = "DURATION", defaultValue = "10s",
             description = "How long to run, in world time (default: ${DEFAULT-VALUE}).")
     long durationNs;
 
@@ -157,7 +157,7 @@ public final class BenchCommand implements Callable<Integer> {
             + "measured time per executor.")
     boolean compare;
 
-    @Option(names = "--segment", converter = DurationConverter.class, defaultValue = "2s",
+    @Option(names = "--segment", converter = DurationConverter.class, paramLabel = "DURATION", defaultValue = "2s",
             description = "With --compare: length of one executor's turn (default: ${DEFAULT-VALUE}).")
     long segmentNs;
 

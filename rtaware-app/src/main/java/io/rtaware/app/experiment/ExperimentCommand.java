@@ -1,6 +1,7 @@
 package io.rtaware.app.experiment;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.output.OutputFolder;
 import io.rtaware.core.output.OutputWrites;
@@ -122,10 +123,10 @@ public final class ExperimentCommand implements Callable<Integer> {
             + "those made on a quiet machine (the report says how many of each).")
     boolean includeBusy;
 
-    @Option(names = "--quiet-wait", defaultValue = "600", paramLabel = "S",
-            description = "Wait at most S seconds for a quiet machine before each run, then run it labelled "
+    @Option(names = "--quiet-wait", defaultValue = "600s", paramLabel = "DURATION", converter = DurationConverter.class,
+            description = "Wait at most this long for a quiet machine before each run, then run it labelled busy "
                     + "(default: ${DEFAULT-VALUE}).")
-    double quietWaitS;
+    long quietWaitNs;
 
     @Option(names = "--resume", description = "Continue the experiment in --out with the plan stored there (sets, runs, "
             + "scenario, time scale, seed, grid), skipping the runs already in its results.csv.")
@@ -161,11 +162,8 @@ public final class ExperimentCommand implements Callable<Integer> {
         }
         ProgressBar progress = new ProgressBar(System.err, System.console() != null, System::nanoTime,
                 RUN_LIMIT_S / timeScale);
-        if (!(quietWaitS >= 0)) {
-            throw new UserError("--quiet-wait must be a number of seconds >= 0, got " + quietWaitS);
-        }
         QuietGate gate = new QuietGate(MachineCheck.overWindow(new HostReader(HostFiles.system(), System::nanoTime),
-                CHECK_WINDOW), s -> Thread.sleep((long) (s * 1000)), System::nanoTime, quietWaitS, allowBusy);
+                CHECK_WINDOW), s -> Thread.sleep((long) (s * 1000)), System::nanoTime, quietWaitNs / 1e9, allowBusy);
         ExperimentRunner runner = new ExperimentRunner(plan, JvmRunCommand.ofCurrentProcess(JvmRunCommand.RTAWARE_MAIN),
                 dir, progress).recordEachRun(record).quietGate(gate);
         int total = plan.order().size();

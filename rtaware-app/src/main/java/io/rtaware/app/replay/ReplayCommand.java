@@ -70,8 +70,8 @@ public final class ReplayCommand implements Callable<Integer> {
     /** Most cycles a what-if replay makes: about a minute of replay on a 2-core machine. */
     static final long MAX_WHAT_IF_CYCLES = 20_000_000L;
 
-    @Option(names = "--periods", paramLabel = "TASK=MS,...",
-            description = "What-if: periods to try, e.g. planner=50 (ms; tasks not named keep the recorded periods).")
+    @Option(names = "--periods", paramLabel = "TASK=DURATION,...",
+            description = "What-if: periods to try, e.g. planner=50ms (tasks not named keep the recorded periods).")
     String periods;
 
     @Option(names = "--classpath", paramLabel = "PATHS",

@@ -65,8 +65,8 @@ public final class SimCommand implements Callable<Integer> {
             description = "Replace rules per client; more are NACKed (default: ${DEFAULT-VALUE}).")
     int maxRules;
 
-    @Option(names = "--message-timeout", defaultValue = "10s", converter = DurationConverter.class, paramLabel = "D",
-            description = "A client that sends part of a message and not the rest within D is disconnected (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--message-timeout", defaultValue = "10s", converter = DurationConverter.class, paramLabel = "DURATION",
+            description = "A client that sends part of a message and not the rest within this time is disconnected (default: ${DEFAULT-VALUE}).")
     long messageTimeoutNs;
 
     @Mixin
