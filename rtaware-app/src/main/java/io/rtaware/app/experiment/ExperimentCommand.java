@@ -116,7 +116,8 @@ public final class ExperimentCommand implements Callable<Integer> {
     boolean record;
 
     @Option(names = "--allow-busy", description = "Do not wait for a quiet machine before each run; runs on a busy "
-            + "machine are labelled in results.csv and left out of the report unless --include-busy.")
+            + "machine are labelled in results.csv and left out of the report unless --include-busy; when not one "
+            + "run was quiet, the report uses them all and is labelled busy.")
     boolean allowBusy;
 
     @Option(names = "--include-busy", description = "Use every run in the summary, tables, t-tests and claims, not only "
@@ -190,7 +191,8 @@ public final class ExperimentCommand implements Callable<Integer> {
             if (rows.isEmpty()) {
                 return runner.interrupted() ? 130 : 0;
             }
-            Optional<ExperimentSummary> summary = ReportRendering.render(dir, scenario, includeBusy, System.err);
+            Optional<ExperimentSummary> summary = ReportRendering.render(dir, scenario, includeBusy, allowBusy,
+                    System.err);
             summary.ifPresent(s -> printSummary(s, dir));
             return runner.interrupted() ? 130 : summary.isPresent() ? 0 : OutputWrites.EXIT_WRITE_FAILED;
         } catch (ExperimentInputException e) {
@@ -256,6 +258,9 @@ public final class ExperimentCommand implements Callable<Integer> {
 
     private static void printSummary(ExperimentSummary summary, Path dir) {
         System.out.println();
+        if (summary.conditions() != null && summary.conditions().busyOnly()) {
+            System.out.println("BUSY MACHINE: " + summary.conditions().busyLabel());
+        }
         System.out.println("set                     periods (ms)     completed  run time (s)    distance to finish (m)  misses (all four)");
         for (SetSummary s : summary.sets()) {
             System.out.printf(Locale.ROOT, "%-22s  %-16s %4d/%-4d  %6s +- %-5s  %6s +- %-12s  %s%n", s.name(),

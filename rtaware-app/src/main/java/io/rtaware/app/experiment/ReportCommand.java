@@ -92,7 +92,7 @@ public final class ReportCommand implements Callable<Integer> {
                     + ": " + e);
             return OutputWrites.EXIT_WRITE_FAILED;
         }
-        if (ReportRendering.render(dir, scenario, includeBusy, System.err).isEmpty()) {
+        if (ReportRendering.render(dir, scenario, includeBusy, false, System.err).isEmpty()) {
             return OutputWrites.EXIT_WRITE_FAILED;
         }
         System.out.println("report written to " + dir.resolve(ExperimentReport.MARKDOWN_FILE) + " and "
@@ -118,7 +118,7 @@ public final class ReportCommand implements Callable<Integer> {
                 return OutputWrites.EXIT_WRITE_FAILED;
             }
             String scenario = ExperimentProfile.read(dir).map(ExperimentProfile::scenario).orElseGet(() -> firstScenario(dir));
-            Optional<ExperimentSummary> summary = ReportRendering.render(dir, scenario, includeBusy, System.err);
+            Optional<ExperimentSummary> summary = ReportRendering.render(dir, scenario, includeBusy, false, System.err);
             if (summary.isEmpty()) {
                 return OutputWrites.EXIT_WRITE_FAILED;
             }
