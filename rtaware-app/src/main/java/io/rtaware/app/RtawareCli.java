@@ -10,6 +10,7 @@ import io.rtaware.app.replay.ReplayCommand;
 import io.rtaware.app.run.RunCommand;
 import io.rtaware.app.sim.SimCommand;
 import io.rtaware.app.sim.WorldCommand;
+import io.rtaware.core.log.LibraryLog;
 import java.io.PrintWriter;
 import java.nio.file.InvalidPathException;
 import picocli.CommandLine;
@@ -17,17 +18,16 @@ import picocli.CommandLine.Command;
 
 /**
  * The {@code rtaware} command: entry point and composition root. User errors end with one line
- * and exit status 2; anything else is a bug and shows its stack trace with status 1.
+ * and exit status 2; anything else is a bug and shows its stack trace with status 1. The
+ * libraries' warnings are one line each on stderr ({@link LibraryLog}), set here once.
  */
 @Command(name = "rtaware", mixinStandardHelpOptions = true, version = "rtaware 0.1.0",
         description = "Run robot controllers whose tasks are aware of time.",
-        footer = {"",
-                "JVM: unless RTAWARE_JAVA_OPTS is set (it replaces them), the ./rtaware",
-                "launcher runs Java with -XX:+UseZGC -Xms512m -Xmx512m -XX:+AlwaysPreTouch",
-                "(plus -XX:+ZGenerational on JDK 21-23, and no guaranteed safepoint every",
-                "second on JDK 17.0.8+, 21 and 22). ZGC is the measured choice: G1",
-                "pauses of 15-28 ms under garbage load go straight into release lateness",
-                "(docs/performance.md, JVM choice: rtaware bench --compare --gc-pressure 200)."},
+        footer = {"", "JVM: unless RTAWARE_JAVA_OPTS is set (it replaces them), the ./rtaware launcher runs Java with "
+                + "-XX:+UseZGC -Xms512m -Xmx512m -XX:+AlwaysPreTouch (plus -XX:+ZGenerational on JDK 21-23, and no "
+                + "guaranteed safepoint every second on JDK 17.0.8+, 21 and 22). ZGC is the measured choice: G1 pauses "
+                + "of 15-28 ms under garbage load go straight into release lateness (docs/performance.md, JVM choice: "
+                + "rtaware bench --compare --gc-pressure 200)."},
         subcommands = {RunCommand.class, SimCommand.class, WorldCommand.class, BenchCommand.class, AnalyzeCommand.class,
                 ExperimentCommand.class, ReportCommand.class, PlayerProbeCommand.class, InspectCommand.class, ReplayCommand.class,
                 CommandLine.HelpCommand.class})
@@ -65,7 +65,11 @@ public final class RtawareCli {
      * @return the exit status
      */
     public static int execute(CommandLine.IFactory factory, String... args) {
-        return commandLine(factory).execute(args);
+        // The libraries' log (the simulator's "serving Player on ...", "client lost") repeated what the
+        // commands print, in java.util.logging's two-line records: warnings are one line on stderr, the rest dropped.
+        try (LibraryLog log = LibraryLog.oneLineEach(System.err, System.Logger.Level.WARNING)) {
+            return commandLine(factory).execute(args);
+        }
     }
 
     /**
