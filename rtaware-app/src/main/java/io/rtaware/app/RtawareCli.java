@@ -11,6 +11,7 @@ import io.rtaware.app.run.RunCommand;
 import io.rtaware.app.sim.SimCommand;
 import io.rtaware.app.sim.WorldCommand;
 import io.rtaware.core.log.LibraryLog;
+import io.rtaware.core.text.NearestName;
 import java.io.PrintWriter;
 import java.nio.file.InvalidPathException;
 import picocli.CommandLine;
@@ -83,8 +84,10 @@ public final class RtawareCli {
         CommandLine cli = new CommandLine(new RtawareCli(), factory);
         cli.setParameterExceptionHandler((ex, a) -> {
             PrintWriter err = ex.getCommandLine().getErr();
-            err.println("rtaware: " + ex.getMessage().lines().findFirst().orElse("invalid arguments")
-                    + " (see: rtaware " + ex.getCommandLine().getCommandName() + " --help)");
+            String suggestion = ex instanceof CommandLine.UnmatchedArgumentException u && !u.getUnmatched().isEmpty()
+                    ? NearestName.suggestion(u.getUnmatched().get(0).split("=", 2)[0], u.getSuggestions()) : "";
+            err.println("rtaware: " + ex.getMessage().lines().findFirst().orElse("invalid arguments") + suggestion
+                    + " (see: " + ex.getCommandLine().getCommandSpec().qualifiedName() + " --help)");
             return EXIT_USER_ERROR;
         });
         cli.setExecutionExceptionHandler((ex, cmd, parseResult) -> {

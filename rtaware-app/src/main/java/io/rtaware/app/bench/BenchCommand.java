@@ -78,8 +78,8 @@ import picocli.CommandLine.Option;
  * CPU work.
  */
 @Command(name = "bench", mixinStandardHelpOptions = true,
-        description = {"Run a synthetic task set and report misses, lateness and execution times.",
-                "Work is real CPU work (a busy loop calibrated at start-up), not sleep.",
+        description = {"Run a synthetic task set and report misses, lateness and execution times. Work is real CPU "
+                + "work (a busy loop calibrated at start-up), not sleep.",
                 "Examples:",
                 "  rtaware bench --tasks 4 --period 10ms --work 2ms --duration 10s --json r.json",
                 "  rtaware bench --spec \"a:10ms:2ms,b:50ms:20ms\" --chain --trace trace.json",
@@ -90,12 +90,11 @@ import picocli.CommandLine.Option;
                 "  rtaware bench --executor pooled --tasks 10000 --period 10ms --work 0 --duration 10s",
                 "  rtaware bench --sweep-tasks 10,100,1000,10000 --period 10ms --work 0 --duration 4s",
                 "",
-                "--compare runs the same task set on rtaware (threaded and pooled executors), on",
-                "ScheduledThreadPoolExecutor (one thread per task, and one pool of --workers threads)",
-                "and on a bare parkNanos loop (the floor for a Java thread), interleaved in segments",
-                "so all of them see the same machine noise, and prints",
-                "lateness, misses, bursts, CPU and bytes allocated per release side by side",
-                "(JSON schema rtaware.bench-compare/1 with --json)."})
+                "--compare runs the same task set on rtaware (threaded and pooled executors), on "
+                + "ScheduledThreadPoolExecutor (one thread per task, and one pool of --workers threads) and on a bare "
+                + "parkNanos loop (the floor for a Java thread), interleaved in segments so all of them see the same "
+                + "machine noise, and prints lateness, misses, bursts, CPU and bytes allocated per release side by side "
+                + "(JSON schema rtaware.bench-compare/1 with --json)."})
 public final class BenchCommand implements Callable<Integer> {
 
     /** Exit status when the run ended before its duration (a task hit a fatal VM error). */
@@ -106,7 +105,7 @@ public final class BenchCommand implements Callable<Integer> {
     /** Most tasks the warm-up runs (enough to compile every path of a cycle, few enough to fit beside the set). */
     static final int WARM_UP_TASKS = 1000;
 
-    @Option(names = "--tasks", description = "Number of identical tasks (default: ${DEFAULT-VALUE}).", defaultValue = "4")
+    @Option(names = "--tasks", paramLabel = "N", description = "Number of identical tasks (default: ${DEFAULT-VALUE}).", defaultValue = "4")
     int tasks;
 
     @Option(names = "--period", converter = DurationConverter.class, paramLabel = "DURATION", defaultValue = "10ms",
@@ -117,7 +116,7 @@ public final class BenchCommand implements Callable<Integer> {
             description = "CPU work per cycle, e.g. 2ms; 0 for none (default: ${DEFAULT-VALUE}).")
     long workNs;
 
-    @Option(names = "--spec", description = "Mixed task set name:period:work,..., e.g. a:10ms:2ms,b:50ms:20ms (overrides --tasks/--period/--work).")
+    @Option(names = "--spec", paramLabel = "NAME:PERIOD:WORK,...", description = "Mixed task set name:period:work,..., e.g. a:10ms:2ms,b:50ms:20ms (overrides --tasks/--period/--work).")
     String spec;
 
     @Option(names = "--chain", description = "Each task consumes the previous task's output key.")
@@ -139,7 +138,7 @@ public final class BenchCommand implements Callable<Integer> {
             description = "How long to run, in world time (default: ${DEFAULT-VALUE}).")
     long durationNs;
 
-    @Option(names = "--time-scale", converter = TimeScaleConverter.class, defaultValue = "1", description = "World time runs K times faster than wall time (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--time-scale", converter = TimeScaleConverter.class, defaultValue = "1", paramLabel = "K", description = "World time runs K times faster than wall time (default: ${DEFAULT-VALUE}).")
     double timeScale;
 
     @Option(names = "--json", description = "Write the JSON report (schema rtaware.report/1) to FILE.", paramLabel = "FILE")

@@ -26,6 +26,7 @@ import io.rtaware.experiment.RunConditions;
 import io.rtaware.experiment.RunResult;
 import io.rtaware.experiment.Shard;
 import io.rtaware.experiment.report.ExperimentReport;
+import io.rtaware.sim.scenario.ScenarioLoader;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -49,13 +50,13 @@ import picocli.CommandLine.Spec;
  * end, or of what finished on Ctrl-C.
  */
 @Command(name = "experiment", mixinStandardHelpOptions = true,
-        description = {"Reproduce the paper's experiment: several sets of task periods, repeated runs of the course,",
-                "run time, distance to the finish, missed deadlines, and Welch t-tests between sets.",
-                "Each run is a fresh JVM running 'rtaware run'; runs of different sets are interleaved.",
-                "Before each run the machine is checked and, unless --allow-busy, the run waits for it to be quiet;",
-                "the report uses the quiet runs only unless --include-busy.",
-                "Re-running into the same --out (or --resume) skips the runs already in results.csv.",
-                "Worst case it takes sets x runs x (360 s / time scale) plus JVM start-up.",
+        description = {"Reproduce the paper's experiment: several sets of task periods, repeated runs of the course, "
+                + "run time, distance to the finish, missed deadlines, and Welch t-tests between sets. Each run is a "
+                + "fresh JVM running 'rtaware run'; runs of different sets are interleaved. Before each run the machine "
+                + "is checked and, unless --allow-busy, the run waits for it to be quiet (at most --quiet-wait); the "
+                + "report uses the quiet runs only unless --include-busy. Re-running into the same --out (or --resume) "
+                + "skips the runs already in results.csv. Worst case it takes sets x runs x (360 s / time scale) plus "
+                + "JVM start-up, plus the waits.",
                 "Examples:",
                 "  rtaware experiment --sets paper --runs 2 --time-scale 20 --out experiments/quick",
                 "  rtaware experiment --sets sweep-obstacle --runs 5 --shard 1/2 --out experiments/sweep-a",
@@ -79,11 +80,12 @@ public final class ExperimentCommand implements Callable<Integer> {
                     + "(default: ${DEFAULT-VALUE}, all runs).")
     String shard;
 
-    @Option(names = "--runs", defaultValue = "10", description = "Runs per set (default: ${DEFAULT-VALUE}, as in the paper).")
+    @Option(names = "--runs", defaultValue = "10", paramLabel = "N", description = "Runs per set (default: ${DEFAULT-VALUE}, as in the paper).")
     int runs;
 
-    @Option(names = "--scenario", defaultValue = "paper-room", paramLabel = "paper-room|FILE",
-            description = "The course, passed to 'rtaware run' (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--scenario", defaultValue = ScenarioLoader.PAPER_ROOM, paramLabel = "NAME|FILE",
+            description = "The course, passed to 'rtaware run': a built-in scenario (" + ScenarioLoader.BUILT_IN_NAMES
+                    + ") or a scenario YAML file (default: ${DEFAULT-VALUE}).")
     String scenario;
 
     @Option(names = "--time-scale", converter = TimeScaleConverter.class, defaultValue = "10", paramLabel = "K",

@@ -29,11 +29,11 @@ import picocli.CommandLine.Parameters;
  * (the shards of one plan) and {@code --out}, merges them into one folder first.
  */
 @Command(name = "report", mixinStandardHelpOptions = true,
-        description = {"Re-render an experiment's report (summary.json, report.md, report.html, figures)",
-                "from DIR/results.csv and the runs' trajectory.csv files.",
-                "With several folders (the shards of one plan, made with 'experiment --shard K/N'), merge them",
-                "into --out first; folders of different plans, or holding the same run twice, are refused.",
-                "With --results FILE, report each folder on its own and write FILE (RESULTS.md for the docs).",
+        description = {"Re-render an experiment's report (summary.json, report.md, report.html, figures) from "
+                + "DIR/results.csv and the runs' trajectory.csv files. With several folders (the shards of one plan, "
+                + "made with 'experiment --shard K/N'), merge them into --out first; folders of different plans, or "
+                + "holding the same run twice, are refused. With --results FILE, report each folder on its own and "
+                + "write FILE (RESULTS.md for the docs).",
                 "Examples:", "  rtaware report experiments/paper",
                 "  rtaware report shard1 shard2 shard3 --out experiments/sweep"})
 public final class ReportCommand implements Callable<Integer> {

@@ -17,6 +17,7 @@ import io.rtaware.core.time.Durations;
 import io.rtaware.experiment.ExperimentRunner;
 import io.rtaware.ros2.graph.DdsSettings;
 import io.rtaware.ros2.graph.Ros2Distro;
+import io.rtaware.sim.scenario.ScenarioLoader;
 import io.rtaware.sim.world.RobotModel;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -36,14 +37,14 @@ import picocli.CommandLine.Option;
  */
 @Command(name = "run", mixinStandardHelpOptions = true,
         description = {"Run the paper's waypoint-navigation controller and report its timing.",
-                "Default: the built-in simulator on a free loopback port, scenario paper-room, the paper's",
-                "Set 4 periods (waypoint=100ms,obstacle=50ms,occupancy=100ms,planner=100ms), time scale 1.",
-                "The run ends at the finish, at the time limit, when the robot is stuck, or on Ctrl-C;",
-                "in every case the robot is stopped first, then the summary is printed and written."})
+                "Default: the built-in simulator on a free loopback port, scenario paper-room, the paper's Set 4 "
+                + "periods (waypoint=100ms,obstacle=50ms,occupancy=100ms,planner=100ms), time scale 1.",
+                "The run ends at the finish, at the time limit, when the robot is stuck, or on Ctrl-C; in every case "
+                + "the robot is stopped first, then the summary is printed and written."})
 public final class RunCommand implements Callable<Integer> {
 
-    @Option(names = "--scenario", defaultValue = "paper-room", paramLabel = "paper-room|FILE",
-            description = "Built-in scenario name or a scenario YAML file (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--scenario", defaultValue = ScenarioLoader.PAPER_ROOM, paramLabel = "NAME|FILE",
+            description = "A built-in scenario (" + ScenarioLoader.BUILT_IN_NAMES + ") or a scenario YAML file (default: ${DEFAULT-VALUE}).")
     String scenario;
 
     @Option(names = "--periods", paramLabel = "TASK=DURATION,...",
@@ -58,12 +59,13 @@ public final class RunCommand implements Callable<Integer> {
             description = "Use this Player server instead of the built-in simulator.")
     String player;
 
-    @Option(names = "--seed", defaultValue = "1", description = "Seed of this run's noise: laser ranges, odometry increments (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--seed", defaultValue = "1", paramLabel = "S", description = "Seed of this run's noise: laser ranges, odometry increments (default: ${DEFAULT-VALUE}).")
     long seed;
 
     @Option(names = "--robot-seed", defaultValue = "4", paramLabel = "S",
-            description = {"Seed of the simulated robot's systematic odometry errors (scale, heading, drift), drawn once per robot:",
-                    "the same robot seed is the same robot in every run, as the paper used one Koala (default: ${DEFAULT-VALUE})."})
+            description = "Seed of the simulated robot's systematic odometry errors (scale, heading, drift), drawn once "
+                    + "per robot: the same robot seed is the same robot in every run, as the paper used one Koala "
+                    + "(default: ${DEFAULT-VALUE}).")
     long robotSeed;
 
     @Option(names = "--out", paramLabel = "DIR", description = "Output folder (default: runs/<timestamp>).")
@@ -80,14 +82,15 @@ public final class RunCommand implements Callable<Integer> {
             description = "Occupancy grid cell size (default: ${DEFAULT-VALUE}; the paper used 0.5).")
     double gridResolutionM;
 
-    @Option(names = "--model", defaultValue = "r0",
+    @Option(names = "--model", defaultValue = "r0", paramLabel = "NAME",
             description = "Robot model name for ground truth through simulation:0 (default: ${DEFAULT-VALUE}).")
     String model;
 
     @Option(names = "--inflation-margin", defaultValue = "0", paramLabel = "METRES",
-            description = {"Clearance the path planner adds to the robot's radius when it inflates obstacles (default: ${DEFAULT-VALUE}:",
-                    "the planner keeps the body clear, the obstacle avoider keeps the margin; 0.05 is the controller's",
-                    "library default and earlier versions' run default, under which the avoider's zone never sees an obstacle)."})
+            description = "Clearance the path planner adds to the robot's radius when it inflates obstacles (default: "
+                    + "${DEFAULT-VALUE}: the planner keeps the body clear, the obstacle avoider keeps the margin; 0.05 is "
+                    + "the controller's library default and earlier versions' run default, under which the avoider's "
+                    + "zone never sees an obstacle).")
     double inflationMarginM;
 
     @Option(names = "--robot", paramLabel = "koala|ideal",
