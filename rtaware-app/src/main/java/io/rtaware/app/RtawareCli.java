@@ -25,8 +25,8 @@ import picocli.CommandLine.Command;
 @Command(name = "rtaware", mixinStandardHelpOptions = true, version = "rtaware 0.1.0",
         description = "Run robot controllers whose tasks are aware of time.",
         footer = {"", "JVM: unless RTAWARE_JAVA_OPTS is set (it replaces them), the ./rtaware launcher runs Java with "
-                + "-XX:+UseZGC -Xms512m -Xmx512m -XX:+AlwaysPreTouch (plus -XX:+ZGenerational on JDK 21-23, and no "
-                + "guaranteed safepoint every second on JDK 17.0.8+, 21 and 22). ZGC is the measured choice: G1 pauses "
+                + "-XX:+UseZGC -Xms512m -Xmx512m -XX:+AlwaysPreTouch, plus on JDK 21-23 -XX:+ZGenerational, and on JDK "
+                + "17.0.8 and later, 21 and 22 no guaranteed safepoint every second. ZGC is the measured choice: G1 pauses "
                 + "of 15-28 ms under garbage load go straight into release lateness (docs/performance.md, JVM choice: "
                 + "rtaware bench --compare --gc-pressure 200)."},
         subcommands = {RunCommand.class, SimCommand.class, WorldCommand.class, BenchCommand.class, AnalyzeCommand.class,
@@ -82,6 +82,10 @@ public final class RtawareCli {
      */
     public static CommandLine commandLine(CommandLine.IFactory factory) {
         CommandLine cli = new CommandLine(new RtawareCli(), factory);
+        // "Usage: rtaware run [OPTIONS]": the options are listed one per line below; a synopsis of
+        // thirty of them wrapped mid-option ("[--export-zenoh=tcp/HOST:" / "PORT]")
+        cli.getCommandSpec().usageMessage().abbreviateSynopsis(true);
+        cli.getSubcommands().values().forEach(c -> c.getCommandSpec().usageMessage().abbreviateSynopsis(true));
         cli.setParameterExceptionHandler((ex, a) -> {
             PrintWriter err = ex.getCommandLine().getErr();
             String suggestion = ex instanceof CommandLine.UnmatchedArgumentException u && !u.getUnmatched().isEmpty()

@@ -85,10 +85,10 @@ import picocli.CommandLine.Option;
                 "  rtaware bench --spec \"a:10ms:2ms,b:50ms:20ms\" --chain --trace trace.json",
                 "  rtaware bench --spec \"a:10ms:2ms,b:2ms..50ms:1ms\" --chain --adaptive",
                 "  rtaware bench --tasks 2 --period 1ms --work 100us --realtime",
-                "  rtaware bench --compare --tasks 8 --period 10ms --work 1ms --duration 30s --json c.json",
+                "  rtaware bench --compare --tasks 8 --period 10ms --work 1ms --json c.json",
                 "",
-                "  rtaware bench --executor pooled --tasks 10000 --period 10ms --work 0 --duration 10s",
-                "  rtaware bench --sweep-tasks 10,100,1000,10000 --period 10ms --work 0 --duration 4s",
+                "  rtaware bench --executor pooled --tasks 10000 --period 10ms --work 0",
+                "  rtaware bench --sweep-tasks 10,100,1000,10000 --period 10ms --duration 4s",
                 "",
                 "--compare runs the same task set on rtaware (threaded and pooled executors), on "
                 + "ScheduledThreadPoolExecutor (one thread per task, and one pool of --workers threads) and on a bare "
@@ -116,7 +116,8 @@ public final class BenchCommand implements Callable<Integer> {
             description = "CPU work per cycle, e.g. 2ms; 0 for none (default: ${DEFAULT-VALUE}).")
     long workNs;
 
-    @Option(names = "--spec", paramLabel = "NAME:PERIOD:WORK,...", description = "Mixed task set name:period:work,..., e.g. a:10ms:2ms,b:50ms:20ms (overrides --tasks/--period/--work).")
+    @Option(names = "--spec", paramLabel = "NAME:PERIOD:WORK,...", description = "A mixed task set, each task as name:period:work, for example "
+            + "a:10ms:2ms,b:50ms:20ms (overrides --tasks, --period and --work).")
     String spec;
 
     @Option(names = "--chain", description = "Each task consumes the previous task's output key.")
@@ -176,7 +177,8 @@ public final class BenchCommand implements Callable<Integer> {
     RecordOptions record;
 
     @Option(names = "--adaptive",
-            description = "Move the period of tasks declared with a range (a:5ms..50ms:1ms) from run-time evidence.")
+            description = "Move the period of tasks declared with a range of periods in --spec, for example "
+                    + "a:5ms..50ms:1ms, from run-time evidence.")
     boolean adaptive;
 
     @Option(names = "--realtime",
@@ -201,8 +203,8 @@ public final class BenchCommand implements Callable<Integer> {
     @Option(names = "--sleep", paramLabel = "nanosleep|park",
             description = "How the threaded executor's task threads sleep until their next release: "
                     + "nanosleep (clock_nanosleep to the absolute release time, one system call; the default "
-                    + "where libc can be bound, else park) or park (LockSupport.parkNanos, as a plain Java "
-                    + "thread does). With --compare it applies to rtaware's row; the park-loop row always parks.")
+                    + "where libc can be bound, else park) or park (parkNanos of "
+                    + "LockSupport, as a plain Java thread does). With --compare it applies to rtaware's row; the park-loop row always parks.")
     String sleep = "nanosleep";
 
     @Option(names = "--workers", paramLabel = "N",
@@ -211,7 +213,7 @@ public final class BenchCommand implements Callable<Integer> {
 
     @Option(names = "--sweep-tasks", paramLabel = "N,N,...", split = ",",
             description = "Run one comparison (as --compare) per task count, e.g. 10,100,1000,10000, print misses "
-                    + "and p99/p99.9 lateness per executor and count, and plot them (--plot).")
+                    + "and the p99 and p99.9 lateness per executor and count, and plot them (--plot).")
     List<Integer> sweepTasks;
 
     @Option(names = "--plot", paramLabel = "FILE", defaultValue = "bench-sweep.png",

@@ -58,8 +58,8 @@ import picocli.CommandLine.Spec;
                 + "skips the runs already in results.csv. Worst case it takes sets x runs x (360 s / time scale) plus "
                 + "JVM start-up, plus the waits.",
                 "Examples:",
-                "  rtaware experiment --sets paper --runs 2 --time-scale 20 --out experiments/quick",
-                "  rtaware experiment --sets sweep-obstacle --runs 5 --shard 1/2 --out experiments/sweep-a",
+                "  rtaware experiment --sets paper --runs 2 --time-scale 20 --out exp/quick",
+                "  rtaware experiment --sets sweep-obstacle --runs 5 --shard 1/2 --out exp/a",
                 "  rtaware experiment --sets my-sets.yaml --runs 10 --out experiments/mine"})
 public final class ExperimentCommand implements Callable<Integer> {
 
@@ -107,7 +107,7 @@ public final class ExperimentCommand implements Callable<Integer> {
     long robotSeed;
 
     @Option(names = "--robots", defaultValue = "1", paramLabel = "N",
-            description = "Spread the runs over N robots (robot seeds S..S+N-1, run j on S + (j - 1) mod N) to include robot-to-robot variation (default: ${DEFAULT-VALUE}, one robot).")
+            description = "Spread the runs over N robots (robot seeds S to S + N - 1, run j on S + (j - 1) mod N) to include robot-to-robot variation (default: ${DEFAULT-VALUE}, one robot).")
     int robots;
 
     @Option(names = "--out", paramLabel = "DIR", description = "Output folder (default: experiments/<timestamp>).")

@@ -49,7 +49,7 @@ public final class ReportCommand implements Callable<Integer> {
     boolean includeBusy;
 
     @Option(names = "--results", paramLabel = "FILE", description = "Report each DIR on its own (no merge) and write "
-            + "FILE (e.g. docs/experiment/RESULTS.md): Tables I and II and the claims beside the paper's, with the "
+            + "FILE (for example docs/experiment/RESULTS.md): Tables I and II and the claims beside the paper's, with the "
             + "conditions, for the docs to link.")
     Path results;
 

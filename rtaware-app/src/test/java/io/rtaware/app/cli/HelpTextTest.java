@@ -9,8 +9,6 @@ import io.rtaware.app.RtawareCli;
 import io.rtaware.sim.scenario.ScenarioLoader;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 import picocli.CommandLine;
 import picocli.CommandLine.Model.CommandSpec;
@@ -60,21 +58,36 @@ class HelpTextTest {
         }
     }
 
+    /**
+     * A word with punctuation inside ({@code ui.perfetto.dev}, {@code a:10ms:2ms}, {@code tcp/HOST:PORT})
+     * stays on one line: picocli's wrapping breaks after such punctuation ({@code https:} /
+     * {@code //ui.perfetto.dev}), so these words must sit where no line ends. The synopsis is
+     * abbreviated ({@code [OPTIONS]}) for the same reason.
+     */
     @Test
-    void addressesAreNeverSplitAcrossLines() {
-        Pattern url = Pattern.compile("(https?://)?[\\w-]+(\\.[\\w-]+)*\\.(dev|org|com|io|net)(/[^\\s)]*)?");
+    void noWordIsSplitAcrossLines() {
         for (CommandLine c : commands()) {
-            String help = c.getUsageMessage(CommandLine.Help.Ansi.OFF);
-            List<String> wanted = new ArrayList<>();
-            for (OptionSpec o : c.getCommandSpec().options()) {
-                Matcher m = url.matcher(String.join(" ", o.description()));
-                while (m.find()) {
-                    wanted.add(m.group().replaceAll("[.,;]+$", ""));
-                }
+            CommandSpec spec = c.getCommandSpec();
+            CommandLine.Help help = c.getHelp();
+            assertWhole(spec, String.join(" ", spec.usageMessage().description()), help.description());
+            assertWhole(spec, String.join(" ", spec.usageMessage().footer()), help.footer());
+            for (OptionSpec o : spec.options()) { // the options' own rows: an example elsewhere does not count
+                String text = String.join(" ", o.description()).replace("${DEFAULT-VALUE}", String.valueOf(o.defaultValue()));
+                assertWhole(spec, text + (o.arity().max > 0 ? " " + o.longestName() + "=" + o.paramLabel() : ""),
+                        help.optionList());
             }
-            for (String address : wanted) {
-                assertTrue(help.contains(address), c.getCommandSpec().qualifiedName() + " --help splits " + address
-                        + ":\n" + help);
+            for (String line : spec.usageMessage().description()) {
+                assertTrue(!line.startsWith("  ") || line.length() < 80, spec.qualifiedName()
+                        + ": an example wider than the help wraps into the next line: " + line);
+            }
+        }
+    }
+
+    private static void assertWhole(CommandSpec spec, String text, String rendered) {
+        for (String w : text.split("\\s+")) {
+            String word = w.replaceAll("^[(\"']+|[).,;:\"']+$", "");
+            if (word.matches(".*\\w[:/.]+[\\w+].*")) {
+                assertTrue(rendered.contains(word), spec.qualifiedName() + " --help splits '" + word + "':\n" + rendered);
             }
         }
     }
