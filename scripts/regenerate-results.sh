@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Re-runs the published experiments on this machine with their conditions recorded, into new
 # folders, and regenerates docs/experiment/RESULTS.md from them. Each run waits for a quiet
-# machine (rtaware experiment's default; at most --quiet-wait seconds, then it is labelled busy
+# machine (rtaware experiment's default; at most --quiet-wait, then it is labelled busy
 # and left out of the report). Run it on an otherwise idle machine (anything else, even reading a
 # source tree, makes runs busy): 5 x 12 paper runs (about 30 min on the 2-vCPU VM), 2 x 5 x 10 office
 # runs (about 30 min), 9 x 5 office runs at three speeds (13 min), 5 x 10 corridor runs (9 min), then

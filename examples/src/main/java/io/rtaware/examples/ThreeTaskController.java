@@ -48,7 +48,7 @@ import java.util.Optional;
  * <p>The recording names this class as its replay provider ({@link ReplayableController}, registered
  * in {@code META-INF/services}) with the controller's configuration (the wall, the step), so
  * {@code rtaware replay FILE.mcap --classpath CLASSES} re-executes it exactly, or with other
- * periods ({@code --periods slow=40}).
+ * periods ({@code --periods slow=40ms}).
  *
  * <p>Run it with {@code java io.rtaware.examples.ThreeTaskController FILE.mcap [seconds]}.
  */

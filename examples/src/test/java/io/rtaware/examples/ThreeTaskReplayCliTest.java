@@ -76,7 +76,7 @@ class ThreeTaskReplayCliTest {
 
     @Test
     void withOtherPeriodsTheExampleIsReplayedAsARun() throws Exception {
-        Cli whatIf = rtaware("replay", recording.toString(), "--classpath", exampleClasses.toString(), "--periods", "slow=40");
+        Cli whatIf = rtaware("replay", recording.toString(), "--classpath", exampleClasses.toString(), "--periods", "slow=40ms");
         assertEquals(0, whatIf.status(), whatIf.err());
         assertTrue(whatIf.out().contains("what-if replay of " + recording), whatIf.out());
         assertTrue(whatIf.out().lines().anyMatch(l -> l.contains("slow=40") && l.contains("(recorded: ") && l.contains("slow=20")),

@@ -19,6 +19,8 @@ import java.util.function.ToDoubleFunction;
  * @param byMachine runs per verdict of their own conditions ({@code quiet}, {@code busy},
  *     {@code disturbed}, {@code unknown}, {@code unrecorded})
  * @param used runs the summary, tables, t-tests and claims use
+ * @param quietUsed how many of the used runs count as quiet ({@link #countsAsQuiet}); 0 with
+ *     {@code used > 0} is a report made only of busy runs ({@link #busyOnly()})
  * @param leftOut each run left out, with the reason
  * @param otherCpus CPU used by other processes during the used runs, CPUs
  * @param stealPct steal during the used runs, percent
@@ -28,7 +30,7 @@ import java.util.function.ToDoubleFunction;
  * @param waitedForQuietS the time waited for a quiet machine before each used run, s
  */
 public record ExperimentConditions(boolean includeBusy, String rule, int runs, Map<String, Integer> byMachine, int used,
-                                   List<String> leftOut, Spread otherCpus, Spread stealPct, Spread loadStart,
+                                   int quietUsed, List<String> leftOut, Spread otherCpus, Spread stealPct, Spread loadStart,
                                    Spread gcMaxPauseMs, Spread timeToSafepointMaxMs, Spread waitedForQuietS) {
 
     /** Which runs count as quiet, in words. */
@@ -92,7 +94,8 @@ public record ExperimentConditions(boolean includeBusy, String rule, int runs, M
                         ? " (made before rtaware recorded conditions, or no report)" : "" : " (" + m.reasons() + ")"));
             }
         }
-        return new ExperimentConditions(includeBusy, RULE, rows.size(), byMachine, used.size(), leftOut,
+        int quietUsed = (int) used.stream().filter(ExperimentConditions::countsAsQuiet).count();
+        return new ExperimentConditions(includeBusy, RULE, rows.size(), byMachine, used.size(), quietUsed, leftOut,
                 Spread.of(used, RunMachine::otherCpus), Spread.of(used, RunMachine::stealPct),
                 Spread.of(used, RunMachine::loadStart), Spread.of(used, RunMachine::gcMaxPauseMs),
                 Spread.of(used, RunMachine::timeToSafepointMaxMs),
@@ -100,11 +103,31 @@ public record ExperimentConditions(boolean includeBusy, String rule, int runs, M
                         RunMachine::waitedS));
     }
 
-    /** @return one paragraph for report.md: the counts, what is used and why */
-    public String text() {
+    /** @return true if the report uses runs and not one of them was made on a quiet machine */
+    public boolean busyOnly() {
+        return used > 0 && quietUsed == 0;
+    }
+
+    /**
+     * @return the warning a report made only of busy runs opens with, e.g. {@code Not one run of this
+     *     report was made on a machine known to be quiet (2 busy): ...}; empty when some used run was quiet
+     */
+    public String busyLabel() {
+        return busyOnly() ? "Not one run of this report was made on a machine known to be quiet (" + machineCounts() + "): its run "
+                + "times, distances and misses measure the machine's load as much as the periods; re-run on a quiet "
+                + "machine to compare sets." : "";
+    }
+
+    /** @return the runs per machine verdict in words, e.g. {@code 2 busy, 4 quiet} */
+    public String machineCounts() {
         List<String> counts = new ArrayList<>();
         byMachine.forEach((k, n) -> counts.add(n + " " + k));
-        String s = String.format(Locale.ROOT, "Machine during the runs: %d run(s): %s. ", runs, String.join(", ", counts));
+        return String.join(", ", counts);
+    }
+
+    /** @return one paragraph for report.md: the counts, what is used and why */
+    public String text() {
+        String s = String.format(Locale.ROOT, "Machine during the runs: %d run(s): %s. ", runs, machineCounts());
         int unrecorded = byMachine.getOrDefault(RunMachine.UNRECORDED, 0);
         if (unrecorded > 0) {
             s += unrecorded + " run(s) were made before rtaware recorded the machine's conditions: whether the machine "

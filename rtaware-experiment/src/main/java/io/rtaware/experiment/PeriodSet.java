@@ -85,9 +85,9 @@ public record PeriodSet(String name, Map<String, Long> periodsMs, Double topSpee
                 "occupancy", occupancyMs, "planner", plannerMs));
     }
 
-    /** @return the value of {@code rtaware run --periods}, e.g. {@code waypoint=100,obstacle=50,...} */
+    /** @return the value of {@code rtaware run --periods}, e.g. {@code waypoint=100ms,obstacle=50ms,...} */
     public String periodsArgument() {
-        return periodsMs.entrySet().stream().map(e -> e.getKey() + "=" + e.getValue()).collect(Collectors.joining(","));
+        return periodsMs.entrySet().stream().map(e -> e.getKey() + "=" + e.getValue() + "ms").collect(Collectors.joining(","));
     }
 
     /** @return the periods as {@code 100/50/100/100} in the order of {@link #TASKS} */

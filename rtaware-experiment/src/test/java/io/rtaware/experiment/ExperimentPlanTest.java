@@ -21,7 +21,7 @@ class ExperimentPlanTest {
         PeriodSet fast = PeriodSet.of("fast", 100, 20, 100, 100).withTopSpeed(0.35);
         ExperimentPlan plan = new ExperimentPlan(List.of(fast, PeriodSet.of("default", 100, 20, 100, 100)), 2, CONDITIONS);
         List<PlannedRun> order = plan.order();
-        assertEquals(List.of("--scenario", "paper-room", "--periods", "waypoint=100,obstacle=20,occupancy=100,planner=100",
+        assertEquals(List.of("--scenario", "paper-room", "--periods", "waypoint=100ms,obstacle=20ms,occupancy=100ms,planner=100ms",
                 "--time-scale", "10", "--seed", "41", "--robot-seed", "4", "--top-speed", "0.35", "--out", "o", "--quiet"),
                 plan.runArguments(order.get(2), Path.of("o")));
         assertFalse(plan.runArguments(order.get(1), Path.of("o")).contains("--top-speed"));

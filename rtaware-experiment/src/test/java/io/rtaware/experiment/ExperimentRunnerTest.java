@@ -50,7 +50,7 @@ class ExperimentRunnerTest {
         List<RunResult> rows = runner(twoSets(), 2, "paper-room").run();
         assertEquals(4, rows.size());
         assertEquals(List.of("1/1", "2/1", "1/2", "2/2"), rows.stream().map(r -> r.set() + "/" + r.run()).toList());
-        assertEquals(List.of("--scenario", "paper-room", "--periods", "waypoint=10,obstacle=10,occupancy=10,planner=10",
+        assertEquals(List.of("--scenario", "paper-room", "--periods", "waypoint=10ms,obstacle=10ms,occupancy=10ms,planner=10ms",
                 "--time-scale", "20", "--seed", "7", "--robot-seed", "4", "--out", dir.resolve("runs/set1-run1").toString(), "--quiet"),
                 started.get(0));
         assertEquals("8", started.get(2).get(started.get(2).indexOf("--seed") + 1));

@@ -26,7 +26,7 @@ class ExperimentSetsTest {
         assertEquals("50/50/50/50", sets.get(2).shortLabel());
         assertEquals("100/50/100/100", sets.get(3).shortLabel());
         assertEquals("100/100/100/100", sets.get(4).shortLabel());
-        assertEquals("waypoint=100,obstacle=50,occupancy=100,planner=100", sets.get(3).periodsArgument());
+        assertEquals("waypoint=100ms,obstacle=50ms,occupancy=100ms,planner=100ms", sets.get(3).periodsArgument());
     }
 
     @Test

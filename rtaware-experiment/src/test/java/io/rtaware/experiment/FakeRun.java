@@ -46,7 +46,7 @@ public final class FakeRun {
         long seed = Long.parseLong(opts.get("--seed"));
         Map<String, Long> periods = new LinkedHashMap<>();
         for (String p : opts.get("--periods").split(",")) {
-            periods.put(p.split("=")[0], Long.parseLong(p.split("=")[1]));
+            periods.put(p.split("=")[0], io.rtaware.core.time.Durations.parseNanos(p.split("=")[1]) / 1_000_000);
         }
         List<TaskReport> tasks = new ArrayList<>();
         int rank = 0;

@@ -86,7 +86,29 @@ class QuietRunsTest {
         ResultsCsv.append(dir.resolve(ResultsCsv.FILE_NAME), old);
         ExperimentInputException e = assertThrows(ExperimentInputException.class,
                 () -> ExperimentReport.render(dir, MapBackground.none()));
-        assertTrue(e.getMessage().contains("none of its 1 runs was made on a quiet machine ({unrecorded=1})"),
+        assertTrue(e.getMessage().contains("none of its 1 runs was made on a quiet machine (1 unrecorded); "),
                 e.getMessage());
+    }
+
+    /** experiment --allow-busy where no run was quiet ran every run, then refused to report them. */
+    @Test
+    void runsAskedForOnABusyMachineAreReportedLabelledBusy() throws Exception {
+        RunMachine machine = new RunMachine("busy", "other processes used 1.2 of 2 CPUs (more than 0.10)", 1.2, 0, 0.4,
+                0.4, 0.1, Double.NaN, "busy", 0, 2);
+        for (int run = 1; run <= 2; run++) {
+            ResultsCsv.append(dir.resolve(ResultsCsv.FILE_NAME), new RunResult(1, run, ExperimentSets.paper().get(0),
+                    new RunConditions("paper-room", 10, run, null), "completed", 250, 0.2, 20, 0, 4, 4,
+                    java.util.Map.of()).withMachine(machine));
+        }
+        assertThrows(ExperimentInputException.class, () -> ExperimentReport.render(dir, MapBackground.none()),
+                "without --allow-busy such a folder is still refused");
+        ExperimentSummary s = ExperimentReport.render(dir, MapBackground.none(), false, true);
+        assertEquals(2, s.conditions().used(), "every run is used");
+        assertTrue(s.conditions().busyOnly());
+        String md = Files.readString(dir.resolve(ExperimentReport.MARKDOWN_FILE));
+        assertTrue(md.startsWith("# rtaware experiment report\n\n**Busy machine.** Not one run of this report was made on a "
+                + "machine known to be quiet (2 busy): "), md);
+        JsonNode summary = new ObjectMapper().readTree(dir.resolve(ExperimentReport.SUMMARY_FILE).toFile());
+        assertEquals(0, summary.path("conditions").path("quiet_used").asInt(-1), summary.path("conditions").toString());
     }
 }

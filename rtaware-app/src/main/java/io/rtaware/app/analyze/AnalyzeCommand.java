@@ -160,7 +160,7 @@ public final class AnalyzeCommand implements Callable<Integer> {
             doc = ReportDocument.read(file);
         } catch (IOException | RuntimeException e) {
             String why = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage().lines().findFirst().orElse("");
-            throw new UserError("cannot read report " + file + ": " + why);
+            throw new UserError(why.startsWith(file.toString()) ? "report " + why : "cannot read report " + file + ": " + why);
         }
         try {
             ReportChecks.check(doc.report(), file);

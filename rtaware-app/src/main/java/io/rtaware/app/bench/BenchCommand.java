@@ -80,25 +80,24 @@ import picocli.CommandLine.Option;
  * CPU work.
  */
 @Command(name = "bench", mixinStandardHelpOptions = true,
-        description = {"Run a synthetic task set and report misses, lateness and execution times.",
-                "Work is real CPU work (a busy loop calibrated at start-up), not sleep.",
+        description = {"Run a synthetic task set and report misses, lateness and execution times. Work is real CPU "
+                + "work (a busy loop calibrated at start-up), not sleep.",
                 "Examples:",
                 "  rtaware bench --tasks 4 --period 10ms --work 2ms --duration 10s --json r.json",
                 "  rtaware bench --spec \"a:10ms:2ms,b:50ms:20ms\" --chain --trace trace.json",
                 "  rtaware bench --spec \"a:10ms:2ms,b:2ms..50ms:1ms\" --chain --adaptive",
                 "  rtaware bench --tasks 2 --period 1ms --work 100us --realtime",
-                "  rtaware bench --compare --tasks 8 --period 10ms --work 1ms --duration 30s --json c.json",
+                "  rtaware bench --compare --tasks 8 --period 10ms --work 1ms --json c.json",
                 "",
-                "  rtaware bench --executor pooled --tasks 10000 --period 10ms --work 0 --duration 10s",
-                "  rtaware bench --sweep-tasks 10,100,1000,10000 --period 10ms --work 0 --duration 4s",
+                "  rtaware bench --executor pooled --tasks 10000 --period 10ms --work 0",
+                "  rtaware bench --sweep-tasks 10,100,1000,10000 --period 10ms --duration 4s",
                 "",
-                "--compare runs the same task set on rtaware (threaded and pooled executors), on",
-                "ScheduledThreadPoolExecutor (one thread per task, and one pool of --workers threads)",
-                "on a bare parkNanos loop (the floor for a Java thread) and on the timer wheels of Netty",
-                "and Agrona (netty-wheel, agrona-wheel), interleaved in segments",
-                "so all of them see the same machine noise, and prints",
-                "lateness, misses, bursts, CPU and bytes allocated per release side by side",
-                "(JSON schema rtaware.bench-compare/1 with --json)."})
+                "--compare runs the same task set on rtaware (threaded and pooled executors), on "
+                + "ScheduledThreadPoolExecutor (one thread per task, and one pool of --workers threads), on a bare "
+                + "parkNanos loop (the floor for a Java thread) and on the timer wheels of Netty and Agrona "
+                + "(netty-wheel, agrona-wheel), interleaved in segments so all of them see the same machine noise, and "
+                + "prints lateness, misses, bursts, CPU and bytes allocated per release side by side "
+                + "(JSON schema rtaware.bench-compare/1 with --json)."})
 public final class BenchCommand implements Callable<Integer> {
 
     /** Exit status when the run ended before its duration (a task hit a fatal VM error). */
@@ -109,18 +108,19 @@ public final class BenchCommand implements Callable<Integer> {
     /** Most tasks the warm-up runs (enough to compile every path of a cycle, few enough to fit beside the set). */
     static final int WARM_UP_TASKS = 1000;
 
-    @Option(names = "--tasks", description = "Number of identical tasks (default: ${DEFAULT-VALUE}).", defaultValue = "4")
+    @Option(names = "--tasks", paramLabel = "N", description = "Number of identical tasks (default: ${DEFAULT-VALUE}).", defaultValue = "4")
     int tasks;
 
-    @Option(names = "--period", converter = DurationConverter.class, defaultValue = "10ms",
+    @Option(names = "--period", converter = DurationConverter.class, paramLabel = "DURATION", defaultValue = "10ms",
             description = "Period of each task, e.g. 10ms (default: ${DEFAULT-VALUE}).")
     long periodNs;
 
-    @Option(names = "--work", converter = DurationConverter.class, defaultValue = "2ms",
+    @Option(names = "--work", converter = DurationConverter.class, paramLabel = "DURATION", defaultValue = "2ms",
             description = "CPU work per cycle, e.g. 2ms; 0 for none (default: ${DEFAULT-VALUE}).")
     long workNs;
 
-    @Option(names = "--spec", description = "Mixed task set name:period:work,..., e.g. a:10ms:2ms,b:50ms:20ms (overrides --tasks/--period/--work).")
+    @Option(names = "--spec", paramLabel = "NAME:PERIOD:WORK,...", description = "A mixed task set, each task as name:period:work, for example "
+            + "a:10ms:2ms,b:50ms:20ms (overrides --tasks, --period and --work).")
     String spec;
 
     @Option(names = "--chain", description = "Each task consumes the previous task's output key.")
@@ -131,18 +131,18 @@ public final class BenchCommand implements Callable<Integer> {
             + "executor, with --compare and --sweep-tasks too.")
     boolean stagger;
 
-    @Option(names = "--warmup", converter = DurationConverter.class, defaultValue = "2s",
+    @Option(names = "--warmup", converter = DurationConverter.class, paramLabel = "DURATION", defaultValue = "2s",
             description = "Before the measured run, run up to " + WARM_UP_TASKS + " of the tasks on the same "
                     + "executor for this long and discard the numbers: the JIT compiles the cycle's code and the "
                     + "collector settles after the monitor's allocation; 0 for none (default: ${DEFAULT-VALUE}). "
                     + "--compare and --sweep-tasks warm up with a round of their own.")
     long warmUpNs;
 
-    @Option(names = "--duration", converter = DurationConverter.class, defaultValue = "10s",
+    @Option(names = "--duration", converter = DurationConverter.class, paramLabel = "DURATION", defaultValue = "10s",
             description = "How long to run, in world time (default: ${DEFAULT-VALUE}).")
     long durationNs;
 
-    @Option(names = "--time-scale", converter = TimeScaleConverter.class, defaultValue = "1", description = "World time runs K times faster than wall time (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--time-scale", converter = TimeScaleConverter.class, defaultValue = "1", paramLabel = "K", description = "World time runs K times faster than wall time (default: ${DEFAULT-VALUE}).")
     double timeScale;
 
     @Option(names = "--json", description = "Write the JSON report (schema rtaware.report/1) to FILE.", paramLabel = "FILE")
@@ -160,7 +160,7 @@ public final class BenchCommand implements Callable<Integer> {
             + "(agrona-wheel), interleaved, and compare them; --duration is the measured time per executor.")
     boolean compare;
 
-    @Option(names = "--segment", converter = DurationConverter.class, defaultValue = "2s",
+    @Option(names = "--segment", converter = DurationConverter.class, paramLabel = "DURATION", defaultValue = "2s",
             description = "With --compare: length of one executor's turn (default: ${DEFAULT-VALUE}).")
     long segmentNs;
 
@@ -180,7 +180,8 @@ public final class BenchCommand implements Callable<Integer> {
     RecordOptions record;
 
     @Option(names = "--adaptive",
-            description = "Move the period of tasks declared with a range (a:5ms..50ms:1ms) from run-time evidence.")
+            description = "Move the period of tasks declared with a range of periods in --spec, for example "
+                    + "a:5ms..50ms:1ms, from run-time evidence.")
     boolean adaptive;
 
     @Option(names = "--realtime",
@@ -211,8 +212,8 @@ public final class BenchCommand implements Callable<Integer> {
     @Option(names = "--sleep", paramLabel = "nanosleep|park",
             description = "How the threaded executor's task threads sleep until their next release: "
                     + "nanosleep (clock_nanosleep to the absolute release time, one system call; the default "
-                    + "where libc can be bound, else park) or park (LockSupport.parkNanos, as a plain Java "
-                    + "thread does). With --compare it applies to rtaware's row; the park-loop row always parks.")
+                    + "where libc can be bound, else park) or park (parkNanos of "
+                    + "LockSupport, as a plain Java thread does). With --compare it applies to rtaware's row; the park-loop row always parks.")
     String sleep = "nanosleep";
 
     @Option(names = "--workers", paramLabel = "N",
@@ -221,7 +222,7 @@ public final class BenchCommand implements Callable<Integer> {
 
     @Option(names = "--sweep-tasks", paramLabel = "N,N,...", split = ",",
             description = "Run one comparison (as --compare) per task count, e.g. 10,100,1000,10000, print misses "
-                    + "and p99/p99.9 lateness per executor and count, and plot them (--plot).")
+                    + "and the p99 and p99.9 lateness per executor and count, and plot them (--plot).")
     List<Integer> sweepTasks;
 
     @Option(names = "--plot", paramLabel = "FILE", defaultValue = "bench-sweep.png",

@@ -3,7 +3,11 @@ package io.rtaware.app.cli;
 import io.rtaware.core.time.Durations;
 import picocli.CommandLine;
 
-/** Converts {@code 10ms}, {@code 2.5ms}, {@code 1s}, bare milliseconds, to nanoseconds. */
+/**
+ * Converts {@code 10ms}, {@code 2.5ms}, {@code 1s} to nanoseconds, for every option that takes a
+ * duration (their placeholder is {@code DURATION}). A number without a unit, other than 0, is refused
+ * with one line naming the value and the units ({@link Durations#parseNanos}).
+ */
 public final class DurationConverter implements CommandLine.ITypeConverter<Long> {
 
     @Override

@@ -17,7 +17,7 @@ import picocli.CommandLine.Option;
 public final class TraceOptions {
 
     @Option(names = "--trace", paramLabel = "FILE",
-            description = "Write a Chrome trace event file (open it in https://ui.perfetto.dev).")
+            description = "Write a Chrome trace event file of every cycle; open it in ui.perfetto.dev.")
     Path file;
 
     @Option(names = "--trace-capacity", paramLabel = "N", defaultValue = "1048576",

@@ -1,6 +1,7 @@
 package io.rtaware.app.experiment;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.output.OutputFolder;
 import io.rtaware.core.output.OutputWrites;
@@ -25,6 +26,7 @@ import io.rtaware.experiment.RunConditions;
 import io.rtaware.experiment.RunResult;
 import io.rtaware.experiment.Shard;
 import io.rtaware.experiment.report.ExperimentReport;
+import io.rtaware.sim.scenario.ScenarioLoader;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -48,16 +50,16 @@ import picocli.CommandLine.Spec;
  * end, or of what finished on Ctrl-C.
  */
 @Command(name = "experiment", mixinStandardHelpOptions = true,
-        description = {"Reproduce the paper's experiment: several sets of task periods, repeated runs of the course,",
-                "run time, distance to the finish, missed deadlines, and Welch t-tests between sets.",
-                "Each run is a fresh JVM running 'rtaware run'; runs of different sets are interleaved.",
-                "Before each run the machine is checked and, unless --allow-busy, the run waits for it to be quiet;",
-                "the report uses the quiet runs only unless --include-busy.",
-                "Re-running into the same --out (or --resume) skips the runs already in results.csv.",
-                "Worst case it takes sets x runs x (360 s / time scale) plus JVM start-up.",
+        description = {"Reproduce the paper's experiment: several sets of task periods, repeated runs of the course, "
+                + "run time, distance to the finish, missed deadlines, and Welch t-tests between sets. Each run is a "
+                + "fresh JVM running 'rtaware run'; runs of different sets are interleaved. Before each run the machine "
+                + "is checked and, unless --allow-busy, the run waits for it to be quiet (at most --quiet-wait); the "
+                + "report uses the quiet runs only unless --include-busy. Re-running into the same --out (or --resume) "
+                + "skips the runs already in results.csv. Worst case it takes sets x runs x (360 s / time scale) plus "
+                + "JVM start-up, plus the waits.",
                 "Examples:",
-                "  rtaware experiment --sets paper --runs 2 --time-scale 20 --out experiments/quick",
-                "  rtaware experiment --sets sweep-obstacle --runs 5 --shard 1/2 --out experiments/sweep-a",
+                "  rtaware experiment --sets paper --runs 2 --time-scale 20 --out exp/quick",
+                "  rtaware experiment --sets sweep-obstacle --runs 5 --shard 1/2 --out exp/a",
                 "  rtaware experiment --sets my-sets.yaml --runs 10 --out experiments/mine"})
 public final class ExperimentCommand implements Callable<Integer> {
 
@@ -78,11 +80,12 @@ public final class ExperimentCommand implements Callable<Integer> {
                     + "(default: ${DEFAULT-VALUE}, all runs).")
     String shard;
 
-    @Option(names = "--runs", defaultValue = "10", description = "Runs per set (default: ${DEFAULT-VALUE}, as in the paper).")
+    @Option(names = "--runs", defaultValue = "10", paramLabel = "N", description = "Runs per set (default: ${DEFAULT-VALUE}, as in the paper).")
     int runs;
 
-    @Option(names = "--scenario", defaultValue = "paper-room", paramLabel = "paper-room|FILE",
-            description = "The course, passed to 'rtaware run' (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--scenario", defaultValue = ScenarioLoader.PAPER_ROOM, paramLabel = "NAME|FILE",
+            description = "The course, passed to 'rtaware run': a built-in scenario (" + ScenarioLoader.BUILT_IN_NAMES
+                    + ") or a scenario YAML file (default: ${DEFAULT-VALUE}).")
     String scenario;
 
     @Option(names = "--time-scale", converter = TimeScaleConverter.class, defaultValue = "10", paramLabel = "K",
@@ -104,7 +107,7 @@ public final class ExperimentCommand implements Callable<Integer> {
     long robotSeed;
 
     @Option(names = "--robots", defaultValue = "1", paramLabel = "N",
-            description = "Spread the runs over N robots (robot seeds S..S+N-1, run j on S + (j - 1) mod N) to include robot-to-robot variation (default: ${DEFAULT-VALUE}, one robot).")
+            description = "Spread the runs over N robots (robot seeds S to S + N - 1, run j on S + (j - 1) mod N) to include robot-to-robot variation (default: ${DEFAULT-VALUE}, one robot).")
     int robots;
 
     @Option(names = "--out", paramLabel = "DIR", description = "Output folder (default: experiments/<timestamp>).")
@@ -115,17 +118,18 @@ public final class ExperimentCommand implements Callable<Integer> {
     boolean record;
 
     @Option(names = "--allow-busy", description = "Do not wait for a quiet machine before each run; runs on a busy "
-            + "machine are labelled in results.csv and left out of the report unless --include-busy.")
+            + "machine are labelled in results.csv and left out of the report unless --include-busy; when not one "
+            + "run was quiet, the report uses them all and is labelled busy.")
     boolean allowBusy;
 
     @Option(names = "--include-busy", description = "Use every run in the summary, tables, t-tests and claims, not only "
             + "those made on a quiet machine (the report says how many of each).")
     boolean includeBusy;
 
-    @Option(names = "--quiet-wait", defaultValue = "600", paramLabel = "S",
-            description = "Wait at most S seconds for a quiet machine before each run, then run it labelled "
+    @Option(names = "--quiet-wait", defaultValue = "600s", paramLabel = "DURATION", converter = DurationConverter.class,
+            description = "Wait at most this long for a quiet machine before each run, then run it labelled busy "
                     + "(default: ${DEFAULT-VALUE}).")
-    double quietWaitS;
+    long quietWaitNs;
 
     @Option(names = "--resume", description = "Continue the experiment in --out with the plan stored there (sets, runs, "
             + "scenario, time scale, seed, grid), skipping the runs already in its results.csv.")
@@ -161,11 +165,8 @@ public final class ExperimentCommand implements Callable<Integer> {
         }
         ProgressBar progress = new ProgressBar(System.err, System.console() != null, System::nanoTime,
                 RUN_LIMIT_S / timeScale);
-        if (!(quietWaitS >= 0)) {
-            throw new UserError("--quiet-wait must be a number of seconds >= 0, got " + quietWaitS);
-        }
         QuietGate gate = new QuietGate(MachineCheck.overWindow(new HostReader(HostFiles.system(), System::nanoTime),
-                CHECK_WINDOW), s -> Thread.sleep((long) (s * 1000)), System::nanoTime, quietWaitS, allowBusy);
+                CHECK_WINDOW), s -> Thread.sleep((long) (s * 1000)), System::nanoTime, quietWaitNs / 1e9, allowBusy);
         ExperimentRunner runner = new ExperimentRunner(plan, JvmRunCommand.ofCurrentProcess(JvmRunCommand.RTAWARE_MAIN),
                 dir, progress).recordEachRun(record).quietGate(gate);
         int total = plan.order().size();
@@ -192,7 +193,8 @@ public final class ExperimentCommand implements Callable<Integer> {
             if (rows.isEmpty()) {
                 return runner.interrupted() ? 130 : 0;
             }
-            Optional<ExperimentSummary> summary = ReportRendering.render(dir, scenario, includeBusy, System.err);
+            Optional<ExperimentSummary> summary = ReportRendering.render(dir, scenario, includeBusy, allowBusy,
+                    System.err);
             summary.ifPresent(s -> printSummary(s, dir));
             return runner.interrupted() ? 130 : summary.isPresent() ? 0 : OutputWrites.EXIT_WRITE_FAILED;
         } catch (ExperimentInputException e) {
@@ -258,6 +260,9 @@ public final class ExperimentCommand implements Callable<Integer> {
 
     private static void printSummary(ExperimentSummary summary, Path dir) {
         System.out.println();
+        if (summary.conditions() != null && summary.conditions().busyOnly()) {
+            System.out.println("BUSY MACHINE: " + summary.conditions().busyLabel());
+        }
         System.out.println("set                     periods (ms)     completed  run time (s)    distance to finish (m)  misses (all four)");
         for (SetSummary s : summary.sets()) {
             System.out.printf(Locale.ROOT, "%-22s  %-16s %4d/%-4d  %6s +- %-5s  %6s +- %-12s  %s%n", s.name(),

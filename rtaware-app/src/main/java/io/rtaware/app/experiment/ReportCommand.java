@@ -29,11 +29,11 @@ import picocli.CommandLine.Parameters;
  * (the shards of one plan) and {@code --out}, merges them into one folder first.
  */
 @Command(name = "report", mixinStandardHelpOptions = true,
-        description = {"Re-render an experiment's report (summary.json, report.md, report.html, figures)",
-                "from DIR/results.csv and the runs' trajectory.csv files.",
-                "With several folders (the shards of one plan, made with 'experiment --shard K/N'), merge them",
-                "into --out first; folders of different plans, or holding the same run twice, are refused.",
-                "With --results FILE, report each folder on its own and write FILE (RESULTS.md for the docs).",
+        description = {"Re-render an experiment's report (summary.json, report.md, report.html, figures) from "
+                + "DIR/results.csv and the runs' trajectory.csv files. With several folders (the shards of one plan, "
+                + "made with 'experiment --shard K/N'), merge them into --out first; folders of different plans, or "
+                + "holding the same run twice, are refused. With --results FILE, report each folder on its own and "
+                + "write FILE (RESULTS.md for the docs).",
                 "Examples:", "  rtaware report experiments/paper",
                 "  rtaware report shard1 shard2 shard3 --out experiments/sweep"})
 public final class ReportCommand implements Callable<Integer> {
@@ -49,7 +49,7 @@ public final class ReportCommand implements Callable<Integer> {
     boolean includeBusy;
 
     @Option(names = "--results", paramLabel = "FILE", description = "Report each DIR on its own (no merge) and write "
-            + "FILE (e.g. docs/experiment/RESULTS.md): Tables I and II and the claims beside the paper's, with the "
+            + "FILE (for example docs/experiment/RESULTS.md): Tables I and II and the claims beside the paper's, with the "
             + "conditions, for the docs to link.")
     Path results;
 
@@ -92,7 +92,7 @@ public final class ReportCommand implements Callable<Integer> {
                     + ": " + e);
             return OutputWrites.EXIT_WRITE_FAILED;
         }
-        if (ReportRendering.render(dir, scenario, includeBusy, System.err).isEmpty()) {
+        if (ReportRendering.render(dir, scenario, includeBusy, false, System.err).isEmpty()) {
             return OutputWrites.EXIT_WRITE_FAILED;
         }
         System.out.println("report written to " + dir.resolve(ExperimentReport.MARKDOWN_FILE) + " and "
@@ -118,7 +118,7 @@ public final class ReportCommand implements Callable<Integer> {
                 return OutputWrites.EXIT_WRITE_FAILED;
             }
             String scenario = ExperimentProfile.read(dir).map(ExperimentProfile::scenario).orElseGet(() -> firstScenario(dir));
-            Optional<ExperimentSummary> summary = ReportRendering.render(dir, scenario, includeBusy, System.err);
+            Optional<ExperimentSummary> summary = ReportRendering.render(dir, scenario, includeBusy, false, System.err);
             if (summary.isEmpty()) {
                 return OutputWrites.EXIT_WRITE_FAILED;
             }

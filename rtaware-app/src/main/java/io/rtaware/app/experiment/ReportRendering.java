@@ -30,13 +30,16 @@ final class ReportRendering {
      * @param dir an experiment folder
      * @param scenario its course, for the background of the paths
      * @param includeBusy true to use every run, not only the quiet ones
+     * @param allWhenNoneQuiet true to use every run, labelled busy, when none was quiet ({@code --allow-busy})
      * @param err where the line of a failure goes
      * @return the summary written, or empty when the report could not be written (the line is printed)
      * @throws UserError if the folder cannot be reported
      */
-    static Optional<ExperimentSummary> render(Path dir, String scenario, boolean includeBusy, PrintStream err) {
+    static Optional<ExperimentSummary> render(Path dir, String scenario, boolean includeBusy, boolean allWhenNoneQuiet,
+                                              PrintStream err) {
         try {
-            return Optional.of(ExperimentReport.render(dir, CourseBackgrounds.forScenario(scenario), includeBusy));
+            return Optional.of(ExperimentReport.render(dir, CourseBackgrounds.forScenario(scenario), includeBusy,
+                    allWhenNoneQuiet));
         } catch (ExperimentInputException e) {
             throw new UserError(e.getMessage());
         } catch (IOException | UncheckedIOException e) {

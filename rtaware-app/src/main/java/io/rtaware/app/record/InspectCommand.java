@@ -46,8 +46,8 @@ import picocli.CommandLine.Parameters;
  * what an unfinished recording holds to a valid file.
  */
 @Command(name = "inspect", mixinStandardHelpOptions = true,
-        description = {"Summarize an MCAP recording: channels, counts, rates, time span, and each task's timing.",
-            "With --plot, draw each task's lateness over time."})
+        description = "Summarize an MCAP recording: channels, counts, rates, time span, and each task's timing. "
+                + "With --plot, draw each task's lateness over time.")
 public final class InspectCommand implements Callable<Integer> {
 
     private static final long HIGHEST_NS = 3_600_000_000_000L;
@@ -58,8 +58,8 @@ public final class InspectCommand implements Callable<Integer> {
     @Option(names = "--plot", paramLabel = "PNG", description = "Write each task's lateness over time to this PNG.")
     Path plot;
 
-    @Option(names = "--recover", description = {"Recover an unfinished recording (a run killed, a full disk): write every",
-        "complete chunk to FILE.recovered.mcap and say what was lost."})
+    @Option(names = "--recover", description = "Recover an unfinished recording (a run killed, a full disk): write every "
+            + "complete chunk to FILE.recovered.mcap and say what was lost.")
     boolean recover;
 
     /** Per channel: messages and the log-time span. */

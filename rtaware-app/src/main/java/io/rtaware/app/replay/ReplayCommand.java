@@ -49,12 +49,13 @@ import picocli.CommandLine.Parameters;
  * ({@link ReplayProviders}).
  */
 @Command(name = "replay", mixinStandardHelpOptions = true,
-        description = {"Re-execute a recording of a replayable controller offline ('rtaware run --record', or your own",
-            "controller's recording: pass its classes and their replay provider with --classpath).",
-            "Exact (default): feed every recorded cycle of the controller's tasks the inputs it read, run it on the",
-            "step executor, and compare its outputs with the recorded ones (a difference means the behavior depends",
-            "on something besides its inputs). What-if (--periods): run the controller with other periods on the",
-            "recorded sensor stream, charging each cycle a recorded execution time, and report as 'run' does (open loop)."})
+        description = {"Re-execute a recording of a replayable controller offline ('rtaware run --record', or your own "
+                + "controller's recording: pass its classes and their replay provider with --classpath).",
+                "Exact (default): feed every recorded cycle of the controller's tasks the inputs it read, run it on the "
+                + "step executor, and compare its outputs with the recorded ones (a difference means the behavior "
+                + "depends on something besides its inputs).",
+                "What-if (--periods): run the controller with other periods on the recorded sensor stream, charging "
+                + "each cycle a recorded execution time, and report as 'run' does (open loop)."})
 public final class ReplayCommand implements Callable<Integer> {
 
     @Parameters(index = "0", paramLabel = "FILE.mcap", description = "A recording (run --record).")
@@ -70,8 +71,8 @@ public final class ReplayCommand implements Callable<Integer> {
     /** Most cycles a what-if replay makes: about a minute of replay on a 2-core machine. */
     static final long MAX_WHAT_IF_CYCLES = 20_000_000L;
 
-    @Option(names = "--periods", paramLabel = "TASK=MS,...",
-            description = "What-if: periods to try, e.g. planner=50 (ms; tasks not named keep the recorded periods).")
+    @Option(names = "--periods", paramLabel = "TASK=DURATION,...",
+            description = "What-if: periods to try, e.g. planner=50ms (tasks not named keep the recorded periods).")
     String periods;
 
     @Option(names = "--classpath", paramLabel = "PATHS",

@@ -133,13 +133,8 @@ public final class RobotRun {
         if (simulated && scenario.map().isEmpty()) {
             throw new UserError("scenario '" + scenario.name() + "' has no map; the built-in simulator needs one (or use --player HOST:PORT)");
         }
-        BuiltInSimulatorLog simulatorLog = simulated ? BuiltInSimulatorLog.install(err) : null;
         try (RobotLink link = openLink(scenario, model, clock, simulated)) {
             return runOn(scenario, model, clock, link);
-        } finally {
-            if (simulatorLog != null) {
-                simulatorLog.close();
-            }
         }
     }
 

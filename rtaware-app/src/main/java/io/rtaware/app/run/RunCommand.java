@@ -1,6 +1,7 @@
 package io.rtaware.app.run;
 
 import io.rtaware.app.UserError;
+import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.app.cli.MemoryBudget;
 import io.rtaware.app.cli.RecordOptions;
 import io.rtaware.app.cli.TimeScaleConverter;
@@ -12,9 +13,11 @@ import io.rtaware.app.ros2.DdsMixin;
 import io.rtaware.app.ros2.ExportMixin;
 import io.rtaware.app.ros2.Ros2RunMixin;
 import io.rtaware.app.ros2.RosDistroMixin;
+import io.rtaware.core.time.Durations;
 import io.rtaware.experiment.ExperimentRunner;
 import io.rtaware.ros2.graph.DdsSettings;
 import io.rtaware.ros2.graph.Ros2Distro;
+import io.rtaware.sim.scenario.ScenarioLoader;
 import io.rtaware.sim.world.RobotModel;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -34,18 +37,18 @@ import picocli.CommandLine.Option;
  */
 @Command(name = "run", mixinStandardHelpOptions = true,
         description = {"Run the paper's waypoint-navigation controller and report its timing.",
-                "Default: the built-in simulator on a free loopback port, scenario paper-room, the paper's",
-                "Set 4 periods (waypoint=100,obstacle=50,occupancy=100,planner=100 ms), time scale 1.",
-                "The run ends at the finish, at the time limit, when the robot is stuck, or on Ctrl-C;",
-                "in every case the robot is stopped first, then the summary is printed and written."})
+                "Default: the built-in simulator on a free loopback port, scenario paper-room, the paper's Set 4 "
+                + "periods (waypoint=100ms,obstacle=50ms,occupancy=100ms,planner=100ms), time scale 1.",
+                "The run ends at the finish, at the time limit, when the robot is stuck, or on Ctrl-C; in every case "
+                + "the robot is stopped first, then the summary is printed and written."})
 public final class RunCommand implements Callable<Integer> {
 
-    @Option(names = "--scenario", defaultValue = "paper-room", paramLabel = "paper-room|FILE",
-            description = "Built-in scenario name or a scenario YAML file (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--scenario", defaultValue = ScenarioLoader.PAPER_ROOM, paramLabel = "NAME|FILE",
+            description = "A built-in scenario (" + ScenarioLoader.BUILT_IN_NAMES + ") or a scenario YAML file (default: ${DEFAULT-VALUE}).")
     String scenario;
 
-    @Option(names = "--periods", paramLabel = "TASK=MS,...",
-            description = "Task periods, e.g. waypoint=100,obstacle=50,occupancy=100,planner=100 (ms; tasks not named keep Set 4's).")
+    @Option(names = "--periods", paramLabel = "TASK=DURATION,...",
+            description = "Task periods, e.g. waypoint=100ms,obstacle=50ms,occupancy=100ms,planner=100ms (tasks not named keep Set 4's).")
     String periods;
 
     @Option(names = "--time-scale", converter = TimeScaleConverter.class, defaultValue = "1", paramLabel = "K",
@@ -56,12 +59,13 @@ public final class RunCommand implements Callable<Integer> {
             description = "Use this Player server instead of the built-in simulator.")
     String player;
 
-    @Option(names = "--seed", defaultValue = "1", description = "Seed of this run's noise: laser ranges, odometry increments (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--seed", defaultValue = "1", paramLabel = "S", description = "Seed of this run's noise: laser ranges, odometry increments (default: ${DEFAULT-VALUE}).")
     long seed;
 
     @Option(names = "--robot-seed", defaultValue = "4", paramLabel = "S",
-            description = {"Seed of the simulated robot's systematic odometry errors (scale, heading, drift), drawn once per robot:",
-                    "the same robot seed is the same robot in every run, as the paper used one Koala (default: ${DEFAULT-VALUE})."})
+            description = "Seed of the simulated robot's systematic odometry errors (scale, heading, drift), drawn once "
+                    + "per robot: the same robot seed is the same robot in every run, as the paper used one Koala "
+                    + "(default: ${DEFAULT-VALUE}).")
     long robotSeed;
 
     @Option(names = "--out", paramLabel = "DIR", description = "Output folder (default: runs/<timestamp>).")
@@ -70,22 +74,23 @@ public final class RunCommand implements Callable<Integer> {
     @Option(names = "--quiet", description = "No live status line or miss reports.")
     boolean quiet;
 
-    @Option(names = "--stuck-after", defaultValue = "60", paramLabel = "SECONDS",
-            description = "World seconds without progress, while commanded to move, after which the robot is stuck (default: ${DEFAULT-VALUE}).")
-    double stuckAfterS;
+    @Option(names = "--stuck-after", defaultValue = "60s", paramLabel = "DURATION", converter = DurationConverter.class,
+            description = "World time without progress, while commanded to move, after which the robot is stuck (default: ${DEFAULT-VALUE}).")
+    long stuckAfterNs;
 
     @Option(names = "--grid-resolution", defaultValue = "0.05", paramLabel = "METRES",
             description = "Occupancy grid cell size (default: ${DEFAULT-VALUE}; the paper used 0.5).")
     double gridResolutionM;
 
-    @Option(names = "--model", defaultValue = "r0",
+    @Option(names = "--model", defaultValue = "r0", paramLabel = "NAME",
             description = "Robot model name for ground truth through simulation:0 (default: ${DEFAULT-VALUE}).")
     String model;
 
     @Option(names = "--inflation-margin", defaultValue = "0", paramLabel = "METRES",
-            description = {"Clearance the path planner adds to the robot's radius when it inflates obstacles (default: ${DEFAULT-VALUE}:",
-                    "the planner keeps the body clear, the obstacle avoider keeps the margin; 0.05 is the controller's",
-                    "library default and earlier versions' run default, under which the avoider's zone never sees an obstacle)."})
+            description = "Clearance the path planner adds to the robot's radius when it inflates obstacles (default: "
+                    + "${DEFAULT-VALUE}: the planner keeps the body clear, the obstacle avoider keeps the margin; 0.05 is "
+                    + "the controller's library default and earlier versions' run default, under which the avoider's "
+                    + "zone never sees an obstacle).")
     double inflationMarginM;
 
     @Option(names = "--robot", paramLabel = "koala|ideal",
@@ -158,8 +163,8 @@ public final class RunCommand implements Callable<Integer> {
     }
 
     RunOptions options() {
-        if (!(stuckAfterS > 0)) {
-            throw new UserError("--stuck-after must be positive, got " + stuckAfterS);
+        if (stuckAfterNs <= 0) {
+            throw new UserError("--stuck-after must be positive, got " + Durations.format(stuckAfterNs));
         }
         if (!(gridResolutionM > 0) || gridResolutionM > 2) {
             throw new UserError("--grid-resolution must be in (0, 2] metres, got " + gridResolutionM);
@@ -198,7 +203,8 @@ public final class RunCommand implements Callable<Integer> {
         OutputFolder.of("--out", dir);
         trace.checkOutput();
         record.checkOutput();
-        return new RunOptions(scenario, taskPeriods, timeScale, host, port, seed, dir, quiet, stuckAfterS,
-                gridResolutionM, model, trace, realtime, kernelTimerSlack, live.options(), robot, topSpeedMps, inflationMarginM, robotSeed);
+        return new RunOptions(scenario, taskPeriods, timeScale, host, port, seed, dir, quiet, stuckAfterNs / 1e9,
+                gridResolutionM, model, trace, realtime, kernelTimerSlack, live.options(), robot, topSpeedMps,
+                inflationMarginM, robotSeed);
     }
 }

@@ -10,8 +10,8 @@ import java.util.Map;
 
 /**
  * The periods of the paper's four behaviors, as given by {@code --periods
- * waypoint=100,obstacle=50,occupancy=100,planner=100} (bare numbers are milliseconds; units such
- * as {@code 50ms} or {@code 0.1s} are accepted). Tasks not named keep their default. Immutable.
+ * waypoint=100ms,obstacle=50ms,occupancy=100ms,planner=100ms} (each period with its unit, as
+ * {@link Durations#parseNanos} reads it). Tasks not named keep their default. Immutable.
  */
 public final class TaskPeriods {
 
@@ -56,7 +56,7 @@ public final class TaskPeriods {
     /**
      * Parses the {@code --periods} value over the defaults.
      *
-     * @param text e.g. {@code waypoint=100,obstacle=50}
+     * @param text e.g. {@code waypoint=100ms,obstacle=50ms}
      * @param defaults periods of tasks the text does not name; the text may name only these tasks
      * @return the periods
      * @throws UserError naming the unknown task or the bad period
@@ -64,13 +64,13 @@ public final class TaskPeriods {
     public static TaskPeriods parse(String text, TaskPeriods defaults) {
         Map<String, Long> m = new LinkedHashMap<>(defaults.periodsNs);
         if (text == null || text.isBlank()) {
-            throw new UserError("--periods is empty; example: --periods waypoint=100,obstacle=50,occupancy=100,planner=100");
+            throw new UserError("--periods is empty; example: --periods waypoint=100ms,obstacle=50ms,occupancy=100ms,planner=100ms");
         }
         for (String entry : text.split(",")) {
             String[] kv = entry.split("=", 2);
             String task = kv[0].trim();
             if (kv.length != 2 || task.isEmpty()) {
-                throw new UserError("--periods entry '" + entry.trim() + "' is not task=period (example: obstacle=50)");
+                throw new UserError("--periods entry '" + entry.trim() + "' is not task=period (example: obstacle=50ms)");
             }
             if (!defaults.periodsNs.containsKey(task)) {
                 throw new UserError("unknown task '" + task + "' in --periods; tasks: "

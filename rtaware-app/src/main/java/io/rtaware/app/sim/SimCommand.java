@@ -36,16 +36,17 @@ import picocli.CommandLine.Option;
                 "Example: rtaware sim --scenario paper-room --port 6665 --time-scale 10"})
 public final class SimCommand implements Callable<Integer> {
 
-    @Option(names = "--scenario", defaultValue = "paper-room", description = "Built-in scenario or YAML file (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--scenario", defaultValue = ScenarioLoader.PAPER_ROOM, paramLabel = "NAME|FILE",
+            description = "A built-in scenario (" + ScenarioLoader.BUILT_IN_NAMES + ") or a scenario YAML file (default: ${DEFAULT-VALUE}).")
     String scenario;
 
-    @Option(names = "--port", defaultValue = "6665", description = "TCP port, 0 for any free one (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--port", defaultValue = "6665", paramLabel = "PORT", description = "TCP port, 0 for any free one (default: ${DEFAULT-VALUE}).")
     int port;
 
     @Option(names = "--time-scale", converter = TimeScaleConverter.class, defaultValue = "1", paramLabel = "K", description = "World runs K times faster than wall time (default: ${DEFAULT-VALUE}).")
     double timeScale;
 
-    @Option(names = "--seed", defaultValue = "1", description = "Seed of the sensor noise (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--seed", defaultValue = "1", paramLabel = "S", description = "Seed of the sensor noise (default: ${DEFAULT-VALUE}).")
     long seed;
 
     @Option(names = "--robot-seed", defaultValue = "4", paramLabel = "S",
@@ -65,8 +66,8 @@ public final class SimCommand implements Callable<Integer> {
             description = "Replace rules per client; more are NACKed (default: ${DEFAULT-VALUE}).")
     int maxRules;
 
-    @Option(names = "--message-timeout", defaultValue = "10s", converter = DurationConverter.class, paramLabel = "D",
-            description = "A client that sends part of a message and not the rest within D is disconnected (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--message-timeout", defaultValue = "10s", converter = DurationConverter.class, paramLabel = "DURATION",
+            description = "A client that sends part of a message and not the rest within this time is disconnected (default: ${DEFAULT-VALUE}).")
     long messageTimeoutNs;
 
     @Mixin

@@ -20,7 +20,8 @@ import picocli.CommandLine.Option;
                 "Example: rtaware world --scenario paper-room --png world.png"})
 public final class WorldCommand implements Callable<Integer> {
 
-    @Option(names = "--scenario", defaultValue = "paper-room", description = "Built-in scenario or YAML file (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--scenario", defaultValue = ScenarioLoader.PAPER_ROOM, paramLabel = "NAME|FILE",
+            description = "A built-in scenario (" + ScenarioLoader.BUILT_IN_NAMES + ") or a scenario YAML file (default: ${DEFAULT-VALUE}).")
     String scenario;
 
     @Option(names = "--png", required = true, paramLabel = "FILE", description = "Where to write the picture.")

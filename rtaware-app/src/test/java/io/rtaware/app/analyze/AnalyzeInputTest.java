@@ -1,6 +1,7 @@
 package io.rtaware.app.analyze;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.rtaware.app.CliRun;
@@ -49,6 +50,20 @@ class AnalyzeInputTest {
                 .assertOneLineUserError("task 'a': 'period_ms' must be");
         CliRun.of("analyze", analyze(report("\"tasks\": [" + task("a", "\"NaN\"", EXEC) + "],")))
                 .assertOneLineUserError("task 'a': 'period_ms' must be");
+    }
+
+    /** Issue 34: a malformed report printed Jackson's own text (its source dump, Java type names). */
+    @Test
+    void aMalformedReportIsOneLineNamingTheFileAndWhatIsWrong() throws Exception {
+        String truncated = analyze("{\"schema\": \"rtaware.report/1\", \"tasks\": [");
+        CliRun r = CliRun.of("analyze", truncated).assertOneLineUserError("report " + truncated + ": not valid JSON at line 1");
+        assertFalse(r.err().contains("[Source") || r.err().contains("com.fasterxml"), r.err());
+        String wrongType = analyze(report("\"tasks\": [" + task("a", "\"ten\"", EXEC) + "],"));
+        r = CliRun.of("analyze", wrongType).assertOneLineUserError("report " + wrongType + ": field 'tasks[0].period_ms' "
+                + "does not hold what a report holds there");
+        assertFalse(r.err().contains("java.lang") || r.err().contains("Cannot deserialize"), r.err());
+        CliRun.of("analyze", dir.resolve("none.json").toString()).assertOneLineUserError("report "
+                + dir.resolve("none.json") + " (No such file");
     }
 
     @Test

@@ -109,6 +109,33 @@ class ExperimentFolderTest {
         return ResultsCsv.format(second);
     }
 
+    /**
+     * Issue 34: with --allow-busy and no run on a quiet machine, experiment ran every run and then exited 2
+     * without a report ("none of its 2 runs was made on a quiet machine ({busy=2})").
+     */
+    @Test
+    void runsAllowedOnABusyMachineAreReportedLabelledBusy() throws Exception {
+        PeriodSet set = ExperimentSets.paper().get(3);
+        ExperimentPlan plan = new ExperimentPlan(List.of(set), 2, new RunConditions("paper-room", 20, 5, null));
+        PlanFile.write(dir, plan);
+        ExperimentProfile.of(plan, "test machine").write(dir);
+        io.rtaware.experiment.RunMachine busy = new io.rtaware.experiment.RunMachine("busy",
+                "other processes used 1.2 of 2 CPUs (more than 0.10)", 1.2, 0, 0.4, 0.4, 0.1, Double.NaN, "busy", 0, 2);
+        for (int run = 1; run <= 2; run++) {
+            ResultsCsv.append(dir.resolve(ResultsCsv.FILE_NAME), new RunResult(1, run, set, plan.conditions(), "completed",
+                    12.0, 0.2, 3.0, 0, 4, 4, Map.of()).withMachine(busy));
+        }
+        CliRun refused = CliRun.of("experiment", "--resume", "--out", dir.toString());
+        assertEquals(2, refused.status(), "without --allow-busy such a folder is refused");
+        assertTrue(refused.err().contains("none of its 2 runs was made on a quiet machine (2 busy); report them labelled"
+                + " with --include-busy"), refused.err());
+        CliRun r = CliRun.of("experiment", "--resume", "--out", dir.toString(), "--allow-busy");
+        assertEquals(0, r.status(), r.toString());
+        assertTrue(r.out().contains("\nBUSY MACHINE: Not one run of this report was made on a machine known to be quiet "
+                + "(2 busy)"), r.out());
+        assertTrue(Files.readString(dir.resolve("report.md")).contains("**Busy machine.** Not one run"), "report.md");
+    }
+
     /** Issue 24: --runs 1 on a folder of 2 runs per set lowered the stored plan and left run 2 outside it. */
     @Test
     void resumeNeverLowersThePlan() throws Exception {

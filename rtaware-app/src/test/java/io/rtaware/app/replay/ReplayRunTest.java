@@ -96,7 +96,7 @@ class ReplayRunTest {
     @Test
     void whatIfReplayPrintsTheRunSummaryAdviceAndSchedulabilityOpenLoop() throws Exception {
         Path out = dir.resolve("whatif");
-        CliRun replay = CliRun.of("replay", recording.toString(), "--periods", "planner=300", "--out", out.toString());
+        CliRun replay = CliRun.of("replay", recording.toString(), "--periods", "planner=300ms", "--out", out.toString());
         assertEquals(0, replay.status(), replay.err());
         assertTrue(replay.out().contains("open loop, the robot's path is the recorded one"), replay.out());
         assertTrue(replay.out().contains("schedulability"), replay.out());
@@ -151,7 +151,7 @@ class ReplayRunTest {
         // Issue 24: a 10 ns planner divided by zero in the advice, then would have replayed for hours.
         CliRun.of("replay", recording.toString(), "--periods", "planner=10ns")
                 .assertOneLineUserError("a what-if replay makes at most 2e+07");
-        CliRun.of("replay", recording.toString(), "--periods", "planner=50", "--task", "planner")
+        CliRun.of("replay", recording.toString(), "--periods", "planner=50ms", "--task", "planner")
                 .assertOneLineUserError("exclude each other");
     }
 }

@@ -53,7 +53,7 @@ class BlindedLaserEndToEndTest {
             System.setOut(new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8));
             System.setErr(new PrintStream(stderr, true, StandardCharsets.UTF_8));
             status = RtawareCli.execute("run", "--ros2", "--zenoh", endpoint, "--scenario", shortLeg(), "--time-scale",
-                    "1", "--stuck-after", "3", "--out", out.toString(), "--quiet");
+                    "1", "--stuck-after", "3s", "--out", out.toString(), "--quiet");
         } finally {
             System.setOut(savedOut);
             System.setErr(savedErr);

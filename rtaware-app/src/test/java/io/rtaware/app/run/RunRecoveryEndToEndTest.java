@@ -200,7 +200,7 @@ class RunRecoveryEndToEndTest {
             proxy.blindLaser();
             System.setOut(new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8));
             status = RtawareCli.execute("run", "--player", "127.0.0.1:" + proxy.port(), "--scenario",
-                    scenarioFile.toString(), "--time-scale", Double.toString(TIME_SCALE), "--stuck-after", "20", "--out",
+                    scenarioFile.toString(), "--time-scale", Double.toString(TIME_SCALE), "--stuck-after", "20s", "--out",
                     out.toString(), "--quiet", "--seed", Long.toString(SEED));
             assertTrue(proxy.blinded() > 0, "scans were blinded");
             drivenM = distanceFromStart(sim, scenario);

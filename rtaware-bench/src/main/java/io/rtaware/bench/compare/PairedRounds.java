@@ -183,7 +183,7 @@ public final class PairedRounds {
         return c;
     }
 
-    /** Two-sided Wilcoxon signed-rank p-value over the pairs that differ; 1 if none does. */
+    /** Two-sided Wilcoxon signed-rank p-value over the pairs that differ, at most 1; 1 if none does. */
     static double wilcoxonP(double[] x, double[] y) {
         int differing = count(x, y) + count(y, x);
         if (differing == 0) {
@@ -199,7 +199,10 @@ public final class PairedRounds {
                 k++;
             }
         }
-        return new WilcoxonSignedRankTest().wilcoxonSignedRankTest(dx, dy, differing <= EXACT_P_MAX_ROUNDS);
+        // the exact test doubles P(W >= W max); with tied ranks W max can sit below the middle of
+        // the distribution and the doubled tail exceeds 1 (ranks 1.5, 1.5, 3 with W+ = W- = 3: 2 * 5/8)
+        return Math.min(1.0, new WilcoxonSignedRankTest().wilcoxonSignedRankTest(dx, dy,
+                differing <= EXACT_P_MAX_ROUNDS));
     }
 
     private static double medianRatio(double[] a, double[] b) {

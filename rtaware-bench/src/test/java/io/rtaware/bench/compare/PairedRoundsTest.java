@@ -45,6 +45,18 @@ class PairedRoundsTest {
     }
 
     @Test
+    void tiedDifferencesNeverGiveAPAboveOne() {
+        // differences +1, +1, -2 per mille: the two ties share rank 1.5, W+ = W- = 3; the exact test
+        // counted 5 of 8 sign patterns at or above 3 and doubled it: 'Wilcoxon p = 1.250' in bench --compare
+        RunResult subject = run("rtaware", new long[] {2, 2, 1}, new double[] {101, 101, 100});
+        RunResult floor = run("park-loop", new long[] {1, 1, 3}, new double[] {100, 100, 102});
+        PairedRounds.Paired p = PairedRounds.compare(subject, floor).orElseThrow();
+        assertEquals(1.0, p.missesP(), "a two-sided p-value is a probability: at most 1");
+        assertEquals(1.0, p.p999P(), "the same for p99.9");
+        assertTrue(p.line().contains("Wilcoxon p = 1.000"), p.line());
+    }
+
+    @Test
     void equalRoundsShowNoDifference() {
         long[] misses = {3, 0, 7, 1, 0, 2};
         PairedRounds.Paired p = PairedRounds.compare(run("rtaware", misses, same(6, 50)),

@@ -15,9 +15,12 @@ import org.agrona.concurrent.SleepingMillisIdleStrategy;
 
 /**
  * Prints live deadline misses, stale runs, expired reads, task errors and adaptive period
- * changes, at most one line per
- * second per task, each line carrying the count of everything folded into it since the
- * previous line: counts are never dropped.
+ * changes, at a rate a person can read: per task, the first line at once, the next after a
+ * second, and while the events keep coming the wait doubles up to {@value #LONGEST_INTERVAL_S} s
+ * (a task missing throughout a 30 s run prints 6 lines, not 30); after a calm spell it is back to a
+ * second. Each line carries the count of everything folded into it since the previous line and the
+ * span it covers ({@code 37 deadline misses in the last 4.0 s}): counts are never dropped, only
+ * held back, and {@link #flush()} prints what is held back (at the end of a run).
  *
  * <p>Events only bump counters (no allocation, no I/O on task threads); a daemon thread of
  * the reporter's own prints every {@value #POLL_MS} ms. {@link #flush()} prints what is left,
@@ -29,6 +32,8 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
 
     private static final int POLL_MS = 100;
     private static final long LINE_INTERVAL_NS = 1_000_000_000L;
+    /** The longest wait between two lines of one task while its events keep coming, s. */
+    static final int LONGEST_INTERVAL_S = 8;
     private static final int MISSES = 0;
     private static final int SKIPPED = 1;
     private static final int STALE = 2;
@@ -46,7 +51,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
     private final AtomicLongArray lastMissDeadlineNs;
     private final AtomicReferenceArray<Throwable> lastError;
     private final AtomicReferenceArray<PeriodChange> lastPeriodChange;
-    private final long[] lastLineWallNs;
+    private final LinePacer[] pacers;
     private final AgentThread printer;
     /**
      * Where a fault of the printer's thread goes: the framework's default printer until the
@@ -86,8 +91,10 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         this.lastMissDeadlineNs = new AtomicLongArray(n);
         this.lastError = new AtomicReferenceArray<>(n);
         this.lastPeriodChange = new AtomicReferenceArray<>(n);
-        this.lastLineWallNs = new long[n];
-        java.util.Arrays.fill(lastLineWallNs, Long.MIN_VALUE / 2);
+        this.pacers = new LinePacer[n];
+        for (int i = 0; i < n; i++) {
+            pacers[i] = new LinePacer(LINE_INTERVAL_NS, LONGEST_INTERVAL_S * LINE_INTERVAL_NS);
+        }
         this.printer = printerThread ? AgentThread.start(new Printer(), new SleepingMillisIdleStrategy(POLL_MS),
                 error -> faults.report("console reporter", error)) : null;
     }
@@ -150,12 +157,12 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         }
     }
 
-    /** One poll of the printer: prints the tasks whose last line is at least a second old. */
+    /** One poll of the printer: prints the tasks whose next line is due. */
     void poll() {
         printDue(false);
     }
 
-    /** Prints every task's folded counts now, regardless of the one-line-per-second limit. */
+    /** Prints every task's folded counts now, regardless of the rate limit. */
     public void flush() {
         printDue(true);
     }
@@ -169,7 +176,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         long wallNs = wallClock.nanos();
         for (TaskInfo task : tasks) {
             int i = task.index();
-            if (!force && wallNs - lastLineWallNs[i] < LINE_INTERVAL_NS) {
+            if (!force && !pacers[i].due(wallNs)) {
                 continue;
             }
             long misses = pending.getAndSet(i * KINDS + MISSES, 0);
@@ -179,18 +186,24 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
             long errors = pending.getAndSet(i * KINDS + ERRORS, 0);
             long changes = pending.getAndSet(i * KINDS + PERIOD_CHANGES, 0);
             if (misses + skipped + stale + expired + errors + changes == 0) {
+                if (!force) {
+                    pacers[i].calm();
+                }
                 continue;
             }
-            lastLineWallNs[i] = wallNs;
-            out.println(line(task, misses, skipped, stale, expired, errors) + periodLine(i, changes));
+            long spanNs = pacers[i].printed(wallNs);
+            out.println(line(task, misses, skipped, stale, expired, errors, spanNs) + periodLine(i, changes));
         }
     }
 
-    private String line(TaskInfo task, long misses, long skipped, long stale, long expired, long errors) {
+    private String line(TaskInfo task, long misses, long skipped, long stale, long expired, long errors, long spanNs) {
         int i = task.index();
         StringBuilder sb = new StringBuilder("[rtaware] ").append(task.name()).append(':');
         if (misses + skipped > 0) {
             sb.append(' ').append(misses + skipped).append(misses + skipped == 1 ? " deadline miss" : " deadline misses");
+            if (spanNs > LINE_INTERVAL_NS + LINE_INTERVAL_NS / 2) {
+                sb.append(String.format(Locale.ROOT, " in the last %.1f s", spanNs / 1e9));
+            }
             if (skipped > 0) {
                 sb.append(" (").append(skipped).append(" skipped releases)");
             }

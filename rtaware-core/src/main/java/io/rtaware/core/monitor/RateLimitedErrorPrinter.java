@@ -17,8 +17,7 @@ public final class RateLimitedErrorPrinter implements FrameworkErrorHandler {
 
     private final PrintStream out;
     private final Clock wallClock;
-    private long lastLineNs;
-    private boolean printedAny;
+    private final LinePacer pacer = new LinePacer(LINE_INTERVAL_NS, LINE_INTERVAL_NS);
     private long folded;
 
     /** Prints to standard error, limited in wall time. */
@@ -38,7 +37,7 @@ public final class RateLimitedErrorPrinter implements FrameworkErrorHandler {
     @Override
     public synchronized void onError(String source, Throwable error) {
         long nowNs = wallClock.nanos();
-        if (printedAny && nowNs - lastLineNs < LINE_INTERVAL_NS) {
+        if (!pacer.due(nowNs)) {
             folded++;
             return;
         }
@@ -53,7 +52,6 @@ public final class RateLimitedErrorPrinter implements FrameworkErrorHandler {
         }
         out.println(line);
         folded = 0;
-        lastLineNs = nowNs;
-        printedAny = true;
+        pacer.printed(nowNs);
     }
 }

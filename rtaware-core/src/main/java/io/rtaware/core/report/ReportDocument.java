@@ -1,7 +1,10 @@
 package io.rtaware.core.report;
 
 import com.fasterxml.jackson.core.JsonGenerator;
+import com.fasterxml.jackson.core.JsonLocation;
+import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.DeserializationFeature;
+import com.fasterxml.jackson.databind.JsonMappingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.PropertyNamingStrategies;
@@ -103,14 +106,21 @@ public final class ReportDocument {
      *
      * @param file a report.json
      * @return the document
-     * @throws IOException if the file cannot be read or is not a report
+     * @throws IOException if the file cannot be read or is not a report; a malformed file's
+     *     message is one line naming the file and what is wrong in it (where, for bad JSON)
      */
     public static ReportDocument read(Path file) throws IOException {
-        JsonNode root = MAPPER.readTree(file.toFile());
-        if (root == null || !root.isObject() || !Report.SCHEMA.equals(root.path("schema").asText())) {
-            throw new IOException(file + ": not an rtaware report (schema is not " + Report.SCHEMA + ")");
+        JsonNode root;
+        Report report;
+        try {
+            root = MAPPER.readTree(file.toFile());
+            if (root == null || !root.isObject() || !Report.SCHEMA.equals(root.path("schema").asText())) {
+                throw new IOException(file + ": not an rtaware report (schema is not " + Report.SCHEMA + ")");
+            }
+            report = MAPPER.treeToValue(root, Report.class);
+        } catch (JsonProcessingException e) {
+            throw new IOException(file + ": " + problem(e), e);
         }
-        Report report = MAPPER.treeToValue(root, Report.class);
         ReportDocument doc = new ReportDocument(report);
         for (Map.Entry<String, JsonNode> field : (Iterable<Map.Entry<String, JsonNode>>) root::fields) {
             if (!CORE_FIELDS.contains(field.getKey())) {
@@ -118,6 +128,31 @@ public final class ReportDocument {
             }
         }
         return doc;
+    }
+
+    /**
+     * @param e what Jackson found wrong
+     * @return one line for a person: the field or the place, and what is wrong there (Jackson's own
+     *     text, without its source dump and its Java type names)
+     */
+    static String problem(JsonProcessingException e) {
+        if (e instanceof JsonMappingException m && !m.getPath().isEmpty()) {
+            StringBuilder field = new StringBuilder();
+            for (JsonMappingException.Reference r : m.getPath()) {
+                if (r.getFieldName() != null) {
+                    field.append(field.length() == 0 ? "" : ".").append(r.getFieldName());
+                } else {
+                    field.append('[').append(r.getIndex()).append(']');
+                }
+            }
+            return "field '" + field + "' does not hold what a report holds there (a number, a text, a list or an "
+                    + "object of the schema " + Report.SCHEMA + ")";
+        }
+        JsonLocation at = e.getLocation();
+        String where = at == null || at.getLineNr() < 1 ? "" : " at line " + at.getLineNr() + ", column " + at.getColumnNr();
+        String what = String.valueOf(e.getOriginalMessage()).lines().findFirst().orElse("")
+                .replaceAll("\\s*\\(start marker at \\[Source.*$", "").replaceAll("\\s*at \\[Source.*$", "");
+        return "not valid JSON" + where + ": " + what;
     }
 
     /**

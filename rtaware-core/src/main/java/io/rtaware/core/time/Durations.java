@@ -6,13 +6,17 @@ import java.util.regex.Pattern;
 
 /**
  * Parses and prints the human durations used on the command line and in files:
- * {@code 10ms}, {@code 2.5ms}, {@code 500us}, {@code 1s}, {@code 250ns}, {@code 2m}, {@code 1h}. A bare
- * number is milliseconds, the unit the paper uses for periods.
+ * {@code 10ms}, {@code 2.5ms}, {@code 500us}, {@code 1s}, {@code 250ns}, {@code 2m}, {@code 1h}. Every
+ * duration names its unit: a bare number other than zero is refused ({@code --duration 10} once ran for
+ * 10 ms where 10 s was meant), with a message naming the value and the accepted units.
  */
 public final class Durations {
 
     private static final Pattern FORMAT =
             Pattern.compile("\\s*([0-9]+(?:\\.[0-9]+)?|\\.[0-9]+)\\s*(ns|us|µs|ms|s|min|m|h)?\\s*");
+
+    /** The units {@link #parseNanos} accepts, as a message lists them. */
+    public static final String UNITS = "ns, us, ms, s, min, h";
 
     private Durations() {
     }
@@ -20,7 +24,8 @@ public final class Durations {
     /**
      * @param text a duration such as {@code 10ms}
      * @return the duration in nanoseconds
-     * @throws IllegalArgumentException naming the text when it is not a duration
+     * @throws IllegalArgumentException naming the text when it is not a duration, or when it is a
+     *     number other than zero without a unit
      */
     public static long parseNanos(String text) {
         if (text == null) {
@@ -31,7 +36,15 @@ public final class Durations {
             throw new IllegalArgumentException("'" + text + "' is not a duration (examples: 10ms, 2.5ms, 500us, 1s)");
         }
         double value = Double.parseDouble(m.group(1));
-        String unit = m.group(2) == null ? "ms" : m.group(2);
+        if (m.group(2) == null) {
+            if (value == 0) {
+                return 0;
+            }
+            String number = text.strip();
+            throw new IllegalArgumentException("'" + text + "' has no unit: a duration needs one of " + UNITS
+                    + " (e.g. " + number + "ms or " + number + "s)");
+        }
+        String unit = m.group(2);
         double nanosPerUnit = switch (unit) {
             case "ns" -> 1.0;
             case "us", "µs" -> 1e3;

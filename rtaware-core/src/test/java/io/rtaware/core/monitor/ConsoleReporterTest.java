@@ -15,7 +15,7 @@ import java.util.regex.Pattern;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
-/** The live console: at most one line per second per task, and every count lands in some line. */
+/** The live console: few enough lines per task to read, and every count lands in some line. */
 class ConsoleReporterTest {
 
     private static final long MS = 1_000_000L;
@@ -91,6 +91,45 @@ class ConsoleReporterTest {
         reporter.poll();
         assertEquals(2, lines().size(), "a second later the folded events get their line");
         assertTrue(lines().get(1).contains("planner: 4 deadline misses"), lines().get(1));
+    }
+
+    /** Issue 34: 62-121 miss lines on stderr in a 30 s run, one per task per second. */
+    @Test
+    void aTaskMissingThroughoutARunGetsFewerLinesTheLongerItLasts() {
+        for (int poll = 0; poll < 300; poll++) { // 30 s, a poll every 100 ms, misses all along
+            misses(planner, 2);
+            reporter.poll();
+            wall.advance(100 * MS);
+        }
+        List<String> during = lines();
+        // lines at 0, 1, 3, 7, 15 and 23 s: the wait doubles from 1 s up to 8 s
+        assertEquals(6, during.size(), "lines in 30 s of steady misses: " + during);
+        assertTrue(during.get(2).contains("planner: 40 deadline misses in the last 2.0 s, last detected"), during.get(2));
+        assertTrue(during.get(5).contains("in the last 8.0 s"), "the longest wait: " + during.get(5));
+        reporter.close();
+        assertEquals(600, countOf(lines(), "planner", "deadline miss"), "what was held back is printed at the end");
+    }
+
+    @Test
+    void afterACalmSpellTheNextLineComesAtOnceAndTheWaitStartsOver() {
+        for (int poll = 0; poll < 80; poll++) { // 8 s of misses: lines at 0, 1, 3 and 7 s
+            misses(planner, 1);
+            reporter.poll();
+            wall.advance(100 * MS);
+        }
+        assertEquals(4, lines().size(), lines().toString());
+        for (int poll = 0; poll < 200; poll++) { // 20 s without a miss: the last held-back miss, then nothing
+            reporter.poll();
+            wall.advance(100 * MS);
+        }
+        int calm = lines().size();
+        misses(planner, 1);
+        reporter.poll();
+        assertEquals(calm + 1, lines().size(), "a miss after a calm spell is printed at once");
+        misses(planner, 1);
+        wall.advance(1000 * MS);
+        reporter.poll();
+        assertEquals(calm + 2, lines().size(), "and the next a second later: the wait started over");
     }
 
     @Test

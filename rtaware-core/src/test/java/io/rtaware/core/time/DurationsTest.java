@@ -8,7 +8,7 @@ import org.junit.jupiter.api.Test;
 class DurationsTest {
 
     @Test
-    void parsesEveryUnitAndBareNumbersAsMilliseconds() {
+    void parsesEveryUnit() {
         assertEquals(10_000_000L, Durations.parseNanos("10ms"), "10ms");
         assertEquals(2_500_000L, Durations.parseNanos("2.5ms"), "2.5ms");
         assertEquals(500_000L, Durations.parseNanos("500us"), "500us");
@@ -17,7 +17,6 @@ class DurationsTest {
         assertEquals(250L, Durations.parseNanos("250ns"), "250ns");
         assertEquals(120_000_000_000L, Durations.parseNanos("2m"), "2m is minutes");
         assertEquals(120_000_000_000L, Durations.parseNanos("2min"), "2min");
-        assertEquals(10_000_000L, Durations.parseNanos("10"), "a bare number is milliseconds");
         assertEquals(1_500_000L, Durations.parseNanos(" 1.5 MS "), "spaces and case are tolerated");
         assertEquals(500_000L, Durations.parseNanos(".5ms"), "leading dot");
     }
@@ -34,6 +33,18 @@ class DurationsTest {
         assertEquals("'9999999999999s' is too long a duration",
                 assertThrows(IllegalArgumentException.class, () -> Durations.parseNanos("9999999999999s")).getMessage(),
                 "overflow");
+    }
+
+    @Test
+    void aNumberWithoutAUnitIsRefusedNamingTheValueAndTheUnits() {
+        // 'bench --duration 10' ran 10 ms and 'player-probe --listen 3' listened 3 ms: a bare number is a guess
+        for (String text : new String[] {"10", "3", " 2.5 ", ".5"}) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> Durations.parseNanos(text), text);
+            assertEquals("'" + text + "' has no unit: a duration needs one of ns, us, ms, s, min, h (e.g. " + text.strip()
+                    + "ms or " + text.strip() + "s)", e.getMessage(), "message for '" + text + "'");
+        }
+        assertEquals(0L, Durations.parseNanos("0"), "zero is zero in every unit");
+        assertEquals(0L, Durations.parseNanos("0.0"), "zero written with a point");
     }
 
     @Test

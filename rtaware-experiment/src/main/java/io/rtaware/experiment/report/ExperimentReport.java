@@ -70,6 +70,24 @@ public final class ExperimentReport {
      *     quiet run when only quiet runs are used
      */
     public static ExperimentSummary render(Path dir, MapBackground background, boolean includeBusy) throws IOException {
+        return render(dir, background, includeBusy, false);
+    }
+
+    /**
+     * @param dir an experiment folder with a {@code results.csv}
+     * @param background the course drawn behind the paths
+     * @param includeBusy true to use every run; false to use the quiet ones only
+     *     ({@link ExperimentConditions#RULE})
+     * @param allWhenNoneQuiet true to use every run, the report and summary labelled busy
+     *     ({@link ExperimentConditions#busyLabel()}), when not one counts as quiet, instead of refusing
+     *     the folder (experiment {@code --allow-busy}: those runs were asked for)
+     * @return the summary written
+     * @throws IOException if reading or writing fails
+     * @throws ExperimentInputException if there is no results.csv with at least one row, or no
+     *     quiet run when only quiet runs are used
+     */
+    public static ExperimentSummary render(Path dir, MapBackground background, boolean includeBusy,
+                                           boolean allWhenNoneQuiet) throws IOException {
         Path csv = dir.resolve(ResultsCsv.FILE_NAME);
         if (!Files.exists(csv)) {
             throw new ExperimentInputException(dir + " has no " + ResultsCsv.FILE_NAME + " (not an experiment folder?)");
@@ -78,11 +96,13 @@ public final class ExperimentReport {
         if (all.isEmpty()) {
             throw new ExperimentInputException(csv + " has no runs yet: nothing to report");
         }
-        ExperimentConditions conditions = ExperimentConditions.of(all, includeBusy);
-        List<RunResult> rows = ExperimentConditions.used(all, includeBusy);
+        boolean useAll = includeBusy || allWhenNoneQuiet && all.stream().noneMatch(ExperimentConditions::countsAsQuiet);
+        ExperimentConditions conditions = ExperimentConditions.of(all, useAll);
+        List<RunResult> rows = ExperimentConditions.used(all, useAll);
         if (rows.isEmpty()) {
             throw new ExperimentInputException(csv + ": none of its " + all.size() + " runs was made on a quiet machine ("
-                    + conditions.byMachine() + "); report them labelled with --include-busy, or re-run on a quiet machine");
+                    + conditions.machineCounts() + "); report them labelled with --include-busy, or re-run on a quiet "
+                    + "machine");
         }
         // No disk cache: its clean-up registers a shutdown hook, which fails when the report is
         // written after Ctrl-C, during shutdown.
@@ -133,6 +153,9 @@ public final class ExperimentReport {
         Blocks b = new Blocks();
         ExperimentProfile p = s.profile();
         b.heading(1, "rtaware experiment report");
+        if (s.conditions() != null && s.conditions().busyOnly()) {
+            b.text("**Busy machine.** " + s.conditions().busyLabel());
+        }
         String k = plain(p.timeScale());
         b.text("Profile: scenario `" + p.scenario() + "`, time scale x" + k + " (world time runs " + k
                 + " times faster than wall time, so each task's computation weighs " + k

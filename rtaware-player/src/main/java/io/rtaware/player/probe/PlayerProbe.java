@@ -1,5 +1,6 @@
 package io.rtaware.player.probe;
 
+import io.rtaware.core.time.Durations;
 import io.rtaware.player.client.PlayerClient;
 import io.rtaware.player.client.PlayerClientOptions;
 import io.rtaware.player.client.PlayerCounters;
@@ -63,7 +64,8 @@ public final class PlayerProbe {
      * @param hostPort {@code HOST:PORT} of the server
      * @param listen how long to print data
      * @param out where to print
-     * @return 0 when data from position2d and the scan source arrived, 1 otherwise
+     * @return 0 when data from position2d and the scan source arrived, 1 otherwise (after a line saying
+     *     which did not)
      * @throws PlayerProbeException with a one-line message if the address is malformed, the
      *     server is unreachable, is not a Player server, or fails during the probe
      */
@@ -138,7 +140,15 @@ public final class PlayerProbe {
         PlayerStats st = counters.snapshot();
         out.println("received " + st.messagesReceived() + " messages (" + st.bytesReceived() + " bytes), "
                 + st.protocolErrors() + " protocol errors, " + st.skippedMessages() + " skipped");
-        return client.odometryUpdates() > odo0 && scans(client, ranger) > scan0 ? 0 : 1;
+        boolean odometry = client.odometryUpdates() > odo0;
+        boolean scan = scans(client, ranger) > scan0;
+        if (odometry && scan) {
+            return 0;
+        }
+        String missing = odometry ? "no scan" : scan ? "no odometry" : "no odometry and no scan";
+        out.println(missing + " arrived in " + Durations.format(listen.toNanos()) + ": check the server has position2d:0 and laser:0 "
+                + "or ranger:0, and that its simulation is running");
+        return 1;
     }
 
     private static long scans(PlayerClient client, boolean ranger) {

@@ -3,6 +3,7 @@ package io.rtaware.sim.scenario;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.dataformat.yaml.YAMLFactory;
+import io.rtaware.core.text.NearestName;
 import io.rtaware.robot.geometry.Point2d;
 import io.rtaware.robot.geometry.Pose2d;
 import io.rtaware.sim.actor.ActorShape;
@@ -50,6 +51,8 @@ public final class ScenarioLoader {
     public static final String OFFICE = "office";
     /** Every built-in scenario's name. */
     public static final List<String> BUILT_IN = List.of(PAPER_ROOM, CORRIDOR, OFFICE);
+    /** The built-in scenarios' names as a help text lists them (a constant, for annotations). */
+    public static final String BUILT_IN_NAMES = PAPER_ROOM + ", " + CORRIDOR + ", " + OFFICE;
 
     private static final String RESOURCE_DIR = "/io/rtaware/sim/scenario/";
     private static final ObjectMapper YAML = new ObjectMapper(new YAMLFactory());
@@ -60,14 +63,20 @@ public final class ScenarioLoader {
     /**
      * @param nameOrPath a built-in name ({@link #BUILT_IN}) or a path to a scenario YAML file
      * @return the scenario, with its map loaded
-     * @throws ScenarioException if the file is missing or malformed
+     * @throws ScenarioException if the file is missing or malformed, or a name that is neither a
+     *     built-in scenario nor a file is given (the message suggests the nearest built-in name)
      */
     public static Scenario load(String nameOrPath) {
         if (BUILT_IN.contains(nameOrPath)) {
             return builtIn(nameOrPath);
         }
         try {
-            return load(Path.of(nameOrPath));
+            Path file = Path.of(nameOrPath);
+            if (!Files.exists(file) && file.getNameCount() == 1 && !nameOrPath.matches("(?i).*\\.ya?ml")) {
+                throw new ScenarioException("unknown scenario '" + nameOrPath + "'" + NearestName.suggestion(nameOrPath,
+                        BUILT_IN) + " (built-in scenarios: " + BUILT_IN_NAMES + "; or give a scenario YAML file)");
+            }
+            return load(file);
         } catch (InvalidPathException e) {
             throw new ScenarioException("scenario '" + nameOrPath + "' is not a file name this system can use ("
                     + e.getReason() + "); the JVM reads file names in the locale's encoding, so with LC_ALL=C only ASCII "

@@ -101,4 +101,16 @@ class ScenarioLoaderTest {
         assertTrue(e.getMessage().contains("no/such.yaml"));
         assertThrows(ScenarioException.class, () -> ScenarioLoader.builtIn("moon"));
     }
+
+    /** Issue 34: 'ofice' was "ofice: file not found", naming none of the built-in scenarios. */
+    @Test
+    void aMistypedBuiltInNameSuggestsTheNearestAndListsThemAll() {
+        assertEquals("unknown scenario 'ofice'; did you mean 'office'? (built-in scenarios: paper-room, corridor, office;"
+                + " or give a scenario YAML file)",
+                assertThrows(ScenarioException.class, () -> ScenarioLoader.load("ofice")).getMessage());
+        assertEquals("unknown scenario 'warehouse' (built-in scenarios: paper-room, corridor, office; or give a scenario"
+                + " YAML file)", assertThrows(ScenarioException.class, () -> ScenarioLoader.load("warehouse")).getMessage());
+        assertTrue(assertThrows(ScenarioException.class, () -> ScenarioLoader.load("course.yaml")).getMessage()
+                .endsWith("course.yaml: file not found"), "a file name is reported as a missing file");
+    }
 }
