@@ -16,60 +16,23 @@ import java.time.Duration;
 import java.util.List;
 import java.util.Optional;
 import java.util.OptionalLong;
-import java.util.concurrent.CopyOnWriteArrayList;
 import org.junit.jupiter.api.Test;
 
 class MinimalTimerSlackTest {
 
-    /** A kernel that records the slack asked for and refuses it when told to. */
-    private static final class SlackSched implements LinuxSched {
-        final List<Long> asked = new CopyOnWriteArrayList<>();
-        final int answer;
-
-        SlackSched(int answer) {
-            this.answer = answer;
-        }
-
-        @Override
-        public int setFifo(int priority) {
-            throw new AssertionError("a timer-slack setup never asks for SCHED_FIFO");
-        }
-
-        @Override
-        public int scheduler() {
-            return SCHED_OTHER;
-        }
-
-        @Override
-        public int priority() {
-            return 0;
-        }
-
-        @Override
-        public int pinTo(int cpu) {
-            throw new AssertionError("a timer-slack setup never pins");
-        }
-
-        @Override
-        public int timerSlack(long slackNs) {
-            asked.add(slackNs);
-            return answer;
-        }
-    }
-
     @Test
     void everyTaskThreadAndWorkerAsksForOneNanosecond() {
-        SlackSched sched = new SlackSched(0);
+        RecordingSched sched = new RecordingSched(1, 0);
         MinimalTimerSlack setup = new MinimalTimerSlack(sched);
         setup.onTaskThreadStart(null, 0, 2);
         setup.onPoolWorkerStart(0, 1, 2);
-        assertEquals(List.of(1L, 1L), sched.asked);
+        assertEquals(List.of("slack 1", "slack 1"), sched.calls, "only the slack: no SCHED_FIFO, no pinning");
         assertEquals(0, setup.refused());
     }
 
     @Test
     void aRefusalIsCountedAndTheThreadRunsOn() {
-        MinimalTimerSlack setup = new MinimalTimerSlack(new SlackSched(1));
+        MinimalTimerSlack setup = new MinimalTimerSlack(new RecordingSched(0, 1));
         setup.onTaskThreadStart(null, 0, 1);
         assertEquals(1, setup.refused());
     }

@@ -27,39 +27,6 @@ import org.junit.jupiter.api.Test;
 
 class RealtimeThreadsTest {
 
-    /** A kernel that refuses SCHED_FIFO with EPERM and records every call. */
-    private static final class DeniedSched implements LinuxSched {
-        final List<String> calls = new CopyOnWriteArrayList<>();
-
-        @Override
-        public int setFifo(int priority) {
-            calls.add("fifo " + priority);
-            return 1;
-        }
-
-        @Override
-        public int scheduler() {
-            return SCHED_OTHER;
-        }
-
-        @Override
-        public int priority() {
-            return 0;
-        }
-
-        @Override
-        public int pinTo(int cpu) {
-            calls.add("pin " + cpu);
-            return 0;
-        }
-
-        @Override
-        public int timerSlack(long slackNs) {
-            calls.add("slack " + slackNs);
-            return 0;
-        }
-    }
-
     private static final TaskInfo TASK = new TaskInfo() {
         @Override
         public String name() {
@@ -79,7 +46,7 @@ class RealtimeThreadsTest {
 
     @Test
     void whenFifoIsDeniedOneLineSaysSoAndThreadsStayNormal() {
-        DeniedSched sched = new DeniedSched();
+        RecordingSched sched = new RecordingSched(1, 0); // SCHED_FIFO refused with EPERM
         ByteArrayOutputStream buffer = new ByteArrayOutputStream();
         PrintStream err = new PrintStream(buffer, true, StandardCharsets.UTF_8);
         RealtimeThreads rt = RealtimeThreads.configure(sched, 80, Map.of("a", 1), err);
@@ -98,7 +65,7 @@ class RealtimeThreadsTest {
 
     @Test
     void poolWorkersGetTheFastestPooledTasksPriorityAndNoPin() {
-        DeniedSched sched = new DeniedSched();
+        RecordingSched sched = new RecordingSched(1, 0); // SCHED_FIFO refused with EPERM
         RealtimeThreads rt = RealtimeThreads.configure(sched, 80, Map.of("a", 1),
                 new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8));
         sched.calls.clear();
@@ -109,7 +76,7 @@ class RealtimeThreadsTest {
 
     @Test
     void prioritiesAreRateMonotonicFromTheTop() {
-        RealtimeThreads rt = RealtimeThreads.configure(new DeniedSched(), 80, Map.of(),
+        RealtimeThreads rt = RealtimeThreads.configure(new RecordingSched(1, 0), 80, Map.of(),
                 new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8));
         assertEquals(80, rt.priorityOf(0));
         assertEquals(79, rt.priorityOf(1));

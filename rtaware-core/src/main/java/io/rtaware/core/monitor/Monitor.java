@@ -290,20 +290,18 @@ public final class Monitor {
     private record ObservedSetup(ThreadSetup setup, ThreadTimerSlack slack) implements ThreadSetup {
         @Override
         public void onTaskThreadStart(TaskInfo task, int rmRank, int taskCount) {
-            try {
-                if (setup != null) {
-                    setup.onTaskThreadStart(task, rmRank, taskCount);
-                }
-            } finally {
-                slack.observeCurrentThread();
-            }
+            observeAfter(setup == null ? null : () -> setup.onTaskThreadStart(task, rmRank, taskCount));
         }
 
         @Override
         public void onPoolWorkerStart(int worker, int rmRank, int taskCount) {
+            observeAfter(setup == null ? null : () -> setup.onPoolWorkerStart(worker, rmRank, taskCount));
+        }
+
+        private void observeAfter(Runnable setupOfThisThread) {
             try {
-                if (setup != null) {
-                    setup.onPoolWorkerStart(worker, rmRank, taskCount);
+                if (setupOfThisThread != null) {
+                    setupOfThisThread.run();
                 }
             } finally {
                 slack.observeCurrentThread();
