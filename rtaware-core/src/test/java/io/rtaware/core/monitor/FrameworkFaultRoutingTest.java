@@ -1,7 +1,6 @@
 package io.rtaware.core.monitor;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.rtaware.core.task.Schedule;
@@ -48,16 +47,20 @@ class FrameworkFaultRoutingTest {
     @Test
     void aThreadThatDoesNotReturnAtStopIsAFaultBeforeItIsInterrupted() throws Exception {
         FrameworkFaults faults = new FrameworkFaults(handler);
+        CountDownLatch interrupted = new CountDownLatch(1);
         Thread stuck = new Thread(() -> {
             try {
                 new CountDownLatch(1).await(); // returns only when interrupted
             } catch (InterruptedException e) {
-                // what the stop's interrupt is for
+                interrupted.countDown(); // what the stop's interrupt is for
             }
         }, "stuck-task");
         stuck.start();
         Watchdog.joinOrInterrupt(stuck, 1, faults);
-        assertFalse(stuck.isAlive(), "interrupted, then joined");
+        // The second join is as short as the first: on a busy machine the thread may still be
+        // ending. That it was interrupted is what counts; the latch says so without a margin.
+        assertTrue(interrupted.await(30, TimeUnit.SECONDS), "interrupted by the stop");
+        stuck.join();
         assertEquals(List.of("stop: stuck-task did not return within 1 ms of stop; interrupting it"), received);
         assertEquals(1, faults.count());
     }
