@@ -4,10 +4,12 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import io.rtaware.core.testing.Waits;
 import io.rtaware.live.LiveView;
 import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.Objects;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -38,6 +40,10 @@ class LiveBarLabelTest {
         }
         try (Cdp browser = Cdp.launch(chromium, dir.resolve("profile"))) {
             browser.navigate(page.toUri().toString());
+            // Page.navigate answers before the page's script has run: a layout asked for sooner
+            // finds no taskRows and returns no colours (seen once in CI).
+            Waits.until(() -> browser.eval("typeof taskRows === 'function' && document.readyState === 'complete'")
+                    .asBoolean(), Duration.ofSeconds(30), "the live page's script, loaded");
             for (double ratio : new double[] {2.73, 0.8, 0.3}) {
                 JsonNode r = browser.eval(LAYOUT.replace("RATIO", Double.toString(ratio)));
                 assertFalse(r.path("overlap").asBoolean(), "the figure is not drawn on the bar's fill: " + r);
