@@ -10,6 +10,7 @@ import io.rtaware.core.data.StateValue;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.TaskInfo;
 import io.rtaware.core.task.Schedule;
+import io.rtaware.core.testing.FixedTaskInfo;
 import io.rtaware.core.task.Task;
 import io.rtaware.core.task.TaskSetup;
 import io.rtaware.core.time.ManualClock;
@@ -182,22 +183,7 @@ class TraceRecorderTest {
     @Test
     void recordingDoesNotAllocate() {
         TraceRecorder trace = new TraceRecorder(1024, List.of("t"), List.of("k"), 0);
-        TaskInfo task = new TaskInfo() {
-            @Override
-            public String name() {
-                return "t";
-            }
-
-            @Override
-            public int index() {
-                return 0;
-            }
-
-            @Override
-            public Schedule schedule() {
-                return Schedule.periodic(MS);
-            }
-        };
+        TaskInfo task = new FixedTaskInfo("t", 0, Schedule.periodic(MS), List.of());
         com.sun.management.ThreadMXBean mx = (com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean();
         // Steady state: the least any of several rounds allocated (the first rounds include
         // class loading and JIT compilation on this thread).

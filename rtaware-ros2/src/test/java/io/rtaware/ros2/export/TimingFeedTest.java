@@ -9,6 +9,7 @@ import io.rtaware.core.monitor.CycleOutcome;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.TaskInfo;
 import io.rtaware.core.task.Schedule;
+import io.rtaware.core.testing.FixedTaskInfo;
 import io.rtaware.core.task.Task;
 import io.rtaware.core.task.TaskSetup;
 import io.rtaware.core.time.ManualClock;
@@ -110,27 +111,7 @@ class TimingFeedTest {
     }
 
     /** A task of two inputs, as the monitor describes it. */
-    private static final TaskInfo TWO_INPUTS = new TaskInfo() {
-        @Override
-        public String name() {
-            return "t";
-        }
-
-        @Override
-        public int index() {
-            return 0;
-        }
-
-        @Override
-        public Schedule schedule() {
-            return Schedule.continuous();
-        }
-
-        @Override
-        public List<String> inputKeys() {
-            return List.of("a", "b");
-        }
-    };
+    private static final TaskInfo TWO_INPUTS = new FixedTaskInfo("t", 0, Schedule.continuous(), List.of("a", "b"));
 
     @Test
     void aFullRingDropsAndCountsAndTheListenerAllocatesNothing() throws Exception {
