@@ -11,6 +11,7 @@ import io.rtaware.core.monitor.TaskInfo;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.Task;
 import io.rtaware.core.task.TaskSetup;
+import io.rtaware.core.testing.FixedTaskInfo;
 import io.rtaware.core.testing.Waits;
 import io.rtaware.core.time.SystemClock;
 import java.io.ByteArrayOutputStream;
@@ -27,22 +28,7 @@ import org.junit.jupiter.api.Test;
 
 class RealtimeThreadsTest {
 
-    private static final TaskInfo TASK = new TaskInfo() {
-        @Override
-        public String name() {
-            return "a";
-        }
-
-        @Override
-        public int index() {
-            return 0;
-        }
-
-        @Override
-        public Schedule schedule() {
-            return Schedule.periodic(Duration.ofMillis(10));
-        }
-    };
+    private static final TaskInfo TASK = new FixedTaskInfo("a", 0, Schedule.periodic(Duration.ofMillis(10)), List.of());
 
     @Test
     void whenFifoIsDeniedOneLineSaysSoAndThreadsStayNormal() {

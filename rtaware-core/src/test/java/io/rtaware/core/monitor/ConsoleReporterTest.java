@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.Schedule;
+import io.rtaware.core.testing.FixedTaskInfo;
 import io.rtaware.core.time.ManualClock;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
@@ -35,22 +36,7 @@ class ConsoleReporterTest {
     }
 
     private static TaskInfo task(String name, int index) {
-        return new TaskInfo() {
-            @Override
-            public String name() {
-                return name;
-            }
-
-            @Override
-            public int index() {
-                return index;
-            }
-
-            @Override
-            public Schedule schedule() {
-                return Schedule.periodic(100 * MS);
-            }
-        };
+        return new FixedTaskInfo(name, index, Schedule.periodic(100 * MS), List.of());
     }
 
     private List<String> lines() {
