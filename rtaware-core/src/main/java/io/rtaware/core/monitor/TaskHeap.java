@@ -1,20 +1,32 @@
 package io.rtaware.core.monitor;
 
 /**
- * A binary min-heap of task slots (0..capacity-1) ordered by a key per slot, ties by the lower
- * slot (registration order): the pooled executor's timer structure. Arrays only, sized once:
- * pushing and popping never allocate. Not thread-safe (the pool's lock guards it).
+ * A min-heap of task slots (0..capacity-1) ordered by a key per slot, ties by the lower slot
+ * (registration order): the pooled executor's timer structure. Arrays only, sized once: pushing
+ * and popping never allocate. Not thread-safe (the pool's lock guards it).
+ *
+ * <p>Laid out for a worker whose caches the tasks' own objects keep evicting (10 000 tasks
+ * released at one instant): four children per node instead of two, so a pop walks half as many
+ * levels, and each node's key and slot stored at its heap position, so the four children a level
+ * compares lie side by side (four keys in 32 bytes, four slots in 16) instead of being looked up
+ * through the slots in a key array indexed by slot, one cache line each. The pool's profile at
+ * 10 000 in-phase tasks put a quarter of the workers' samples in the binary heap's pop before.
  */
 final class TaskHeap {
 
-    private final int[] heap;
+    /** Children per node: node {@code i}'s are {@code 4i + 1 .. 4i + 4}. */
+    private static final int ARITY_SHIFT = 2;
+
+    /** The key of the node at each heap position. */
     private final long[] keys;
+    /** The slot of the node at each heap position. */
+    private final int[] slots;
     private int size;
 
     /** @param capacity the number of slots */
     TaskHeap(int capacity) {
-        heap = new int[capacity];
         keys = new long[capacity];
+        slots = new int[capacity];
     }
 
     int size() {
@@ -23,12 +35,12 @@ final class TaskHeap {
 
     /** @return the smallest key, or {@link Long#MAX_VALUE} if empty */
     long peekKey() {
-        return size == 0 ? Long.MAX_VALUE : keys[heap[0]];
+        return size == 0 ? Long.MAX_VALUE : keys[0];
     }
 
     /** @return the slot with the smallest key; only when not empty */
     int peek() {
-        return heap[0];
+        return slots[0];
     }
 
     /**
@@ -36,44 +48,61 @@ final class TaskHeap {
      * @param key its key
      */
     void push(int slot, long key) {
-        keys[slot] = key;
         int i = size++;
         while (i > 0) {
-            int parent = (i - 1) >>> 1;
-            if (!less(slot, heap[parent])) {
+            int parent = (i - 1) >>> ARITY_SHIFT;
+            long parentKey = keys[parent];
+            int parentSlot = slots[parent];
+            if (before(parentKey, parentSlot, key, slot)) {
                 break;
             }
-            heap[i] = heap[parent];
+            keys[i] = parentKey;
+            slots[i] = parentSlot;
             i = parent;
         }
-        heap[i] = slot;
+        keys[i] = key;
+        slots[i] = slot;
     }
 
     /** @return the slot with the smallest key, removed; only when not empty */
     int pop() {
-        int top = heap[0];
-        int last = heap[--size];
+        int top = slots[0];
+        int n = --size;
+        long key = keys[n];
+        int slot = slots[n];
         int i = 0;
-        int half = size >>> 1;
-        while (i < half) {
-            int child = 2 * i + 1;
-            int right = child + 1;
-            if (right < size && less(heap[right], heap[child])) {
-                child = right;
-            }
-            if (!less(heap[child], last)) {
+        while (true) {
+            int first = (i << ARITY_SHIFT) + 1;
+            if (first >= n) {
                 break;
             }
-            heap[i] = heap[child];
-            i = child;
+            int least = first;
+            long leastKey = keys[first];
+            int leastSlot = slots[first];
+            int end = Math.min(first + (1 << ARITY_SHIFT), n);
+            for (int child = first + 1; child < end; child++) {
+                long childKey = keys[child];
+                int childSlot = slots[child];
+                if (before(childKey, childSlot, leastKey, leastSlot)) {
+                    least = child;
+                    leastKey = childKey;
+                    leastSlot = childSlot;
+                }
+            }
+            if (before(key, slot, leastKey, leastSlot)) {
+                break;
+            }
+            keys[i] = leastKey;
+            slots[i] = leastSlot;
+            i = least;
         }
-        heap[i] = last;
+        keys[i] = key;
+        slots[i] = slot;
         return top;
     }
 
-    private boolean less(int a, int b) {
-        long ka = keys[a];
-        long kb = keys[b];
-        return ka < kb || (ka == kb && a < b);
+    /** @return whether node (keyA, slotA) comes before node (keyB, slotB): by key, ties by slot */
+    private static boolean before(long keyA, int slotA, long keyB, int slotB) {
+        return keyA < keyB || (keyA == keyB && slotA < slotB);
     }
 }
