@@ -5,7 +5,7 @@ import java.util.List;
 /**
  * What the JVM says about itself: who built it, how it was started, its collectors and heap,
  * and its pauses over a span of time. {@link PlatformJvmProbe} asks the platform's management
- * beans and JFR; tests give a fake.
+ * beans and its safepoint log; tests give a fake.
  */
 public interface JvmProbe {
 
@@ -38,7 +38,10 @@ public interface JvmProbe {
      */
     interface PauseWatch extends AutoCloseable {
 
-        /** @return collections that stopped the application threads */
+        /**
+         * @return the collectors' pauses that stopped the application threads (one collection
+         *     may pause more than once: ZGC's three times)
+         */
         long gcCount();
 
         /** @return their summed duration, ms */

@@ -24,7 +24,7 @@ import java.util.Map;
  * @param gcCount collections that paused the application threads
  * @param gcTotalMs their summed duration, ms
  * @param gcMaxPauseMs the longest, ms
- * @param safepoints safepoints over the span (JFR's {@code jdk.SafepointBegin}), or -1 where not measured
+ * @param safepoints safepoints over the span (the JVM's safepoint log), or -1 where not measured
  * @param timeToSafepointMaxMs the longest time to reach one of them, ms (0 with none), or null where not measured
  * @param safepointNote null when the time to safepoint is measured, else why not
  * @param longStopLimitMs the length, ms of wall time, above which a JVM stop counts in

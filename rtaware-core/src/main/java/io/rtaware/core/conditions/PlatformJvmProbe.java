@@ -7,7 +7,6 @@ import java.lang.management.ManagementFactory;
 import java.lang.management.RuntimeMXBean;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -19,31 +18,29 @@ import javax.management.Notification;
 import javax.management.NotificationEmitter;
 import javax.management.NotificationListener;
 import javax.management.openmbean.CompositeData;
-import jdk.jfr.Recording;
-import jdk.jfr.consumer.RecordedEvent;
-import jdk.jfr.consumer.RecordingFile;
 
 /**
- * The running JVM, through its management beans and JFR: vendor, version, options, collectors
- * and heap from the beans; collection pauses and the time to safepoint from a JFR recording read
- * when the watch closes ({@code jdk.GarbageCollection}, whose {@code sumOfPauses} and
- * {@code longestPause} are in nanoseconds, so ZGC's sub-millisecond pauses are measured, not
- * rounded down to 0 ms as the collector beans' whole milliseconds would; {@code jdk.SafepointBegin},
- * whose duration is the time the threads took to stop). The recording is not streamed: a JFR
- * event stream flushes and parses every second, and beside 10 000 pooled tasks at 10 ms it cost
- * the pool (misses 0.74-1.49 % against 0.00-0.13 % with no recording, median task p99 lateness
- * 4.9-6.5 ms against 3.3-3.5 ms); read at the close, the recording costs less but is not free
- * (0.56-1.76 %, 2.8-3.9 ms). Three interleaved runs each, the 2-vCPU VM, quiet, 2026-11-28.
- * While the run goes, pauses come from the collectors' notifications (a collector bean whose name
- * says {@code Cycles} or {@code Concurrent} counts concurrent work, not pauses, and is left out)
- * and the time to safepoint is not yet known; at the close JFR's figures replace them. On the
- * Epsilon heap, where nothing is ever collected and JFR's own allocations would fill it, or where
- * JFR cannot start, the notifications are all there is and the time to safepoint is not measured.
+ * The running JVM, through its management beans and its own safepoint log: vendor, version,
+ * options, collectors and heap from the beans; the safepoints, the time to reach each, and the
+ * collectors' pauses from the JVM's unified logging ({@link SafepointLog}), switched on when the
+ * watch starts and read when it closes, in nanoseconds (so ZGC's sub-millisecond pauses are
+ * measured, not rounded down to 0 ms as the collector beans' whole milliseconds would).
+ *
+ * <p>Why a log and not JFR: a JFR event stream flushes and parses every second, and beside 10 000
+ * pooled tasks at 10 ms it cost the pool (misses 0.74-1.49 % against 0.00-0.13 % with no
+ * recording, median task p99 lateness 4.9-6.5 ms against 3.3-3.5 ms); a recording read at the
+ * close cost less but was not free (0.56-1.76 %, 2.8-3.9 ms; three interleaved runs each, the
+ * 2-vCPU VM, quiet, 2026-11-28). The log is written by the VM thread as each safepoint ends, a
+ * line at a time, and nothing else runs.
+ *
+ * <p>While the run goes, pauses come from the collectors' notifications (a collector bean whose
+ * name says {@code Cycles} or {@code Concurrent} counts concurrent work, not pauses, and is left
+ * out) and the time to safepoint is not yet known; at the close the log's figures replace them.
+ * Where the log cannot be switched on (a JVM without HotSpot's diagnostic commands), the
+ * notifications are all there is and the time to safepoint is not measured.
  */
 public final class PlatformJvmProbe implements JvmProbe {
 
-    private static final String SAFEPOINT_EVENT = "jdk.SafepointBegin";
-    private static final String GC_EVENT = "jdk.GarbageCollection";
     /** Stops kept for {@link PauseWatch#stopsLongerThan}; any beyond count as longer than every limit. */
     private static final int STOPS_KEPT = 1 << 16;
 
@@ -75,7 +72,7 @@ public final class PlatformJvmProbe implements JvmProbe {
 
     @Override
     public PauseWatch watchPauses() {
-        return new PlatformPauseWatch(options().stream().anyMatch(o -> o.contains("UseEpsilonGC")));
+        return new PlatformPauseWatch();
     }
 
     /**
@@ -87,14 +84,16 @@ public final class PlatformJvmProbe implements JvmProbe {
         return !n.contains("cycles") && !n.contains("concurrent");
     }
 
-    /** Records JFR's collection and safepoint events where it can, and listens to the collectors meanwhile. */
+    /** Logs the safepoints where it can, and listens to the collectors meanwhile. */
     private static final class PlatformPauseWatch implements PauseWatch, NotificationListener {
         private final AtomicLong count = new AtomicLong();
         private final DoubleAdder totalMs = new DoubleAdder();
         private volatile double maxMs;
         private volatile double maxSafepointMs;
         private final List<NotificationEmitter> emitters = new ArrayList<>();
-        private final Recording recording;
+        /** The safepoint log and its file; null where it could not be switched on. */
+        private final SafepointLog log;
+        private final Path logFile;
         private final StallWatch stalls = StallWatch.start();
         private final String safepointNote;
         /** Why the recording gave no figures, or null. */
@@ -105,30 +104,23 @@ public final class PlatformJvmProbe implements JvmProbe {
         private int stopsKept;
         private long stopsNotKept;
         private long safepointCount;
-        /** Whether the figures are JFR's (read at the close), not the collectors' notifications. */
-        private boolean fromRecording;
+        /** Whether the figures are the log's (read at the close), not the collectors' notifications. */
+        private boolean fromLog;
 
-        PlatformPauseWatch(boolean epsilon) {
-            Recording started = null;
+        PlatformPauseWatch() {
+            SafepointLog started = null;
+            Path file = null;
             String note = null;
-            if (epsilon) {
-                note = "not measured on the Epsilon heap (JFR's own allocations would fill it)";
-            } else {
-                try {
-                    started = new Recording();
-                    started.enable(SAFEPOINT_EVENT).withThreshold(Duration.ZERO);
-                    started.enable(GC_EVENT).withThreshold(Duration.ZERO);
-                    started.setToDisk(true);
-                    started.start();
-                } catch (RuntimeException | Error e) {
-                    if (started != null) {
-                        started.close();
-                    }
-                    started = null;
-                    note = "not measured (JFR could not be started: " + e.getMessage() + ")";
-                }
+            try {
+                file = Files.createTempFile("rtaware-safepoints-", ".log");
+                started = SafepointLog.start(file);
+            } catch (IOException e) {
+                deleteQuietly(file);
+                file = null;
+                note = "not measured (the JVM's safepoint log could not be switched on: " + e.getMessage() + ")";
             }
-            recording = started;
+            log = started;
+            logFile = file;
             safepointNote = note;
             for (GarbageCollectorMXBean bean : ManagementFactory.getGarbageCollectorMXBeans()) {
                 if (bean instanceof NotificationEmitter emitter && countsPauses(bean.getName())) {
@@ -174,45 +166,31 @@ public final class PlatformJvmProbe implements JvmProbe {
         }
 
         /**
-         * Stops the recording and takes its figures in place of the notifications' (called
-         * holding the lock). A recording that cannot be read leaves the notifications' figures
-         * and no time to safepoint.
+         * Stops the log and takes its figures in place of the notifications' (called holding the
+         * lock): every safepoint counts with its time to reach, and a collector's pause with its
+         * time at the safepoint. A log that cannot be read leaves the notifications' figures and
+         * no time to safepoint.
          */
-        private void readRecording() {
-            Path file = null;
+        private void readLog() {
             try {
-                recording.stop();
-                file = Files.createTempFile("rtaware-pauses-", ".jfr");
-                recording.dump(file);
+                List<SafepointLog.Safepoint> safepoints = log.stop();
                 count.set(0);
                 totalMs.reset();
                 maxMs = 0;
                 stopsKept = 0;
                 stopsNotKept = 0;
-                try (RecordingFile events = new RecordingFile(file)) {
-                    while (events.hasMoreEvents()) {
-                        RecordedEvent e = events.readEvent();
-                        String type = e.getEventType().getName();
-                        if (SAFEPOINT_EVENT.equals(type)) {
-                            safepoint(e.getDuration().toNanos() / 1e6);
-                        } else if (GC_EVENT.equals(type)) {
-                            collected(e.getDuration("sumOfPauses").toNanos() / 1e6,
-                                    e.getDuration("longestPause").toNanos() / 1e6);
-                        }
+                for (SafepointLog.Safepoint s : safepoints) {
+                    safepoint(s.reachingNs() / 1e6);
+                    if (s.collectorPause()) {
+                        double pauseMs = s.atSafepointNs() / 1e6;
+                        collected(pauseMs, pauseMs);
                     }
                 }
-                fromRecording = true;
-            } catch (IOException | RuntimeException e) {
-                unreadable = "not measured (the JFR recording could not be read: " + e.getMessage() + ")";
+                fromLog = true;
+            } catch (IOException e) {
+                unreadable = "not measured (the JVM's safepoint log could not be read: " + e.getMessage() + ")";
             } finally {
-                recording.close();
-                if (file != null) {
-                    try {
-                        Files.deleteIfExists(file);
-                    } catch (IOException ignored) {
-                        // a temporary file left behind: nothing of the run depends on it
-                    }
-                }
+                deleteQuietly(logFile);
             }
         }
 
@@ -226,7 +204,7 @@ public final class PlatformJvmProbe implements JvmProbe {
 
         @Override
         public synchronized void handleNotification(Notification notification, Object handback) {
-            if (fromRecording || !GarbageCollectionNotificationInfo.GARBAGE_COLLECTION_NOTIFICATION.equals(notification.getType())) {
+            if (fromLog || !GarbageCollectionNotificationInfo.GARBAGE_COLLECTION_NOTIFICATION.equals(notification.getType())) {
                 return;
             }
             GarbageCollectionNotificationInfo info =
@@ -252,12 +230,12 @@ public final class PlatformJvmProbe implements JvmProbe {
 
         @Override
         public synchronized long safepoints() {
-            return fromRecording ? safepointCount : -1;
+            return fromLog ? safepointCount : -1;
         }
 
         @Override
         public synchronized Double maxTimeToSafepointMs() {
-            return fromRecording ? maxSafepointMs : null;
+            return fromLog ? maxSafepointMs : null;
         }
 
         @Override
@@ -265,7 +243,7 @@ public final class PlatformJvmProbe implements JvmProbe {
             if (safepointNote != null || unreadable != null) {
                 return safepointNote != null ? safepointNote : unreadable;
             }
-            return fromRecording ? null : "measured when the run ends (JFR, read at the close)";
+            return fromLog ? null : "measured when the run ends (the JVM's safepoint log, read at the close)";
         }
 
         @Override
@@ -287,9 +265,21 @@ public final class PlatformJvmProbe implements JvmProbe {
                     // never added: nothing to remove
                 }
             }
-            if (recording != null) {
-                readRecording();
+            if (log != null) {
+                readLog();
             }
+        }
+    }
+
+    /** Deletes a temporary file of the watch, if there is one; one left behind harms nothing of the run. */
+    private static void deleteQuietly(Path file) {
+        if (file == null) {
+            return;
+        }
+        try {
+            Files.deleteIfExists(file);
+        } catch (IOException ignored) {
+            // a temporary file left behind: nothing of the run depends on it
         }
     }
 }
