@@ -236,30 +236,25 @@ public final class RobotRun {
         }
         CommandMonitor.showMachine(live, monitor, () -> conditions);
         run.attach(monitor, recorder); // connects the ground truth before the start: its first sample is the start
-        monitor.onTermination(report -> {
-            try {
-                if (console != null) {
-                    console.close();
-                }
-                RunSection section = run.finish(); // stops the referee, whose last sample the recorder still takes
-                Conditions measured = conditions.finish(shortestPeriodMs(report));
-                artifacts.section(Conditions.SECTION, measured);
-                if (recorder != null) {
-                    recorder.closingMetadata(Conditions.MCAP_METADATA, ConditionsMeter.metadata(measured));
-                }
-                artifacts.section("recording", RecordOptions.finish(recorder, out, artifacts.writes()));
-                if (foxgloveServer != null) {
-                    artifacts.section(FoxgloveMixin.SECTION, foxgloveServer.stats()); // after the recorder's last message
-                }
-                live.finish(report, section);
-                link.ros2().ifPresent(r -> artifacts.section("ros2", r.section()));
-                artifacts.write(report, section, run.playerSection(), run.referee(),
-                        run.controller().finalMap().orElse(null), scenario.map().orElse(null));
-                options.trace().write(trace, out, artifacts.writes());
-            } catch (RuntimeException | Error e) {
-                // Whatever failed, the run must not end with status 0 as if its report were complete.
-                artifacts.writes().failed("finish the run's report", e);
+        CommandMonitor.onTermination(monitor, artifacts.writes(), report -> {
+            if (console != null) {
+                console.close();
             }
+            RunSection section = run.finish(); // stops the referee, whose last sample the recorder still takes
+            Conditions measured = conditions.finish(shortestPeriodMs(report));
+            artifacts.section(Conditions.SECTION, measured);
+            if (recorder != null) {
+                recorder.closingMetadata(Conditions.MCAP_METADATA, ConditionsMeter.metadata(measured));
+            }
+            artifacts.section("recording", RecordOptions.finish(recorder, out, artifacts.writes()));
+            if (foxgloveServer != null) {
+                artifacts.section(FoxgloveMixin.SECTION, foxgloveServer.stats()); // after the recorder's last message
+            }
+            live.finish(report, section);
+            link.ros2().ifPresent(r -> artifacts.section("ros2", r.section()));
+            artifacts.write(report, section, run.playerSection(), run.referee(),
+                    run.controller().finalMap().orElse(null), scenario.map().orElse(null));
+            options.trace().write(trace, out, artifacts.writes());
         });
         Thread hook = monitor.installShutdownHook();
 
