@@ -460,8 +460,8 @@ public final class BenchCommand implements Callable<Integer> {
                 .orElse(null);
         Thread hook = monitor.installShutdownHook();
         OutputWrites writes = new OutputWrites(System.err);
-        CommandMonitor.onTermination(monitor, writes,
-                report -> finish(monitor, report, console, recorder, recording, foxgloveServer, out, writes));
+        monitor.onTermination(writes.guarding("finish the run's report",
+                report -> finish(monitor, report, console, recorder, recording, foxgloveServer, out, writes)));
         monitor.onTermination(report -> liveView.finish(report, null));
         warmUp(specs, work);
         ThreadAllocation.prepare();

@@ -5,12 +5,9 @@ import io.rtaware.core.monitor.ConfigurationException;
 import io.rtaware.core.conditions.ConditionsMeter;
 import io.rtaware.core.monitor.ConsoleReporter;
 import io.rtaware.core.monitor.Monitor;
-import io.rtaware.core.output.OutputWrites;
-import io.rtaware.core.report.Report;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.live.LiveView;
 import java.io.PrintStream;
-import java.util.function.Consumer;
 import java.util.function.Supplier;
 
 /**
@@ -67,26 +64,6 @@ public final class CommandMonitor {
         } catch (IllegalStateException shuttingDown) {
             // The JVM is already exiting: the hook is doing, or has done, the same work.
         }
-    }
-
-    /**
-     * Adds the command's termination handler, the one that prints the summary and writes the
-     * report and the other outputs: whatever it throws (a bug, an {@link OutOfMemoryError} while
-     * the report is written) is one failed step of {@code writes}, printed with its stack trace, so
-     * the command does not end with status 0 as if its report were complete.
-     *
-     * @param monitor the monitor, not started
-     * @param writes the command's output writes, whose exit status then says the failure
-     * @param finish what ends the run's outputs
-     */
-    public static void onTermination(Monitor monitor, OutputWrites writes, Consumer<Report> finish) {
-        monitor.onTermination(report -> {
-            try {
-                finish.accept(report);
-            } catch (RuntimeException | Error e) {
-                writes.failed("finish the run's report", e);
-            }
-        });
     }
 
     /**

@@ -236,7 +236,7 @@ public final class RobotRun {
         }
         CommandMonitor.showMachine(live, monitor, () -> conditions);
         run.attach(monitor, recorder); // connects the ground truth before the start: its first sample is the start
-        CommandMonitor.onTermination(monitor, artifacts.writes(), report -> {
+        monitor.onTermination(artifacts.writes().guarding("finish the run's report", report -> {
             if (console != null) {
                 console.close();
             }
@@ -255,7 +255,7 @@ public final class RobotRun {
             artifacts.write(report, section, run.playerSection(), run.referee(),
                     run.controller().finalMap().orElse(null), scenario.map().orElse(null));
             options.trace().write(trace, out, artifacts.writes());
-        });
+        }));
         Thread hook = monitor.installShutdownHook();
 
         monitor.start();

@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import java.util.function.Consumer;
 
 /**
  * The writes of one command's outputs, each on its own: a write that fails (a full disk, a file
@@ -97,6 +98,27 @@ public final class OutputWrites {
         failed("could not " + step + ": " + error);
         error.printStackTrace(err);
         err.flush();
+    }
+
+    /**
+     * Wraps a step that ends a command's outputs (e.g. the monitor's termination handler that
+     * prints the summary and writes the report): whatever it throws, a bug or an
+     * {@link OutOfMemoryError} while the report is written, is {@link #failed(String, Throwable)
+     * a failed step}, so the command does not end with status 0 as if its outputs were complete.
+     *
+     * @param step what the action does, for the failure's line, e.g. {@code finish the run's report}
+     * @param action the step
+     * @param <T> what the step is given
+     * @return the step, guarded
+     */
+    public <T> Consumer<T> guarding(String step, Consumer<T> action) {
+        return value -> {
+            try {
+                action.accept(value);
+            } catch (RuntimeException | Error e) {
+                failed(step, e);
+            }
+        };
     }
 
     /** @return the files written, in order */

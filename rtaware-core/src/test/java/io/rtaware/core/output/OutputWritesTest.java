@@ -50,4 +50,28 @@ class OutputWritesTest {
                 err.toString(StandardCharsets.UTF_8).strip());
         assertEquals(OutputWrites.EXIT_WRITE_FAILED, writes.exitStatus(0));
     }
+
+    /**
+     * Issue 36: bench's termination handler ran its report unguarded, so an OutOfMemoryError while
+     * report.json was written ended the command with status 0; run's guarded it by hand.
+     */
+    @Test
+    void aGuardedStepThatThrowsIsAFailedStepAndSetsTheStatus() {
+        writes.guarding("finish the run's report", report -> {
+            throw new OutOfMemoryError("Java heap space");
+        }).accept("the report");
+
+        assertEquals(1, writes.exitStatus(0));
+        assertTrue(err.toString(StandardCharsets.UTF_8).startsWith(
+                "rtaware: could not finish the run's report: java.lang.OutOfMemoryError: Java heap space"), err.toString());
+    }
+
+    @Test
+    void aGuardedStepThatEndsWellKeepsTheStatus() {
+        StringBuilder seen = new StringBuilder();
+        writes.guarding("finish the run's report", seen::append).accept("the report");
+
+        assertEquals("the report", seen.toString());
+        assertEquals(0, writes.exitStatus(0));
+    }
 }
