@@ -310,8 +310,7 @@ public final class Monitor {
     }
 
     private ClockWaiter newWaiter() {
-        return clock instanceof ManualClock manual ? new ManualClockWaiter(manual)
-                : new ParkingClockWaiter(clock, sleeper);
+        return ClockWaiter.forClock(clock, sleeper);
     }
 
     /** @return the executor once started, else null (tests on a manual clock step through it) */
