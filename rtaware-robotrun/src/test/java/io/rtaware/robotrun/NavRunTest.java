@@ -32,8 +32,9 @@ import org.junit.jupiter.api.Test;
 /**
  * The nav controller runs on the built-in simulator from code, without the command line, as
  * {@link NavRun}'s documentation shows: a course whose far waypoint cannot be reached within a
- * time limit of one world second ends by the time limit, whatever the machine's speed, and the
- * termination handler's {@link NavRun#finish()} gives the report's {@code run} section.
+ * time limit of one world second ends by the time limit, whatever the machine's speed, the
+ * recorder it was given has the ending on {@code /rosout}, and the termination handler's
+ * {@link NavRun#finish()} gives the report's {@code run} section.
  */
 class NavRunTest {
 
@@ -51,18 +52,26 @@ class NavRunTest {
         ScaledClock clock = new ScaledClock(10);
         NavRun.Settings settings = new NavRun.Settings(Map.of("obstacle", 40_000_000L), 10, 1, 4, 0.05, 0, 60, "r0");
         AtomicReference<RunSection> finished = new AtomicReference<>();
+        RosoutTap tap = new RosoutTap();
         try (RobotLink robot = RobotLink.simulator(SimCommandSupport.start(scenario, model, clock,
                 ServerConfig.defaults(0), settings.seed(), settings.robotSeed()))) {
             NavRun run = new NavRun(scenario, model, settings, robot, clock);
             RecordingPlan plan = run.recordingPlan();
+            RunRecorder recorder = new RunRecorder((Path) null, List.of(), List.of(), List.of(),
+                    new RecordingPlan().withGroundTruth().startingNow(clock.nanos()).tap(tap));
             Monitor monitor = run.monitorBuilder().build();
-            run.attach(monitor, null);
+            run.attach(monitor, recorder);
             monitor.onTermination(report -> finished.set(run.finish()));
             monitor.start();
             run.started();
 
             RunState.Ending ending = run.superviseUntilEnd(elapsedS -> { });
             monitor.stop();
+            recorder.finish(); // the writer thread has sent the tap every line
+
+            // The safety log is the run's, not the command line's: a run from code logs its ending too.
+            assertEquals(List.of("20 safety run ended, timeout: time limit of 1 s passed"), tap.lines,
+                    "the ending on /rosout, at info level; no collision or near miss on this course");
 
             assertEquals(RunOutcome.TIMEOUT, ending.outcome());
             assertEquals("time limit of 1 s passed", ending.reason());
@@ -116,35 +125,6 @@ class NavRunTest {
             in.readString(text);
             lines.add(level + " " + name + " " + text);
         }
-    }
-
-    /**
-     * A run from code given a recorder logs how it ended on the recording's {@code /rosout}, as
-     * {@code rtaware run} does, without the command line's help (the safety log was the CLI's).
-     */
-    @Test
-    void aRunFromCodeLogsItsEndingOnTheRecordingsRosout() throws Exception {
-        Scenario scenario = oneSecondCourse();
-        RobotModel model = RobotModel.koala(RobotModel.PAPER_TOP_SPEED_MPS);
-        ScaledClock clock = new ScaledClock(10);
-        NavRun.Settings settings = new NavRun.Settings(Map.of(), 10, 1, 4, 0.05, 0, 60, "r0");
-        RosoutTap tap = new RosoutTap();
-        try (RobotLink robot = RobotLink.simulator(SimCommandSupport.start(scenario, model, clock,
-                ServerConfig.defaults(0), settings.seed(), settings.robotSeed()))) {
-            NavRun run = new NavRun(scenario, model, settings, robot, clock);
-            RunRecorder recorder = new RunRecorder((Path) null, List.of(), List.of(), List.of(),
-                    new RecordingPlan().withGroundTruth().startingNow(clock.nanos()).tap(tap));
-            Monitor monitor = run.monitorBuilder().build();
-            run.attach(monitor, recorder);
-            monitor.onTermination(report -> run.finish());
-            monitor.start();
-            run.started();
-            run.superviseUntilEnd(elapsedS -> { });
-            monitor.stop();
-            recorder.finish(); // the writer thread has sent the tap every line
-        }
-        assertEquals(List.of("20 safety run ended, timeout: time limit of 1 s passed"), tap.lines,
-                "the ending, at info level; no collision or near miss on this course");
     }
 
     /** A finish 0.2 m ahead of the start, within the 0.3 m tolerance: reached at once. */
