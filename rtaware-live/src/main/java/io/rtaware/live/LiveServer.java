@@ -2,6 +2,7 @@ package io.rtaware.live;
 
 import com.sun.net.httpserver.HttpExchange;
 import com.sun.net.httpserver.HttpServer;
+import io.rtaware.core.agent.ThreadNames;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.net.InetSocketAddress;
@@ -69,7 +70,7 @@ public final class LiveServer implements AutoCloseable {
         resources.put("/", new Resource("text/html; charset=utf-8", page.clone()));
         AtomicInteger threads = new AtomicInteger();
         executor = Executors.newCachedThreadPool(r -> {
-            Thread t = new Thread(r, "rtaware-live-http-" + threads.incrementAndGet());
+            Thread t = new Thread(r, ThreadNames.LIVE_HTTP_PREFIX + threads.incrementAndGet());
             t.setDaemon(true);
             return t;
         });

@@ -6,6 +6,7 @@ import com.fasterxml.jackson.databind.SerializationFeature;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import io.rtaware.core.agent.AgentThread;
+import io.rtaware.core.agent.ThreadNames;
 import io.rtaware.core.conditions.Conditions;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.report.Report;
@@ -49,8 +50,6 @@ import org.agrona.concurrent.SleepingMillisIdleStrategy;
  */
 public final class LiveView implements AutoCloseable {
 
-    /** The publisher thread's name: an observer, off the tasks' per-release path. */
-    public static final String PUBLISHER_THREAD = "rtaware-live-publisher";
     /** Wall time between snapshots. */
     static final long PUBLISH_PERIOD_MS = 200;
     /** Least wall time between two grid images. */
@@ -234,7 +233,7 @@ public final class LiveView implements AutoCloseable {
 
         @Override
         public String roleName() {
-            return PUBLISHER_THREAD;
+            return ThreadNames.LIVE_PUBLISHER; // an observer, off the tasks' per-release path
         }
     }
 

@@ -8,10 +8,13 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
+import io.rtaware.core.agent.ThreadNames;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.SteppedThreads;
 import io.rtaware.core.monitor.TaskCounters;
 import io.rtaware.core.task.Schedule;
+import io.rtaware.core.testing.LiveThreads;
+import io.rtaware.core.testing.ThreadAllocation;
 import io.rtaware.core.testing.Waits;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.ManualClock;
@@ -33,6 +36,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Iterator;
 import java.util.List;
+import java.util.Set;
 import java.util.function.Predicate;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.AfterEach;
@@ -98,6 +102,24 @@ class LiveServerTest {
             return wanted.test(latest[0]);
         }, Duration.ofSeconds(30), () -> what + "; latest " + latest[0]);
         return latest[0];
+    }
+
+    /**
+     * The view's threads (its publisher, the HTTP thread that served a request) are observers:
+     * the allocation check of {@code bench --live --fail-on-alloc} does not count them as the
+     * framework's threads on the per-release path, whatever the browser makes them allocate.
+     */
+    @Test
+    void theViewsThreadsAreOffTheTasksPerReleasePath() throws Exception {
+        Set<Thread> before = Set.of(LiveThreads.all());
+        LiveView view = benchView(chain());
+        assertEquals(200, get(view.port(), "/snapshot.json").statusCode());
+
+        List<Thread> ours = Arrays.stream(LiveThreads.all())
+                .filter(t -> !before.contains(t) && t.getName().startsWith(ThreadNames.PREFIX)).toList();
+        assertTrue(ours.size() >= 2, "the publisher and a thread that served the request: " + ours);
+        assertEquals(List.of(), ours.stream().filter(ThreadAllocation::onReleasePath).toList(),
+                "counted as the framework's on the per-release path");
     }
 
     /**

@@ -1,13 +1,14 @@
 package io.rtaware.record;
 
 import io.rtaware.core.agent.AgentThread;
+import io.rtaware.core.agent.ThreadNames;
 import java.io.IOException;
 import java.util.List;
 import org.agrona.concurrent.Agent;
 import org.agrona.concurrent.SleepingIdleStrategy;
 
 /**
- * The recorder's one writer thread ({@value #THREAD_NAME}, an {@link AgentThread}): drains the
+ * The recorder's one writer thread ({@value ThreadNames#RECORDER}, an {@link AgentThread}): drains the
  * rings into the sink, idling {@value #IDLE_PARK_NS} ns when they are empty, until closed; then,
  * in its {@link Agent#onClose()}, drains until a pass writes nothing. A write that fails ends the
  * writing (the first reason kept for the recording's statistics) and the thread goes on emptying
@@ -16,8 +17,6 @@ import org.agrona.concurrent.SleepingIdleStrategy;
  */
 final class RecorderWriterThread {
 
-    /** The name of the writer thread. */
-    static final String THREAD_NAME = "rtaware-recorder";
     private static final long IDLE_PARK_NS = 1_000_000;
 
     private final List<RecorderRing> rings;
@@ -62,7 +61,7 @@ final class RecorderWriterThread {
 
         @Override
         public String roleName() {
-            return THREAD_NAME;
+            return ThreadNames.RECORDER; // off the tasks' per-release path
         }
     }
 

@@ -130,6 +130,8 @@ public final class NavRun {
     private long startNs;
     private Referee referee;
     private Supervisor supervisor;
+    /** The safety events on the recording's {@code /rosout}; set by {@link #attach}. */
+    private SafetyLog safety;
     private MonitorView view;
 
     /**
@@ -199,10 +201,12 @@ public final class NavRun {
      *
      * @param monitor the monitor built from {@link #monitorBuilder()}
      * @param recorder the run's recorder, which then records every true pose on {@code /ground_truth}
-     *     (none when the referee watches odometry), or null
+     *     (none when the referee watches odometry) and, on {@code /rosout}, each collision and near
+     *     miss of the built-in simulator and how the run ended; or null
      */
     public void attach(Monitor monitor, RunRecorder recorder) {
         this.monitor = monitor;
+        this.safety = new SafetyLog(recorder, link.simulator().orElse(null));
         Referee.PoseSource known = trueSource();
         this.truthSource = known != null ? known : RobotLink.odometry(monitor);
         this.truth = known != null ? NavRecording.recordingGroundTruth(known, recorder, clock) : truthSource;
@@ -235,7 +239,8 @@ public final class NavRun {
     /**
      * Watches the run until it ends and records the ending: looks every 50 ms of world time (at
      * most every 50 ms and at least every 1 ms of wall time), recording each waypoint the
-     * controller newly counts as passed. Returns early, with null, once the monitor is stopping
+     * controller newly counts as passed and logging each new collision and near miss and, at the
+     * end, the ending on the recorder's {@code /rosout} (if {@link #attach} was given one). Returns early, with null, once the monitor is stopping
      * (Ctrl-C, SIGTERM, a fatal error: the termination handler's {@link #finish()} records it).
      *
      * @param status told of each look
@@ -251,8 +256,10 @@ public final class NavRun {
             double elapsedS = (clock.nanos() - startNs) / 1e9;
             RunState.Ending ending = supervisor.check();
             recordPasses(elapsedS);
+            safety.poll(clock.nanos());
             if (ending != null) {
                 state.end(ending.outcome(), ending.reason(), clock.nanos());
+                safety.ended(ending, clock.nanos());
                 return ending;
             }
             status.look(elapsedS);

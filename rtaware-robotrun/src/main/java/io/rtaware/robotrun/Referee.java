@@ -1,17 +1,16 @@
 package io.rtaware.robotrun;
 
 import io.rtaware.core.agent.AgentThread;
+import io.rtaware.core.monitor.WorldClockIdleStrategy;
 import io.rtaware.core.time.Clock;
 import io.rtaware.robot.geometry.Point2d;
 import io.rtaware.robot.geometry.Pose2d;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
-import java.util.concurrent.locks.LockSupport;
 import java.util.function.LongSupplier;
 import java.util.function.Supplier;
 import org.agrona.concurrent.Agent;
-import org.agrona.concurrent.NoOpIdleStrategy;
 
 /**
  * Watches the robot from outside the controller, as the paper's ground-truth sensors did: samples
@@ -22,7 +21,8 @@ import org.agrona.concurrent.NoOpIdleStrategy;
  * pose before the failure to the first one after it (or to the end of the run): the distance
  * travelled is summed only between samples without a gap between them, and the report says
  * which time it covers. A sampling thread that merely ran late (a loaded machine) is no gap.
- * The sampling thread ({@value #THREAD_NAME}) is an {@link AgentThread}: a sample that throws
+ * The sampling thread ({@value #THREAD_NAME}) is an {@link AgentThread} that waits for the next
+ * sample's world time with a {@link WorldClockIdleStrategy}: a sample that throws
  * (a fault of ours, not of the pose source, whose failures are gaps) is counted, recorded as a
  * failed sample (a gap, {@link #lastError()}), the first one printed to standard error, and the
  * sampling goes on. Thread-safe: sampled by its own thread, read by any.
@@ -69,6 +69,8 @@ public final class Referee implements AutoCloseable {
     private final List<GroundTruthGap> gaps = new ArrayList<>();
     /** The sampling loop, once started. */
     private volatile AgentThread sampler;
+    /** How the sampling loop waits for the next sample, once started. */
+    private volatile WorldClockIdleStrategy samplerIdle;
     private double travelledM;
     private long lastMisses;
     private String lastError;
@@ -111,18 +113,29 @@ public final class Referee implements AutoCloseable {
      * @return this referee
      */
     public Referee start() {
-        sampler = AgentThread.start(new Sampler(), NoOpIdleStrategy.INSTANCE, this::samplingFailed);
+        WorldClockIdleStrategy idle = new WorldClockIdleStrategy(clock);
+        samplerIdle = idle;
+        sampler = AgentThread.start(new Sampler(idle), idle, this::samplingFailed);
         return this;
     }
 
+    /** @return how the sampling thread waits, once started (tests step it on a manual clock) */
+    WorldClockIdleStrategy samplerIdle() {
+        return samplerIdle;
+    }
+
     /**
-     * The sampling loop: a sample when the next one is due in world time, else a park of the wall
-     * time left ({@link Clock#toWallNanos}); a loop that fell behind samples at once and goes on
-     * from there.
+     * The sampling loop: a sample when the next one is due in world time, else no work and the
+     * idle waits for that time; a loop that fell behind samples at once and goes on from there.
      */
     private final class Sampler implements Agent {
+        private final WorldClockIdleStrategy idle;
         /** World time of the next sample (the sampling thread only). */
         private long nextNs;
+
+        Sampler(WorldClockIdleStrategy idle) {
+            this.idle = idle;
+        }
 
         @Override
         public void onStart() {
@@ -132,9 +145,8 @@ public final class Referee implements AutoCloseable {
         @Override
         public int doWork() {
             long nowNs = clock.nanos();
-            long waitNs = nextNs - nowNs;
-            if (waitNs > 0) {
-                LockSupport.parkNanos(clock.toWallNanos(waitNs));
+            if (nextNs - nowNs > 0) {
+                idle.wakeAt(nextNs);
                 return 0;
             }
             // The next sample is set before this one is taken, so a sample that throws does not repeat at once.

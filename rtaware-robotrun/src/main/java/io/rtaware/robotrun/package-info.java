@@ -6,7 +6,8 @@
  * robot through {@link io.rtaware.robotrun.Ros2Link}), {@link io.rtaware.robotrun.Referee}
  * watches it from outside (ground truth), {@link io.rtaware.robotrun.Supervisor} applies the
  * end-of-run rules (finish, time limit, stuck, lost server, safety fault) into a shared
- * {@link io.rtaware.robotrun.RunState}, {@link io.rtaware.robotrun.CourseCheck} warns of a course
+ * {@link io.rtaware.robotrun.RunState} (and, given a recorder, logs each collision, near miss
+ * and the ending on its {@code /rosout}), {@link io.rtaware.robotrun.CourseCheck} warns of a course
  * that cannot work, and {@link io.rtaware.robotrun.RunSection} is the report's account of the run.
  * {@link io.rtaware.robotrun.SimulatorFeed} shows the simulated robot to a recording's tap (the
  * Foxglove server) without a controller.

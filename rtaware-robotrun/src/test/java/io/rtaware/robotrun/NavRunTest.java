@@ -10,24 +10,31 @@ import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.time.ScaledClock;
 import io.rtaware.nav.ControllerMetadata;
 import io.rtaware.record.RecordingPlan;
+import io.rtaware.record.RecordingTap;
+import io.rtaware.record.RunRecorder;
+import io.rtaware.record.TapChannel;
 import io.rtaware.replay.ReplayProviders;
 import io.rtaware.robot.geometry.Point2d;
+import io.rtaware.ros2msg.cdr.CdrReader;
 import io.rtaware.sim.scenario.Scenario;
 import io.rtaware.sim.scenario.ScenarioLoader;
 import io.rtaware.sim.server.PlayerSimServer;
 import io.rtaware.sim.server.ServerConfig;
 import io.rtaware.sim.server.SimCommandSupport;
 import io.rtaware.sim.world.RobotModel;
+import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.api.Test;
 
 /**
  * The nav controller runs on the built-in simulator from code, without the command line, as
  * {@link NavRun}'s documentation shows: a course whose far waypoint cannot be reached within a
- * time limit of one world second ends by the time limit, whatever the machine's speed, and the
- * termination handler's {@link NavRun#finish()} gives the report's {@code run} section.
+ * time limit of one world second ends by the time limit, whatever the machine's speed, the
+ * recorder it was given has the ending on {@code /rosout}, and the termination handler's
+ * {@link NavRun#finish()} gives the report's {@code run} section.
  */
 class NavRunTest {
 
@@ -45,18 +52,26 @@ class NavRunTest {
         ScaledClock clock = new ScaledClock(10);
         NavRun.Settings settings = new NavRun.Settings(Map.of("obstacle", 40_000_000L), 10, 1, 4, 0.05, 0, 60, "r0");
         AtomicReference<RunSection> finished = new AtomicReference<>();
+        RosoutTap tap = new RosoutTap();
         try (RobotLink robot = RobotLink.simulator(SimCommandSupport.start(scenario, model, clock,
                 ServerConfig.defaults(0), settings.seed(), settings.robotSeed()))) {
             NavRun run = new NavRun(scenario, model, settings, robot, clock);
             RecordingPlan plan = run.recordingPlan();
+            RunRecorder recorder = new RunRecorder((Path) null, List.of(), List.of(), List.of(),
+                    new RecordingPlan().withGroundTruth().startingNow(clock.nanos()).tap(tap));
             Monitor monitor = run.monitorBuilder().build();
-            run.attach(monitor, null);
+            run.attach(monitor, recorder);
             monitor.onTermination(report -> finished.set(run.finish()));
             monitor.start();
             run.started();
 
             RunState.Ending ending = run.superviseUntilEnd(elapsedS -> { });
             monitor.stop();
+            recorder.finish(); // the writer thread has sent the tap every line
+
+            // The safety log is the run's, not the command line's: a run from code logs its ending too.
+            assertEquals(List.of("20 safety run ended, timeout: time limit of 1 s passed"), tap.lines,
+                    "the ending on /rosout, at info level; no collision or near miss on this course");
 
             assertEquals(RunOutcome.TIMEOUT, ending.outcome());
             assertEquals("time limit of 1 s passed", ending.reason());
@@ -81,6 +96,35 @@ class NavRunTest {
         assertEquals("ground_truth", section.measuredOn(), "the simulator's simulation:0 gives the true pose");
         assertEquals("simulator", section.collisionsFrom());
         assertEquals(4L, section.robotSeed());
+    }
+
+    /** Keeps the {@code /rosout} lines a recording's tap is sent, as "level name text". */
+    private static final class RosoutTap implements RecordingTap {
+        final List<String> lines = new CopyOnWriteArrayList<>();
+        private volatile int rosout = -1;
+
+        @Override
+        public void channel(TapChannel channel) {
+            if (channel.topic().equals(RunRecorder.ROSOUT_TOPIC)) {
+                rosout = channel.id();
+            }
+        }
+
+        @Override
+        public void message(int channelId, long logTimeNs, byte[] data, int offset, int length) {
+            if (channelId != rosout) {
+                return;
+            }
+            CdrReader in = new CdrReader().wrap(data, offset, length);
+            in.readInt32(); // stamp: seconds
+            in.readInt32(); // and nanoseconds
+            int level = in.readInt8();
+            StringBuilder name = new StringBuilder();
+            StringBuilder text = new StringBuilder();
+            in.readString(name);
+            in.readString(text);
+            lines.add(level + " " + name + " " + text);
+        }
     }
 
     /** A finish 0.2 m ahead of the start, within the 0.3 m tolerance: reached at once. */

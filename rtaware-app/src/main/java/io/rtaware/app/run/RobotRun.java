@@ -267,7 +267,7 @@ public final class RobotRun {
                     scenario.name(), options.periods(), trim(options.timeScale()), link.describe(model), referee.kind());
         }
 
-        supervise(run, monitor, referee, link.dataTaskName(), new SafetyLog(recorder, link.simulator().orElse(null)));
+        supervise(run, monitor, referee, link.dataTaskName());
         CommandMonitor.stop(monitor, hook);
         live.close();
         FoxgloveMixin.close(foxgloveServer);
@@ -279,12 +279,11 @@ public final class RobotRun {
     }
 
     /** Runs the supervision with a status line (on a terminal every 250 ms, else every 5 s) and says how the run ended. */
-    private void supervise(NavRun run, Monitor monitor, Referee referee, String dataTask, SafetyLog safety) {
+    private void supervise(NavRun run, Monitor monitor, Referee referee, String dataTask) {
         boolean tty = System.console() != null;
         CourseStatus course = new CourseStatus();
         long[] lastStatusWallNs = {System.nanoTime()};
         RunState.Ending ending = run.superviseUntilEnd(elapsedS -> {
-            safety.poll(monitor.clock().nanos());
             if (!options.quiet() && System.nanoTime() - lastStatusWallNs[0] >= (tty ? 250_000_000L : 5_000_000_000L)) {
                 lastStatusWallNs[0] = System.nanoTime();
                 printStatus(monitor, dataTask, run.readCourse(course), elapsedS, referee, tty);
@@ -293,7 +292,6 @@ public final class RobotRun {
         if (ending == null) {
             return; // Ctrl-C, SIGTERM or a STOP_ALL error: the termination handler records the outcome.
         }
-        safety.ended(ending, monitor.clock().nanos());
         if (!options.quiet()) {
             printStatus(monitor, dataTask, run.readCourse(course),
                     (monitor.clock().nanos() - run.state().startNs()) / 1e9, referee, tty);

@@ -3,6 +3,7 @@ package io.rtaware.bench.compare;
 import io.rtaware.core.testing.LiveThreads;
 import io.rtaware.bench.load.BenchSpec;
 import io.rtaware.bench.load.BusyWork;
+import io.rtaware.core.agent.ThreadNames;
 import io.rtaware.core.monitor.ExecutorKind;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.MonitorListener;
@@ -24,9 +25,6 @@ import java.util.stream.LongStream;
  * ones it reports. The monitor's watchdog and pool workers count as framework cost.
  */
 final class RtawareSegment implements SegmentExecutor {
-
-    private static final String WATCHDOG_THREAD = "rtaware-monitor";
-    private static final String POOL_THREADS = "rtaware-pool-";
 
     private final BusyWork work;
     private final String name;
@@ -79,8 +77,8 @@ final class RtawareSegment implements SegmentExecutor {
      */
     @Override
     public long[] helperThreadIds() {
-        return LongStream.concat(LongStream.of(LiveThreads.idsNamed(WATCHDOG_THREAD)),
-                LongStream.of(LiveThreads.idsNamed(POOL_THREADS))).toArray();
+        return LongStream.concat(LongStream.of(LiveThreads.idsNamed(ThreadNames.WATCHDOG)),
+                LongStream.of(LiveThreads.idsNamed(ThreadNames.POOL_WORKER_PREFIX))).toArray();
     }
 
     @Override

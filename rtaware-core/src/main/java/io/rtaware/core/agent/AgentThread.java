@@ -13,7 +13,9 @@ import org.agrona.concurrent.IdleStrategy;
  * A background loop on a daemon thread of its own, named for the agent's
  * {@link Agent#roleName() role}, run by Agrona's {@link AgentRunner}: {@link Agent#onStart()},
  * then {@link Agent#doWork()} and {@link IdleStrategy#idle(int)} in turn until closed, then
- * {@link Agent#onClose()}, all on that thread. Every throwable of the agent, {@link Error}s
+ * {@link Agent#onClose()}, all on that thread (and then the idle strategy's {@code close()}, if it
+ * is {@link AutoCloseable}: a {@link io.rtaware.core.monitor.WorldClockIdleStrategy} lets go of
+ * its clock). Every throwable of the agent, {@link Error}s
  * included, goes to one {@link ErrorHandler} and is counted ({@link #errors()}), and so does a
  * thread that has not returned when {@link #close()} gives up waiting; the loop goes on
  * (an {@link org.agrona.concurrent.AgentTerminationException} ends it), and {@link Agent#onClose()}
@@ -96,7 +98,11 @@ public final class AgentThread implements AutoCloseable {
 
             @Override
             public void onClose() {
-                agent.onClose();
+                try {
+                    agent.onClose();
+                } finally {
+                    closeIdle(idle);
+                }
             }
 
             @Override
@@ -108,12 +114,25 @@ public final class AgentThread implements AutoCloseable {
         thread.setDaemon(true);
     }
 
+    /** After the agent's close, on its thread: an idle strategy that holds something lets go of it. */
+    private void closeIdle(IdleStrategy idle) {
+        if (idle instanceof AutoCloseable closeable) {
+            try {
+                closeable.close();
+            } catch (Exception e) {
+                counting.onError(e);
+            }
+        }
+    }
+
     /**
      * Starts an agent on a thread of its own.
      *
      * @param agent the loop's work; its role name names the thread
      * @param idle what to do after a duty cycle (e.g. Agrona's
-     *     {@link org.agrona.concurrent.SleepingMillisIdleStrategy} for a loop that polls)
+     *     {@link org.agrona.concurrent.SleepingMillisIdleStrategy} for a loop that polls, a
+     *     {@link io.rtaware.core.monitor.WorldClockIdleStrategy} for one whose work is due at
+     *     moments of world time); one that is {@link AutoCloseable} is closed after the agent
      * @param errorHandler where every throwable of the agent goes, on the agent's thread (a
      *     thread stuck past close's wait: on the closing thread)
      * @return the running loop, closed with {@link CloseWait#INTERRUPT_AFTER_TIMEOUT}
@@ -126,7 +145,7 @@ public final class AgentThread implements AutoCloseable {
      * Starts an agent on a thread of its own.
      *
      * @param agent the loop's work; its role name names the thread
-     * @param idle what to do after a duty cycle
+     * @param idle what to do after a duty cycle; one that is {@link AutoCloseable} is closed after the agent
      * @param errorHandler where every throwable of the agent goes, on the agent's thread (a
      *     thread stuck past close's wait: on the closing thread)
      * @param closeWait how {@link #close()} waits for the thread

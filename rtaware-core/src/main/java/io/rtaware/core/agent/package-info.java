@@ -6,6 +6,8 @@
  * {@link io.rtaware.core.agent.AgentThread}: {@code onStart}, then {@code doWork} and the idle
  * strategy in turn, every error to one handler and a counter, {@code onClose} on the same
  * thread, and a close that wakes the thread and joins it, with a timeout after which it
- * interrupts or, for a writer finishing a file, without one.
+ * interrupts or, for a writer finishing a file, without one. An agent whose work is due at
+ * moments of world time idles with a {@link io.rtaware.core.monitor.WorldClockIdleStrategy},
+ * which waits through the clock waiter the monitor's executors wait with.
  */
 package io.rtaware.core.agent;

@@ -1,5 +1,9 @@
 package io.rtaware.core.monitor;
 
+import io.rtaware.core.time.Clock;
+import io.rtaware.core.time.ManualClock;
+import io.rtaware.core.time.MonotonicSleeper;
+
 /**
  * How the threads of an executor wait for world time, in the spirit of Agrona's
  * {@code IdleStrategy}: the executor loops "while the clock is before the target, park", and
@@ -9,15 +13,29 @@ package io.rtaware.core.monitor;
  *
  * <p>Two kinds: {@link ParkingClockWaiter} parks for the wall time the clock says is left
  * (real and scaled clocks); {@link ManualClockWaiter} parks until the manual clock is advanced,
- * so the threaded executor runs on stepped time with exact results. Thread-safe.
+ * so the threaded executor runs on stepped time with exact results. The executors and the
+ * agents that wait for world time ({@link WorldClockIdleStrategy}) wait through it. Thread-safe.
  */
 interface ClockWaiter {
+
+    /**
+     * The waiter for a clock: one that parks until a {@link ManualClock} is advanced, else one
+     * that parks for the wall time left.
+     *
+     * @param clock the world clock
+     * @param sleeper what a real clock's {@link Party#sleep} uses, or null to park there too
+     * @return a new waiter on that clock
+     */
+    static ClockWaiter forClock(Clock clock, MonotonicSleeper sleeper) {
+        return clock instanceof ManualClock manual ? new ManualClockWaiter(manual) : new ParkingClockWaiter(clock, sleeper);
+    }
 
     /**
      * Registers a thread that will wait; before it first waits and before the executor's start
      * returns.
      *
-     * @param thread the thread (not yet started, or the calling one)
+     * @param thread the thread (not yet started, or the calling one), or null for a party whose
+     *     thread is the first one that waits with it (an agent's, registered before its thread exists)
      * @return its party
      */
     Party register(Thread thread);

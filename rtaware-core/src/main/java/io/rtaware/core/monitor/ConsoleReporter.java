@@ -1,6 +1,7 @@
 package io.rtaware.core.monitor;
 
 import io.rtaware.core.agent.AgentThread;
+import io.rtaware.core.agent.ThreadNames;
 import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.SystemClock;
@@ -153,7 +154,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
 
         @Override
         public String roleName() {
-            return "rtaware-console";
+            return ThreadNames.CONSOLE;
         }
     }
 

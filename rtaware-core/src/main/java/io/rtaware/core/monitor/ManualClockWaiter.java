@@ -78,7 +78,11 @@ final class ManualClockWaiter implements ClockWaiter {
 
     /** One thread waiting on the manual clock. */
     final class ManualParty implements Party {
-        private final Thread thread;
+        /**
+         * Null until the first wait of a party registered without its thread; bound before the
+         * wait is announced, so a wake requested after the announcement finds it.
+         */
+        private volatile Thread thread;
         /** The world time it waits for ({@link Long#MAX_VALUE}: until woken), {@link #BUSY} or {@link #DONE}. */
         private volatile long waitingUntil = BUSY;
         /** Wake requests made for it so far; incremented through {@link #WAKE_REQUESTS}. */
@@ -92,6 +96,9 @@ final class ManualClockWaiter implements ClockWaiter {
 
         @Override
         public void park(long targetNs) {
+            if (thread == null) {
+                thread = Thread.currentThread();
+            }
             if (clock.nanos() >= targetNs) {
                 return;
             }
@@ -112,7 +119,7 @@ final class ManualClockWaiter implements ClockWaiter {
         @Override
         public void wake() {
             requestWake();
-            LockSupport.unpark(thread);
+            LockSupport.unpark(thread); // unbound: its first wait re-reads the clock after announcing
         }
 
         /** The first half of {@link #wake}: the request is recorded, the thread not yet unparked. */
@@ -129,7 +136,8 @@ final class ManualClockWaiter implements ClockWaiter {
 
         @Override
         public String toString() {
-            return thread.getName() + ": waiting until " + waitingUntil + ", wake requests " + wakeRequests
+            Thread bound = thread;
+            return (bound == null ? "(no thread yet)" : bound.getName()) + ": waiting until " + waitingUntil + ", wake requests " + wakeRequests
                     + ", seen " + wakesSeen;
         }
     }

@@ -1,5 +1,6 @@
 package io.rtaware.core.monitor;
 
+import io.rtaware.core.agent.ThreadNames;
 import io.rtaware.core.conditions.ThreadTimerSlack;
 import io.rtaware.core.data.FeedStats;
 import io.rtaware.core.data.Key;
@@ -310,8 +311,7 @@ public final class Monitor {
     }
 
     private ClockWaiter newWaiter() {
-        return clock instanceof ManualClock manual ? new ManualClockWaiter(manual)
-                : new ParkingClockWaiter(clock, sleeper);
+        return ClockWaiter.forClock(clock, sleeper);
     }
 
     /** @return the executor once started, else null (tests on a manual clock step through it) */
@@ -369,7 +369,7 @@ public final class Monitor {
      * @return the hook thread (remove it with {@code Runtime.removeShutdownHook} if needed)
      */
     public Thread installShutdownHook() {
-        Thread hook = new Thread(this::stop, "rtaware-shutdown");
+        Thread hook = new Thread(this::stop, ThreadNames.SHUTDOWN);
         Runtime.getRuntime().addShutdownHook(hook);
         return hook;
     }
@@ -493,7 +493,7 @@ public final class Monitor {
             out.flush();
         };
         terminationHandlers.add(summary);
-        Thread hook = new Thread(this::stop, "rtaware-shutdown");
+        Thread hook = new Thread(this::stop, ThreadNames.SHUTDOWN);
         hooks.add(hook);
         try {
             start();
@@ -539,7 +539,7 @@ public final class Monitor {
 
     /** Called from a task thread under STOP_ALL: stop on another thread (a thread cannot join itself). */
     private void requestStopFromTask() {
-        Thread stopper = new Thread(this::stop, "rtaware-stop");
+        Thread stopper = new Thread(this::stop, ThreadNames.STOP);
         stopper.setDaemon(false);
         stopper.start();
     }

@@ -35,7 +35,8 @@ final class ParkingClockWaiter implements ClockWaiter {
 
     /** A thread that parks for the wall time left; nothing to track, wall time moves by itself. */
     private final class ParkingParty implements Party {
-        private final Thread thread;
+        /** Null until the first wait of a party registered without its thread. */
+        private volatile Thread thread;
 
         ParkingParty(Thread thread) {
             this.thread = thread;
@@ -43,6 +44,9 @@ final class ParkingClockWaiter implements ClockWaiter {
 
         @Override
         public void park(long targetNs) {
+            if (thread == null) {
+                thread = Thread.currentThread();
+            }
             parkUntil(targetNs);
         }
 
@@ -68,7 +72,7 @@ final class ParkingClockWaiter implements ClockWaiter {
 
         @Override
         public void wake() {
-            LockSupport.unpark(thread);
+            LockSupport.unpark(thread); // no effect while the thread is not bound yet
         }
 
         @Override

@@ -1,5 +1,6 @@
 package io.rtaware.core.monitor;
 
+import io.rtaware.core.agent.ThreadNames;
 import io.rtaware.core.time.Clock;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -307,7 +308,7 @@ final class PooledExecutor implements Executor {
                     ready.countDown();
                 }
                 loop.run();
-            }, "rtaware-pool-" + worker);
+            }, ThreadNames.poolWorker(worker));
             thread.setDaemon(true);
             thread.setPriority(Thread.MAX_PRIORITY - 1);
             return thread;

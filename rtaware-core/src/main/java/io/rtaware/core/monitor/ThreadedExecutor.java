@@ -1,5 +1,6 @@
 package io.rtaware.core.monitor;
 
+import io.rtaware.core.agent.ThreadNames;
 import io.rtaware.core.time.Clock;
 import java.util.ArrayList;
 import java.util.Collection;
@@ -95,7 +96,7 @@ final class ThreadedExecutor implements Executor {
             int rank = ranks[runtime.index()];
             int slot = threads.size();
             Thread thread = new Thread(() -> runTask(runtime, parties.get(slot), rank, ready, go),
-                    "rtaware-" + runtime.name());
+                    ThreadNames.task(runtime.name()));
             thread.setDaemon(true);
             thread.setPriority(runtime.isPeriodic()
                     ? Math.max(Thread.NORM_PRIORITY, Thread.MAX_PRIORITY - 1 - rank) : Thread.NORM_PRIORITY);

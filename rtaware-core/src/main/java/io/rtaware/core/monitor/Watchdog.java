@@ -1,5 +1,6 @@
 package io.rtaware.core.monitor;
 
+import io.rtaware.core.agent.ThreadNames;
 import io.rtaware.core.time.Clock;
 import java.util.concurrent.locks.LockSupport;
 
@@ -16,9 +17,6 @@ import java.util.concurrent.locks.LockSupport;
  * executor; {@link #wakeFor} from any thread.
  */
 final class Watchdog {
-
-    /** The thread's name, which the bench's allocation and CPU counters look for. */
-    static final String THREAD_NAME = "rtaware-monitor";
 
     /**
      * What the watchdog looks at: its executor's slots (a task thread each on the threaded
@@ -82,7 +80,7 @@ final class Watchdog {
     /** Creates the thread and registers it with the waiter; before any {@link #wakeFor}. */
     void prepare() {
         running = true;
-        thread = new Thread(this::watch, THREAD_NAME);
+        thread = new Thread(this::watch, ThreadNames.WATCHDOG);
         thread.setDaemon(true);
         thread.setPriority(Thread.MAX_PRIORITY);
         party = waiter.register(thread);

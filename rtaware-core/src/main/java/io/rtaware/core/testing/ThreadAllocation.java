@@ -1,5 +1,6 @@
 package io.rtaware.core.testing;
 
+import io.rtaware.core.agent.ThreadNames;
 import java.lang.management.ManagementFactory;
 import java.util.Arrays;
 import java.util.Comparator;
@@ -16,15 +17,13 @@ import java.util.function.Predicate;
  */
 public final class ThreadAllocation {
 
-    /** The prefix of every thread the framework names ({@code rtaware-t3}, {@code rtaware-monitor}, ...). */
-    public static final String FRAMEWORK_PREFIX = "rtaware-";
-
     /**
      * Threads of the framework that are not on the per-release path (they print, stop, write a
-     * recording from what the task threads handed over, or build the live view's snapshots).
+     * recording from what the task threads handed over, or build the live view's snapshots); the
+     * live view's HTTP threads, which serve them, are told by {@link ThreadNames#LIVE_HTTP_PREFIX}.
      */
-    private static final Set<String> OFF_PATH = Set.of("rtaware-console", "rtaware-shutdown", "rtaware-stop",
-            "rtaware-recorder", "rtaware-live-publisher");
+    private static final Set<String> OFF_PATH = Set.of(ThreadNames.CONSOLE, ThreadNames.SHUTDOWN, ThreadNames.STOP,
+            ThreadNames.RECORDER, ThreadNames.LIVE_PUBLISHER);
 
     private final com.sun.management.ThreadMXBean bean;
     private final long[] ids;
@@ -57,14 +56,28 @@ public final class ThreadAllocation {
 
     /**
      * Snapshots the framework's threads on the per-release path: every live thread named
-     * {@value #FRAMEWORK_PREFIX}{@code *} (the task threads, the pool workers {@code rtaware-pool-N}
-     * and the watchdog {@code rtaware-monitor}) except the console printer, the stop helpers, the
-     * recorder's writer and the live view's publisher.
+     * {@value ThreadNames#PREFIX}{@code *} that is {@link #onReleasePath on the per-release path}:
+     * the task threads, the pool workers {@value ThreadNames#POOL_WORKER_PREFIX}{@code N} and the
+     * watchdog {@value ThreadNames#WATCHDOG}.
      *
      * @return the snapshot
      */
     public static ThreadAllocation ofFrameworkThreads() {
-        return ofLiveThreads(t -> t.getName().startsWith(FRAMEWORK_PREFIX) && !OFF_PATH.contains(t.getName()));
+        return ofLiveThreads(ThreadAllocation::onReleasePath);
+    }
+
+    /**
+     * Whether a thread is one {@link #ofFrameworkThreads()} watches: named {@value ThreadNames#PREFIX}{@code *}
+     * and none of the observers off the per-release path ({@link ThreadNames}): the console printer,
+     * the stop helpers, the recorder's writer, the live view's publisher and HTTP threads.
+     *
+     * @param thread a thread
+     * @return whether its allocation counts as the framework's on the per-release path
+     */
+    public static boolean onReleasePath(Thread thread) {
+        String name = thread.getName();
+        return name.startsWith(ThreadNames.PREFIX) && !OFF_PATH.contains(name)
+                && !name.startsWith(ThreadNames.LIVE_HTTP_PREFIX);
     }
 
     /**

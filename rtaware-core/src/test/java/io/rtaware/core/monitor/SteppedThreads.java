@@ -3,8 +3,9 @@ package io.rtaware.core.monitor;
 import io.rtaware.core.time.ManualClock;
 
 /**
- * Drives a monitor started with {@link Monitor#start()} on a {@link ManualClock}: its real task
- * threads (or pool workers) and watchdog wait on the manual clock, and this steps the clock from
+ * Drives a monitor started with {@link Monitor#start()} on a {@link ManualClock}, or an agent
+ * that idles with a {@link WorldClockIdleStrategy} on one: its real task threads (or pool
+ * workers) and watchdog, or the agent's thread, wait on the manual clock, and this steps the clock from
  * one moment something is due to the next, waiting each time until every thread has reacted and
  * waits again (as WPILib steps a TimedRobot on paused time). Exact, no sleeps. In core's test-jar
  * for every module's tests (in this package: it reaches the executor's clock waiter).
@@ -19,15 +20,26 @@ public final class SteppedThreads {
      * @param clock its manual clock
      */
     public SteppedThreads(Monitor monitor, ManualClock clock) {
-        this.clock = clock;
-        Executor executor = monitor.executor();
-        this.waiter = (ManualClockWaiter) (executor instanceof PooledExecutor pool
-                ? pool.waiter() : ((ThreadedExecutor) executor).waiter());
+        this(clock, monitor.executor() instanceof PooledExecutor pool ? pool.waiter()
+                : ((ThreadedExecutor) monitor.executor()).waiter());
     }
 
     /**
-     * Runs every release before {@code endNs}; the clock stays at the last moment something was
-     * due, and every cycle due until then has run when this returns.
+     * @param agentIdle the idle strategy of an agent whose thread has been started, built on {@code clock}
+     * @param clock its manual clock
+     */
+    public SteppedThreads(WorldClockIdleStrategy agentIdle, ManualClock clock) {
+        this(clock, agentIdle.waiter());
+    }
+
+    private SteppedThreads(ManualClock clock, ClockWaiter waiter) {
+        this.clock = clock;
+        this.waiter = (ManualClockWaiter) waiter;
+    }
+
+    /**
+     * Runs every release (every agent's work) before {@code endNs}; the clock stays at the last
+     * moment something was due, and every cycle due until then has run when this returns.
      *
      * @param endNs world time, ns
      */

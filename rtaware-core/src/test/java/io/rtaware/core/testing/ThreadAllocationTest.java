@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import io.rtaware.core.agent.ThreadNames;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
@@ -97,7 +98,7 @@ class ThreadAllocationTest {
         }
     }
 
-    /** The live view's publisher ({@code LiveView.PUBLISHER_THREAD} in rtaware-live) builds JSON off the tasks' path. */
+    /** The live view's publisher (named {@link ThreadNames#LIVE_PUBLISHER} in rtaware-live) builds JSON off the tasks' path. */
     @Test
     void theLiveViewsPublisherIsAnObserverNotAFrameworkThread() throws Exception {
         CountDownLatch snapshotTaken = new CountDownLatch(1);
@@ -112,7 +113,7 @@ class ThreadAllocationTest {
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             }
-        }, "rtaware-live-publisher");
+        }, ThreadNames.LIVE_PUBLISHER);
         publisher.start();
         try {
             while (publisher.getState() != Thread.State.WAITING) {
@@ -122,7 +123,7 @@ class ThreadAllocationTest {
             ThreadAllocation snapshot = ThreadAllocation.ofFrameworkThreads();
             snapshotTaken.countDown();
             assertTrue(allocated.await(10, TimeUnit.SECONDS));
-            assertEquals(-1, snapshot.allocatingThreads().indexOf("rtaware-live-publisher"),
+            assertEquals(-1, snapshot.allocatingThreads().indexOf(ThreadNames.LIVE_PUBLISHER),
                     "bench --live --fail-on-alloc counted the publisher's JSON as the framework's: "
                             + snapshot.allocatingThreads());
         } finally {

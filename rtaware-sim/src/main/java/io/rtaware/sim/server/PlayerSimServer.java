@@ -1,6 +1,7 @@
 package io.rtaware.sim.server;
 
 import io.rtaware.core.agent.AgentThread;
+import io.rtaware.core.monitor.WorldClockIdleStrategy;
 import io.rtaware.core.time.Clock;
 import io.rtaware.robot.geometry.Pose2d;
 import io.rtaware.sim.world.World;
@@ -13,7 +14,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.locks.LockSupport;
 import java.util.function.Function;
 import org.agrona.concurrent.Agent;
 import org.agrona.concurrent.AgentTerminationException;
@@ -39,8 +39,9 @@ import org.agrona.concurrent.NoOpIdleStrategy;
  *
  * <p>Two ways to run the world: {@link #start(World, Clock, ServerConfig)} starts a sim thread
  * that steps the world by the world time the clock shows (aiming at
- * {@link ServerConfig#stepPeriodNs()} steps, waiting via {@link Clock#toWallNanos(long)}, so
- * with a scaled clock the world runs K times faster); {@link #startManual(World, ServerConfig)}
+ * {@link ServerConfig#stepPeriodNs()} steps, waiting with a {@link WorldClockIdleStrategy}, so
+ * with a scaled clock the world runs K times faster and on a manual clock it steps as the clock
+ * is advanced); {@link #startManual(World, ServerConfig)}
  * starts no thread, and the caller steps with {@link #step(long)}.
  *
  * <p>Each client gets a reader and a writer thread; data is queued per client (bounded, replace
@@ -76,6 +77,8 @@ public final class PlayerSimServer implements AutoCloseable {
     private final WorldStepper stepper;
     /** The world's stepping loop, or null for a server stepped by {@link #step(long)}. */
     private final Agent stepping;
+    /** How the stepping loop waits for the next step, or null without one. */
+    private final WorldClockIdleStrategy steppingIdle;
     private volatile AgentThread acceptThread;
     private volatile AgentThread simThread;
 
@@ -101,7 +104,8 @@ public final class PlayerSimServer implements AutoCloseable {
         this.acceptor = new ClientAcceptor(serverSocket, env, config.maxClients(),
                 (socket, onClose) -> new ClientSession(socket, session, onClose));
         this.stepper = new WorldStepper(this.world, devices, acceptor.sessions(), config.stepPeriodNs());
-        this.stepping = clock == null ? null : stepper.stepping(clock, "rtaware-sim-world :" + port);
+        this.steppingIdle = clock == null ? null : new WorldClockIdleStrategy(clock);
+        this.stepping = clock == null ? null : stepper.stepping(clock, steppingIdle, "rtaware-sim-world :" + port);
     }
 
     /** Starts the accept loop and, for a clocked server, the sim thread. */
@@ -109,7 +113,7 @@ public final class PlayerSimServer implements AutoCloseable {
         acceptThread = AgentThread.start(acceptor, NoOpIdleStrategy.INSTANCE, error -> LOG.log(Level.WARNING,
                 "rtaware-sim: accepting a client failed: " + error + "; serving the next one"));
         if (stepping != null) {
-            simThread = AgentThread.start(stepping, NoOpIdleStrategy.INSTANCE, error -> LOG.log(Level.ERROR,
+            simThread = AgentThread.start(stepping, steppingIdle, error -> LOG.log(Level.ERROR,
                     "rtaware-sim: the world stopped: a step failed: "
                             + (error instanceof AgentTerminationException && error.getCause() != null ? error.getCause() : error)));
         }
@@ -161,6 +165,11 @@ public final class PlayerSimServer implements AutoCloseable {
         return s;
     }
 
+    /** @return how the sim thread waits for the next step (tests step it on a manual clock), or null without one */
+    WorldClockIdleStrategy steppingIdle() {
+        return steppingIdle;
+    }
+
     /** @return the TCP port actually bound (useful with port 0) */
     public int port() {
         return serverSocket.getLocalPort();
@@ -190,19 +199,22 @@ public final class PlayerSimServer implements AutoCloseable {
      *
      * @return the origin in the clock's nanoseconds
      * @throws IllegalStateException for a server stepped by hand ({@link #startManual}), or if the
-     *     sim thread does not start
+     *     sim thread does not start (or the calling thread is interrupted while it waits, its
+     *     interrupt status then set)
      */
     public long clockOriginNs() {
         if (simThread == null) {
             throw new IllegalStateException("a server stepped by hand follows no clock");
         }
-        long deadline = System.nanoTime() + ORIGIN_WAIT_NS;
         long origin;
-        while ((origin = stepper.clockOriginNs()) == Long.MIN_VALUE) {
-            if (System.nanoTime() - deadline > 0) {
-                throw new IllegalStateException("the sim thread did not start within 5 s");
-            }
-            LockSupport.parkNanos(100_000L);
+        try {
+            origin = stepper.awaitClockOriginNs(ORIGIN_WAIT_NS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("interrupted while waiting for the sim thread to start", e);
+        }
+        if (origin == Long.MIN_VALUE) {
+            throw new IllegalStateException("the sim thread did not start within 5 s");
         }
         return origin;
     }

@@ -1,10 +1,12 @@
 package io.rtaware.sim.server;
 
+import io.rtaware.core.monitor.WorldClockIdleStrategy;
 import io.rtaware.core.time.Clock;
 import io.rtaware.sim.world.World;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.locks.LockSupport;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import org.agrona.concurrent.Agent;
 import org.agrona.concurrent.AgentTerminationException;
 
@@ -12,8 +14,8 @@ import org.agrona.concurrent.AgentTerminationException;
  * Steps the world and hands what it published to the clients: after each step every device a
  * client subscribes to adds its DATA messages, and every client gets the batch (its queue keeps
  * what it subscribes to). {@link #stepping} follows a clock: it aims at fixed steps of world
- * time, waits via {@link Clock#toWallNanos(long)} (so with a scaled clock the world runs K times
- * faster), and when it falls behind by more than {@value #MAX_BACKLOG_STEPS} steps takes the
+ * time, waits for the next one with a {@link WorldClockIdleStrategy} (the wall time left, so with
+ * a scaled clock the world runs K times faster; on a manual clock until it is advanced), and when it falls behind by more than {@value #MAX_BACKLOG_STEPS} steps takes the
  * excess in one long step. Steps run on one thread at a time.
  */
 final class WorldStepper {
@@ -27,6 +29,8 @@ final class WorldStepper {
     private final long stepPeriodNs;
     /** The clock reading at which the world's time was 0; {@link Long#MIN_VALUE} until the stepping starts. */
     private volatile long clockOriginNs = Long.MIN_VALUE;
+    /** Counted down once {@link #clockOriginNs} is set. */
+    private final CountDownLatch originTaken = new CountDownLatch(1);
 
     /**
      * @param world the world
@@ -65,29 +69,32 @@ final class WorldStepper {
     }
 
     /**
-     * The stepping loop on {@code clock}, to run on an {@link io.rtaware.core.agent.AgentThread}:
-     * each duty cycle waits for the next step's world time (a park of the wall time left, which
-     * closing the thread cuts short) or takes the steps that are due. A step that throws ends the
+     * The stepping loop on {@code clock}, to run on an {@link io.rtaware.core.agent.AgentThread}
+     * with {@code idle}: each duty cycle takes the steps that are due, or names the next step's
+     * world time for the idle to wait for (a wait that closing the thread cuts short). A step that throws ends the
      * loop (an {@link AgentTerminationException} with the step's error as its cause): the world
      * stops, as a crashed simulator's would, rather than failing again every step.
      *
      * @param clock world time
+     * @param idle the idle strategy the loop runs with, on {@code clock}
      * @param roleName the thread's name
      * @return the loop
      */
-    Agent stepping(Clock clock, String roleName) {
-        return new Stepping(clock, roleName);
+    Agent stepping(Clock clock, WorldClockIdleStrategy idle, String roleName) {
+        return new Stepping(clock, idle, roleName);
     }
 
     /** Follows a clock: fixed steps of world time, a backlog beyond {@value #MAX_BACKLOG_STEPS} steps in one. */
     private final class Stepping implements Agent {
         private final Clock clock;
+        private final WorldClockIdleStrategy idle;
         private final String roleName;
         /** World time up to which the world has been stepped (the stepping thread only). */
         private long lastNs;
 
-        Stepping(Clock clock, String roleName) {
+        Stepping(Clock clock, WorldClockIdleStrategy idle, String roleName) {
             this.clock = clock;
+            this.idle = idle;
             this.roleName = roleName;
         }
 
@@ -95,6 +102,7 @@ final class WorldStepper {
         public void onStart() {
             lastNs = clock.nanos();
             clockOriginNs = lastNs - world.read(World::timeNs); // from here on, world time = clock - origin, stepped
+            originTaken.countDown();
         }
 
         @Override
@@ -110,7 +118,7 @@ final class WorldStepper {
             long target = lastNs + stepPeriodNs;
             long now = clock.nanos();
             if (now < target) {
-                LockSupport.parkNanos(Math.max(1_000L, clock.toWallNanos(target - now)));
+                idle.wakeAt(target);
                 return 0;
             }
             long behind = now - lastNs;
@@ -138,11 +146,16 @@ final class WorldStepper {
     }
 
     /**
+     * Waits for the stepping's first clock reading.
+     *
+     * @param timeoutNs the longest wait, ns of wall time
      * @return the clock reading at which the world's time was 0 (the stepping keeps world time at
-     *     the clock's reading minus this, in whole steps), or {@link Long#MIN_VALUE} before the
-     *     stepping has started
+     *     the clock's reading minus this, in whole steps), or {@link Long#MIN_VALUE} if the
+     *     stepping has not started within the wait
+     * @throws InterruptedException if the waiting thread is interrupted
      */
-    long clockOriginNs() {
+    long awaitClockOriginNs(long timeoutNs) throws InterruptedException {
+        originTaken.await(timeoutNs, TimeUnit.NANOSECONDS);
         return clockOriginNs;
     }
 

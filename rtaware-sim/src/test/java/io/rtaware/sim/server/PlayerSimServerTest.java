@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import io.rtaware.core.testing.Waits;
+import io.rtaware.core.monitor.SteppedThreads;
 import io.rtaware.core.time.ManualClock;
 import io.rtaware.player.protocol.DeviceAddress;
 import io.rtaware.player.protocol.DeviceRequest;
@@ -26,7 +26,6 @@ import io.rtaware.sim.world.World;
 import java.io.EOFException;
 import java.io.IOException;
 import java.net.SocketException;
-import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.AfterEach;
@@ -246,6 +245,9 @@ class PlayerSimServerTest {
         try (RawClient c = new RawClient(server.port())) {
             dataMode(c, Subtypes.DATAMODE_PULL);
             subscribe(c, Interfaces.POSITION2D);
+            // the sim thread takes its first reading when it starts, on a loaded machine perhaps
+            // after the advance below (its world would then begin at 2 s): wait for that reading
+            assertEquals(0, server.clockOriginNs(), "the world's time 0 is the clock's 0");
             clock.advance(2_000 * MS);
             // the sim thread follows the clock by itself; REQ DATA is answered once data exists
             List<RawClient.Msg> seen = new ArrayList<>();
@@ -261,12 +263,27 @@ class PlayerSimServerTest {
     }
 
     @Test
+    void theSimThreadOnAManualClockTakesEachStepWhenTheClockReachesItsTime() throws Exception {
+        ManualClock clock = new ManualClock();
+        ServerConfig config = ServerConfig.defaults(0);
+        server = PlayerSimServer.start(world(), clock, config);
+        SteppedThreads stepped = new SteppedThreads(server.steppingIdle(), clock);
+
+        stepped.runUntil(3 * config.stepPeriodNs() + 1);
+
+        assertEquals(3 * config.stepPeriodNs(), clock.nanos(), "the clock was moved from one step's time to the next");
+        assertEquals(3 * config.stepPeriodNs() / 1e9, server.simTimeS(), 1e-12,
+                "the world took the three steps due, each when the clock reached it, and waits for the fourth");
+    }
+
+    @Test
     void theServersTimestampsLieAtTheClocksOriginPlusTheirValue() throws Exception {
         ManualClock clock = new ManualClock(7_000 * MS);
         server = PlayerSimServer.start(world(), clock, ServerConfig.defaults(0));
         assertEquals(7_000 * MS, server.clockOriginNs(), "world time 0 at the clock's reading when stepping began");
         clock.advance(500 * MS);
-        Waits.until(() -> server.simTimeS() >= 0.5, Duration.ofSeconds(10), "the server's world time at 0.5 s");
+        new SteppedThreads(server.steppingIdle(), clock).runUntil(clock.nanos()); // the steps due are taken
+        assertEquals(0.5, server.simTimeS(), 1e-12, "the world took the 0.5 s due");
         assertEquals(clock.nanos() - server.clockOriginNs(), Math.round(server.simTimeS() * 1e9),
                 "world time = the clock's reading minus the origin, in whole steps");
         PlayerSimServer manual = PlayerSimServer.startManual(world(), ServerConfig.defaults(0));

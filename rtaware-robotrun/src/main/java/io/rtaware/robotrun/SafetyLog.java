@@ -1,17 +1,16 @@
-package io.rtaware.app.run;
+package io.rtaware.robotrun;
 
 import io.rtaware.record.RunRecorder;
-import io.rtaware.robotrun.RunOutcome;
-import io.rtaware.robotrun.RunState;
 import io.rtaware.sim.server.PlayerSimServer;
 import io.rtaware.sim.world.World;
 import java.util.Locale;
 
 /**
- * The run's safety events as log lines on the recording's {@code /rosout} (and so live on
- * {@code --foxglove}): each collision and near miss the built-in simulator counts, as the
- * supervisor's poll sees it (so up to one poll late), and how the run ended, fatal when it ended
- * on an error (a safety fault of the robot's data, a lost robot). Supervisor's thread only.
+ * The run's safety events as log lines on the recording's {@code /rosout} (and so live on a
+ * Foxglove tap): each collision and near miss the built-in simulator counts, as
+ * {@link NavRun#superviseUntilEnd}'s looks see it (so up to one look late), and how the run
+ * ended, fatal when it ended on an error (a safety fault of the robot's data, a lost robot).
+ * Part of every {@link NavRun} given a recorder; the supervising thread only.
  */
 final class SafetyLog {
 
