@@ -2,6 +2,9 @@ package io.rtaware.experiment;
 
 import com.fasterxml.jackson.annotation.JsonIgnore;
 import com.fasterxml.jackson.annotation.JsonProperty;
+import io.rtaware.experiment.claims.Claim;
+import io.rtaware.experiment.claims.NotEvaluated;
+import io.rtaware.experiment.claims.PaperClaims;
 import io.rtaware.experiment.stats.RateInterval;
 import io.rtaware.experiment.stats.SampleStats;
 import io.rtaware.experiment.stats.WelchTest;
@@ -35,8 +38,8 @@ import java.util.TreeMap;
  */
 public record ExperimentSummary(String schema, ExperimentProfile profile, List<SetSummary> sets,
                                 Map<String, List<PairTest>> tTests, PaperReference.Published paper,
-                                List<String> sweptTasks, List<PaperClaims.Claim> claims,
-                                List<PaperClaims.NotEvaluated> claimsNotEvaluated, ExperimentConditions conditions) {
+                                List<String> sweptTasks, List<Claim> claims,
+                                List<NotEvaluated> claimsNotEvaluated, ExperimentConditions conditions) {
 
     /** The schema identifier of {@code summary.json}. */
     public static final String SCHEMA = "rtaware.experiment/1";

@@ -11,12 +11,13 @@ import io.rtaware.experiment.ExperimentSummary;
 import io.rtaware.experiment.ExperimentSummary.Misses;
 import io.rtaware.experiment.ExperimentSummary.PairTest;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
-import io.rtaware.experiment.PaperClaims;
 import io.rtaware.experiment.PaperReference.PaperSet;
 import io.rtaware.experiment.PeriodSet;
 import io.rtaware.experiment.ResultsCsv;
 import io.rtaware.experiment.RunConditions;
 import io.rtaware.experiment.RunResult;
+import io.rtaware.experiment.claims.Claim;
+import io.rtaware.experiment.claims.PaperClaims;
 import io.rtaware.experiment.stats.SampleStats;
 import io.rtaware.experiment.stats.WelchTest;
 import java.io.IOException;
@@ -285,7 +286,7 @@ public final class ExperimentReport {
                 + num(100 * PaperClaims.SAME_DISTANCE, 0) + "% (distance) of their mean. Table I/II claims use the sets "
                 + "whose periods are a paper set's, at the paper's top speed.");
         List<List<String>> rows = new ArrayList<>();
-        for (PaperClaims.Claim c : s.claims()) {
+        for (Claim c : s.claims()) {
             rows.add(List.of(c.claim(), "**" + c.verdict().json().replace('_', ' ') + "**", c.evidence(), c.rule()));
         }
         if (rows.isEmpty()) {

@@ -4,9 +4,10 @@ import io.rtaware.core.output.OutputFiles;
 import io.rtaware.experiment.ExperimentProfile;
 import io.rtaware.experiment.ExperimentSummary;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
-import io.rtaware.experiment.PaperClaims;
 import io.rtaware.experiment.PaperReference;
 import io.rtaware.experiment.PeriodSet;
+import io.rtaware.experiment.claims.Claim;
+import io.rtaware.experiment.claims.NotEvaluated;
 import io.rtaware.experiment.stats.SampleStats;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -78,11 +79,11 @@ public final class ResultsMarkdown {
                         .append(" |\n");
             }
             md.append("\n### The paper's claims\n\n");
-            for (PaperClaims.Claim c : s.claims()) {
+            for (Claim c : s.claims()) {
                 md.append("- claim `").append(f.name()).append('/').append(c.id()).append("`: ").append(c.verdict().json())
                         .append(". Paper: ").append(c.claim()).append(". Here: ").append(c.evidence()).append('\n');
             }
-            for (PaperClaims.NotEvaluated n : s.claimsNotEvaluated()) {
+            for (NotEvaluated n : s.claimsNotEvaluated()) {
                 md.append("- claim `").append(f.name()).append('/').append(n.id()).append("`: ").append(NOT_EVALUATED)
                         .append(". Paper: ").append(n.claim()).append(". Why: ").append(n.reason()).append('\n');
             }

@@ -1,0 +1,114 @@
+package io.rtaware.experiment.claims;
+
+import io.rtaware.experiment.ExperimentSummary.PairTest;
+import io.rtaware.experiment.ExperimentSummary.SetSummary;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * The paper's claims, each given a verdict computed from an experiment's results by an explicit
+ * rule (stated with each verdict and in the report), never set by hand. Each family of claims is
+ * one {@link ClaimRule} that owns its stable id, its words and its judging; a claim whose data the
+ * experiment does not have (no set above 100 ms, no paper Set 4, no variance for a t-test) is not
+ * given a verdict but listed as not evaluated, with the reason.
+ *
+ * <p>The period of a set, for the claims about periods, is {@link SetSummary#sweptPeriodMs()}:
+ * the period its swept tasks share. Claims about too-slow and too-fast periods are judged per top
+ * speed when the sets differ in speed. Tables I and II and Fig. 7 are judged on the sets whose
+ * periods are those of a paper set and whose top speed is the paper's (or {@code run}'s default).
+ */
+public final class PaperClaims {
+
+    /** Periods above this are "too slow" in the paper's claim, ms. */
+    public static final long SLOW_ABOVE_MS = 100;
+    /** Periods at or below this are "too fast" in the paper's claim, ms. */
+    public static final long FAST_AT_MOST_MS = 5;
+    /** Share of runs that makes an effect the rule for a set ("at least half its runs"). */
+    public static final double MAJORITY = 0.5;
+    /** Spearman's rank correlation at or below which misses "fall" as periods grow. */
+    public static final double FALLS_RHO = -0.7;
+    /** Distinct periods a series needs before a trend is read from it. */
+    public static final int MIN_PERIODS = 3;
+    /** Significance level of the t-tests, as the paper's "statistically different". */
+    public static final double ALPHA = 0.05;
+    /** Confidence range (1 - p) read as "on the verge of significance", from the paper's 79-85%. */
+    public static final double VERGE_MIN = 0.75;
+    /** Upper end of that range: at or above it a difference is significant, not on the verge. */
+    public static final double VERGE_MAX = 1 - ALPHA;
+    /** Largest spread of the set means, over their mean, for run times to be "almost identical" (paper: 4.2%). */
+    public static final double SAME_RUN_TIME = 0.05;
+    /** The same for distances to the finish (paper: 13.6%). */
+    public static final double SAME_DISTANCE = 0.15;
+    /** The rule's bound counts as near when the first period with a collision is at most this many times it. */
+    public static final double RULE_NEAR = 2.0;
+    /** Ratio of the mean SD of Sets 2 and 3 to that of Sets 1, 4, 5 from which the spread claim holds. */
+    public static final double SPREAD_RATIO_MIN = 1.5;
+    /** Ratio below which it does not hold at all. */
+    public static final double SPREAD_RATIO_NONE = 1.25;
+
+    /** Why no lock-up here says nothing against the paper's. */
+    public static final String LOCK_UP_MECHANISM = "The paper's lock-up came from a 1.66 GHz machine starved by the "
+            + "controller and the Player server sharing it; here the simulator is light and rtaware skips the releases "
+            + "it cannot make, so the mechanism cannot be reproduced and no lock-up says nothing against the paper.";
+
+    /** Every family of the paper's claims, in the order of the verdicts. */
+    private static final List<ClaimRule> FAMILIES = List.of(
+            new CollisionClaims.SlowHits(),
+            new ReactionRule(),
+            new CollisionClaims.FastLocksUp(),
+            new MissClaims.MissesFall(),
+            new TableClaims.Set1Faster(),
+            new TableClaims.OnTheVerge(),
+            new TableClaims.DistancesAlike(),
+            new TableClaims.Set3FastestWidest(),
+            new TableClaims.AlmostIdentical(),
+            new MissClaims.Fig7PlannerMost(),
+            new MissClaims.Fig8Set1MostMisses(),
+            new TableClaims.SpreadTwice(),
+            new NotMeasured("conclusion-timing-matters", "Conclusion: the timing of the tasks affects the overall "
+                    + "performance of the system", "a conclusion drawn from the claims above, not a measurement of its own: "
+                    + "read it from the t-tests of Table I and II and the miss claims"),
+            new NotMeasured("avoider-too-fast-hits", "An obstacle avoider run too fast hits obstacles", "the paper sets "
+                    + "change every period at once; an avoider-only period sweep with collisions counted per period is the "
+                    + "claim 'periods above 100 ms' and the sweep-obstacle folder, and a too-fast avoider has no rule here"),
+            new NotMeasured("sampling-rate-advice", "Advice: sample an input at least twice as fast as it changes "
+                    + "(sampling-rate advice)", "advice, not a measurement: every run's report.json applies it as the "
+                    + "period advice's sampling bound"));
+
+    /**
+     * @param claims the claims with a verdict
+     * @param notEvaluated the claims without one
+     */
+    public record Verdicts(List<Claim> claims, List<NotEvaluated> notEvaluated) {
+    }
+
+    private PaperClaims() {
+    }
+
+    /** @return the stable id of every family of claims, in the order of the verdicts */
+    public static List<String> familyIds() {
+        return FAMILIES.stream().map(ClaimRule::id).toList();
+    }
+
+    /**
+     * @param sets the experiment's sets, summarized
+     * @param tests its Welch tests per quantity
+     * @param scenario the experiment's scenario, named in the claims that depend on the course
+     *     (the collision claim and the reaction rule's) unless it is the paper's room, or null
+     * @return the verdicts, in a fixed order of claims
+     */
+    public static Verdicts evaluate(List<SetSummary> sets, Map<String, List<PairTest>> tests, String scenario) {
+        Judging j = new Judging(sets, tests, scenario);
+        FAMILIES.forEach(f -> f.judge(j));
+        return new Verdicts(j.claims(), j.notEvaluated());
+    }
+
+    /**
+     * @param sets sets of one top speed
+     * @return the largest safe period the runs' advice gave by the reaction rule (the mean over the
+     *     sets that report it), ms, or null when no run reports one
+     */
+    public static Double reactionRuleBoundMs(List<SetSummary> sets) {
+        return ReactionRule.boundMs(sets);
+    }
+}
