@@ -5,6 +5,7 @@ import com.fasterxml.jackson.annotation.JsonProperty;
 import io.rtaware.experiment.claims.Claim;
 import io.rtaware.experiment.claims.NotEvaluated;
 import io.rtaware.experiment.claims.PaperClaims;
+import io.rtaware.experiment.claims.RuleVerdict;
 import io.rtaware.experiment.stats.RateInterval;
 import io.rtaware.experiment.stats.SampleStats;
 import io.rtaware.experiment.stats.WelchTest;
@@ -34,12 +35,15 @@ import java.util.TreeMap;
  *     {@link SetSummary#sweptPeriodMs()})
  * @param claims the paper's claims with a verdict computed from these results ({@link PaperClaims})
  * @param claimsNotEvaluated the paper's claims these results cannot decide, with the reason
+ * @param rules rtaware's own rules (not the paper's) checked by these results, or not evaluated with
+ *     the reason ({@link RuleVerdict})
  * @param conditions the machine during the runs: how many were quiet, busy or disturbed, which are used, and the spread
  */
 public record ExperimentSummary(String schema, ExperimentProfile profile, List<SetSummary> sets,
                                 Map<String, List<PairTest>> tTests, PaperReference.Published paper,
                                 List<String> sweptTasks, List<Claim> claims,
-                                List<NotEvaluated> claimsNotEvaluated, ExperimentConditions conditions) {
+                                List<NotEvaluated> claimsNotEvaluated, List<RuleVerdict> rules,
+                                ExperimentConditions conditions) {
 
     /** The schema identifier of {@code summary.json}. */
     public static final String SCHEMA = "rtaware.experiment/1";
@@ -199,7 +203,7 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
         }
         PaperClaims.Verdicts verdicts = PaperClaims.evaluate(sets, tests, profile.scenario());
         return new ExperimentSummary(SCHEMA, profile, sets, tests, PaperReference.published(), swept,
-                verdicts.claims(), verdicts.notEvaluated(), conditions);
+                verdicts.claims(), verdicts.notEvaluated(), verdicts.rules(), conditions);
     }
 
     /**

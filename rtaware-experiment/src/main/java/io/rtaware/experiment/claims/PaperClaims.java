@@ -2,12 +2,14 @@ package io.rtaware.experiment.claims;
 
 import io.rtaware.experiment.ExperimentSummary.PairTest;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 
 /**
  * The paper's claims, each given a verdict computed from an experiment's results by an explicit
- * rule (stated with each verdict and in the report), never set by hand. Each family of claims is
+ * rule (stated with each verdict and in the report), never set by hand; and, apart from them,
+ * rtaware's own rules checked by the same runs ({@link RuleVerdict}). Each family of claims is
  * one {@link ClaimRule} that owns its stable id, its words and its judging; a claim whose data the
  * experiment does not have (no set above 100 ms, no paper Set 4, no variance for a t-test) is not
  * given a verdict but listed as not evaluated, with the reason.
@@ -54,7 +56,6 @@ public final class PaperClaims {
     /** Every family of the paper's claims, in the order of the verdicts. */
     private static final List<ClaimRule> FAMILIES = List.of(
             new CollisionClaims.SlowHits(),
-            new ReactionRule(),
             new CollisionClaims.FastLocksUp(),
             new MissClaims.MissesFall(),
             new TableClaims.Set1Faster(),
@@ -75,19 +76,28 @@ public final class PaperClaims {
                     + "(sampling-rate advice)", "advice, not a measurement: every run's report.json applies it as the "
                     + "period advice's sampling bound"));
 
+    /** rtaware's own rules the runs can check, apart from the paper's claims. */
+    private static final List<ClaimRule> RULES = List.of(new ReactionRule());
+
     /**
-     * @param claims the claims with a verdict
-     * @param notEvaluated the claims without one
+     * @param claims the paper's claims with a verdict
+     * @param notEvaluated the paper's claims without one
+     * @param rules rtaware's own rules, checked or not evaluated
      */
-    public record Verdicts(List<Claim> claims, List<NotEvaluated> notEvaluated) {
+    public record Verdicts(List<Claim> claims, List<NotEvaluated> notEvaluated, List<RuleVerdict> rules) {
     }
 
     private PaperClaims() {
     }
 
-    /** @return the stable id of every family of claims, in the order of the verdicts */
+    /** @return the stable id of every family of the paper's claims, in the order of the verdicts */
     public static List<String> familyIds() {
         return FAMILIES.stream().map(ClaimRule::id).toList();
+    }
+
+    /** @return the stable id of every one of rtaware's own rules */
+    public static List<String> ruleIds() {
+        return RULES.stream().map(ClaimRule::id).toList();
     }
 
     /**
@@ -100,7 +110,14 @@ public final class PaperClaims {
     public static Verdicts evaluate(List<SetSummary> sets, Map<String, List<PairTest>> tests, String scenario) {
         Judging j = new Judging(sets, tests, scenario);
         FAMILIES.forEach(f -> f.judge(j));
-        return new Verdicts(j.claims(), j.notEvaluated());
+        List<RuleVerdict> rules = new ArrayList<>();
+        for (ClaimRule rule : RULES) {
+            Judging r = new Judging(sets, tests, scenario);
+            rule.judge(r);
+            r.claims().forEach(c -> rules.add(RuleVerdict.of(c)));
+            r.notEvaluated().forEach(n -> rules.add(RuleVerdict.of(n)));
+        }
+        return new Verdicts(j.claims(), j.notEvaluated(), List.copyOf(rules));
     }
 
     /**

@@ -6,7 +6,6 @@ import static io.rtaware.experiment.claims.Judging.periodsHere;
 
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
 import io.rtaware.experiment.PeriodSet;
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
@@ -14,9 +13,10 @@ import java.util.Objects;
 import java.util.Optional;
 
 /**
- * rtaware's reaction rule judged by the runs: its largest safe period (the mean of the runs'
- * advice) against the shortest swept period at which a run collided. Judged per course and top
- * speed.
+ * rtaware's own reaction rule (the period advice's, not the paper's) checked by the runs: its
+ * largest safe period (the mean of the runs' advice) against the shortest swept period at which a
+ * run collided. Checked per course and top speed. Where the rule finds no safe period it names no
+ * bound to check, and is not evaluated.
  */
 final class ReactionRule implements ClaimRule {
 
@@ -29,7 +29,7 @@ final class ReactionRule implements ClaimRule {
 
     @Override
     public String statement() {
-        return "the reaction rule: collisions begin near its largest safe period";
+        return "rtaware's reaction rule (the period advice): collisions begin near its largest safe period";
     }
 
     @Override
@@ -48,7 +48,10 @@ final class ReactionRule implements ClaimRule {
         Optional<SetSummary> first = firstCollision(axis);
         long longest = axis.stream().mapToLong(SetSummary::sweptPeriodMs).max().orElseThrow();
         if (bound <= 0) {
-            noSafePeriod(j, scope, axis, first);
+            j.unjudged(this, scope, "the rule finds no safe period here (the input's age and the stopping distance "
+                    + "alone use up the avoider's range): it predicts collisions at every period and names no bound for "
+                    + "the runs to check; runs with a collision: " + String.join("; ", axis.stream()
+                    .map(s -> s.sweptPeriodMs() + " ms " + s.collisions95().text()).toList()));
             return;
         }
         if (first.isEmpty() && longest < bound) {
@@ -70,28 +73,10 @@ final class ReactionRule implements ClaimRule {
                     + first.get().sweptPeriodMs() + " ms (" + first.get().name() + ", " + first.get().runsWithCollisions()
                     + " of " + first.get().measuredRuns() + " runs), " + num(ratio, 2) + " x the bound";
         }
-        j.judged(this, scope, v, evidence + ".", "reproduced if the shortest swept period at which a run collided "
-                + "lies between the bound and " + num(PaperClaims.RULE_NEAR, 1) + " x the bound; not reproduced if runs "
-                + "collided below the bound (the rule is unsafe) or none collided up to beyond "
-                + num(PaperClaims.RULE_NEAR, 1) + " x it (the rule is far too cautious); mixed otherwise");
-    }
-
-    /**
-     * The reaction rule found no safe period (its bound is 0 in every run that gave one): it
-     * predicts collisions from the shortest period on.
-     */
-    private void noSafePeriod(Judging j, Scope scope, List<SetSummary> axis, Optional<SetSummary> first) {
-        SetSummary shortest = axis.stream().min(Comparator.comparingLong(SetSummary::sweptPeriodMs)).orElseThrow();
-        Verdict v = first.isEmpty() ? Verdict.NOT_REPRODUCED
-                : first.get() == shortest ? Verdict.REPRODUCED : Verdict.MIXED;
-        List<String> parts = new ArrayList<>();
-        for (SetSummary s : axis) {
-            parts.add(s.sweptPeriodMs() + " ms " + s.collisions95().text());
-        }
-        j.judged(this, scope, v, "the rule finds no safe period (the input's age and the stopping distance alone "
-                + "use up the avoider's range); runs with a collision: " + String.join("; ", parts) + ".",
-                "where the rule finds no safe period: reproduced if runs collided already at the shortest swept period; "
-                        + "not reproduced if no run collided at any period; mixed otherwise");
+        j.judged(this, scope, v, evidence + ".", "holds if the shortest swept period at which a run collided lies "
+                + "between the bound and " + num(PaperClaims.RULE_NEAR, 1) + " x the bound; fails if runs collided below "
+                + "the bound (the rule is unsafe) or none collided up to beyond " + num(PaperClaims.RULE_NEAR, 1)
+                + " x it (the rule is far too cautious); mixed otherwise");
     }
 
     /** The reaction rule's largest safe period for one task: the mean over the sets whose runs' advice gave it. */

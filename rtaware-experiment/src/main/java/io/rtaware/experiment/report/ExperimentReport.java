@@ -299,6 +299,20 @@ public final class ExperimentReport {
             b.table(List.of("claim", "why not"), s.claimsNotEvaluated().stream()
                     .map(n -> List.of(n.claim(), n.reason())).toList());
         }
+        rules(b, s);
+    }
+
+    /** rtaware's own rules, apart from the paper's claims: none of them is the paper's. */
+    private static void rules(Blocks b, ExperimentSummary s) {
+        if (s.rules().isEmpty()) {
+            return;
+        }
+        b.heading(2, "rtaware's own rules");
+        b.text("These rules are rtaware's, not the paper's: the same runs check them. A rule holds when the runs agree "
+                + "with it, fails when they contradict it; a rule the runs cannot test is not evaluated, with the reason.");
+        b.table(List.of("rule", "verdict", "evidence", "how judged"), s.rules().stream()
+                .map(r -> List.of(r.rule(), "**" + r.verdict().replace('_', ' ') + "**", r.evidence(), r.judgedBy()))
+                .toList());
     }
 
     private static void robot(Blocks b, ExperimentSummary s) {

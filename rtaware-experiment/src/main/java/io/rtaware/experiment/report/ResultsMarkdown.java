@@ -8,6 +8,7 @@ import io.rtaware.experiment.PaperReference;
 import io.rtaware.experiment.PeriodSet;
 import io.rtaware.experiment.claims.Claim;
 import io.rtaware.experiment.claims.NotEvaluated;
+import io.rtaware.experiment.claims.RuleVerdict;
 import io.rtaware.experiment.stats.SampleStats;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -17,9 +18,10 @@ import java.util.Locale;
 /**
  * {@code RESULTS.md}: the published results as generated from the experiments' summaries, for
  * the docs to link instead of stating verdicts by hand. Per experiment folder: its conditions,
- * Tables I and II beside the paper's, and every claim with its verdict, each on a line of the
- * greppable form {@code claim `FOLDER/ID`: VERDICT} that {@code DocsVerdictsTest} checks
- * against the folder's {@code summary.json}, wherever in the docs it is quoted.
+ * Tables I and II beside the paper's, every claim with its verdict, each on a line of the
+ * greppable form {@code claim `FOLDER/ID`: VERDICT}, and apart from them rtaware's own rules as
+ * {@code rule `FOLDER/ID`: VERDICT}, which {@code DocsVerdictsTest} checks against the folder's
+ * {@code summary.json}, wherever in the docs they are quoted.
  */
 public final class ResultsMarkdown {
 
@@ -86,6 +88,14 @@ public final class ResultsMarkdown {
             for (NotEvaluated n : s.claimsNotEvaluated()) {
                 md.append("- claim `").append(f.name()).append('/').append(n.id()).append("`: ").append(NOT_EVALUATED)
                         .append(". Paper: ").append(n.claim()).append(". Why: ").append(n.reason()).append('\n');
+            }
+            if (!s.rules().isEmpty()) {
+                md.append("\n### rtaware's own rules (not the paper's)\n\n");
+                for (RuleVerdict r : s.rules()) {
+                    md.append("- rule `").append(f.name()).append('/').append(r.id()).append("`: ").append(r.verdict())
+                            .append(". Rule: ").append(r.rule()).append(RuleVerdict.NOT_EVALUATED.equals(r.verdict())
+                                    ? ". Why: " : ". Here: ").append(r.evidence()).append('\n');
+                }
             }
         }
         return md.toString();
