@@ -12,6 +12,7 @@ import io.rtaware.experiment.RunResult;
 import io.rtaware.experiment.stats.RateInterval;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.stream.Stream;
 
 /** The paper's claims about periods too slow and too fast for the robot (Section VII), judged per top speed. */
 final class CollisionClaims {
@@ -68,7 +69,8 @@ final class CollisionClaims {
             j.judged(this, scope, v, evidence, "reproduced if every set above " + PaperClaims.SLOW_ABOVE_MS
                     + " ms has a collision in at least " + pct(PaperClaims.MAJORITY) + " of its runs and the sets at or below "
                     + PaperClaims.SLOW_ABOVE_MS + " ms (if any) in fewer than " + pct(PaperClaims.MAJORITY)
-                    + "; not reproduced if no run above " + PaperClaims.SLOW_ABOVE_MS + " ms collided; mixed otherwise");
+                    + "; not reproduced if no run above " + PaperClaims.SLOW_ABOVE_MS + " ms collided; mixed otherwise",
+                    Stream.concat(above.stream(), below.stream()).toList(), SetSummary::measuredRuns);
         }
     }
 
@@ -111,7 +113,8 @@ final class CollisionClaims {
                     ? " " + PaperClaims.LOCK_UP_MECHANISM : ""), "a run 'locks up' when its process fails or leaves no "
                     + "report (outcome error); reproduced if at least " + pct(PaperClaims.MAJORITY) + " of the runs of "
                     + "every set at " + PaperClaims.FAST_AT_MOST_MS + " ms or less lock up; not comparable if none does (the "
-                    + "paper's lock-up came from a starved machine that this setup does not have); mixed otherwise");
+                    + "paper's lock-up came from a starved machine that this setup does not have); mixed otherwise",
+                    fastSets, SetSummary::runs);
         }
 
         private static String robot(SetSummary s) {

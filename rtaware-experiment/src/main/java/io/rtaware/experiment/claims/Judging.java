@@ -4,6 +4,7 @@ import io.rtaware.experiment.ExperimentSummary.PairTest;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
 import io.rtaware.experiment.PaperReference;
 import io.rtaware.experiment.PeriodSet;
+import io.rtaware.experiment.RunResult;
 import io.rtaware.experiment.stats.WelchTest;
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -13,6 +14,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.function.Function;
+import java.util.function.ToIntFunction;
 
 /**
  * One judging of an experiment's results: what the claim families read (the sets, their Welch
@@ -22,14 +24,16 @@ final class Judging {
 
     private final List<SetSummary> sets;
     private final Map<String, List<PairTest>> tests;
+    private final List<RunResult> rows;
     private final String scenario;
     private final Map<Integer, SetSummary> paper;
     private final List<Claim> claims = new ArrayList<>();
     private final List<NotEvaluated> notEvaluated = new ArrayList<>();
 
-    Judging(List<SetSummary> sets, Map<String, List<PairTest>> tests, String scenario) {
-        this.sets = sets;
-        this.tests = tests;
+    Judging(PaperClaims.Results results, String scenario) {
+        this.sets = results.sets();
+        this.tests = results.tests();
+        this.rows = results.rows();
         this.scenario = scenario;
         this.paper = paperSets(sets);
     }
@@ -37,6 +41,11 @@ final class Judging {
     /** @return every set of the experiment, in set order */
     List<SetSummary> sets() {
         return sets;
+    }
+
+    /** @return the runs the sets summarize */
+    List<RunResult> rows() {
+        return rows;
     }
 
     /** @return the paper's set number to our set with its periods at the paper's top speed */
@@ -65,12 +74,34 @@ final class Judging {
         return Scope.PAPER.on(scenario);
     }
 
-    void judged(ClaimRule rule, Scope scope, Verdict verdict, String evidence, String how) {
-        claims.add(new Claim(rule.id() + scope.idSuffix(), rule.statement() + scope.words(), verdict, evidence, how));
+    /**
+     * @param rule the claim's family
+     * @param scope what it was judged on besides the paper's course and speed
+     * @param verdict the verdict
+     * @param evidence the numbers
+     * @param how how the verdict follows from them
+     * @param cells the sets the verdict rests on
+     * @param perCell the runs (or blocks) of a set that count for this verdict
+     */
+    void judged(ClaimRule rule, Scope scope, Verdict verdict, String evidence, String how, List<SetSummary> cells,
+                ToIntFunction<SetSummary> perCell) {
+        Integer fewest = cells.isEmpty() ? null : cells.stream().mapToInt(perCell).min().orElseThrow();
+        claims.add(new Claim(rule.id() + scope.idSuffix(), rule.statement() + scope.words(), verdict, evidence, how, null,
+                false, fewest, fewest != null && fewest < PaperClaims.SMALL_SAMPLE_RUNS, rule.id(), conditions(cells)));
     }
 
     void unjudged(ClaimRule rule, Scope scope, String reason) {
-        notEvaluated.add(new NotEvaluated(rule.id() + scope.idSuffix(), rule.statement() + scope.words(), reason));
+        notEvaluated.add(new NotEvaluated(rule.id() + scope.idSuffix(), rule.statement() + scope.words(), reason, null,
+                false));
+    }
+
+    /** @return e.g. {@code office at 0.4 m/s, swept: obstacle}: the conditions shared by experiments that agree */
+    private String conditions(List<SetSummary> cells) {
+        String speeds = String.join(", ", cells.stream().map(s -> speedLabel(s.topSpeedMps())).distinct().toList());
+        List<String> swept = PeriodSet.TASKS.stream()
+                .filter(t -> sets.stream().map(s -> s.periodsMs().get(t)).distinct().count() > 1).toList();
+        return (scenario == null ? Scope.PAPER_COURSE : scenario) + " at " + speeds + ", swept: "
+                + (swept.isEmpty() ? "none" : String.join("+", swept));
     }
 
     List<Claim> claims() {
@@ -122,6 +153,17 @@ final class Judging {
             String ours = paper.get(n).name();
             return ours.equals("Set " + n) ? "Set " + n : "Set " + n + " (our '" + ours + "')";
         }).toList());
+    }
+
+    /**
+     * @param numbers paper set numbers; none for all of them
+     * @return our sets with those periods that were run, in the order given
+     */
+    List<SetSummary> paperSets(int... numbers) {
+        if (numbers.length == 0) {
+            return List.copyOf(paper.values());
+        }
+        return java.util.Arrays.stream(numbers).mapToObj(paper::get).filter(java.util.Objects::nonNull).toList();
     }
 
     /** @return the paper sets present in words, or {@code none} */

@@ -84,7 +84,8 @@ final class MissClaims {
                     "for each task whose period takes at least " + PaperClaims.MIN_PERIODS + " values across the sets (its "
                             + "miss % against its period), and for all four tasks against the swept period: Spearman's rank "
                             + "correlation rho; a series falls if rho <= " + PaperClaims.FALLS_RHO + "; reproduced if every "
-                            + "series falls, not reproduced if none does, mixed otherwise");
+                            + "series falls, not reproduced if none does, mixed otherwise",
+                    j.sets().stream().filter(s -> s.measuredRuns() > 0).toList(), SetSummary::measuredRuns);
         }
     }
 
@@ -129,7 +130,8 @@ final class MissClaims {
             }
             j.judged(this, Scope.PAPER, Verdict.ofParts(agree, judged), String.join("; ", parts) + ".",
                     "a set agrees if its miss % is strictly ordered planner > occupancy > waypoint > obstacle; reproduced if "
-                            + "every one of Sets 1, 4 and 5 present agrees, not reproduced if none does, mixed otherwise");
+                            + "every one of Sets 1, 4 and 5 present agrees, not reproduced if none does, mixed otherwise",
+                    j.paperSets(1, 4, 5), SetSummary::measuredRuns);
         }
     }
 
@@ -164,7 +166,8 @@ final class MissClaims {
                     + "%"));
             j.judged(this, Scope.PAPER, highest == 1 ? Verdict.REPRODUCED : Verdict.NOT_REPRODUCED,
                     "misses of all four tasks' releases: " + String.join(", ", parts) + "; highest: Set " + highest + ".",
-                    "reproduced if Set 1 has the highest miss % of the paper's sets present, not reproduced otherwise");
+                    "reproduced if Set 1 has the highest miss % of the paper's sets present, not reproduced otherwise",
+                    withMisses, SetSummary::measuredRuns);
         }
     }
 }

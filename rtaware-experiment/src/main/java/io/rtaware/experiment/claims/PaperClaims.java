@@ -2,7 +2,9 @@ package io.rtaware.experiment.claims;
 
 import io.rtaware.experiment.ExperimentSummary.PairTest;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
+import io.rtaware.experiment.RunResult;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 
@@ -47,6 +49,9 @@ public final class PaperClaims {
     public static final double SPREAD_RATIO_MIN = 1.5;
     /** Ratio below which it does not hold at all. */
     public static final double SPREAD_RATIO_NONE = 1.25;
+
+    /** Runs per set below which a verdict says it rests on a small sample. */
+    public static final int SMALL_SAMPLE_RUNS = 5;
 
     /** Why no lock-up here says nothing against the paper's. */
     public static final String LOCK_UP_MECHANISM = "The paper's lock-up came from a 1.66 GHz machine starved by the "
@@ -101,18 +106,46 @@ public final class PaperClaims {
     }
 
     /**
-     * @param sets the experiment's sets, summarized
-     * @param tests its Welch tests per quantity
+     * What the claims are judged on: one selection of an experiment's runs, summarized.
+     *
+     * @param sets the sets, summarized
+     * @param tests the Welch tests between them per quantity
+     * @param rows the runs themselves (for the tests blocked on the world seed)
+     */
+    public record Results(List<SetSummary> sets, Map<String, List<PairTest>> tests, List<RunResult> rows) {
+    }
+
+    /**
+     * Judges every claim on the runs the summary uses and again on all runs: each verdict carries
+     * the other ({@link Claim#verdictAllRuns()}) and is {@link Claim#fragile()} when they differ.
+     *
+     * @param used the runs the summary uses (the quiet ones, unless busy runs are included)
+     * @param all every run of the experiment ({@code used} itself when nothing was left out)
      * @param scenario the experiment's scenario, named in the claims that depend on the course
      *     (the collision claim and the reaction rule's) unless it is the paper's room, or null
      * @return the verdicts, in a fixed order of claims
      */
-    public static Verdicts evaluate(List<SetSummary> sets, Map<String, List<PairTest>> tests, String scenario) {
-        Judging j = new Judging(sets, tests, scenario);
+    public static Verdicts evaluate(Results used, Results all, String scenario) {
+        Verdicts quiet = judge(used, scenario);
+        Verdicts whole = all == used ? quiet : judge(all, scenario);
+        Map<String, String> allRuns = new HashMap<>();
+        whole.claims().forEach(c -> allRuns.put(c.id(), c.verdict().json()));
+        whole.rules().forEach(r -> allRuns.put(r.id(), r.verdict()));
+        return new Verdicts(
+                quiet.claims().stream().map(c -> c.onAllRuns(allRuns.getOrDefault(c.id(), NotEvaluated.NOT_EVALUATED)))
+                        .toList(),
+                quiet.notEvaluated().stream()
+                        .map(n -> n.onAllRuns(allRuns.getOrDefault(n.id(), NotEvaluated.NOT_EVALUATED))).toList(),
+                quiet.rules().stream().map(r -> r.onAllRuns(allRuns.getOrDefault(r.id(), NotEvaluated.NOT_EVALUATED)))
+                        .toList());
+    }
+
+    private static Verdicts judge(Results results, String scenario) {
+        Judging j = new Judging(results, scenario);
         FAMILIES.forEach(f -> f.judge(j));
         List<RuleVerdict> rules = new ArrayList<>();
         for (ClaimRule rule : RULES) {
-            Judging r = new Judging(sets, tests, scenario);
+            Judging r = new Judging(results, scenario);
             rule.judge(r);
             r.claims().forEach(c -> rules.add(RuleVerdict.of(c)));
             r.notEvaluated().forEach(n -> rules.add(RuleVerdict.of(n)));

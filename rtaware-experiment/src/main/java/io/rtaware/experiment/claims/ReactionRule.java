@@ -76,7 +76,8 @@ final class ReactionRule implements ClaimRule {
         j.judged(this, scope, v, evidence + ".", "holds if the shortest swept period at which a run collided lies "
                 + "between the bound and " + num(PaperClaims.RULE_NEAR, 1) + " x the bound; fails if runs collided below "
                 + "the bound (the rule is unsafe) or none collided up to beyond " + num(PaperClaims.RULE_NEAR, 1)
-                + " x it (the rule is far too cautious); mixed otherwise");
+                + " x it (the rule is far too cautious); mixed otherwise",
+                    axis, SetSummary::measuredRuns);
     }
 
     /** The reaction rule's largest safe period for one task: the mean over the sets whose runs' advice gave it. */

@@ -10,8 +10,13 @@ package io.rtaware.experiment.claims;
  * @param verdict {@link #HOLDS}, {@link #FAILS}, {@link #MIXED} or {@link #NOT_EVALUATED}
  * @param evidence the numbers the verdict rests on, or why the rule was not evaluated
  * @param judgedBy how the verdict follows from the numbers; empty when not evaluated
+ * @param verdictAllRuns the verdict on all runs, busy ones included
+ * @param fragile true when {@code verdictAllRuns} differs from {@code verdict}
+ * @param fewestRunsPerCell the fewest runs in any set the verdict rests on, or null when not evaluated
+ * @param smallSample true when {@code fewestRunsPerCell} is below {@link PaperClaims#SMALL_SAMPLE_RUNS}
  */
-public record RuleVerdict(String id, String rule, String verdict, String evidence, String judgedBy) {
+public record RuleVerdict(String id, String rule, String verdict, String evidence, String judgedBy,
+                          String verdictAllRuns, boolean fragile, Integer fewestRunsPerCell, boolean smallSample) {
 
     /** The runs agree with the rule. */
     public static final String HOLDS = "holds";
@@ -20,18 +25,32 @@ public record RuleVerdict(String id, String rule, String verdict, String evidenc
     /** The runs agree in part. */
     public static final String MIXED = "mixed";
     /** The runs cannot test it (the evidence says why). */
-    public static final String NOT_EVALUATED = "not_evaluated";
+    public static final String NOT_EVALUATED = NotEvaluated.NOT_EVALUATED;
 
     static RuleVerdict of(Claim c) {
-        String verdict = switch (c.verdict()) {
+        return new RuleVerdict(c.id(), c.claim(), word(c.verdict()), c.evidence(), c.rule(), null, false,
+                c.fewestRunsPerCell(), c.smallSample());
+    }
+
+    static RuleVerdict of(NotEvaluated n) {
+        return new RuleVerdict(n.id(), n.claim(), NOT_EVALUATED, n.reason(), "", null, false, null, false);
+    }
+
+    private static String word(Verdict v) {
+        return switch (v) {
             case REPRODUCED -> HOLDS;
             case NOT_REPRODUCED -> FAILS;
             default -> MIXED;
         };
-        return new RuleVerdict(c.id(), c.claim(), verdict, c.evidence(), c.rule());
     }
 
-    static RuleVerdict of(NotEvaluated n) {
-        return new RuleVerdict(n.id(), n.claim(), NOT_EVALUATED, n.reason(), "");
+    RuleVerdict onAllRuns(String allRuns) {
+        return new RuleVerdict(id, rule, verdict, evidence, judgedBy, allRuns, !verdict.equals(allRuns),
+                fewestRunsPerCell, smallSample);
+    }
+
+    /** @return the caveats of the verdict in words; empty when none */
+    public String caveats() {
+        return Caveats.of(fragile, verdictAllRuns, smallSample, fewestRunsPerCell);
     }
 }

@@ -8,10 +8,12 @@ import io.rtaware.experiment.PaperReference;
 import io.rtaware.experiment.PeriodSet;
 import io.rtaware.experiment.claims.Claim;
 import io.rtaware.experiment.claims.NotEvaluated;
+import io.rtaware.experiment.claims.PaperClaims;
 import io.rtaware.experiment.claims.RuleVerdict;
 import io.rtaware.experiment.stats.SampleStats;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 
@@ -83,18 +85,23 @@ public final class ResultsMarkdown {
             md.append("\n### The paper's claims\n\n");
             for (Claim c : s.claims()) {
                 md.append("- claim `").append(f.name()).append('/').append(c.id()).append("`: ").append(c.verdict().json())
-                        .append(". Paper: ").append(c.claim()).append(". Here: ").append(c.evidence()).append('\n');
+                        .append(". Paper: ").append(c.claim()).append(". Here: ").append(c.evidence())
+                        .append(allRuns(c.verdictAllRuns(), c.fragile())).append(small(c.smallSample(), c.fewestRunsPerCell()))
+                        .append(disagreeing(f, c, folders)).append('\n');
             }
             for (NotEvaluated n : s.claimsNotEvaluated()) {
                 md.append("- claim `").append(f.name()).append('/').append(n.id()).append("`: ").append(NOT_EVALUATED)
-                        .append(". Paper: ").append(n.claim()).append(". Why: ").append(n.reason()).append('\n');
+                        .append(". Paper: ").append(n.claim()).append(". Why: ").append(n.reason())
+                        .append(n.fragile() ? allRuns(n.verdictAllRuns(), true) : "").append('\n');
             }
             if (!s.rules().isEmpty()) {
                 md.append("\n### rtaware's own rules (not the paper's)\n\n");
                 for (RuleVerdict r : s.rules()) {
                     md.append("- rule `").append(f.name()).append('/').append(r.id()).append("`: ").append(r.verdict())
                             .append(". Rule: ").append(r.rule()).append(RuleVerdict.NOT_EVALUATED.equals(r.verdict())
-                                    ? ". Why: " : ". Here: ").append(r.evidence()).append('\n');
+                                    ? ". Why: " : ". Here: ").append(r.evidence())
+                            .append(allRuns(r.verdictAllRuns(), r.fragile()))
+                            .append(small(r.smallSample(), r.fewestRunsPerCell())).append('\n');
                 }
             }
         }
@@ -109,6 +116,34 @@ public final class ResultsMarkdown {
      */
     public static void write(Path file, List<Folder> folders, String command) throws IOException {
         OutputFiles.write(file, OutputFiles.text(render(folders, command)));
+    }
+
+    private static String allRuns(String verdict, boolean fragile) {
+        return fragile ? " **Fragile:** on all runs, busy ones included, " + verdict + "." : "";
+    }
+
+    private static String small(boolean smallSample, Integer fewest) {
+        return smallSample ? " From fewer than " + PaperClaims.SMALL_SAMPLE_RUNS + " runs per cell (fewest " + fewest + ")."
+                : "";
+    }
+
+    /**
+     * @return the other experiments that judged the same claim under the same conditions (course,
+     *     top speed, swept tasks) and came to another verdict, in words; empty when none did
+     */
+    private static String disagreeing(Folder here, Claim c, List<Folder> folders) {
+        List<String> others = new ArrayList<>();
+        for (Folder f : folders) {
+            if (f == here) {
+                continue;
+            }
+            f.summary().claims().stream()
+                    .filter(o -> o.family().equals(c.family()) && o.judgedOn().equals(c.judgedOn())
+                            && o.verdict() != c.verdict())
+                    .forEach(o -> others.add(f.name() + "/" + o.id() + " says " + o.verdict().json()));
+        }
+        return others.isEmpty() ? "" : " **Contradicted** under the same conditions (" + c.judgedOn() + ") by "
+                + String.join(", ", others) + ".";
     }
 
     private static String periods(SetSummary set) {

@@ -341,8 +341,10 @@ class PaperClaimsTest {
         }
         String md = java.nio.file.Files.readString(out.resolve("report.md"));
         assertTrue(md.contains("## Claims of the paper"), md);
-        assertTrue(md.contains("| periods above 100 ms: the robot hits walls and obstacles (at 0.1 m/s) | **reproduced** | "), md);
-        assertTrue(md.contains("| periods above 100 ms: the robot hits walls and obstacles (at 0.6 m/s) | **mixed** | "), md);
+        assertTrue(md.contains("| periods above 100 ms: the robot hits walls and obstacles (at 0.1 m/s) | **reproduced** (from fewer "
+                + "than 5 runs per cell (fewest 2)) | reproduced | "), md);
+        assertTrue(md.contains("| periods above 100 ms: the robot hits walls and obstacles (at 0.6 m/s) | **mixed** (from fewer than 5 "
+                + "runs per cell (fewest 2)) | mixed | "), md);
         assertTrue(md.contains("| 800 | obstacle 800 ms at 0.1 m/s | 0.1 | 0% | 100% |"), md);
         assertTrue(md.contains("![Completed and collided runs against the period (log axis)](sweep-rates.png)"), md);
         com.fasterxml.jackson.databind.JsonNode json = io.rtaware.core.report.ReportDocument.mapper()
@@ -368,5 +370,59 @@ class PaperClaimsTest {
         assertEquals(Verdict.REPRODUCED, claim(s, "slow-hits@0.5mps").verdict());
         assertEquals(Verdict.NOT_COMPARABLE, claim(s, "fast-locks-up@0.5mps").verdict());
         assertEquals("slow-hits@0.5mps", claim(s, "slow-hits@0.5mps").id());
+    }
+
+    /** Issue 35: a verdict that leaving runs out decides is shown with the verdict on all runs, as fragile. */
+    @Test
+    void exclusionThatDecidesAVerdictIsMarkedFragileWithTheVerdictOnAllRuns() {
+        List<PeriodSet> sweep = ExperimentSets.resolve("sweep-obstacle");
+        // runs 1 and 2 collide above 100 ms; leaving them out (as if busy) leaves no collision there
+        List<RunResult> all = rows(sweep, 4, (s, p, r) -> p > 100 && r <= 2
+                ? new Object[] {"stuck", 120.0, 3.0, 1} : completed(230), FALLING);
+        List<RunResult> used = all.stream().filter(r -> r.run() >= 3).toList();
+        ExperimentSummary s = ExperimentSummary.of(used, all, ExperimentProfile.fromResults(all),
+                io.rtaware.experiment.ExperimentConditions.of(all, true));
+        Claim slow = claim(s, "slow-hits");
+        assertEquals(Verdict.NOT_REPRODUCED, slow.verdict(), slow.evidence());
+        assertEquals("reproduced", slow.verdictAllRuns());
+        assertTrue(slow.fragile());
+        assertTrue(slow.caveats().startsWith("fragile: on all runs, busy ones included, reproduced"), slow.caveats());
+        Claim falls = claim(s, "misses-fall");
+        assertEquals("reproduced", falls.verdictAllRuns());
+        assertEquals(false, falls.fragile(), "the same verdict either way");
+        ExperimentSummary allUsed = ExperimentSummary.of(all, all, ExperimentProfile.fromResults(all),
+                io.rtaware.experiment.ExperimentConditions.of(all, true));
+        assertEquals(false, claim(allUsed, "slow-hits").fragile(), "nothing left out, nothing fragile");
+    }
+
+    /** Issue 35: a verdict from fewer than five runs in some set says so, in a field and in words. */
+    @Test
+    void aVerdictFromFewerThanFiveRunsPerCellSaysSo() {
+        List<PeriodSet> sweep = ExperimentSets.resolve("sweep-obstacle");
+        Claim four = claim(summary(rows(sweep, 4, (s, p, r) -> completed(230), FALLING)), "slow-hits");
+        assertEquals(4, four.fewestRunsPerCell());
+        assertTrue(four.smallSample());
+        assertTrue(four.caveats().contains("from fewer than 5 runs per cell (fewest 4)"), four.caveats());
+        Claim five = claim(summary(rows(sweep, 5, (s, p, r) -> completed(230), FALLING)), "slow-hits");
+        assertEquals(5, five.fewestRunsPerCell());
+        assertEquals(false, five.smallSample());
+        assertEquals("", five.caveats());
+    }
+
+    /** Issue 35: two experiments under the same course, speed and swept tasks that disagree say so in RESULTS.md. */
+    @Test
+    void resultsMarkdownNamesAnotherExperimentThatDisagreesUnderTheSameConditions() {
+        List<PeriodSet> sweep = ExperimentSets.resolve("sweep-obstacle");
+        ExperimentSummary hits = summary(rows(sweep, 2, (s, p, r) -> p > 100
+                ? new Object[] {"stuck", 120.0, 3.0, 1} : completed(230), FALLING));
+        ExperimentSummary clean = summary(rows(sweep, 2, (s, p, r) -> completed(230), FALLING));
+        String md = io.rtaware.experiment.report.ResultsMarkdown.render(List.of(
+                new io.rtaware.experiment.report.ResultsMarkdown.Folder("a", hits),
+                new io.rtaware.experiment.report.ResultsMarkdown.Folder("b", clean)), "test");
+        String lineA = md.lines().filter(l -> l.startsWith("- claim `a/slow-hits`")).findFirst().orElseThrow();
+        assertTrue(lineA.contains("**Contradicted** under the same conditions (paper-room at run's default top speed, "
+                + "swept: obstacle) by b/slow-hits says not_reproduced."), lineA);
+        String misses = md.lines().filter(l -> l.startsWith("- claim `a/misses-fall`")).findFirst().orElseThrow();
+        assertTrue(!misses.contains("Contradicted"), "the same verdict in both: " + misses);
     }
 }
