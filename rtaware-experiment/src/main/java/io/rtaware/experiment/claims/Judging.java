@@ -95,11 +95,29 @@ final class Judging {
                 false));
     }
 
+    /** @return the tasks whose period differs between the sets, in task order */
+    List<String> sweptTasks() {
+        return PeriodSet.TASKS.stream()
+                .filter(t -> sets.stream().map(s -> s.periodsMs().get(t)).distinct().count() > 1).toList();
+    }
+
+    /**
+     * @param verdicts the verdicts of the groups of one claim (per top speed), at least one
+     * @return their common verdict, or mixed when they differ
+     */
+    static Verdict combine(List<Verdict> verdicts) {
+        return verdicts.stream().distinct().count() == 1 ? verdicts.get(0) : Verdict.MIXED;
+    }
+
+    /** @return the world seed of a run (run j of every set shares seed j in the blocked design) */
+    static long worldSeed(RunResult r) {
+        return r.conditions().seedOf(r.run());
+    }
+
     /** @return e.g. {@code office at 0.4 m/s, swept: obstacle}: the conditions shared by experiments that agree */
     private String conditions(List<SetSummary> cells) {
         String speeds = String.join(", ", cells.stream().map(s -> speedLabel(s.topSpeedMps())).distinct().toList());
-        List<String> swept = PeriodSet.TASKS.stream()
-                .filter(t -> sets.stream().map(s -> s.periodsMs().get(t)).distinct().count() > 1).toList();
+        List<String> swept = sweptTasks();
         return (scenario == null ? Scope.PAPER_COURSE : scenario) + " at " + speeds + ", swept: "
                 + (swept.isEmpty() ? "none" : String.join("+", swept));
     }

@@ -170,4 +170,99 @@ final class MissClaims {
                     withMisses, SetSummary::measuredRuns);
         }
     }
+
+    /** "It is shown that Set 1's individual tasks had the highest percentage of missed deadlines" (Fig. 7). */
+    static final class Fig7Set1HighestPerTask implements ClaimRule {
+
+        @Override
+        public String id() {
+            return "fig7-set1-highest-per-task";
+        }
+
+        @Override
+        public String statement() {
+            return "Fig. 7: Set 1 has the highest miss rate of every task";
+        }
+
+        @Override
+        public void judge(Judging j) {
+            SetSummary one = j.paper().get(1);
+            List<SetSummary> others = j.paperSets().stream().filter(s -> s != one).toList();
+            if (one == null || others.isEmpty()) {
+                j.unjudged(this, Scope.PAPER, "needs the paper's Set 1 and another paper set; have " + j.paperNames());
+                return;
+            }
+            List<String> parts = new ArrayList<>();
+            int agree = 0;
+            int judged = 0;
+            for (String task : PeriodSet.TASKS) {
+                Double mine = one.misses().get(task).missPct();
+                SetSummary top = others.stream().filter(s -> s.misses().get(task).missPct() != null)
+                        .max(Comparator.comparingDouble(s -> s.misses().get(task).missPct())).orElse(null);
+                if (mine == null || top == null) {
+                    continue;
+                }
+                judged++;
+                double theirs = top.misses().get(task).missPct();
+                agree += mine > theirs ? 1 : 0;
+                parts.add(task + ": Set 1 " + num(mine, 2) + "%, highest of the others " + top.name() + " "
+                        + num(theirs, 2) + "%");
+            }
+            if (judged == 0) {
+                j.unjudged(this, Scope.PAPER, "no task has misses counted in Set 1 and another paper set");
+                return;
+            }
+            j.judged(this, Scope.PAPER, Verdict.ofParts(agree, judged), String.join("; ", parts) + ".",
+                    "a task agrees if Set 1's miss % is above that of every other paper set present; reproduced if every "
+                            + "task agrees, not reproduced if none does, mixed otherwise",
+                    j.paperSets(), SetSummary::measuredRuns);
+        }
+    }
+
+    /**
+     * "The computational requirements of the tasks follow in that order": planner, occupancy,
+     * waypoint, obstacle. The requirement is read from the execution time the runs measured.
+     */
+    static final class ComputationOrder implements ClaimRule {
+
+        @Override
+        public String id() {
+            return "computation-order";
+        }
+
+        @Override
+        public String statement() {
+            return "Section VII: the computational requirements of the tasks follow Fig. 7's order: planner, occupancy, "
+                    + "waypoint, obstacle";
+        }
+
+        @Override
+        public void judge(Judging j) {
+            List<SetSummary> measured = j.sets().stream()
+                    .filter(s -> FIG7_ORDER.stream().allMatch(t -> s.misses().get(t).execP99UsMean() != null)).toList();
+            if (measured.isEmpty()) {
+                j.unjudged(this, Scope.PAPER, "no set has the execution time of all four tasks");
+                return;
+            }
+            List<String> parts = new ArrayList<>();
+            int agree = 0;
+            for (SetSummary s : measured) {
+                List<String> order = FIG7_ORDER.stream().sorted(Comparator.comparingDouble(
+                        (String t) -> s.misses().get(t).execP99UsMean()).reversed()).toList();
+                boolean strict = true;
+                for (int i = 1; i < FIG7_ORDER.size(); i++) {
+                    strict &= s.misses().get(FIG7_ORDER.get(i - 1)).execP99UsMean()
+                            > s.misses().get(FIG7_ORDER.get(i)).execP99UsMean();
+                }
+                agree += strict ? 1 : 0;
+                parts.add(s.name() + ": " + String.join(" > ", order.stream()
+                        .map(t -> t + " " + num(s.misses().get(t).execP99UsMean(), 0) + " us").toList()));
+            }
+            j.judged(this, Scope.PAPER, Verdict.ofParts(agree, measured.size()), String.join("; ", parts) + ".",
+                    "the computation of a task is its p99 execution time per run (the execution-time figure results.csv "
+                            + "keeps), averaged over the set's runs; a set agrees if it orders the tasks strictly planner > "
+                            + "occupancy > waypoint > obstacle; reproduced if every set agrees, not reproduced if none "
+                            + "does, mixed otherwise", measured, SetSummary::measuredRuns);
+        }
+    }
 }

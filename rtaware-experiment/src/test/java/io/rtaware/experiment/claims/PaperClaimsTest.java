@@ -37,6 +37,12 @@ class PaperClaimsTest {
     /** The obstacle task's largest safe period in every synthetic run's advice, ms (0: the rule finds none). */
     private double obstacleBoundMs = 250.0;
 
+    /** Every synthetic run's p99 execution time per task, us. */
+    private java.util.function.ToDoubleFunction<String> execUs = task -> 50;
+
+    /** The world seed of run 1 of each set: with the same for every set, run j of every set shares seed j. */
+    private java.util.function.IntToLongFunction firstSeed = set -> 1;
+
     private List<RunResult> rows(List<PeriodSet> sets, int runs, Outcome outcome, ToDoubleBiFunction<String, Long> missPct) {
         List<RunResult> rows = new ArrayList<>();
         for (int run = 1; run <= runs; run++) {
@@ -52,11 +58,13 @@ class PaperClaimsTest {
                     for (String t : PeriodSet.TASKS) {
                         double pct = missPct.applyAsDouble(t, s.periodsMs().get(t));
                         long misses = Math.round(pct * 100);
-                        tasks.put(t, new TaskResult(10_000, misses, 100.0 * misses / 10_000, 0, 50, misses / 2,
+                        tasks.put(t, new TaskResult(10_000, misses, 100.0 * misses / 10_000, 0, execUs.applyAsDouble(t), misses / 2,
                                 "obstacle".equals(t) ? obstacleBoundMs : null));
                     }
                 }
-                rows.add(new RunResult(i + 1, run, s, CONDITIONS, (String) o[0], (double) o[1], (double) o[2], 20.0,
+                RunConditions conditions = new RunConditions(CONDITIONS.scenario(), CONDITIONS.timeScale(),
+                        firstSeed.applyAsLong(i + 1), null);
+                rows.add(new RunResult(i + 1, run, s, conditions, (String) o[0], (double) o[1], (double) o[2], 20.0,
                         RunResult.ERROR.equals(o[0]) ? null : (Integer) o[3], 4, 4, tasks, Map.of()));
             }
         }
@@ -298,10 +306,7 @@ class PaperClaimsTest {
             assertTrue(!c.reason().isBlank(), c.id());
             all.add(c.id());
         });
-        for (String claim : List.of("slow-hits", "fast-locks-up", "misses-fall", "table1-set1-faster",
-                "table1-verge", "table2-no-difference", "table1-set3-fastest-widest", "tables-almost-identical", "fig7-planner-most",
-                "fig8-set1-most-misses", "table1-spread-twice", "conclusion-timing-matters", "avoider-too-fast-hits",
-                "sampling-rate-advice")) {
+        for (String claim : PaperClaims.familyIds()) {
             assertTrue(all.contains(claim), "claim listed: " + claim + " in " + all);
         }
     }
@@ -424,5 +429,139 @@ class PaperClaimsTest {
                 + "swept: obstacle) by b/slow-hits says not_reproduced."), lineA);
         String misses = md.lines().filter(l -> l.startsWith("- claim `a/misses-fall`")).findFirst().orElseThrow();
         assertTrue(!misses.contains("Contradicted"), "the same verdict in both: " + misses);
+    }
+
+    /** The ids docs quote verdicts by, and the closing note of issue 35 names: they never change. */
+    @Test
+    void theIdsOfTheClaimFamiliesAndRulesAreStable() {
+        assertEquals(List.of("slow-hits", "fast-locks-up", "misses-fall", "table1-set1-faster", "table1-verge",
+                "table2-no-difference", "table1-set3-fastest-widest", "tables-almost-identical", "fig7-planner-most",
+                "fig8-set1-most-misses", "table1-spread-twice", "fig7-set1-highest-per-task", "computation-order",
+                "conclusion-timing-matters", "avoider-too-fast-hits", "sampling-rate-advice", "planner-can-slow",
+                "bad-map-bad-path"), PaperClaims.familyIds());
+        assertEquals(List.of("reaction-rule-bound"), PaperClaims.ruleIds());
+        ExperimentSummary s = summary(rows(ExperimentSets.paper(), 2, (x, p, r) -> completed(250 + r), FALLING));
+        List<String> ids = new ArrayList<>();
+        s.claims().forEach(c -> ids.add(c.id()));
+        s.claimsNotEvaluated().forEach(n -> ids.add(n.id()));
+        assertEquals(new java.util.TreeSet<>(PaperClaims.familyIds()), new java.util.TreeSet<>(ids),
+                "on the paper's course at one speed every claim has its family's id");
+        assertTrue(notEvaluated(s, "bad-map-bad-path"), "no result records the map's error: " + s.claims());
+    }
+
+    @Test
+    void setOneHasTheHighestMissRateOfEveryTask() {
+        // all 10 ms (the paper's Set 1) against the other paper sets, all 50 and 100 ms: misses fall with the period
+        Claim highest = claim(summary(rows(ExperimentSets.resolve("sweep-all"), 2, (x, p, r) -> completed(230), FALLING)),
+                "fig7-set1-highest-per-task");
+        assertEquals(Verdict.REPRODUCED, highest.verdict(), highest.evidence());
+        assertTrue(highest.evidence().contains("waypoint: Set 1 5.00%, highest of the others all 50 ms 1.00%"),
+                highest.evidence());
+        // the paper's sets: Set 2 runs the avoider at 10 ms too, so its obstacle misses tie with Set 1's
+        Claim tie = claim(summary(rows(ExperimentSets.paper(), 2, (x, p, r) -> completed(230), FALLING)),
+                "fig7-set1-highest-per-task");
+        assertEquals(Verdict.MIXED, tie.verdict(), tie.evidence());
+    }
+
+    @Test
+    void computationFollowsTheOrderOfFigSevenOnlyWhenTheExecutionTimesDo() {
+        List<PeriodSet> paper = ExperimentSets.paper();
+        execUs = t -> Map.of("planner", 900.0, "occupancy", 500.0, "waypoint", 100.0, "obstacle", 50.0).get(t);
+        assertEquals(Verdict.REPRODUCED, claim(summary(rows(paper, 2, (x, p, r) -> completed(230), FALLING)),
+                "computation-order").verdict());
+        execUs = t -> Map.of("planner", 900.0, "occupancy", 500.0, "waypoint", 100.0, "obstacle", 200.0).get(t);
+        Claim avoiderAboveWaypoint = claim(summary(rows(paper, 2, (x, p, r) -> completed(230), FALLING)),
+                "computation-order");
+        assertEquals(Verdict.NOT_REPRODUCED, avoiderAboveWaypoint.verdict(), avoiderAboveWaypoint.evidence());
+        assertTrue(avoiderAboveWaypoint.evidence().startsWith("Set 1: planner 900 us > occupancy 500 us > obstacle 200 us "
+                + "> waypoint 100 us"), avoiderAboveWaypoint.evidence());
+        execUs = t -> 50;
+        assertEquals(Verdict.NOT_REPRODUCED, claim(summary(rows(paper, 2, (x, p, r) -> completed(230), FALLING)),
+                "computation-order").verdict(), "equal times are no order");
+    }
+
+    /** Issue 35: the main conclusion, from the blocked test where run j of every set shares world seed j. */
+    @Test
+    void theConclusionIsJudgedByTheBlockedTestWhereSetsShareSeeds() {
+        List<PeriodSet> paper = ExperimentSets.paper();
+        // seed j makes the course 5 s longer per j; Set 1 is 3 s slower on every seed, with a little noise
+        Claim differs = claim(summary(rows(paper, 6, (x, p, r) -> completed(230 + 5 * r
+                + (paper.indexOf(x) == 0 ? 3 : 0) + 0.1 * ((paper.indexOf(x) * 7 + r * 3) % 5)), FALLING)),
+                "conclusion-timing-matters");
+        assertEquals(Verdict.REPRODUCED, differs.verdict(), differs.evidence());
+        assertTrue(differs.evidence().startsWith("run time, blocked on the world seed (6 seeds complete in all 5 sets): "
+                + "two-way ANOVA F(4, 20) = "), differs.evidence());
+        assertTrue(differs.evidence().contains("paired differences against Set 1: Set 2 -3."), differs.evidence());
+        Claim same = claim(summary(rows(paper, 6, (x, p, r) -> completed(230 + 5 * r
+                + 0.1 * ((paper.indexOf(x) * 7 + r * 3) % 5)), FALLING)), "conclusion-timing-matters");
+        assertEquals(Verdict.NOT_REPRODUCED, same.verdict(), "only the seed matters: " + same.evidence());
+        // every set on its own seeds: no blocks, the sets are independent samples
+        firstSeed = set -> 100L * set;
+        Claim independent = claim(summary(rows(paper, 6, (x, p, r) -> completed(230 + 5 * r
+                + (paper.indexOf(x) == 0 ? 30 : 0)), FALLING)), "conclusion-timing-matters");
+        assertEquals(Verdict.REPRODUCED, independent.verdict(), independent.evidence());
+        assertTrue(independent.evidence().startsWith("run time, as independent samples (the sets share no world seed): "
+                + "one-way ANOVA"), independent.evidence());
+    }
+
+    @Test
+    void anAvoiderRunTooFastHitsObstaclesFromTheSweep() {
+        List<PeriodSet> sweep = ExperimentSets.resolve("sweep-obstacle");
+        Claim hits = claim(summary(rows(sweep, 4, (x, p, r) -> p <= 5 ? new Object[] {"stuck", 120.0, 3.0, 1}
+                : completed(230), FALLING)), "avoider-too-fast-hits");
+        assertEquals(Verdict.REPRODUCED, hits.verdict(), hits.evidence());
+        assertTrue(hits.evidence().startsWith("runs with a collision at 5 ms or less: 4 of 4 (100 %, 95 % CI 51-100 %); "
+                + "from 6 to 100 ms: 0 of 16 (0 %, 95 % CI 0-19 %), Fisher's exact p = 0.000 (swept: obstacle)"),
+                hits.evidence());
+        assertEquals(Verdict.NOT_REPRODUCED, claim(summary(rows(sweep, 4, (x, p, r) -> completed(230), FALLING)),
+                "avoider-too-fast-hits").verdict());
+        assertTrue(notEvaluated(summary(rows(ExperimentSets.paper(), 2, (x, p, r) -> completed(230), FALLING)),
+                "avoider-too-fast-hits"), "no set at 5 ms or less");
+    }
+
+    @Test
+    void theSamplingAdviceIsJudgedAtItsBoundOfFiftyMilliseconds() {
+        List<PeriodSet> sweep = ExperimentSets.resolve("sweep-obstacle");
+        Claim advised = claim(summary(rows(sweep, 10, (x, p, r) -> p > 50 && p <= 100
+                ? new Object[] {"completed", 240.0, 0.3, 1} : completed(230), FALLING)), "sampling-rate-advice");
+        assertEquals(Verdict.REPRODUCED, advised.verdict(), advised.evidence());
+        Claim none = claim(summary(rows(sweep, 10, (x, p, r) -> completed(230), FALLING)), "sampling-rate-advice");
+        assertEquals(Verdict.INCONCLUSIVE, none.verdict(), none.evidence());
+        Claim against = claim(summary(rows(sweep, 10, (x, p, r) -> p <= 50
+                ? new Object[] {"completed", 240.0, 0.3, 1} : completed(230), FALLING)), "sampling-rate-advice");
+        assertEquals(Verdict.NOT_REPRODUCED, against.verdict(), against.evidence());
+    }
+
+    @Test
+    void thePlannerCanBeSlowedUnlessTheRobotLosesItsCourse() throws Exception {
+        List<PeriodSet> all = ExperimentSets.resolve("sweep-all");
+        assertEquals(Verdict.REPRODUCED, claim(summary(rows(all, 4, (x, p, r) -> completed(230), FALLING)),
+                "planner-can-slow").verdict());
+        Claim confounded = claim(summary(rows(all, 4, (x, p, r) -> p > 100 ? new Object[] {"stuck", 120.0, 3.0, 0}
+                : completed(230), FALLING)), "planner-can-slow");
+        assertEquals(Verdict.INCONCLUSIVE, confounded.verdict(), "the other tasks were slowed too: " + confounded.evidence());
+        Path f = dir.resolve("planner.yaml");
+        java.nio.file.Files.writeString(f, "sweep:\n  tasks: [planner]\n  periods_ms: [50, 100, 200, 400]\n");
+        Claim alone = claim(summary(rows(ExperimentSets.resolve(f.toString()), 4, (x, p, r) -> p > 100
+                ? new Object[] {"stuck", 120.0, 3.0, 0} : completed(230), FALLING)), "planner-can-slow");
+        assertEquals(Verdict.NOT_REPRODUCED, alone.verdict(), alone.evidence());
+    }
+
+    @Test
+    void setThreeFastestAndWidestIsTwoPartsEachWithItsInterval() {
+        List<PeriodSet> paper = ExperimentSets.paper();
+        double[] wide = {200, 210, 190, 220, 180, 200};
+        double[] narrow = {250, 251, 249, 250, 251, 249};
+        Claim both = claim(summary(rows(paper, 6, (x, p, r) -> completed(paper.indexOf(x) == 2 ? wide[r - 1]
+                : narrow[r - 1] + paper.indexOf(x)), FALLING)), "table1-set3-fastest-widest");
+        assertEquals(Verdict.REPRODUCED, both.verdict(), both.evidence());
+        assertTrue(both.evidence().startsWith("fastest: Set 3 200.00 s against the fastest other, Set 1 250.00 s: "
+                + "difference -50.00 s (95% CI "), both.evidence());
+        // Set 3 fastest by a hair and the narrowest: neither part shown
+        double[] tight = {249.9, 250.0, 249.8, 249.9, 250.0, 249.8};
+        Claim neither = claim(summary(rows(paper, 6, (x, p, r) -> completed(paper.indexOf(x) == 2 ? tight[r - 1]
+                : narrow[r - 1] + 0.01 * paper.indexOf(x)), FALLING)), "table1-set3-fastest-widest");
+        assertEquals(Verdict.NOT_REPRODUCED, neither.verdict(), neither.evidence());
+        assertTrue(neither.evidence().contains(") not shown; widest: Set 3 SD 0.09 s"), neither.evidence());
     }
 }
