@@ -21,16 +21,11 @@ final class CollisionClaims {
     }
 
     /** "Experiments were also run with periods larger than 100 ms ... the robot would hit the wall as well as obstacles." */
-    static final class SlowHits implements ClaimRule {
+    static final class SlowHits extends ClaimFamily {
 
-        @Override
-        public String id() {
-            return "slow-hits";
-        }
-
-        @Override
-        public String statement() {
-            return "periods above 100 ms: the robot hits walls and obstacles";
+        SlowHits() {
+            super("slow-hits",
+                    "periods above 100 ms: the robot hits walls and obstacles");
         }
 
         @Override
@@ -75,16 +70,11 @@ final class CollisionClaims {
     }
 
     /** "Experiments were also run with periods of 5 ms and less, which resulted in the robot ... locking up." */
-    static final class FastLocksUp implements ClaimRule {
+    static final class FastLocksUp extends ClaimFamily {
 
-        @Override
-        public String id() {
-            return "fast-locks-up";
-        }
-
-        @Override
-        public String statement() {
-            return "periods of 5 ms or less: the system locks up";
+        FastLocksUp() {
+            super("fast-locks-up",
+                    "periods of 5 ms or less: the system locks up");
         }
 
         @Override

@@ -23,7 +23,7 @@ import org.apache.commons.math3.stat.inference.OneWayAnova;
  * Friedman's test with the seed as block, on the seeds complete in every set, with the paired
  * differences against the first set; where they do not, a one-way ANOVA of independent samples.
  */
-final class ConclusionClaim implements ClaimRule {
+final class ConclusionClaim extends ClaimFamily {
 
     /** Complete blocks needed for the blocked test; with fewer the sets are compared as independent samples. */
     static final int MIN_BLOCKS = 3;
@@ -36,15 +36,9 @@ final class ConclusionClaim implements ClaimRule {
             new Measure("run time", "s", RunResult::completed, RunResult::runTimeS),
             new Measure("distance to the finish", "m", RunResult::measured, RunResult::distanceToFinishM));
 
-    @Override
-    public String id() {
-        return "conclusion-timing-matters";
-    }
-
-    @Override
-    public String statement() {
-        return "Conclusion: the timing of the tasks affects the overall performance of the system (run time, distance "
-                + "to the finish)";
+    ConclusionClaim() {
+        super("conclusion-timing-matters", "Conclusion: the timing of the tasks affects the overall performance of the "
+                + "system (run time, distance to the finish)");
     }
 
     @Override

@@ -26,16 +26,11 @@ final class MissClaims {
     }
 
     /** "As the individual tasks' periods increase, the tasks' missed deadline rate decreases" (Figs. 7, 8). */
-    static final class MissesFall implements ClaimRule {
+    static final class MissesFall extends ClaimFamily {
 
-        @Override
-        public String id() {
-            return "misses-fall";
-        }
-
-        @Override
-        public String statement() {
-            return "misses fall as periods grow";
+        MissesFall() {
+            super("misses-fall",
+                    "misses fall as periods grow");
         }
 
         @Override
@@ -90,16 +85,11 @@ final class MissClaims {
     }
 
     /** "In Sets 1, 4 and 5, the tasks with the highest missed deadline rate are the planner followed by ..." (Fig. 7). */
-    static final class Fig7PlannerMost implements ClaimRule {
+    static final class Fig7PlannerMost extends ClaimFamily {
 
-        @Override
-        public String id() {
-            return "fig7-planner-most";
-        }
-
-        @Override
-        public String statement() {
-            return "Fig. 7: in Sets 1, 4 and 5 the planner misses most, then occupancy, waypoint and obstacle";
+        Fig7PlannerMost() {
+            super("fig7-planner-most",
+                    "Fig. 7: in Sets 1, 4 and 5 the planner misses most, then occupancy, waypoint and obstacle");
         }
 
         @Override
@@ -136,16 +126,11 @@ final class MissClaims {
     }
 
     /** "Figure 8 shows ... the overall missed deadline rate decreases": Set 1 highest. */
-    static final class Fig8Set1MostMisses implements ClaimRule {
+    static final class Fig8Set1MostMisses extends ClaimFamily {
 
-        @Override
-        public String id() {
-            return "fig8-set1-most-misses";
-        }
-
-        @Override
-        public String statement() {
-            return "Fig. 8: Set 1 (all tasks at 10 ms) has the highest share of missed deadlines";
+        Fig8Set1MostMisses() {
+            super("fig8-set1-most-misses",
+                    "Fig. 8: Set 1 (all tasks at 10 ms) has the highest share of missed deadlines");
         }
 
         @Override
@@ -172,16 +157,11 @@ final class MissClaims {
     }
 
     /** "It is shown that Set 1's individual tasks had the highest percentage of missed deadlines" (Fig. 7). */
-    static final class Fig7Set1HighestPerTask implements ClaimRule {
+    static final class Fig7Set1HighestPerTask extends ClaimFamily {
 
-        @Override
-        public String id() {
-            return "fig7-set1-highest-per-task";
-        }
-
-        @Override
-        public String statement() {
-            return "Fig. 7: Set 1 has the highest miss rate of every task";
+        Fig7Set1HighestPerTask() {
+            super("fig7-set1-highest-per-task",
+                    "Fig. 7: Set 1 has the highest miss rate of every task");
         }
 
         @Override
@@ -223,17 +203,12 @@ final class MissClaims {
      * "The computational requirements of the tasks follow in that order": planner, occupancy,
      * waypoint, obstacle. The requirement is read from the execution time the runs measured.
      */
-    static final class ComputationOrder implements ClaimRule {
+    static final class ComputationOrder extends ClaimFamily {
 
-        @Override
-        public String id() {
-            return "computation-order";
-        }
-
-        @Override
-        public String statement() {
-            return "Section VII: the computational requirements of the tasks follow Fig. 7's order: planner, occupancy, "
-                    + "waypoint, obstacle";
+        ComputationOrder() {
+            super("computation-order",
+                    "Section VII: the computational requirements of the tasks follow Fig. 7's order: planner, occupancy, "
+                    + "waypoint, obstacle");
         }
 
         @Override

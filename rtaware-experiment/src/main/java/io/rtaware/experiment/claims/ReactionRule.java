@@ -18,18 +18,11 @@ import java.util.Optional;
  * run collided. Checked per course and top speed. Where the rule finds no safe period it names no
  * bound to check, and is not evaluated.
  */
-final class ReactionRule implements ClaimRule {
+final class ReactionRule extends ClaimFamily {
 
-    static final String ID = "reaction-rule-bound";
-
-    @Override
-    public String id() {
-        return ID;
-    }
-
-    @Override
-    public String statement() {
-        return "rtaware's reaction rule (the period advice): collisions begin near its largest safe period";
+    ReactionRule() {
+        super("reaction-rule-bound", "rtaware's reaction rule (the period advice): collisions begin near its largest "
+                + "safe period");
     }
 
     @Override

@@ -71,16 +71,11 @@ final class SweepClaims {
     }
 
     /** "If LASEROBSTACLEAVOIDANCE is run at too fast a period then it may cause the robot to hit an obstacle." */
-    static final class AvoiderTooFast implements ClaimRule {
+    static final class AvoiderTooFast extends ClaimFamily {
 
-        @Override
-        public String id() {
-            return "avoider-too-fast-hits";
-        }
-
-        @Override
-        public String statement() {
-            return "Section V: an obstacle avoider run too fast (5 ms or less) makes the robot hit obstacles";
+        AvoiderTooFast() {
+            super("avoider-too-fast-hits",
+                    "Section V: an obstacle avoider run too fast (5 ms or less) makes the robot hit obstacles");
         }
 
         @Override
@@ -128,20 +123,15 @@ final class SweepClaims {
      * "The sampling rate needs to be at least two times the fastest input signal ... any behavior that
      * depends upon the laser information should have a period of at most 50 ms."
      */
-    static final class SamplingAdvice implements ClaimRule {
+    static final class SamplingAdvice extends ClaimFamily {
 
         /** The paper's bound for the tasks that read the 10 Hz laser, ms. */
         static final long LASER_BOUND_MS = 50;
 
-        @Override
-        public String id() {
-            return "sampling-rate-advice";
-        }
-
-        @Override
-        public String statement() {
-            return "Section VII: a task that reads the 10 Hz laser (avoider, occupancy grid) should run at a period of at "
-                    + "most 50 ms, twice the laser's rate";
+        SamplingAdvice() {
+            super("sampling-rate-advice",
+                    "Section VII: a task that reads the 10 Hz laser (avoider, occupancy grid) should run at a period of at "
+                    + "most 50 ms, twice the laser's rate");
         }
 
         @Override
@@ -198,17 +188,12 @@ final class SweepClaims {
      * "This suggests that available resources may be increased by slowing down the
      * DIJKSTRAPATHPLANNER": the planner can run slower than 100 ms without costing the robot.
      */
-    static final class PlannerCanSlow implements ClaimRule {
+    static final class PlannerCanSlow extends ClaimFamily {
 
-        @Override
-        public String id() {
-            return "planner-can-slow";
-        }
-
-        @Override
-        public String statement() {
-            return "Section VII: the path planner can be slowed (beyond 100 ms) to free resources without costing the "
-                    + "robot its course";
+        PlannerCanSlow() {
+            super("planner-can-slow",
+                    "Section VII: the path planner can be slowed (beyond 100 ms) to free resources without costing the "
+                    + "robot its course");
         }
 
         @Override

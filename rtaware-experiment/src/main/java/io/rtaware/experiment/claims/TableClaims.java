@@ -24,17 +24,12 @@ final class TableClaims {
     }
 
     /** "The total run times from Sets 1 and 4 were statistically different as well as Sets 1 and 5." */
-    static final class Set1Faster implements ClaimRule {
+    static final class Set1Faster extends ClaimFamily {
 
-        @Override
-        public String id() {
-            return "table1-set1-faster";
-        }
-
-        @Override
-        public String statement() {
-            return "Table I t-tests: the run times of Sets 1 and 4, and of Sets 1 and 5, are statistically different "
-                    + "(Set 1 faster)";
+        Set1Faster() {
+            super("table1-set1-faster",
+                    "Table I t-tests: the run times of Sets 1 and 4, and of Sets 1 and 5, are statistically different "
+                    + "(Set 1 faster)");
         }
 
         @Override
@@ -65,17 +60,12 @@ final class TableClaims {
     }
 
     /** "Sets 2 and 4, Sets 3 and 4, and Sets 4 and 5 had confidence intervals of 82%, 85% and 79%." */
-    static final class OnTheVerge implements ClaimRule {
+    static final class OnTheVerge extends ClaimFamily {
 
-        @Override
-        public String id() {
-            return "table1-verge";
-        }
-
-        @Override
-        public String statement() {
-            return "Table I t-tests: the run times of Sets 2 and 4, 3 and 4, and 4 and 5 are on the verge of significance "
-                    + "(confidence 82%, 85%, 79%)";
+        OnTheVerge() {
+            super("table1-verge",
+                    "Table I t-tests: the run times of Sets 2 and 4, 3 and 4, and 4 and 5 are on the verge of significance "
+                    + "(confidence 82%, 85%, 79%)");
         }
 
         @Override
@@ -105,16 +95,11 @@ final class TableClaims {
     }
 
     /** "The t-test results for distance from the finish show that the data sets were not statistically different." */
-    static final class DistancesAlike implements ClaimRule {
+    static final class DistancesAlike extends ClaimFamily {
 
-        @Override
-        public String id() {
-            return "table2-no-difference";
-        }
-
-        @Override
-        public String statement() {
-            return "Table II t-tests: the distances to the finish of no two sets are statistically different";
+        DistancesAlike() {
+            super("table2-no-difference",
+                    "Table II t-tests: the distances to the finish of no two sets are statistically different");
         }
 
         @Override
@@ -184,16 +169,11 @@ final class TableClaims {
     }
 
     /** "Although Set 3 has the fastest average run time, it also has the highest standard deviation." */
-    static final class Set3FastestWidest implements ClaimRule {
+    static final class Set3FastestWidest extends ClaimFamily {
 
-        @Override
-        public String id() {
-            return "table1-set3-fastest-widest";
-        }
-
-        @Override
-        public String statement() {
-            return "Table I: Set 3 has the fastest mean run time and the highest standard deviation";
+        Set3FastestWidest() {
+            super("table1-set3-fastest-widest",
+                    "Table I: Set 3 has the fastest mean run time and the highest standard deviation");
         }
 
         @Override
@@ -232,16 +212,11 @@ final class TableClaims {
     }
 
     /** "The run time values and distance from the finish position are almost identical (Tables I - II)." */
-    static final class AlmostIdentical implements ClaimRule {
+    static final class AlmostIdentical extends ClaimFamily {
 
-        @Override
-        public String id() {
-            return "tables-almost-identical";
-        }
-
-        @Override
-        public String statement() {
-            return "Tables I and II: run times and distances to the finish are almost identical across sets";
+        AlmostIdentical() {
+            super("tables-almost-identical",
+                    "Tables I and II: run times and distances to the finish are almost identical across sets");
         }
 
         @Override
@@ -269,16 +244,11 @@ final class TableClaims {
     }
 
     /** "The standard deviation for Sets 2 and 3 are almost double of Sets 1, 4 and 5." */
-    static final class SpreadTwice implements ClaimRule {
+    static final class SpreadTwice extends ClaimFamily {
 
-        @Override
-        public String id() {
-            return "table1-spread-twice";
-        }
-
-        @Override
-        public String statement() {
-            return "Table I: Sets 2 and 3 have about twice the run-time spread (standard deviation) of Sets 1, 4 and 5";
+        SpreadTwice() {
+            super("table1-spread-twice",
+                    "Table I: Sets 2 and 3 have about twice the run-time spread (standard deviation) of Sets 1, 4 and 5");
         }
 
         @Override
