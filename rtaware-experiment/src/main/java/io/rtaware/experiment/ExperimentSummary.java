@@ -2,6 +2,10 @@ package io.rtaware.experiment;
 
 import com.fasterxml.jackson.annotation.JsonIgnore;
 import com.fasterxml.jackson.annotation.JsonProperty;
+import io.rtaware.experiment.claims.Claim;
+import io.rtaware.experiment.claims.NotEvaluated;
+import io.rtaware.experiment.claims.PaperClaims;
+import io.rtaware.experiment.claims.RuleVerdict;
 import io.rtaware.experiment.stats.RateInterval;
 import io.rtaware.experiment.stats.SampleStats;
 import io.rtaware.experiment.stats.WelchTest;
@@ -31,12 +35,15 @@ import java.util.TreeMap;
  *     {@link SetSummary#sweptPeriodMs()})
  * @param claims the paper's claims with a verdict computed from these results ({@link PaperClaims})
  * @param claimsNotEvaluated the paper's claims these results cannot decide, with the reason
+ * @param rules rtaware's own rules (not the paper's) checked by these results, or not evaluated with
+ *     the reason ({@link RuleVerdict})
  * @param conditions the machine during the runs: how many were quiet, busy or disturbed, which are used, and the spread
  */
 public record ExperimentSummary(String schema, ExperimentProfile profile, List<SetSummary> sets,
                                 Map<String, List<PairTest>> tTests, PaperReference.Published paper,
-                                List<String> sweptTasks, List<PaperClaims.Claim> claims,
-                                List<PaperClaims.NotEvaluated> claimsNotEvaluated, ExperimentConditions conditions) {
+                                List<String> sweptTasks, List<Claim> claims,
+                                List<NotEvaluated> claimsNotEvaluated, List<RuleVerdict> rules,
+                                ExperimentConditions conditions) {
 
     /** The schema identifier of {@code summary.json}. */
     public static final String SCHEMA = "rtaware.experiment/1";
@@ -171,13 +178,39 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
      * @param rows the runs to summarize (the quiet ones, unless busy runs are included)
      * @param profile the experiment's profile
      * @param conditions the machine over all runs, and which are used
-     * @return the summary of those runs
+     * @return the summary of those runs, its claims judged on them alone
      */
     public static ExperimentSummary of(List<RunResult> rows, ExperimentProfile profile, ExperimentConditions conditions) {
+        return of(rows, rows, profile, conditions);
+    }
+
+    /**
+     * @param rows the runs to summarize (the quiet ones, unless busy runs are included)
+     * @param all every run of the experiment, on which each claim is judged again
+     *     ({@link Claim#verdictAllRuns()}, {@link Claim#fragile()})
+     * @param profile the experiment's profile
+     * @param conditions the machine over all runs, and which are used
+     * @return the summary of those runs
+     */
+    public static ExperimentSummary of(List<RunResult> rows, List<RunResult> all, ExperimentProfile profile,
+                                       ExperimentConditions conditions) {
+        List<String> swept = sweptTasks(bySet(rows).values().stream().map(r -> r.get(0).periods()).toList());
+        PaperClaims.Results used = results(rows, swept);
+        PaperClaims.Verdicts verdicts = PaperClaims.evaluate(used, all.equals(rows) ? used : results(all, swept),
+                profile.scenario());
+        return new ExperimentSummary(SCHEMA, profile, used.sets(), used.tests(), PaperReference.published(), swept,
+                verdicts.claims(), verdicts.notEvaluated(), verdicts.rules(), conditions);
+    }
+
+    private static Map<Integer, List<RunResult>> bySet(List<RunResult> rows) {
         Map<Integer, List<RunResult>> bySet = new TreeMap<>();
         rows.forEach(r -> bySet.computeIfAbsent(r.set(), k -> new ArrayList<>()).add(r));
-        List<PeriodSet> periodSets = bySet.values().stream().map(r -> r.get(0).periods()).toList();
-        List<String> swept = sweptTasks(periodSets);
+        return bySet;
+    }
+
+    /** @return the sets of these runs summarized, with the Welch tests between every pair */
+    private static PaperClaims.Results results(List<RunResult> rows, List<String> swept) {
+        Map<Integer, List<RunResult>> bySet = bySet(rows);
         List<SetSummary> sets = new ArrayList<>();
         bySet.forEach((set, runs) -> sets.add(summarize(set, runs, sweptPeriod(runs.get(0).periods(), swept))));
         Map<String, List<PairTest>> tests = new LinkedHashMap<>();
@@ -194,9 +227,7 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
             }
             tests.put(quantity, pairs);
         }
-        PaperClaims.Verdicts verdicts = PaperClaims.evaluate(sets, tests, profile.scenario());
-        return new ExperimentSummary(SCHEMA, profile, sets, tests, PaperReference.published(), swept,
-                verdicts.claims(), verdicts.notEvaluated(), conditions);
+        return new PaperClaims.Results(sets, tests, rows);
     }
 
     /**

@@ -11,12 +11,13 @@ import io.rtaware.experiment.ExperimentSummary;
 import io.rtaware.experiment.ExperimentSummary.Misses;
 import io.rtaware.experiment.ExperimentSummary.PairTest;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
-import io.rtaware.experiment.PaperClaims;
 import io.rtaware.experiment.PaperReference.PaperSet;
 import io.rtaware.experiment.PeriodSet;
 import io.rtaware.experiment.ResultsCsv;
 import io.rtaware.experiment.RunConditions;
 import io.rtaware.experiment.RunResult;
+import io.rtaware.experiment.claims.Claim;
+import io.rtaware.experiment.claims.PaperClaims;
 import io.rtaware.experiment.stats.SampleStats;
 import io.rtaware.experiment.stats.WelchTest;
 import java.io.IOException;
@@ -108,7 +109,7 @@ public final class ExperimentReport {
         // written after Ctrl-C, during shutdown.
         javax.imageio.ImageIO.setUseCache(false);
         ExperimentProfile profile = ExperimentProfile.read(dir).orElse(ExperimentProfile.fromResults(rows));
-        ExperimentSummary summary = ExperimentSummary.of(rows, profile, conditions);
+        ExperimentSummary summary = ExperimentSummary.of(rows, all, profile, conditions);
         ObjectMapper mapper = ReportDocument.mapper();
         OutputFiles.write(dir.resolve(SUMMARY_FILE), OutputFiles.text(mapper.writeValueAsString(summary) + "\n"));
 
@@ -285,19 +286,47 @@ public final class ExperimentReport {
                 + num(100 * PaperClaims.SAME_DISTANCE, 0) + "% (distance) of their mean. Table I/II claims use the sets "
                 + "whose periods are a paper set's, at the paper's top speed.");
         List<List<String>> rows = new ArrayList<>();
-        for (PaperClaims.Claim c : s.claims()) {
-            rows.add(List.of(c.claim(), "**" + c.verdict().json().replace('_', ' ') + "**", c.evidence(), c.rule()));
+        for (Claim c : s.claims()) {
+            rows.add(List.of(c.claim(), verdictCell(c.verdict().json(), c.caveats()), words(c.verdictAllRuns()),
+                    c.evidence(), c.rule()));
         }
+        b.text("Each claim is judged on the runs this report uses and again on all runs, busy ones included: a verdict "
+                + "that differs between the two is marked fragile (the choice of runs decides it), and one that rests on "
+                + "fewer than " + PaperClaims.SMALL_SAMPLE_RUNS + " runs in some set says so.");
         if (rows.isEmpty()) {
             b.text("No claim can be decided from these sets (see below).");
         } else {
-            b.table(List.of("claim", "verdict", "evidence", "rule"), rows);
+            b.table(List.of("claim", "verdict", "on all runs", "evidence", "rule"), rows);
         }
         if (!s.claimsNotEvaluated().isEmpty()) {
             b.text("Not evaluated (the data is not in this experiment):");
-            b.table(List.of("claim", "why not"), s.claimsNotEvaluated().stream()
-                    .map(n -> List.of(n.claim(), n.reason())).toList());
+            b.table(List.of("claim", "why not", "on all runs"), s.claimsNotEvaluated().stream()
+                    .map(n -> List.of(n.claim(), n.reason(), words(n.verdictAllRuns())
+                            + (n.fragile() ? " (fragile)" : ""))).toList());
         }
+        rules(b, s);
+    }
+
+    /** rtaware's own rules, apart from the paper's claims: none of them is the paper's. */
+    private static void rules(Blocks b, ExperimentSummary s) {
+        if (s.rules().isEmpty()) {
+            return;
+        }
+        b.heading(2, "rtaware's own rules");
+        b.text("These rules are rtaware's, not the paper's: the same runs check them. A rule holds when the runs agree "
+                + "with it, fails when they contradict it; a rule the runs cannot test is not evaluated, with the reason.");
+        b.table(List.of("rule", "verdict", "on all runs", "evidence", "how judged"), s.rules().stream()
+                .map(r -> List.of(r.rule(), verdictCell(r.verdict(), r.caveats()), words(r.verdictAllRuns()),
+                        r.evidence(), r.judgedBy())).toList());
+    }
+
+    /** @return e.g. {@code **mixed** (fragile: ...)}: the verdict in bold with its caveats */
+    private static String verdictCell(String verdict, String caveats) {
+        return "**" + words(verdict) + "**" + (caveats.isEmpty() ? "" : " (" + caveats + ")");
+    }
+
+    private static String words(String verdict) {
+        return verdict == null ? NA : verdict.replace('_', ' ');
     }
 
     private static void robot(Blocks b, ExperimentSummary s) {

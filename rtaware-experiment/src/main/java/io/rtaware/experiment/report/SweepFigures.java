@@ -2,8 +2,8 @@ package io.rtaware.experiment.report;
 
 import io.rtaware.experiment.ExperimentSummary;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
-import io.rtaware.experiment.PaperClaims;
 import io.rtaware.experiment.PeriodSet;
+import io.rtaware.experiment.claims.PaperClaims;
 import io.rtaware.experiment.stats.RateInterval;
 import io.rtaware.experiment.stats.SampleStats;
 import java.awt.BasicStroke;

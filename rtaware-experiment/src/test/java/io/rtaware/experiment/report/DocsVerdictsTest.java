@@ -19,8 +19,9 @@ import org.junit.jupiter.api.Test;
 
 /**
  * Every verdict the docs state about a claim of the paper, in the form
- * {@code claim `FOLDER/ID`: VERDICT} (as {@link ResultsMarkdown} writes it, and as README.md and
- * docs/ quote it), is the verdict in {@code docs/experiment/FOLDER/summary.json}. A verdict
+ * {@code claim `FOLDER/ID`: VERDICT}, or about one of rtaware's own rules, {@code rule `FOLDER/ID`:
+ * VERDICT} (as {@link ResultsMarkdown} writes them, and as README.md and docs/ quote them), is the
+ * verdict in {@code docs/experiment/FOLDER/summary.json}. A verdict
  * written by hand that the results do not give, or results regenerated without the docs, fail
  * here.
  */
@@ -28,8 +29,8 @@ class DocsVerdictsTest {
 
     /** The greppable form of a verdict statement in the docs. */
     static final Pattern STATEMENT = Pattern.compile(
-            "claim `([A-Za-z0-9_.-]+)/([A-Za-z0-9_.@-]+)`: \\**(reproduced|not_reproduced|mixed|inconclusive|not_comparable"
-                    + "|not_evaluated)\\b");
+            "(?:claim|rule) `([A-Za-z0-9_.-]+)/([A-Za-z0-9_.@-]+)`: \\**(reproduced|not_reproduced|mixed|inconclusive"
+                    + "|not_comparable|not_evaluated|holds|fails)\\b");
 
     private static final Path ROOT = Path.of("..").toAbsolutePath().normalize();
 
@@ -70,6 +71,8 @@ class DocsVerdictsTest {
     void theFormMatchesWhatResultsMarkdownWrites() {
         assertTrue(STATEMENT.matcher("- claim `paper-profile/slow-hits@0.5mps`: not_reproduced. Paper: ...").find());
         assertTrue(STATEMENT.matcher("the Set 1 claim is claim `paper-profile/table1-set1-faster`: **mixed**").find());
+        assertTrue(STATEMENT.matcher("- rule `office-obstacle/reaction-rule-bound-on-office`: not_evaluated. Rule: ...")
+                .find());
     }
 
     /** @return claim id to verdict, from a folder's summary.json (not evaluated ones as {@code not_evaluated}) */
@@ -83,6 +86,7 @@ class DocsVerdictsTest {
             JsonNode root = new ObjectMapper().readTree(file.toFile());
             root.path("claims").forEach(c -> out.put(c.path("id").asText(), c.path("verdict").asText()));
             root.path("claims_not_evaluated").forEach(c -> out.put(c.path("id").asText(), ResultsMarkdown.NOT_EVALUATED));
+            root.path("rules").forEach(r -> out.put(r.path("id").asText(), r.path("verdict").asText()));
         } catch (IOException e) {
             throw new java.io.UncheckedIOException(e);
         }
