@@ -1,5 +1,7 @@
 package io.rtaware.experiment.claims;
 
+import java.util.List;
+
 /**
  * One claim with its verdict, judged on the runs the summary uses (the quiet ones, unless busy
  * runs are included) and again on all runs, so that leaving runs out cannot change a verdict
@@ -22,9 +24,18 @@ package io.rtaware.experiment.claims;
  * @param family the id of the claim's family, without the scope
  * @param judgedOn the conditions the claim was judged on (course, top speed, swept tasks), by which
  *     verdicts of different experiments under the same conditions are compared
+ * @param cells the sets the verdict rests on, each as its periods in task order and its top speed
+ *     (e.g. {@code 200/300/500/800 ms at 0.4 m/s}): two experiments contradict each other only where
+ *     they judged a claim on a set they share
  */
 public record Claim(String id, String claim, Verdict verdict, String evidence, String rule, String verdictAllRuns,
-                    boolean fragile, Integer fewestRunsPerCell, boolean smallSample, String family, String judgedOn) {
+                    boolean fragile, Integer fewestRunsPerCell, boolean smallSample, String family, String judgedOn,
+                    List<String> cells) {
+
+    /** Keeps an unmodifiable copy of the cells. */
+    public Claim {
+        cells = List.copyOf(cells);
+    }
 
     /**
      * @param allRuns the verdict on all runs ({@link Verdict#json()} or {@code not_evaluated})
@@ -32,7 +43,7 @@ public record Claim(String id, String claim, Verdict verdict, String evidence, S
      */
     Claim onAllRuns(String allRuns) {
         return new Claim(id, claim, verdict, evidence, rule, allRuns, !verdict.json().equals(allRuns), fewestRunsPerCell,
-                smallSample, family, judgedOn);
+                smallSample, family, judgedOn, cells);
     }
 
     /** @return the caveats of the verdict in words, e.g. {@code fragile: on all runs mixed}; empty when none */

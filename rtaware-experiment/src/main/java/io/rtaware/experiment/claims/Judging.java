@@ -87,7 +87,8 @@ final class Judging {
                 ToIntFunction<SetSummary> perCell) {
         Integer fewest = cells.isEmpty() ? null : cells.stream().mapToInt(perCell).min().orElseThrow();
         claims.add(new Claim(rule.id() + scope.idSuffix(), rule.statement() + scope.words(), verdict, evidence, how, null,
-                false, fewest, fewest != null && fewest < PaperClaims.SMALL_SAMPLE_RUNS, rule.id(), conditions(cells)));
+                false, fewest, fewest != null && fewest < PaperClaims.SMALL_SAMPLE_RUNS, rule.id(), conditions(cells),
+                cells.stream().map(Judging::cell).distinct().toList()));
     }
 
     void unjudged(ClaimRule rule, Scope scope, String reason) {
@@ -112,6 +113,12 @@ final class Judging {
     /** @return the world seed of a run (run j of every set shares seed j in the blocked design) */
     static long worldSeed(RunResult r) {
         return r.conditions().seedOf(r.run());
+    }
+
+    /** @return e.g. {@code 200/300/500/800 ms at 0.4 m/s}: a set as its periods in task order and its top speed */
+    static String cell(SetSummary set) {
+        return String.join("/", PeriodSet.TASKS.stream().map(t -> String.valueOf(set.periodsMs().get(t))).toList())
+                + " ms at " + speedLabel(set.topSpeedMps());
     }
 
     /** @return e.g. {@code office at 0.4 m/s, swept: obstacle}: the conditions shared by experiments that agree */

@@ -132,7 +132,8 @@ public final class ResultsMarkdown {
 
     /**
      * @return the other experiments that judged the same claim under the same conditions (course,
-     *     top speed, swept tasks) and came to another verdict, in words; empty when none did
+     *     top speed, swept tasks) on at least one set of the same periods, and came to another
+     *     verdict, in words; empty when none did
      */
     private static String disagreeing(Folder here, Claim c, List<Folder> folders) {
         List<String> others = new ArrayList<>();
@@ -142,7 +143,7 @@ public final class ResultsMarkdown {
             }
             f.summary().claims().stream()
                     .filter(o -> o.family().equals(c.family()) && o.judgedOn().equals(c.judgedOn())
-                            && o.verdict() != c.verdict())
+                            && o.verdict() != c.verdict() && o.cells().stream().anyMatch(c.cells()::contains))
                     .forEach(o -> others.add(f.name() + "/" + o.id() + " says " + o.verdict().json()));
         }
         return others.isEmpty() ? "" : " **Contradicted** under the same conditions (" + c.judgedOn() + ") by "

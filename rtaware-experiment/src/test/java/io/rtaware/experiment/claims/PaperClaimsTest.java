@@ -431,6 +431,35 @@ class PaperClaimsTest {
         assertTrue(!misses.contains("Contradicted"), "the same verdict in both: " + misses);
     }
 
+    /**
+     * Two experiments on the same course, speed and swept tasks whose verdicts rest on sets of
+     * different periods do not contradict each other (paper-profile's five sets against
+     * sweep-all's were marked contradicted on fig7-planner-most before).
+     */
+    @Test
+    void experimentsThatShareNoSetDoNotContradictEachOther() {
+        List<PeriodSet> sweep = ExperimentSets.resolve("sweep-obstacle");
+        List<PeriodSet> fiveAnd200 = sweep.stream().filter(set -> List.of(5L, 200L).contains(set.periodsMs().get("obstacle")))
+                .toList();
+        List<PeriodSet> tenAnd400 = sweep.stream().filter(set -> List.of(10L, 400L).contains(set.periodsMs().get("obstacle")))
+                .toList();
+        ExperimentSummary hits = summary(rows(fiveAnd200, 2, (s, p, r) -> p > 100
+                ? new Object[] {"stuck", 120.0, 3.0, 1} : completed(230), FALLING));
+        ExperimentSummary clean = summary(rows(tenAnd400, 2, (s, p, r) -> completed(230), FALLING));
+        Claim a = claim(hits, "slow-hits");
+        Claim b = claim(clean, "slow-hits");
+        assertEquals(a.judgedOn(), b.judgedOn(), "the same course, speed and swept task");
+        assertEquals(Verdict.REPRODUCED, a.verdict());
+        assertEquals(Verdict.NOT_REPRODUCED, b.verdict());
+        assertEquals(2, a.cells().size(), a.cells().toString());
+        assertTrue(a.cells().stream().noneMatch(b.cells()::contains), a.cells() + " against " + b.cells());
+        String md = io.rtaware.experiment.report.ResultsMarkdown.render(List.of(
+                new io.rtaware.experiment.report.ResultsMarkdown.Folder("a", hits),
+                new io.rtaware.experiment.report.ResultsMarkdown.Folder("b", clean)), "test");
+        String lineA = md.lines().filter(l -> l.startsWith("- claim `a/slow-hits`")).findFirst().orElseThrow();
+        assertTrue(!lineA.contains("Contradicted"), "no set in common: " + lineA);
+    }
+
     /** The ids docs quote verdicts by, and the closing note of issue 35 names: they never change. */
     @Test
     void theIdsOfTheClaimFamiliesAndRulesAreStable() {
