@@ -219,6 +219,42 @@ class DdsEndToEndTest {
     }
 
     /**
+     * Issue 38: a robot whose {@code rt/scan} carries another type than LaserScan. DDS matches no
+     * reader to a writer of another type (or the bridge routes the type it saw first, whose samples
+     * do not decode); either way the run says so in one line while it goes on, a warning on
+     * stderr, and as a notice in the report.
+     */
+    @Test
+    @Requires(DdsBridgeBuilt.class)
+    void aRobotPublishingItsScanAsAnotherTypeIsToldInOneLine() throws Exception {
+        Path script = peerScript();
+        Path out = dir.resolve("wrong-type");
+        ByteArrayOutputStream stderr = new ByteArrayOutputStream();
+        Process robot = peer(script, "twist-on", "--domain", "53", "--topic", "scan");
+        PrintStream savedErr = System.err;
+        try (BufferedReader robotOut = new BufferedReader(new InputStreamReader(robot.getInputStream(),
+                StandardCharsets.UTF_8))) {
+            assertEquals("ready", robotOut.readLine(), "the Cyclone DDS robot started");
+            System.setErr(new PrintStream(stderr, true, StandardCharsets.UTF_8));
+            quietly("run", "--ros2", "--dds", "--domain", "53", "--scenario", shortLeg(), "--time-scale", "1", "--out",
+                    out.toString(), "--quiet");
+        } finally {
+            System.setErr(savedErr);
+            robot.getOutputStream().close();
+            if (!robot.waitFor(20, TimeUnit.SECONDS)) {
+                robot.destroyForcibly();
+            }
+        }
+        String err = stderr.toString(StandardCharsets.UTF_8);
+        String told = "rt/scan is published as geometry_msgs/msg/Twist, rtaware expects sensor_msgs/msg/LaserScan: "
+                + "none of its samples can be read";
+        assertEquals(1, err.lines().filter(l -> l.equals("ros2: " + told)).count(), "one warning while it ran: " + err);
+        JsonNode ros2 = JSON.readTree(out.resolve("report.json").toFile()).path("ros2");
+        assertTrue(ros2.path("notices").toString().contains(told), "the report's notices: " + ros2);
+        assertEquals(0, ros2.path("scans").asLong(), "no scan: " + ros2);
+    }
+
+    /**
      * Runs {@code bench --tasks 2 --export --dds} on domain 0 for 12 s and the Cyclone DDS node in
      * {@code mode} beside it for 9 s.
      *
