@@ -60,10 +60,10 @@ import org.HdrHistogram.Histogram;
  * followed one), the others' samples dropped and counted; and a source's clock that restarts or
  * jumps is followed as a new epoch ({@link SampleValidator}). Each such event is reported once as
  * one line in {@link #notices()}. An input topic that has given no usable sample is looked up in
- * the ROS graph every {@value #TYPE_CHECK_INTERVAL_NS} ns of world time: published with another
- * type, it can give none (DDS and rmw_zenoh match by type), which is said at once in one line, a
- * notice and a warning of the library log ({@code rt/scan is published as ..., rtaware expects
- * sensor_msgs/msg/LaserScan ...}).
+ * the ROS graph every {@value #TYPE_CHECK_INTERVAL_NS} ns of world time ({@link Ros2Context#publishedTypes}):
+ * published only as other types, it can give none (DDS and rmw_zenoh match by type), which is said
+ * at once in one line, a notice and a warning of the library log ({@code rt/scan is published as
+ * ..., rtaware expects sensor_msgs/msg/LaserScan ...}).
  *
  * <p>{@link #terminate} publishes a zero Twist first, then closes the session. Called by one
  * thread at a time, as every task; {@link #stats()} and {@link #latencySnapshot()} may be called
