@@ -21,6 +21,11 @@ discovery on 127.0.0.1 (ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST). rtaware's test
       one second); prints one JSON line: messages, the metrics seen per source, the windows seen,
       and the first message of each source and metric as `ros2 topic echo` would show it.
 
+  twist-on --domain D --topic NAME
+      A robot that publishes its NAME topic (scan, say) with the wrong type: a zero Twist on
+      rt/NAME at 10 Hz until stdin closes. Prints "ready" once its writer exists and, when stdin
+      closes, one JSON line: the Twists written.
+
   relay --from A --to B [--restamp] [--nan-odom-after S]
       A Cyclone DDS robot made of the simulator on domain A: scans and odometry from A are
       written again on B (with --restamp, stamped with this machine's clock as a driver stamps
@@ -354,6 +359,20 @@ def statistics(args):
     return 1 if seen["failures"] else 0
 
 
+def twist_on(args):
+    node = Node(args.domain, "dds_peer_wrong_type")
+    out = node.writer(args.topic, Twist, SENSOR_DATA)
+    stop = threading.Event()
+    threading.Thread(target=lambda: (sys.stdin.read(), stop.set()), daemon=True).start()
+    print("ready", flush=True)
+    written = 0
+    while not stop.wait(0.1):
+        out.write(twist(0.0, 0.0))
+        written += 1
+    print(json.dumps({"twists": written}), flush=True)
+    return 0
+
+
 def now_stamp():
     ns = time.time_ns()
     return Time(sec=ns // 1_000_000_000, nanosec=ns % 1_000_000_000)
@@ -415,13 +434,17 @@ def main():
     s = sub.add_parser("statistics")
     s.add_argument("--domain", type=int, required=True)
     s.add_argument("--seconds", type=float, default=10.0)
+    t = sub.add_parser("twist-on")
+    t.add_argument("--domain", type=int, required=True)
+    t.add_argument("--topic", required=True)
     r = sub.add_parser("relay")
     r.add_argument("--from", type=int, required=True)
     r.add_argument("--to", type=int, required=True)
     r.add_argument("--restamp", action="store_true")
     r.add_argument("--nan-odom-after", type=float)
     args = parser.parse_args()
-    sys.exit({"drive": drive, "diagnostics": diagnostics, "statistics": statistics, "relay": relay}[args.mode](args))
+    sys.exit({"drive": drive, "diagnostics": diagnostics, "statistics": statistics, "twist-on": twist_on,
+              "relay": relay}[args.mode](args))
 
 
 if __name__ == "__main__":

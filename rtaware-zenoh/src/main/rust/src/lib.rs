@@ -392,6 +392,47 @@ pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_livelinessGet(
     })
 }
 
+/// A query (`session.get`) on `selector`: the replies that arrive within the timeout, each as its key
+/// followed by its payload read as UTF-8 (invalid bytes replaced), flattened into one array
+/// (`key0, text0, key1, text1, ...`); error replies are left out. At most `max_replies`, and no
+/// reply's payload above `max_reply_bytes` (what an admin space answers is a little JSON).
+#[unsafe(no_mangle)]
+pub extern "system" fn Java_io_rtaware_zenoh_NativeZenoh_get(
+    mut env: JNIEnv,
+    _class: JClass,
+    session: jlong,
+    selector: JString,
+    timeout_ms: jlong,
+    max_replies: jint,
+    max_reply_bytes: jint,
+) -> jobjectArray {
+    guarded(&mut env, std::ptr::null_mut(), |env| {
+        let session = HANDLES.get::<Session>(session, "session")?;
+        let selector = java_string(env, &selector)?;
+        let replies = session
+            .get(key_expr(selector.clone())?)
+            .timeout(Duration::from_millis(timeout_ms.max(0) as u64))
+            .wait()
+            .map_err(|e| format!("query: {e}"))?;
+        let max_bytes = max_reply_bytes.max(0) as usize;
+        let samples = at_most(
+            max_replies.max(0) as usize,
+            std::iter::from_fn(|| replies.recv().ok()).filter_map(|reply| reply.into_result().ok()),
+        )
+        .map_err(|max| format!("more than {max} replies to '{selector}'"))?;
+        let mut flat = Vec::with_capacity(samples.len() * 2);
+        for sample in samples {
+            let length = sample.payload().len();
+            if length > max_bytes {
+                return Err(format!("a reply of {length} bytes to '{selector}' exceeds the largest accepted ({max_bytes})"));
+            }
+            flat.push(sample.key_expr().as_str().to_string());
+            flat.push(String::from_utf8_lossy(&sample.payload().to_bytes()).into_owned());
+        }
+        string_array(env, &flat)
+    })
+}
+
 /// The items of `items`, or `Err(max)` as soon as there are more than `max` (the rest is not read).
 fn at_most<T>(max: usize, items: impl Iterator<Item = T>) -> Result<Vec<T>, usize> {
     let mut out = Vec::new();

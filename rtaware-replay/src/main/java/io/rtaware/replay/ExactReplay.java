@@ -3,6 +3,7 @@ package io.rtaware.replay;
 import io.rtaware.core.data.Key;
 import io.rtaware.core.data.StateValue;
 import io.rtaware.core.monitor.MonitorListener;
+import io.rtaware.core.monitor.TaskDeclaration;
 import io.rtaware.core.monitor.TaskInfo;
 import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.testing.TaskHarness;
@@ -92,15 +93,15 @@ public final class ExactReplay {
      */
     public static TaskResult replay(Recording recording, Supplier<List<TaskSpec>> controller, String task)
             throws IOException {
-        TaskKeys keys = TaskKeys.of(find(controller.get(), task));
+        TaskDeclaration declared = TaskDeclaration.of(find(controller.get(), task));
         TaskSpec spec = find(controller.get(), task);
         Recording.TaskTimeline timeline = recording.tasks().get(task);
-        List<String> inputNames = keys.inputs().stream().map(Key::name).toList();
+        List<String> inputNames = declared.inputs().stream().map(in -> in.key().name()).toList();
         if (!inputNames.equals(timeline.inputs())) {
             throw new IOException("task '" + task + "' reads " + inputNames + " but its recorded cycles read "
                     + timeline.inputs() + ": the recording was made by another controller");
         }
-        return new Run(recording, keys, spec, timeline).replay();
+        return new Run(recording, declared, spec, timeline).replay();
     }
 
     private static TaskSpec find(List<TaskSpec> specs, String task) {
@@ -132,22 +133,23 @@ public final class ExactReplay {
         NotReplayable firstNotReplayable;
         long inputsMoved;
 
-        Run(Recording recording, TaskKeys keys, TaskSpec spec, Recording.TaskTimeline timeline) throws IOException {
+        Run(Recording recording, TaskDeclaration declared, TaskSpec spec, Recording.TaskTimeline timeline)
+                throws IOException {
             this.recording = recording;
             this.spec = spec;
             this.timeline = timeline;
-            inputs = new Port<?>[keys.inputs().size()];
+            inputs = new Port<?>[declared.inputs().size()];
             long startNs = 0;
             for (int i = 0; i < inputs.length; i++) {
-                inputs[i] = port(keys.inputs().get(i), true);
+                inputs[i] = port(declared.inputs().get(i).key(), true);
                 List<Recording.Commit> commits = inputs[i].channel.commits();
                 if (!commits.isEmpty()) {
                     startNs = Math.min(startNs, commits.get(0).timeNs());
                 }
             }
-            outputs = new Port<?>[keys.outputs().size()];
+            outputs = new Port<?>[declared.outputs().size()];
             for (int i = 0; i < outputs.length; i++) {
-                outputs[i] = port(keys.outputs().get(i), false);
+                outputs[i] = port(declared.outputs().get(i), false);
             }
             due = new Port<?>[inputs.length];
             if (!timeline.cycles().isEmpty()) {

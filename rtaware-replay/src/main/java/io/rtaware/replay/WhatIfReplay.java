@@ -5,6 +5,7 @@ import io.rtaware.core.data.Output;
 import io.rtaware.core.data.StateValue;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.StepExecutor;
+import io.rtaware.core.monitor.TaskDeclaration;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.task.Schedule;
@@ -63,9 +64,9 @@ public final class WhatIfReplay {
         Set<Key<?>> consumed = new LinkedHashSet<>();
         Set<String> controllerNames = new LinkedHashSet<>();
         for (TaskSpec spec : probeTasks) {
-            TaskKeys keys = TaskKeys.of(spec);
-            keys.outputs().forEach(k -> produced.add(k.name()));
-            consumed.addAll(keys.inputs());
+            TaskDeclaration declared = TaskDeclaration.of(spec);
+            declared.outputs().forEach(k -> produced.add(k.name()));
+            declared.inputs().forEach(in -> consumed.add(in.key()));
             controllerNames.add(spec.name());
         }
         List<Feed<?>> feeds = new ArrayList<>();

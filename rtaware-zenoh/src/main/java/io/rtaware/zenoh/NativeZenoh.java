@@ -46,4 +46,7 @@ final class NativeZenoh {
     static native void undeclareToken(long token) throws ZenohException;
 
     static native String[] livelinessGet(long session, String key, long timeoutMs, int maxKeys) throws ZenohException;
+
+    static native String[] get(long session, String selector, long timeoutMs, int maxReplies, int maxReplyBytes)
+            throws ZenohException;
 }

@@ -145,6 +145,47 @@ public final class ZenohSession implements AutoCloseable {
         return List.of(NativeZenoh.livelinessGet(h, keyPattern, timeoutMs, maxKeys));
     }
 
+    /**
+     * One reply to a query.
+     *
+     * @param key the key it answers for
+     * @param text its payload read as UTF-8 (bytes that are not UTF-8 replaced)
+     */
+    public record Reply(String key, String text) {
+    }
+
+    /**
+     * Asks the queryables whose key expressions match {@code selector} (an admin space, say) and
+     * collects their answers, bounded as {@link #livelinessKeys(String, long, int)} is: more than
+     * {@code maxReplies} replies, or one larger than {@code maxReplyBytes}, is an error, not an
+     * allocation without end. Replies that are errors are left out.
+     *
+     * @param selector a key expression, wildcards allowed
+     * @param timeoutMs how long to wait for the replies
+     * @param maxReplies the most replies taken (non-negative)
+     * @param maxReplyBytes the largest payload of one reply (non-negative)
+     * @return the replies, in the order they arrived
+     * @throws ZenohException if the selector is invalid, the session is closed, or the replies
+     *     break a bound (naming the selector)
+     * @throws IllegalArgumentException if a bound is negative
+     */
+    public List<Reply> get(String selector, long timeoutMs, int maxReplies, int maxReplyBytes) throws ZenohException {
+        if (maxReplies < 0 || maxReplyBytes < 0) {
+            throw new IllegalArgumentException("maxReplies " + maxReplies + " and maxReplyBytes " + maxReplyBytes
+                    + " must not be negative");
+        }
+        long h;
+        synchronized (lock) {
+            h = open();
+        }
+        String[] flat = NativeZenoh.get(h, selector, timeoutMs, maxReplies, maxReplyBytes);
+        List<Reply> replies = new ArrayList<>(flat.length / 2);
+        for (int i = 0; i + 1 < flat.length; i += 2) {
+            replies.add(new Reply(flat[i], flat[i + 1]));
+        }
+        return List.copyOf(replies);
+    }
+
     void forget(AutoCloseable declaration) {
         synchronized (lock) {
             owned.remove(declaration);

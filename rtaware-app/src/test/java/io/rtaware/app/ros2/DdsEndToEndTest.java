@@ -181,31 +181,26 @@ class DdsEndToEndTest {
     void aCycloneDdsRobotSendingNanPosesIsHaltedWithZeroVelocityAndTheRunEndsAsAnError() throws Exception {
         Path script = peerScript();
         Path out = dir.resolve("nan");
-        ByteArrayOutputStream stderr = new ByteArrayOutputStream();
         try (PlayerSimServer server = simulator(shortLeg(), 1);
              Ros2SimRobot robot = Ros2SimRobot.start(server, ddsContext(44), "/", line -> { })) {
             Process relay = peer(script, "relay", "--from", "44", "--to", "45", "--restamp", "--nan-odom-after", "4");
             JsonNode relayed;
-            int status;
-            PrintStream savedErr = System.err;
+            Captured run;
             try (BufferedReader relayOut = new BufferedReader(new InputStreamReader(relay.getInputStream(),
                     StandardCharsets.UTF_8))) {
                 assertEquals("ready", relayOut.readLine(), "the Cyclone DDS robot started");
-                System.setErr(new PrintStream(stderr, true, StandardCharsets.UTF_8));
-                status = quietly("run", "--ros2", "--dds", "--domain", "45", "--scenario", shortLeg(), "--time-scale",
+                run = withStderr("run", "--ros2", "--dds", "--domain", "45", "--scenario", shortLeg(), "--time-scale",
                         "1", "--out", out.toString(), "--quiet");
-                System.setErr(savedErr);
                 Thread.sleep(1000); // the last zero Twist crosses the bridge and DDS before the robot is asked
                 relay.getOutputStream().close();
                 relayed = JSON.readTree(relayOut.readLine());
             } finally {
-                System.setErr(savedErr);
                 if (!relay.waitFor(20, TimeUnit.SECONDS)) {
                     relay.destroyForcibly();
                 }
             }
-            String err = stderr.toString(StandardCharsets.UTF_8);
-            assertEquals(1, status, "stderr: " + err);
+            String err = run.err();
+            assertEquals(1, run.status(), "stderr: " + err);
             assertTrue(relayed.path("nan_odometry").asLong() > 0, "NaN poses were sent: " + relayed);
             assertEquals("[0.0,0.0]", relayed.path("last_command").toString(), "halted with a zero Twist: " + relayed);
             assertEquals(1, err.lines().filter(l -> l.contains("ROS 2 topic /odom sent only impossible samples")).count(),
@@ -216,6 +211,38 @@ class DdsEndToEndTest {
                     "re-stamped scans give the latency from their header stamps: " + ros2);
             assertTrue(robot.commands() > 0, "the simulator was driven before the halt");
         }
+    }
+
+    /**
+     * Issue 38: a robot whose {@code rt/scan} carries another type than LaserScan. DDS matches no
+     * reader to a writer of another type (or the bridge routes the type it saw first, whose samples
+     * do not decode); either way the run says so in one line while it goes on, a warning on
+     * stderr, and as a notice in the report.
+     */
+    @Test
+    @Requires(DdsBridgeBuilt.class)
+    void aRobotPublishingItsScanAsAnotherTypeIsToldInOneLine() throws Exception {
+        Path script = peerScript();
+        Path out = dir.resolve("wrong-type");
+        Process robot = peer(script, "twist-on", "--domain", "53", "--topic", "scan");
+        String err;
+        try (BufferedReader robotOut = new BufferedReader(new InputStreamReader(robot.getInputStream(),
+                StandardCharsets.UTF_8))) {
+            assertEquals("ready", robotOut.readLine(), "the Cyclone DDS robot started");
+            err = withStderr("run", "--ros2", "--dds", "--domain", "53", "--scenario", shortLeg(), "--time-scale", "1",
+                    "--out", out.toString(), "--quiet").err();
+        } finally {
+            robot.getOutputStream().close();
+            if (!robot.waitFor(20, TimeUnit.SECONDS)) {
+                robot.destroyForcibly();
+            }
+        }
+        String told = "rt/scan is published as geometry_msgs/msg/Twist, rtaware expects sensor_msgs/msg/LaserScan: "
+                + "none of its samples can be read";
+        assertEquals(1, err.lines().filter(l -> l.equals("ros2: " + told)).count(), "one warning while it ran: " + err);
+        JsonNode ros2 = JSON.readTree(out.resolve("report.json").toFile()).path("ros2");
+        assertTrue(ros2.path("notices").toString().contains(told), "the report's notices: " + ros2);
+        assertEquals(0, ros2.path("scans").asLong(), "no scan: " + ros2);
     }
 
     /**
@@ -331,6 +358,29 @@ class DdsEndToEndTest {
         assertTrue(p.waitFor(60, TimeUnit.SECONDS));
         assertEquals(2, p.exitValue(), output);
         return output.lines().filter(l -> !l.startsWith("[")).toList();
+    }
+
+    /**
+     * A command's exit status and standard error.
+     *
+     * @param status the exit status
+     * @param err what it wrote on standard error
+     */
+    private record Captured(int status, String err) {
+    }
+
+    /** Runs a command as {@link #quietly} does, keeping its standard error. */
+    private static Captured withStderr(String... args) {
+        ByteArrayOutputStream stderr = new ByteArrayOutputStream();
+        PrintStream saved = System.err;
+        int status;
+        try {
+            System.setErr(new PrintStream(stderr, true, StandardCharsets.UTF_8));
+            status = quietly(args);
+        } finally {
+            System.setErr(saved);
+        }
+        return new Captured(status, stderr.toString(StandardCharsets.UTF_8));
     }
 
     private static int quietly(String... args) {

@@ -30,10 +30,10 @@ final class GraphValidator {
      * @return the data graph, with every handle bound
      * @throws ConfigurationException listing every violation found
      */
-    static DataGraph validateAndBind(List<TaskDeclarations> tasks) {
+    static DataGraph validateAndBind(List<DeclaringSetup> tasks) {
         List<String> violations = new ArrayList<>();
         Map<String, Integer> seen = new LinkedHashMap<>();
-        for (TaskDeclarations task : tasks) {
+        for (DeclaringSetup task : tasks) {
             TaskSpec spec = task.spec;
             if (seen.merge(spec.name(), 1, Integer::sum) == 2) {
                 violations.add("task name '" + spec.name() + "' is used by more than one task; names must be unique");
@@ -46,12 +46,12 @@ final class GraphValidator {
         tasks.forEach(t -> violations.addAll(t.violations));
 
         // Declaration order: error messages list produced keys as the tasks declared them.
-        Map<String, TaskDeclarations> producerOf = new LinkedHashMap<>();
+        Map<String, DeclaringSetup> producerOf = new LinkedHashMap<>();
         Map<String, Key<?>> producedKey = new LinkedHashMap<>();
-        for (TaskDeclarations task : tasks) {
+        for (DeclaringSetup task : tasks) {
             for (OutputHandle<?> out : task.outputs) {
                 String key = out.key().name();
-                TaskDeclarations other = producerOf.get(key);
+                DeclaringSetup other = producerOf.get(key);
                 if (other == task) {
                     continue; // declared twice by one task: already reported by its declarations
                 }
@@ -65,7 +65,7 @@ final class GraphValidator {
             }
         }
         Map<String, List<String>> consumersOf = new TreeMap<>();
-        for (TaskDeclarations task : tasks) {
+        for (DeclaringSetup task : tasks) {
             for (InputHandle<?> in : task.inputs) {
                 String key = in.key().name();
                 Key<?> produced = producedKey.get(key);
@@ -92,7 +92,7 @@ final class GraphValidator {
             producers.put(entry.getKey(), producerOf.get(entry.getKey()).spec.name());
         }
         DataGraph graph = new DataGraph(variables, producers, consumersOf);
-        for (TaskDeclarations task : tasks) {
+        for (DeclaringSetup task : tasks) {
             for (OutputHandle<?> out : task.outputs) {
                 String key = out.key().name();
                 out.bind(graph.variable(key), graph.indexOf(key));

@@ -734,17 +734,9 @@ public final class Monitor {
          * @throws ConfigurationException listing every violation found
          */
         public Monitor build() {
-            List<TaskDeclarations> declared = new ArrayList<>();
+            List<DeclaringSetup> declared = new ArrayList<>();
             for (TaskSpec spec : specs) {
-                TaskDeclarations declarations = new TaskDeclarations(spec, clock);
-                try {
-                    spec.task().initialize(declarations);
-                } catch (Exception e) {
-                    declarations.violations.add(0, "task '" + spec.name() + "' failed to initialize: "
-                            + e.getClass().getSimpleName() + (e.getMessage() == null ? "" : ": " + e.getMessage()));
-                }
-                declarations.close();
-                declared.add(declarations);
+                declared.add(DeclaringSetup.initialize(spec, clock));
             }
             DataGraph graph = GraphValidator.validateAndBind(declared);
 
@@ -752,7 +744,7 @@ public final class Monitor {
                     errorHandler != null ? errorHandler : new RateLimitedErrorPrinter());
             ListenerFanOut events = new ListenerFanOut(faults);
             List<TaskRuntime> runtimes = new ArrayList<>();
-            for (TaskDeclarations declarations : declared) {
+            for (DeclaringSetup declarations : declared) {
                 TaskRuntime runtime = new TaskRuntime(declarations.spec, runtimes.size(), clock, events,
                         declarations.inputs.toArray(NO_INPUTS), declarations.outputs.toArray(NO_OUTPUTS));
                 if (adaptivePolicy != null) {
@@ -761,7 +753,7 @@ public final class Monitor {
                 runtimes.add(runtime);
             }
             Map<String, ReactionConstraint> reactions = new LinkedHashMap<>();
-            for (TaskDeclarations declarations : declared) {
+            for (DeclaringSetup declarations : declared) {
                 if (declarations.reaction() != null) {
                     reactions.put(declarations.spec.name(), declarations.reaction());
                 }

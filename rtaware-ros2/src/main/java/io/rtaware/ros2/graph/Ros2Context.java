@@ -4,9 +4,13 @@ import io.rtaware.zenoh.DdsBridge;
 import io.rtaware.zenoh.ZenohConfig;
 import io.rtaware.zenoh.ZenohException;
 import io.rtaware.zenoh.ZenohSession;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Objects;
+import java.util.Set;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 /**
  * One Zenoh session in the role of an rmw_zenoh context: a ROS domain, the ROS 2 distribution
@@ -19,6 +23,17 @@ import java.util.concurrent.atomic.AtomicLong;
  * keys and routes are announced to it ({@link Ros2Node}).
  */
 public final class Ros2Context implements AutoCloseable {
+
+    /** The most publishers of one topic {@link #publishedTypes} reads. */
+    public static final int MAX_GRAPH_REPLIES = 1_000;
+    /** The largest description of one DDS writer the bridge's admin space may answer (a little JSON). */
+    private static final int MAX_GRAPH_REPLY_BYTES = 64 * 1024;
+    /** How long {@link #publishedTypes} waits for the graph's answers. */
+    private static final long GRAPH_QUERY_TIMEOUT_MS = 500;
+    /** The type name in the plugin's JSON description of a DDS writer. */
+    private static final Pattern DDS_TYPE_NAME = Pattern.compile("\"type_name\"\\s*:\\s*\"([^\"]*)\"");
+    /** Where an rmw_zenoh entity token names its type: after the domain, ids, kind, node and topic. */
+    private static final int TOKEN_TYPE_SEGMENT = 10;
 
     private final ZenohSession session;
     private final int domain;
@@ -84,6 +99,55 @@ public final class Ros2Context implements AutoCloseable {
                         + " ms (its plugin logs why on stderr with RUST_LOG=zenoh_plugin_ros2dds=debug)");
             }
         }
+    }
+
+    /**
+     * The message types the ROS graph shows the publishers of a topic with, as ROS 2 names them
+     * ({@code sensor_msgs/msg/LaserScan}). Over DDS, every DDS writer on the topic's DDS name
+     * ({@code rt/scan}) that the bridge discovered through Cyclone DDS's {@code DCPSPublication}
+     * built-in topic, a ROS 2 node's or not: its plugin lists them in its admin space,
+     * {@code @/<zid>/ros2/dds/<participant>/writer/<writer>/<topic>}, with their type names. Over
+     * rmw_zenoh, the publishers' liveliness tokens on the context's domain. At most
+     * {@value #MAX_GRAPH_REPLIES} publishers are read.
+     *
+     * @param fullTopic a fully qualified topic name
+     * @return the distinct types, in the order first seen; empty when nobody publishes the topic
+     * @throws ZenohException if the session is closed or the graph answers beyond its bounds
+     */
+    public Set<String> publishedTypes(String fullTopic) throws ZenohException {
+        Set<String> types = new LinkedHashSet<>();
+        if (transport == Ros2Transport.DDS) {
+            String selector = "@/" + bridge.zid() + "/ros2/dds/*/writer/*/" + ddsTopic(fullTopic);
+            for (ZenohSession.Reply reply : session.get(selector, GRAPH_QUERY_TIMEOUT_MS, MAX_GRAPH_REPLIES,
+                    MAX_GRAPH_REPLY_BYTES)) {
+                Matcher type = DDS_TYPE_NAME.matcher(reply.text());
+                if (type.find()) {
+                    types.add(Ros2Names.rosTypeName(type.group(1)));
+                }
+            }
+        } else {
+            String pattern = "@ros2_lv/" + domain + "/*/*/*/MP/*/*/*/" + Ros2Names.mangle(fullTopic) + "/*/*/*";
+            for (String token : session.livelinessKeys(pattern, GRAPH_QUERY_TIMEOUT_MS, MAX_GRAPH_REPLIES)) {
+                String[] segments = token.split("/");
+                if (segments.length > TOKEN_TYPE_SEGMENT) {
+                    types.add(Ros2Names.rosTypeName(segments[TOKEN_TYPE_SEGMENT]));
+                }
+            }
+        }
+        return types;
+    }
+
+    /**
+     * @param fullTopic a fully qualified topic name
+     * @return how the topic is named on this context's wire: {@code rt/scan} on DDS, {@code /scan}
+     *     on rmw_zenoh
+     */
+    public String wireName(String fullTopic) {
+        return transport == Ros2Transport.DDS ? ddsTopic(fullTopic) : fullTopic;
+    }
+
+    private static String ddsTopic(String fullTopic) {
+        return "rt" + fullTopic;
     }
 
     /**

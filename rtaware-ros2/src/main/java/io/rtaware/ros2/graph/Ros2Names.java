@@ -1,5 +1,6 @@
 package io.rtaware.ros2.graph;
 
+import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 /**
@@ -9,6 +10,7 @@ public final class Ros2Names {
 
     private static final Pattern NAME = Pattern.compile("(/[A-Za-z_][A-Za-z0-9_]*)*");
     private static final Pattern NODE = Pattern.compile("[A-Za-z_][A-Za-z0-9_]*");
+    private static final Pattern DDS_TYPE = Pattern.compile("([A-Za-z0-9_]+(?:::[A-Za-z0-9_]+)*)::dds_::([A-Za-z0-9_]+)_");
 
     private Ros2Names() {
     }
@@ -102,6 +104,19 @@ public final class Ros2Names {
                                             String typeHash) {
         return "@/" + zid + "/@ros2_lv/" + kind + "/" + bridgeKey(fullTopic).replace("/", "§") + "/"
                 + rosType.replace("/", "§") + "/" + qos.bridgeText() + (typeHash == null ? "" : ":typehash=" + typeHash + ";");
+    }
+
+    /**
+     * A DDS type name as ROS 2 names the type: {@code geometry_msgs::msg::dds_::Twist_} is
+     * {@code geometry_msgs/msg/Twist}; a name that is not of that form (a plain DDS application's
+     * type) is returned as it is.
+     *
+     * @param ddsTypeName a DDS type name
+     * @return the ROS 2 type name, or the name as it is
+     */
+    public static String rosTypeName(String ddsTypeName) {
+        Matcher m = DDS_TYPE.matcher(ddsTypeName);
+        return m.matches() ? m.group(1).replace("::", "/") + "/" + m.group(2) : ddsTypeName;
     }
 
     /**

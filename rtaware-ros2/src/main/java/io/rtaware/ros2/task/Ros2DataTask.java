@@ -59,7 +59,11 @@ import org.HdrHistogram.Histogram;
  * rmw_zenoh attachment; another one after {@value #PUBLISHER_SILENCE_NS} ns of silence of the
  * followed one), the others' samples dropped and counted; and a source's clock that restarts or
  * jumps is followed as a new epoch ({@link SampleValidator}). Each such event is reported once as
- * one line in {@link #notices()}.
+ * one line in {@link #notices()}. An input topic that has given no usable sample is looked up in
+ * the ROS graph every {@value #TYPE_CHECK_INTERVAL_NS} ns of world time ({@link Ros2Context#publishedTypes}):
+ * published only as other types, it can give none (DDS and rmw_zenoh match by type), which is said
+ * at once in one line, a notice and a warning of the library log ({@code rt/scan is published as
+ * ..., rtaware expects sensor_msgs/msg/LaserScan ...}).
  *
  * <p>{@link #terminate} publishes a zero Twist first, then closes the session. Called by one
  * thread at a time, as every task; {@link #stats()} and {@link #latencySnapshot()} may be called
@@ -71,6 +75,12 @@ public final class Ros2DataTask implements Task {
     public static final long IMPOSSIBLE_DATA_FAULT_AFTER_NS = 1_000_000_000L;
     /** World time the followed publisher of a topic may be silent before another is followed: 1 s. */
     public static final long PUBLISHER_SILENCE_NS = 1_000_000_000L;
+    /**
+     * World time between two questions to the ROS graph about an input topic that has given no
+     * usable sample yet (which types it is published as), from this long after the first cycle: 1 s.
+     */
+    public static final long TYPE_CHECK_INTERVAL_NS = 1_000_000_000L;
+    private static final System.Logger LOG = System.getLogger(Ros2DataTask.class.getName());
 
     /** The name of the controller's node in the ROS graph. */
     public static final String NODE_NAME = "rtaware_controller";
@@ -110,6 +120,8 @@ public final class Ros2DataTask implements Task {
     private final List<String> notices = new CopyOnWriteArrayList<>();
     private final RejectionWatch scanWatch = new RejectionWatch(IMPOSSIBLE_DATA_FAULT_AFTER_NS);
     private final RejectionWatch odomWatch = new RejectionWatch(IMPOSSIBLE_DATA_FAULT_AFTER_NS);
+    private final PublishedTypeWatch scanTypes;
+    private final PublishedTypeWatch odomTypes;
     /** Per topic (SCAN, ODOM): whether its newest sample was malformed or impossible. */
     private final boolean[] newestUnusable = new boolean[2];
     /** Per topic: what the samples since its last usable one were ({@link #IMPOSSIBLE}, {@link #MALFORMED} bits). */
@@ -172,6 +184,10 @@ public final class Ros2DataTask implements Task {
         this.odomValidator = new SampleValidator(topics.qualifiedOdom(), SampleLimits.defaults());
         this.scanPublishers = new FirstPublisherFilter(topics.qualifiedScan(), PUBLISHER_SILENCE_NS, notices::add);
         this.odomPublishers = new FirstPublisherFilter(topics.qualifiedOdom(), PUBLISHER_SILENCE_NS, notices::add);
+        this.scanTypes = new PublishedTypeWatch(topics.qualifiedScan(), context.wireName(topics.qualifiedScan()),
+                scanCodec.type().name(), TYPE_CHECK_INTERVAL_NS, context::publishedTypes, this::warn);
+        this.odomTypes = new PublishedTypeWatch(topics.qualifiedOdom(), context.wireName(topics.qualifiedOdom()),
+                odomCodec.type().name(), TYPE_CHECK_INTERVAL_NS, context::publishedTypes, this::warn);
     }
 
     /**
@@ -236,6 +252,8 @@ public final class Ros2DataTask implements Task {
                 }
                 pendingScanSourceNs = Long.MIN_VALUE;
             }
+            scanTypes.check(nowNs);
+            odomTypes.check(nowNs);
             watchRejections(nowNs);
         } finally {
             cpuNs += threads.getCurrentThreadCpuTime() - cpuStartNs;
@@ -267,6 +285,7 @@ public final class Ros2DataTask implements Task {
             malformed++;
             lastProblem = (scan ? "scan: " : "odom: ") + e.getMessage();
             int topic = scan ? SCAN : ODOM;
+            (scan ? scanTypes : odomTypes).undecodable();
             malformedByTopic[topic]++;
             unusable(topic, MALFORMED, "malformed: " + e.getMessage());
             return;
@@ -304,6 +323,7 @@ public final class Ros2DataTask implements Task {
 
     /** A topic's newest sample was committed: its streak of unusable ones, if any, is over. */
     private void usable(int topic) {
+        (topic == SCAN ? scanTypes : odomTypes).usable();
         newestUnusable[topic] = false;
         unusableKinds[topic] = 0;
     }
@@ -323,6 +343,12 @@ public final class Ros2DataTask implements Task {
     private boolean wallClockStamp(long stampNs) {
         long ageNs = epoch.epochNanos() - stampNs;
         return ageNs >= -STAMP_AHEAD_NS && ageNs <= MAX_LATENCY_NS;
+    }
+
+    /** A notice that must reach the user while the run goes on: a warning of the library log too. */
+    private void warn(String line) {
+        notices.add(line);
+        LOG.log(System.Logger.Level.WARNING, "ros2: " + line);
     }
 
     /** Reports a new epoch of the source's clock once; returns the epochs seen now. */

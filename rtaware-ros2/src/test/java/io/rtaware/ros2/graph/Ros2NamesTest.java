@@ -49,6 +49,14 @@ class Ros2NamesTest {
     }
 
     @Test
+    void ddsTypeNamesReadAsRos2TypeNamesAndOtherNamesStayAsTheyAre() {
+        assertEquals("geometry_msgs/msg/Twist", Ros2Names.rosTypeName("geometry_msgs::msg::dds_::Twist_"));
+        assertEquals("sensor_msgs/msg/LaserScan", Ros2Names.rosTypeName(Ros2Types.LASER_SCAN.ddsTypeName()));
+        assertEquals("ShapeType", Ros2Names.rosTypeName("ShapeType"), "a plain DDS application's type");
+        assertEquals("a::dds_::B", Ros2Names.rosTypeName("a::dds_::B"), "no trailing underscore: not ROS 2's form");
+    }
+
+    @Test
     void invalidNamesAreRejectedWithTheirText() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> Ros2Names.resolveTopic("/", "bad topic"));

@@ -74,10 +74,10 @@ class Ros2DataTaskTest {
     private final LaserScan scan = new LaserScan();
     private final Odometry odom = new Odometry();
     private long nowNs;
+    private String endpoint;
 
     @BeforeEach
     void connect() throws Exception {
-        String endpoint;
         try (ServerSocket s = new ServerSocket(0)) {
             endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
         }
@@ -582,5 +582,33 @@ class Ros2DataTaskTest {
                 + "followed \\(gid [0-9a-f]{32}\\); its samples are dropped"), notices.get(0));
         assertEquals(0, task.stats().odomRejected(), "dropped as another publisher's, not as implausible");
         intruder.close();
+    }
+
+    /**
+     * Issue 38: a robot publishing its scan as another type gives no sample at all (rmw_zenoh's keys
+     * carry the type); the data task asks the graph and says so in one line, and not of the odometry
+     * topic, which nobody publishes.
+     */
+    @Test
+    void aScanTopicPublishedAsAnotherTypeIsToldInOneLine() throws Exception {
+        robot.createNode("/robot2", "wrong_robot").createPublisher("scan", Ros2Types.TWIST, QosProfile.sensorData(),
+                1024);
+        Ros2DataTask wrong = new Ros2DataTask(Ros2Context.open(ZenohConfig.loopbackPeer().withConnect(
+                List.of(endpoint)), 0), new Ros2Topics(0, "/robot2", "scan", "odom", "cmd_vel"), 20, 500,
+                MAX_MESSAGE_BYTES);
+        TaskHarness other = TaskHarness.builder().input(RobotKeys.MOTOR).task("ros2", wrong).build();
+        try {
+            long[] atNs = {0};
+            Waits.until(() -> {
+                atNs[0] += CYCLE_NS;
+                assertNull(other.cycle("ros2", atNs[0]), "no cycle throws");
+                return !wrong.notices().isEmpty();
+            }, Duration.ofSeconds(10), () -> "a notice; " + wrong.stats());
+            assertEquals(List.of("/robot2/scan is published as geometry_msgs/msg/Twist, rtaware expects "
+                    + "sensor_msgs/msg/LaserScan: none of its samples can be read"), wrong.notices());
+            assertEquals(0, wrong.stats().scans(), "no scan arrived");
+        } finally {
+            other.stop();
+        }
     }
 }

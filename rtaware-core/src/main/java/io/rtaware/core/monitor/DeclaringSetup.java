@@ -17,9 +17,11 @@ import java.util.Objects;
 /**
  * What one task declares during its initialization: the {@link TaskSetup} it is handed. Records
  * the task's input and output handles (unbound until the graph is built) and every violation of
- * its own declarations; closed after {@code initialize} returns. Not thread-safe.
+ * its own declarations; closed after {@code initialize} returns. The one way a task's
+ * declarations are read: by the monitor when it builds, and by {@link TaskDeclaration#of}.
+ * Not thread-safe.
  */
-final class TaskDeclarations implements TaskSetup {
+final class DeclaringSetup implements TaskSetup {
 
     final TaskSpec spec;
     private final Clock clock;
@@ -29,9 +31,42 @@ final class TaskDeclarations implements TaskSetup {
     private ReactionConstraint reaction;
     private boolean closed;
 
-    TaskDeclarations(TaskSpec spec, Clock clock) {
+    private DeclaringSetup(TaskSpec spec, Clock clock) {
         this.spec = spec;
         this.clock = clock;
+    }
+
+    /**
+     * Initializes a task with a setup of its own and closes the setup: a task whose
+     * {@code initialize} throws has that as its first violation.
+     *
+     * @param spec the task
+     * @param clock the world clock it runs on
+     * @return what it declared
+     */
+    static DeclaringSetup initialize(TaskSpec spec, Clock clock) {
+        DeclaringSetup declarations = new DeclaringSetup(spec, clock);
+        try {
+            spec.task().initialize(declarations);
+        } catch (Exception e) {
+            declarations.violations.add(0, "task '" + spec.name() + "' failed to initialize: "
+                    + e.getClass().getSimpleName() + (e.getMessage() == null ? "" : ": " + e.getMessage()));
+        }
+        declarations.close();
+        return declarations;
+    }
+
+    /** @return the declarations as the public, immutable view */
+    TaskDeclaration declaration() {
+        List<TaskDeclaration.DeclaredInput> in = new ArrayList<>();
+        for (InputHandle<?> handle : inputs) {
+            in.add(new TaskDeclaration.DeclaredInput(handle.key(), handle.maxAgeNs()));
+        }
+        List<Key<?>> out = new ArrayList<>();
+        for (OutputHandle<?> handle : outputs) {
+            out.add(handle.key());
+        }
+        return new TaskDeclaration(spec.name(), in, out, reaction);
     }
 
     /** No declaration is accepted after this (the task's {@code initialize} has returned). */
