@@ -32,7 +32,22 @@ public record Claim(String id, String claim, Verdict verdict, String evidence, S
                     boolean fragile, Integer fewestRunsPerCell, boolean smallSample, String family, String judgedOn,
                     List<String> cells) {
 
-    /** Keeps an unmodifiable copy of the cells. */
+    /**
+     * Keeps an unmodifiable copy of the cells.
+     *
+     * @param id the claim's stable id
+     * @param claim what the paper says
+     * @param verdict what the runs the summary uses say
+     * @param evidence the numbers the verdict rests on
+     * @param rule how the verdict follows from the numbers
+     * @param verdictAllRuns the verdict on all runs
+     * @param fragile whether the two verdicts differ
+     * @param fewestRunsPerCell the fewest runs in any set the verdict rests on, or null
+     * @param smallSample whether that is below the small-sample bound
+     * @param family the id of the claim's family
+     * @param judgedOn the conditions it was judged on
+     * @param cells the sets it rests on; copied
+     */
     public Claim {
         cells = List.copyOf(cells);
     }
