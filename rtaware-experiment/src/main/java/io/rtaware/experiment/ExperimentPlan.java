@@ -85,8 +85,8 @@ public record ExperimentPlan(List<PeriodSet> sets, int runsPerSet, RunConditions
                 "--scenario", conditions.scenario(),
                 "--periods", planned.periods().periodsArgument(),
                 "--time-scale", plain(conditions.timeScale()),
-                "--seed", Long.toString(conditions.seedOf(planned.run())),
-                "--robot-seed", Long.toString(conditions.robotSeedOf(planned.run()))));
+                "--seed", Long.toString(conditions.seedOf(planned.set(), planned.run())),
+                "--robot-seed", Long.toString(conditions.robotSeedOf(planned.set(), planned.run()))));
         if (planned.periods().topSpeedMps() != null) {
             args.add("--top-speed");
             args.add(plain(planned.periods().topSpeedMps()));

@@ -237,12 +237,16 @@ public final class ExperimentRunner {
         }
         RunConditions c = plan.conditions();
         RunConditions rc = r.conditions();
-        if (!c.scenario().equals(rc.scenario()) || c.timeScale() != rc.timeScale() || c.seed() != rc.seed()
-                || !Objects.equals(c.gridResolutionM(), rc.gridResolutionM()) || c.robotSeedOf(r.run()) != rc.robotSeedOf(r.run())) {
+        long plannedSeed = c.seedOf(r.set(), r.run());
+        long plannedRobot = c.robotSeedOf(r.set(), r.run());
+        if (!c.scenario().equals(rc.scenario()) || c.timeScale() != rc.timeScale() || c.design() != rc.design()
+                || plannedSeed != r.worldSeed() || !Objects.equals(c.gridResolutionM(), rc.gridResolutionM())
+                || plannedRobot != r.robotSeed()) {
             throw new ExperimentInputException(where + " was made with scenario " + rc.scenario() + ", time scale "
-                    + rc.timeScale() + ", seed " + rc.seed() + ", grid " + gridLabel(rc.gridResolutionM()) + ", robot seed "
-                    + rc.robotSeedOf(r.run()) + "; now scenario " + c.scenario() + ", time scale " + c.timeScale() + ", seed "
-                    + c.seed() + ", grid " + gridLabel(c.gridResolutionM()) + ", robot seed " + c.robotSeedOf(r.run())
+                    + rc.timeScale() + ", design " + rc.design().label() + ", seed " + r.worldSeed() + ", grid "
+                    + gridLabel(rc.gridResolutionM()) + ", robot seed " + r.robotSeed() + "; now scenario " + c.scenario()
+                    + ", time scale " + c.timeScale() + ", design " + c.design().label() + ", seed " + plannedSeed
+                    + ", grid " + gridLabel(c.gridResolutionM()) + ", robot seed " + plannedRobot
                     + "; use the same options or another --out");
         }
     }

@@ -31,8 +31,12 @@ import java.util.Map;
  * machine, machine_reasons, other_cpus, steal_pct, load_start, load_end, gc_max_pause_ms,
  * time_to_safepoint_max_ms, machine_before_run, waited_for_quiet_s (the run's conditions:
  * {@link RunMachine}; {@code machine} is empty in rows that predate them), machine_cpus (the CPUs
- * the run's conditions counted; empty in rows that predate it)
+ * the run's conditions counted; empty in rows that predate it), design ({@link ExperimentDesign}'s
+ * label; empty in rows that predate it, which are all {@code blocked})
  * </pre>
+ *
+ * {@code seed} and {@code robot_seed} are the run's own world seed and robot seed, as passed to
+ * {@code rtaware run}.
  *
  * RFC 4180 quoting; an empty field is a value the run did not give (an {@code error} row, or
  * {@code grid_resolution_m} when {@code run}'s default was used). Numbers are written exactly
@@ -84,6 +88,7 @@ public final class ResultsCsv {
         }
         h.addAll(List.of("robot_seed", "robots", "min_clearance_m", "near_misses"));
         h.addAll(MACHINE_COLUMNS);
+        h.add("design");
         return List.copyOf(h);
     }
 
@@ -167,7 +172,7 @@ public final class ResultsCsv {
         f.add(Integer.toString(r.run()));
         f.add(quote(r.conditions().scenario()));
         f.add(number(r.conditions().timeScale()));
-        f.add(Long.toString(r.conditions().seedOf(r.run())));
+        f.add(Long.toString(r.worldSeed()));
         f.add(r.conditions().gridResolutionM() == null ? "" : number(r.conditions().gridResolutionM()));
         r.periods().periodsMs().values().forEach(p -> f.add(Long.toString(p)));
         f.add(quote(r.outcome()));
@@ -203,7 +208,7 @@ public final class ResultsCsv {
             TaskResult t = r.tasks().get(task);
             f.add(t == null || t.maxSafePeriodMs() == null ? "" : number(t.maxSafePeriodMs()));
         }
-        f.add(Long.toString(r.conditions().robotSeedOf(r.run())));
+        f.add(Long.toString(r.robotSeed()));
         f.add(Integer.toString(r.conditions().robots()));
         f.add(r.minClearanceM() == null ? "" : number(r.minClearanceM()));
         f.add(r.nearMisses() == null ? "" : r.nearMisses().toString());
@@ -220,6 +225,7 @@ public final class ResultsCsv {
         f.add(quote(m.beforeRun()));
         f.add(recorded ? number(m.waitedS()) : "");
         f.add(m.machineCpus() > 0 ? Integer.toString(m.machineCpus()) : "");
+        f.add(r.conditions().design().label());
         return String.join(",", f);
     }
 
@@ -336,11 +342,15 @@ public final class ResultsCsv {
         String robotSeed = row.get("robot_seed");
         String robotsText = row.get("robots");
         int robots = robotsText.isEmpty() ? 1 : Integer.parseInt(robotsText);
+        int setNumber = Integer.parseInt(row.get("set"));
+        ExperimentDesign design = row.get("design").isEmpty() ? ExperimentDesign.BLOCKED
+                : ExperimentDesign.parse(row.get("design"));
+        long worldSeed = Long.parseLong(row.get("seed"));
         long firstRobotSeed = robotSeed.isEmpty() ? RunConditions.DEFAULT_ROBOT_SEED
-                : Long.parseLong(robotSeed) - (run - 1) % robots;
+                : Long.parseLong(robotSeed) - design.robotIndex(worldSeed, run, robots);
         RunConditions conditions = new RunConditions(row.get("scenario"), Double.parseDouble(row.get("time_scale")),
-                Long.parseLong(row.get("seed")) - run + 1, grid.isEmpty() ? null : Double.parseDouble(grid),
-                firstRobotSeed, robots);
+                design.planSeed(worldSeed, setNumber, run), grid.isEmpty() ? null : Double.parseDouble(grid),
+                firstRobotSeed, robots, design);
         Map<String, TaskResult> tasks = new LinkedHashMap<>();
         for (String t : PeriodSet.TASKS) {
             if (!row.get(t + "_releases").isEmpty()) {
@@ -369,7 +379,7 @@ public final class ResultsCsv {
         machine.impossible().ifPresent(why -> {
             throw new IllegalArgumentException(why);
         });
-        return new RunResult(Integer.parseInt(row.get("set")), run, set, conditions,
+        return new RunResult(setNumber, run, set, conditions,
                 row.get("outcome"), decimal(row.get("run_time_s")), decimal(row.get("distance_to_finish_m")),
                 decimal(row.get("distance_travelled_m")), optionalInt(row.get("collisions")),
                 optionalInt(row.get("waypoints_reached")), optionalInt(row.get("waypoints_total")), tasks, mediator,

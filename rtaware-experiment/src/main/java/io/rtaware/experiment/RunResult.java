@@ -257,6 +257,16 @@ public record RunResult(int set, int run, PeriodSet periods, RunConditions condi
                 null, null, null, Map.of());
     }
 
+    /** @return the world seed this run was given ({@link RunConditions#seedOf(int, int)}) */
+    public long worldSeed() {
+        return conditions.seedOf(set, run);
+    }
+
+    /** @return the robot seed this run was given ({@link RunConditions#robotSeedOf(int, int)}) */
+    public long robotSeed() {
+        return conditions.robotSeedOf(set, run);
+    }
+
     /** @return true if the run ended on the course (completed, timeout, stuck) */
     public boolean measured() {
         return MEASURED_OUTCOMES.contains(outcome);

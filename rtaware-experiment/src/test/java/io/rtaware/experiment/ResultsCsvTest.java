@@ -37,6 +37,23 @@ class ResultsCsvTest {
     }
 
     @Test
+    void anIndependentRunKeepsItsOwnWorldSeedAndRobotSeedAndReadsBackTheSameConditions() throws Exception {
+        Path f = dir.resolve("results.csv");
+        RunConditions c = new RunConditions("paper-room", 10, 40, null, 1, 1000, ExperimentDesign.INDEPENDENT);
+        RunResult r = new RunResult(3, 7, PeriodSet.of("S", 100, 50, 100, 100), c, "completed", 233.5, 0.28, 25.0, 0, 4, 4,
+                Map.of());
+        ResultsCsv.append(f, r);
+        List<String> fields = ResultsCsv.split(Files.readAllLines(f).get(1));
+        assertEquals(Long.toString(40 + 2 * ExperimentDesign.SET_SEED_STRIDE + 6), fields.get(ResultsCsv.HEADER.indexOf("seed")));
+        assertEquals(Long.toString(c.robotSeedOf(3, 7)), fields.get(ResultsCsv.HEADER.indexOf("robot_seed")));
+        assertEquals("independent", fields.get(ResultsCsv.HEADER.indexOf("design")));
+        RunResult read = ResultsCsv.read(f).get(0);
+        assertEquals(c, read.conditions());
+        assertEquals(r.worldSeed(), read.worldSeed());
+        assertEquals(r.robotSeed(), read.robotSeed());
+    }
+
+    @Test
     void aPartialLastLineIsIgnoredOnReadAndDroppedOnAppend() throws Exception {
         Path f = dir.resolve("results.csv");
         ResultsCsv.append(f, sample(1, "S"));

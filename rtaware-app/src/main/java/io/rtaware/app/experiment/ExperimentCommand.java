@@ -7,6 +7,7 @@ import io.rtaware.app.output.OutputFolder;
 import io.rtaware.core.output.OutputWrites;
 import io.rtaware.core.conditions.HostFiles;
 import io.rtaware.core.conditions.HostReader;
+import io.rtaware.experiment.ExperimentDesign;
 import io.rtaware.experiment.ExperimentInputException;
 import io.rtaware.experiment.ExperimentPlan;
 import io.rtaware.experiment.ExperimentProfile;
@@ -99,16 +100,21 @@ public final class ExperimentCommand implements Callable<Integer> {
     Double gridResolutionM;
 
     @Option(names = "--seed", defaultValue = "1", paramLabel = "S",
-            description = "Seed of run 1; run j of every set uses S + j - 1 (default: ${DEFAULT-VALUE}).")
+            description = "World seed of set 1 run 1; the design gives the others (default: ${DEFAULT-VALUE}).")
     long seed;
 
-    @Option(names = "--robot-seed", defaultValue = "4", paramLabel = "S",
-            description = "Seed of the simulated robot's systematic odometry errors: every run drives this one robot, as the paper's trials used one Koala (default: ${DEFAULT-VALUE}).")
-    long robotSeed;
+    @Option(names = "--design", defaultValue = "independent", paramLabel = "independent|blocked",
+            description = "'independent': every run its own world seed and a robot drawn from the population; 'blocked': "
+                    + "run j of every set shares world seed S + j - 1 and robot j, to be analysed blocked on j (default: ${DEFAULT-VALUE}).")
+    String design;
 
-    @Option(names = "--robots", defaultValue = "1", paramLabel = "N",
-            description = "Spread the runs over N robots (robot seeds S to S + N - 1, run j on S + (j - 1) mod N) to include robot-to-robot variation (default: ${DEFAULT-VALUE}, one robot).")
-    int robots;
+    @Option(names = "--robot-seed", paramLabel = "S", description = "First robot seed of the population (alone: every run "
+            + "drives this one robot) (default: a population of robots 1 to " + RunConditions.POPULATION_ROBOTS + ").")
+    Long robotSeed;
+
+    @Option(names = "--robots", paramLabel = "N", description = "The population's size: robot seeds S to S + N - 1 "
+            + "(default: 1 with --robot-seed, else " + RunConditions.POPULATION_ROBOTS + ").")
+    Integer robots;
 
     @Option(names = "--out", paramLabel = "DIR", description = "Output folder (default: experiments/<timestamp>).")
     Path out;
@@ -217,23 +223,16 @@ public final class ExperimentCommand implements Callable<Integer> {
         if (gridResolutionM != null && !(gridResolutionM > 0)) {
             throw new UserError("--grid-resolution must be a positive number of metres, got " + gridResolutionM);
         }
-        List<PeriodSet> periodSets;
-        try {
-            periodSets = ExperimentSets.resolve(sets);
-        } catch (ExperimentInputException e) {
-            throw new UserError(e.getMessage());
-        }
+        ExperimentPlan plan;
         Shard share;
         try {
+            List<PeriodSet> periodSets = ExperimentSets.resolve(sets);
             share = Shard.parse(shard);
-        } catch (ExperimentInputException e) {
+            plan = new ExperimentPlan(periodSets, runs, RunConditions.ofPopulation(scenario, timeScale, seed, gridResolutionM,
+                    robotSeed, robots, ExperimentDesign.parse(design)), share);
+        } catch (ExperimentInputException | IllegalArgumentException e) {
             throw new UserError(e.getMessage());
         }
-        if (robots < 1) {
-            throw new UserError("--robots must be at least 1, got " + robots);
-        }
-        ExperimentPlan plan = new ExperimentPlan(periodSets, runs, new RunConditions(scenario, timeScale, seed, gridResolutionM,
-                robotSeed, robots), share);
         if (plan.order().isEmpty()) {
             throw new UserError("--shard " + share + " has no runs: the plan has only " + plan.fullOrder().size()
                     + " run(s); use fewer shards");

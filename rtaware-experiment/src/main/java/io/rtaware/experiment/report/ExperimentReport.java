@@ -161,9 +161,9 @@ public final class ExperimentReport {
                 + " times faster than wall time, so each task's computation weighs " + k
                 + " times more against its period), grid resolution "
                 + (p.gridResolutionM() == null ? "`run`'s default" : plain(p.gridResolutionM()) + " m")
-                + ", seed " + p.seed() + " (run j uses seed + j - 1), " + p.runsPerSet() + " run(s) per set planned.");
-        b.text("Robot: " + robots.robotsInWords() + "; the systematic odometry errors come from the robot seed, "
-                + "each run's noise from its seed (results.csv: robot_seed, robots).");
+                + ", seed " + p.seed() + " (set 1 run 1's), " + p.runsPerSet() + " run(s) per set planned.");
+        b.text("Design: " + robots.robotsInWords() + "; the systematic odometry errors come from the robot seed, "
+                + "each run's noise from its world seed (results.csv: seed, robot_seed, robots, design).");
         b.text("Machine: " + (p.machine() == null ? "not recorded (no experiment.json)" : p.machine())
                 + ". The paper's runs: " + s.paper().source() + ".");
         if (s.conditions() != null) {
