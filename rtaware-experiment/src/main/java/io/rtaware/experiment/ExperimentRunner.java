@@ -3,6 +3,8 @@ package io.rtaware.experiment;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Clock;
+import java.time.Instant;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
@@ -50,6 +52,7 @@ public final class ExperimentRunner {
     private volatile Process current;
     private boolean record;
     private QuietGate gate;
+    private Clock clock = Clock.systemUTC();
 
     /**
      * @param plan the runs to make
@@ -108,12 +111,14 @@ public final class ExperimentRunner {
                 break;
             }
             progress.started(planned, finished, total);
+            Instant started = clock.instant();
             RunResult result = runOne(planned);
             if (result == null) {
                 break;
             }
+            result = result.withTimes(new RunTimes(started, clock.instant()));
             if (passage != null) {
-                result = result.withMachine(result.machine().withCheck(passage.beforeRun(), passage.waitedS()));
+                result = result.withMachine(result.machine().withCheck(passage));
             }
             ResultsCsv.append(csv, result);
             finished++;
@@ -154,6 +159,16 @@ public final class ExperimentRunner {
      */
     public ExperimentRunner quietGate(QuietGate quietGate) {
         this.gate = quietGate;
+        return this;
+    }
+
+    /**
+     * @param wallClock the clock whose instants are each run's {@code started_utc} and {@code ended_utc}
+     *     (default: the system's, in UTC)
+     * @return this runner
+     */
+    public ExperimentRunner clock(Clock wallClock) {
+        this.clock = Objects.requireNonNull(wallClock, "wallClock");
         return this;
     }
 

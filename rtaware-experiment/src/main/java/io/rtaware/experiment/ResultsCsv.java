@@ -32,7 +32,10 @@ import java.util.Map;
  * time_to_safepoint_max_ms, machine_before_run, waited_for_quiet_s (the run's conditions:
  * {@link RunMachine}; {@code machine} is empty in rows that predate them), machine_cpus (the CPUs
  * the run's conditions counted; empty in rows that predate it), design ({@link ExperimentDesign}'s
- * label; empty in rows that predate it, which are all {@code blocked})
+ * label; empty in rows that predate it, which are all {@code blocked}), started_utc, ended_utc
+ * (when the run's process started and ended, ISO-8601 UTC: {@link RunTimes}), check_other_cpus,
+ * check_steal_pct, check_load (the figures of the quiet check's last look before the run, those its
+ * rule judged: {@link MachineCheck.Reading}); all empty in rows that predate them
  * </pre>
  *
  * {@code seed} and {@code robot_seed} are the run's own world seed and robot seed, as passed to
@@ -88,7 +91,7 @@ public final class ResultsCsv {
         }
         h.addAll(List.of("robot_seed", "robots", "min_clearance_m", "near_misses"));
         h.addAll(MACHINE_COLUMNS);
-        h.add("design");
+        h.addAll(List.of("design", "started_utc", "ended_utc", "check_other_cpus", "check_steal_pct", "check_load"));
         return List.copyOf(h);
     }
 
@@ -226,6 +229,11 @@ public final class ResultsCsv {
         f.add(recorded ? number(m.waitedS()) : "");
         f.add(m.machineCpus() > 0 ? Integer.toString(m.machineCpus()) : "");
         f.add(r.conditions().design().label());
+        f.add(RunTimes.format(r.times().startedUtc()));
+        f.add(RunTimes.format(r.times().endedUtc()));
+        f.add(number(m.checkOtherCpus()));
+        f.add(number(m.checkStealPct()));
+        f.add(number(m.checkLoad()));
         return String.join(",", f);
     }
 
@@ -375,7 +383,9 @@ public final class ResultsCsv {
                         decimal(row.get("gc_max_pause_ms")), decimal(row.get("time_to_safepoint_max_ms")),
                         row.get("machine_before_run"), row.get("waited_for_quiet_s").isEmpty() ? 0
                         : Double.parseDouble(row.get("waited_for_quiet_s")),
-                        row.get("machine_cpus").isEmpty() ? 0 : Integer.parseInt(row.get("machine_cpus")));
+                        row.get("machine_cpus").isEmpty() ? 0 : Integer.parseInt(row.get("machine_cpus")),
+                        decimal(row.get("check_other_cpus")), decimal(row.get("check_steal_pct")),
+                        decimal(row.get("check_load")));
         machine.impossible().ifPresent(why -> {
             throw new IllegalArgumentException(why);
         });
@@ -383,7 +393,8 @@ public final class ResultsCsv {
                 row.get("outcome"), decimal(row.get("run_time_s")), decimal(row.get("distance_to_finish_m")),
                 decimal(row.get("distance_travelled_m")), optionalInt(row.get("collisions")),
                 optionalInt(row.get("waypoints_reached")), optionalInt(row.get("waypoints_total")), tasks, mediator,
-                optionalDouble(row.get("min_clearance_m")), optionalLong(row.get("near_misses")), machine);
+                optionalDouble(row.get("min_clearance_m")), optionalLong(row.get("near_misses")), machine,
+                new RunTimes(RunTimes.parse(row.get("started_utc")), RunTimes.parse(row.get("ended_utc"))));
     }
 
     private static String number(double v) {
