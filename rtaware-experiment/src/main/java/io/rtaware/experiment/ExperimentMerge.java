@@ -92,7 +92,8 @@ public final class ExperimentMerge {
         RunConditions x = a.conditions();
         RunConditions y = b.conditions();
         if (!x.scenario().equals(y.scenario()) || x.timeScale() != y.timeScale() || x.seed() != y.seed()
-                || !Objects.equals(x.gridResolutionM(), y.gridResolutionM()) || x.design() != y.design()) {
+                || !Objects.equals(x.gridResolutionM(), y.gridResolutionM()) || x.design() != y.design()
+                || !Objects.equals(x.cpuLimitCpus(), y.cpuLimitCpus())) {
             throw new ExperimentInputException("cannot merge " + a.dir() + " (scenario " + x.scenario() + ", time scale "
                     + x.timeScale() + ", seed " + x.seed() + ", grid " + x.gridResolutionM() + ", design "
                     + x.design().label() + ") and " + b.dir() + " (scenario " + y.scenario() + ", time scale "

@@ -95,6 +95,10 @@ public record ExperimentPlan(List<PeriodSet> sets, int runsPerSet, RunConditions
             args.add("--grid-resolution");
             args.add(plain(conditions.gridResolutionM()));
         }
+        if (conditions.cpuLimitCpus() != null) {
+            args.add("--cpu-limit");
+            args.add(plain(conditions.cpuLimitCpus()));
+        }
         args.addAll(List.of("--out", runDir.toString(), "--quiet"));
         return args;
     }

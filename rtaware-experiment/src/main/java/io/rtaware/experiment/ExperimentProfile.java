@@ -28,9 +28,10 @@ import java.util.Optional;
  * @param design {@link ExperimentDesign#label()} of the runs ({@code independent} or
  *     {@code blocked}), or null in a folder made before the design was recorded (all blocked:
  *     {@link #experimentDesign()})
+ * @param cpuLimitCpus the CPU quota each run's JVM ran under ({@code --cpu-limit}), or null for none
  */
 public record ExperimentProfile(String scenario, double timeScale, long seed, Double gridResolutionM,
-                                int runsPerSet, String machine, String design) {
+                                int runsPerSet, String machine, String design, Double cpuLimitCpus) {
 
     /** The profile's file name inside an experiment folder. */
     public static final String FILE_NAME = "experiment.json";
@@ -45,7 +46,7 @@ public record ExperimentProfile(String scenario, double timeScale, long seed, Do
     public static ExperimentProfile of(ExperimentPlan plan, String machine) {
         RunConditions c = plan.conditions();
         return new ExperimentProfile(c.scenario(), c.timeScale(), c.seed(), c.gridResolutionM(), plan.runsPerSet(), machine,
-                c.design().label());
+                c.design().label(), c.cpuLimitCpus());
     }
 
     /**
@@ -54,7 +55,7 @@ public record ExperimentProfile(String scenario, double timeScale, long seed, Do
      * @return this profile with those
      */
     public ExperimentProfile withRunsAndMachine(int runs, String machines) {
-        return new ExperimentProfile(scenario, timeScale, seed, gridResolutionM, runs, machines, design);
+        return new ExperimentProfile(scenario, timeScale, seed, gridResolutionM, runs, machines, design, cpuLimitCpus);
     }
 
     /**
@@ -74,7 +75,7 @@ public record ExperimentProfile(String scenario, double timeScale, long seed, Do
         RunConditions c = rows.get(0).conditions();
         int runs = rows.stream().mapToInt(RunResult::run).max().orElse(0);
         return new ExperimentProfile(c.scenario(), c.timeScale(), c.seed(), c.gridResolutionM(), runs, null,
-                c.design().label());
+                c.design().label(), c.cpuLimitCpus());
     }
 
     /**

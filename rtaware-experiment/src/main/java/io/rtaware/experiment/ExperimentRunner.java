@@ -255,15 +255,21 @@ public final class ExperimentRunner {
         long plannedSeed = c.seedOf(r.set(), r.run());
         long plannedRobot = c.robotSeedOf(r.set(), r.run());
         if (!c.scenario().equals(rc.scenario()) || c.timeScale() != rc.timeScale() || c.design() != rc.design()
+                || !Objects.equals(c.cpuLimitCpus(), rc.cpuLimitCpus())
                 || plannedSeed != r.worldSeed() || !Objects.equals(c.gridResolutionM(), rc.gridResolutionM())
                 || plannedRobot != r.robotSeed()) {
             throw new ExperimentInputException(where + " was made with scenario " + rc.scenario() + ", time scale "
                     + rc.timeScale() + ", design " + rc.design().label() + ", seed " + r.worldSeed() + ", grid "
-                    + gridLabel(rc.gridResolutionM()) + ", robot seed " + r.robotSeed() + "; now scenario " + c.scenario()
-                    + ", time scale " + c.timeScale() + ", design " + c.design().label() + ", seed " + plannedSeed
-                    + ", grid " + gridLabel(c.gridResolutionM()) + ", robot seed " + plannedRobot
+                    + gridLabel(rc.gridResolutionM()) + ", robot seed " + r.robotSeed() + ", CPU limit "
+                    + cpuLabel(rc.cpuLimitCpus()) + "; now scenario " + c.scenario() + ", time scale " + c.timeScale()
+                    + ", design " + c.design().label() + ", seed " + plannedSeed + ", grid " + gridLabel(c.gridResolutionM())
+                    + ", robot seed " + plannedRobot + ", CPU limit " + cpuLabel(c.cpuLimitCpus())
                     + "; use the same options or another --out");
         }
+    }
+
+    private static String cpuLabel(Double cpus) {
+        return cpus == null ? "none" : cpus + " CPUs";
     }
 
     private static String gridLabel(Double m) {

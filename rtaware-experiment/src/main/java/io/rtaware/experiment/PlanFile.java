@@ -24,7 +24,7 @@ import java.util.TreeMap;
  * <pre>
  * {"schema": "rtaware.experiment-plan/1", "sets": [{"name": "Set 1", "periods_ms": {...}, "top_speed_mps": null}, ...],
  *  "runs_per_set": 10, "scenario": "paper-room", "time_scale": 10.0, "seed": 1, "robot_seed": 1, "robots": 1000,
- *  "design": "independent", "grid_resolution_m": null, "shard": "1/2", "order": ["set1-run1", "set2-run1", ...]}
+ *  "design": "independent", "cpu_limit_cpus": null, "grid_resolution_m": null, "shard": "1/2", "order": ["set1-run1", "set2-run1", ...]}
  * </pre>
  *
  * {@code design} ({@link ExperimentDesign}) tells the analysis whether the sets are independent
@@ -74,6 +74,7 @@ public final class PlanFile {
         root.put("robot_seed", c.robotSeed());
         root.put("robots", c.robots());
         root.put("design", c.design().label());
+        root.put("cpu_limit_cpus", c.cpuLimitCpus());
         if (c.gridResolutionM() == null) {
             root.putNull("grid_resolution_m");
         } else {
@@ -121,7 +122,8 @@ public final class PlanFile {
                     grid.isNumber() ? grid.asDouble() : null,
                     robotSeed.isNumber() ? robotSeed.asLong() : RunConditions.DEFAULT_ROBOT_SEED,
                     robots.isNumber() ? robots.asInt() : 1,
-                    design.isTextual() ? ExperimentDesign.parse(design.asText()) : ExperimentDesign.BLOCKED);
+                    design.isTextual() ? ExperimentDesign.parse(design.asText()) : ExperimentDesign.BLOCKED,
+                    root.path("cpu_limit_cpus").isNumber() ? root.path("cpu_limit_cpus").asDouble() : null);
             JsonNode shard = root.path("shard");
             return Optional.of(new ExperimentPlan(sets, required(root, "runs_per_set").asInt(), conditions,
                     shard.isTextual() ? Shard.parse(shard.asText()) : Shard.WHOLE));

@@ -35,7 +35,8 @@ import java.util.Map;
  * label; empty in rows that predate it, which are all {@code blocked}), started_utc, ended_utc
  * (when the run's process started and ended, ISO-8601 UTC: {@link RunTimes}), check_other_cpus,
  * check_steal_pct, check_load (the figures of the quiet check's last look before the run, those its
- * rule judged: {@link MachineCheck.Reading}); all empty in rows that predate them
+ * rule judged: {@link MachineCheck.Reading}); all empty in rows that predate them), cpu_limit_cpus
+ * (the CPU quota the run's JVM ran under, {@code --cpu-limit}; empty for none
  * </pre>
  *
  * {@code seed} and {@code robot_seed} are the run's own world seed and robot seed, as passed to
@@ -91,7 +92,8 @@ public final class ResultsCsv {
         }
         h.addAll(List.of("robot_seed", "robots", "min_clearance_m", "near_misses"));
         h.addAll(MACHINE_COLUMNS);
-        h.addAll(List.of("design", "started_utc", "ended_utc", "check_other_cpus", "check_steal_pct", "check_load"));
+        h.addAll(List.of("design", "started_utc", "ended_utc", "check_other_cpus", "check_steal_pct", "check_load",
+                "cpu_limit_cpus"));
         return List.copyOf(h);
     }
 
@@ -234,6 +236,7 @@ public final class ResultsCsv {
         f.add(number(m.checkOtherCpus()));
         f.add(number(m.checkStealPct()));
         f.add(number(m.checkLoad()));
+        f.add(r.conditions().cpuLimitCpus() == null ? "" : number(r.conditions().cpuLimitCpus()));
         return String.join(",", f);
     }
 
@@ -358,7 +361,7 @@ public final class ResultsCsv {
                 : Long.parseLong(robotSeed) - design.robotIndex(worldSeed, run, robots);
         RunConditions conditions = new RunConditions(row.get("scenario"), Double.parseDouble(row.get("time_scale")),
                 design.planSeed(worldSeed, setNumber, run), grid.isEmpty() ? null : Double.parseDouble(grid),
-                firstRobotSeed, robots, design);
+                firstRobotSeed, robots, design, optionalDouble(row.get("cpu_limit_cpus")));
         Map<String, TaskResult> tasks = new LinkedHashMap<>();
         for (String t : PeriodSet.TASKS) {
             if (!row.get(t + "_releases").isEmpty()) {

@@ -1,5 +1,6 @@
 package io.rtaware.experiment;
 
+import io.rtaware.core.conditions.CpuQuota;
 import java.util.Objects;
 
 /**
@@ -18,9 +19,11 @@ import java.util.Objects;
  * @param robots the population's size ({@code --robots}, at least 1); with one robot every run
  *     drives it
  * @param design how each run gets its world seed and its robot ({@link ExperimentDesign})
+ * @param cpuLimitCpus the CPU quota each run's JVM ran under ({@code --cpu-limit}: the controller
+ *     and its built-in server share it, as the paper's robot ran both on one computer), or null for none
  */
 public record RunConditions(String scenario, double timeScale, long seed, Double gridResolutionM, long robotSeed,
-                            int robots, ExperimentDesign design) {
+                            int robots, ExperimentDesign design, Double cpuLimitCpus) {
 
     /**
      * The robot seed of plans and rows that predate the robot columns: robot 4, which every
@@ -50,6 +53,30 @@ public record RunConditions(String scenario, double timeScale, long seed, Double
      */
     public RunConditions(String scenario, double timeScale, long seed, Double gridResolutionM) {
         this(scenario, timeScale, seed, gridResolutionM, DEFAULT_ROBOT_SEED, 1, ExperimentDesign.BLOCKED);
+    }
+
+    /**
+     * Conditions without a CPU quota.
+     *
+     * @param scenario the course
+     * @param timeScale world seconds per wall second
+     * @param seed the world seed of set 1 run 1
+     * @param gridResolutionM grid cell size, or null
+     * @param robotSeed the first robot seed of the population
+     * @param robots the population's size
+     * @param design how each run gets its world seed and robot
+     */
+    public RunConditions(String scenario, double timeScale, long seed, Double gridResolutionM, long robotSeed, int robots,
+                         ExperimentDesign design) {
+        this(scenario, timeScale, seed, gridResolutionM, robotSeed, robots, design, null);
+    }
+
+    /**
+     * @param cpus the CPU quota of each run, or null for none
+     * @return these conditions with it
+     */
+    public RunConditions withCpuLimit(Double cpus) {
+        return new RunConditions(scenario, timeScale, seed, gridResolutionM, robotSeed, robots, design, cpus);
     }
 
     /**
@@ -88,6 +115,7 @@ public record RunConditions(String scenario, double timeScale, long seed, Double
      * @param robotSeed the first robot seed of the population
      * @param robots the population's size, at least 1
      * @param design how each run gets its world seed and its robot
+     * @param cpuLimitCpus the CPU quota of each run, or null for none
      */
     public RunConditions {
         Objects.requireNonNull(scenario, "scenario");
@@ -100,6 +128,9 @@ public record RunConditions(String scenario, double timeScale, long seed, Double
         }
         if (robots < 1) {
             throw new IllegalArgumentException("robots must be at least 1, got " + robots);
+        }
+        if (cpuLimitCpus != null && CpuQuota.invalid(cpuLimitCpus) != null) {
+            throw new IllegalArgumentException("--cpu-limit " + CpuQuota.invalid(cpuLimitCpus));
         }
     }
 

@@ -9,6 +9,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 
@@ -116,6 +117,25 @@ class ExperimentPlanTest {
         assertEquals("--robots must be at least 1, got 0", e.getMessage());
         assertEquals("the design must be one of [independent, blocked], got 'paired'",
                 assertThrows(ExperimentInputException.class, () -> ExperimentDesign.parse("paired")).getMessage());
+    }
+
+    @Test
+    void aCpuLimitIsPassedToEveryRunAndKeptInPlanJsonAndResultsCsv(@org.junit.jupiter.api.io.TempDir Path dir)
+            throws Exception {
+        RunConditions c = new RunConditions("paper-room", 10, 1, null, 1, 1000, ExperimentDesign.INDEPENDENT).withCpuLimit(0.5);
+        ExperimentPlan plan = new ExperimentPlan(ExperimentSets.paper(), 2, c);
+        List<String> args = plan.runArguments(plan.order().get(3), Path.of("o"));
+        assertEquals("0.5", args.get(args.indexOf("--cpu-limit") + 1));
+        PlanFile.write(dir, plan);
+        assertEquals(plan, PlanFile.read(dir).orElseThrow());
+        RunResult r = new RunResult(1, 2, plan.sets().get(0), c, "completed", 230, 0.5, 20, 0, 4, 4, Map.of());
+        Path csv = dir.resolve(ResultsCsv.FILE_NAME);
+        ResultsCsv.append(csv, r);
+        assertEquals(c, ResultsCsv.read(csv).get(0).conditions());
+        assertEquals(List.of(), new ExperimentPlan(ExperimentSets.paper(), 1, c.withCpuLimit(null))
+                .runArguments(plan.order().get(0), Path.of("o")).stream().filter("--cpu-limit"::equals).toList());
+        assertEquals("--cpu-limit must be a number of CPUs from 0.01 to 1024, got 0.0",
+                assertThrows(IllegalArgumentException.class, () -> c.withCpuLimit(0.0)).getMessage());
     }
 
     @Test

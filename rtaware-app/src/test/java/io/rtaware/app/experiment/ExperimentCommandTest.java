@@ -43,6 +43,10 @@ class ExperimentCommandTest {
                 .assertOneLineUserError("the design must be one of [independent, blocked], got 'paired'");
         CliRun.of("experiment", "--robots", "0", "--out", out.toString())
                 .assertOneLineUserError("--robots must be at least 1, got 0");
+        CliRun.of("experiment", "--cpu-limit", "0.001", "--out", out.toString())
+                .assertOneLineUserError("--cpu-limit must be a number of CPUs from 0.01 to 1024, got 0.001");
+        CliRun.of("run", "--cpu-limit", "0", "--out", out.toString())
+                .assertOneLineUserError("--cpu-limit must be a number of CPUs from 0.01 to 1024, got 0.0");
         assertFalse(Files.exists(out));
     }
 
@@ -54,6 +58,7 @@ class ExperimentCommandTest {
                 planOf("--design", "blocked", "--robot-seed", "4", "--seed", "3").conditions());
         assertEquals(new RunConditions("paper-room", 10, 1, null, 1, 50, ExperimentDesign.INDEPENDENT),
                 planOf("--robots", "50").conditions());
+        assertEquals(0.5, planOf("--cpu-limit", "0.5").conditions().cpuLimitCpus());
     }
 
     private static ExperimentPlan planOf(String... args) {

@@ -162,7 +162,10 @@ public final class ExperimentReport {
                 + " times faster than wall time, so each task's computation weighs " + k
                 + " times more against its period), grid resolution "
                 + (p.gridResolutionM() == null ? "`run`'s default" : plain(p.gridResolutionM()) + " m")
-                + ", seed " + p.seed() + " (set 1 run 1's), " + p.runsPerSet() + " run(s) per set planned.");
+                + ", seed " + p.seed() + " (set 1 run 1's), " + p.runsPerSet() + " run(s) per set planned"
+                + (robots.cpuLimitCpus() == null ? "" : ", each run's JVM (controller and built-in server) under a CPU "
+                        + "quota of " + plain(robots.cpuLimitCpus()) + " CPUs (--cpu-limit; results.csv: cpu_limit_cpus)")
+                + ".");
         b.text("Design: " + robots.robotsInWords() + "; the systematic odometry errors come from the robot seed, "
                 + "each run's noise from its world seed (results.csv: seed, robot_seed, robots, design).");
         b.text("Machine: " + (p.machine() == null ? "not recorded (no experiment.json)" : p.machine())
