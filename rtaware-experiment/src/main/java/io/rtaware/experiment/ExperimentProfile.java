@@ -88,7 +88,8 @@ public record ExperimentProfile(String scenario, double timeScale, long seed, Do
 
     /**
      * @param dir an experiment folder
-     * @return its profile, if {@code experiment.json} is there and readable
+     * @return its profile, if {@code experiment.json} is there and readable; a file written before the
+     *     design was recorded reads as {@code blocked}
      */
     public static Optional<ExperimentProfile> read(Path dir) {
         Path file = dir.resolve(FILE_NAME);
@@ -96,7 +97,10 @@ public record ExperimentProfile(String scenario, double timeScale, long seed, Do
             return Optional.empty();
         }
         try {
-            return Optional.of(MAPPER.readValue(file.toFile(), ExperimentProfile.class));
+            ExperimentProfile p = MAPPER.readValue(file.toFile(), ExperimentProfile.class);
+            // A file without the design predates it: its runs were blocked, and the summary says so.
+            return Optional.of(p.design() != null ? p : new ExperimentProfile(p.scenario(), p.timeScale(), p.seed(),
+                    p.gridResolutionM(), p.runsPerSet(), p.machine(), ExperimentDesign.BLOCKED.label(), p.cpuLimitCpus()));
         } catch (IOException e) {
             return Optional.empty();
         }

@@ -54,6 +54,16 @@ class ResultsCsvTest {
     }
 
     @Test
+    void anExperimentJsonFromBeforeTheDesignReadsAsBlocked() throws Exception {
+        Files.writeString(dir.resolve(ExperimentProfile.FILE_NAME), "{\"scenario\":\"paper-room\",\"time_scale\":10.0,"
+                + "\"seed\":1,\"grid_resolution_m\":null,\"runs_per_set\":12,\"machine\":\"m\"}\n");
+        ExperimentProfile p = ExperimentProfile.read(dir).orElseThrow();
+        assertEquals("blocked", p.design());
+        assertEquals(ExperimentDesign.BLOCKED, p.experimentDesign());
+        assertEquals(null, p.cpuLimitCpus());
+    }
+
+    @Test
     void aPartialLastLineIsIgnoredOnReadAndDroppedOnAppend() throws Exception {
         Path f = dir.resolve("results.csv");
         ResultsCsv.append(f, sample(1, "S"));
