@@ -13,6 +13,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+import java.util.function.Predicate;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -51,6 +52,35 @@ class CpuQuotaTest {
             }
         }
     };
+
+    /** The fixture's operations, except that each on a path {@code refused} names is denied, as a kernel would. */
+    private CpuQuota.Writes failing(Predicate<Path> refused) {
+        return new CpuQuota.Writes() {
+            @Override
+            public void createDirectory(Path dir) throws IOException {
+                check(dir);
+                fixture.createDirectory(dir);
+            }
+
+            @Override
+            public void write(Path file, String text) throws IOException {
+                check(file);
+                fixture.write(file, text);
+            }
+
+            @Override
+            public void removeDirectory(Path dir) throws IOException {
+                check(dir);
+                fixture.removeDirectory(dir);
+            }
+
+            private void check(Path path) throws AccessDeniedException {
+                if (refused.test(path)) {
+                    throw new AccessDeniedException(path.toString());
+                }
+            }
+        };
+    }
 
     private void v1Tree() throws IOException {
         Path cpu = Files.createDirectories(root.resolve("cpu"));
@@ -106,22 +136,7 @@ class CpuQuotaTest {
     @Test
     void anUnwritableHierarchyIsRefusedInOneLineAndLeavesNothing() throws Exception {
         v1Tree();
-        CpuQuota.Writes readOnly = new CpuQuota.Writes() {
-            @Override
-            public void createDirectory(Path dir) throws IOException {
-                throw new AccessDeniedException(dir.toString());
-            }
-
-            @Override
-            public void write(Path file, String text) throws IOException {
-                throw new AccessDeniedException(file.toString());
-            }
-
-            @Override
-            public void removeDirectory(Path dir) throws IOException {
-                throw new AccessDeniedException(dir.toString());
-            }
-        };
+        CpuQuota.Writes readOnly = failing(p -> true);
         CpuQuota.Unavailable e = assertThrows(CpuQuota.Unavailable.class, () -> CpuQuota.create(root, "5", 1, readOnly));
         Path group = root.resolve("cpu/rtaware-5");
         assertEquals("--cpu-limit: cannot create the cgroup " + group + " (AccessDeniedException: " + group
@@ -133,25 +148,7 @@ class CpuQuotaTest {
     @Test
     void aQuotaTheKernelRefusesRemovesTheGroupItMade() throws Exception {
         v1Tree();
-        CpuQuota.Writes refusesQuota = new CpuQuota.Writes() {
-            @Override
-            public void createDirectory(Path dir) throws IOException {
-                fixture.createDirectory(dir);
-            }
-
-            @Override
-            public void write(Path file, String text) throws IOException {
-                if (file.endsWith("cpu.cfs_quota_us")) {
-                    throw new IOException("Invalid argument");
-                }
-                fixture.write(file, text);
-            }
-
-            @Override
-            public void removeDirectory(Path dir) throws IOException {
-                fixture.removeDirectory(dir);
-            }
-        };
+        CpuQuota.Writes refusesQuota = failing(p -> p.endsWith("cpu.cfs_quota_us"));
         CpuQuota.Unavailable e = assertThrows(CpuQuota.Unavailable.class, () -> CpuQuota.create(root, "6", 2, refusesQuota));
         assertTrue(e.getMessage().startsWith("--cpu-limit: cannot set the quota of "), e.getMessage());
         assertFalse(Files.exists(root.resolve("cpu/rtaware-6")));
