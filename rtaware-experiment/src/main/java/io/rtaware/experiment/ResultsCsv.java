@@ -228,7 +228,7 @@ public final class ResultsCsv {
         f.add(number(m.gcMaxPauseMs()));
         f.add(number(m.timeToSafepointMaxMs()));
         f.add(quote(m.beforeRun()));
-        f.add(recorded ? number(m.waitedS()) : "");
+        f.add(recorded || !m.beforeRun().isEmpty() ? number(m.waitedS()) : "");
         f.add(m.machineCpus() > 0 ? Integer.toString(m.machineCpus()) : "");
         f.add(r.conditions().design().label());
         f.add(RunTimes.format(r.times().startedUtc()));
@@ -380,8 +380,7 @@ public final class ResultsCsv {
         }
         String speed = row.get("top_speed_mps");
         PeriodSet set = new PeriodSet(row.get("set_name"), periods, speed.isEmpty() ? null : Double.valueOf(speed));
-        RunMachine machine = row.get("machine").isEmpty() ? RunMachine.NOT_RECORDED
-                : new RunMachine(row.get("machine"), row.get("machine_reasons"), decimal(row.get("other_cpus")),
+        RunMachine machine = row.get("machine").isEmpty() ? checkOnly(row) : new RunMachine(row.get("machine"), row.get("machine_reasons"), decimal(row.get("other_cpus")),
                         decimal(row.get("steal_pct")), decimal(row.get("load_start")), decimal(row.get("load_end")),
                         decimal(row.get("gc_max_pause_ms")), decimal(row.get("time_to_safepoint_max_ms")),
                         row.get("machine_before_run"), row.get("waited_for_quiet_s").isEmpty() ? 0
@@ -398,6 +397,21 @@ public final class ResultsCsv {
                 optionalInt(row.get("waypoints_reached")), optionalInt(row.get("waypoints_total")), tasks, mediator,
                 optionalDouble(row.get("min_clearance_m")), optionalLong(row.get("near_misses")), machine,
                 new RunTimes(RunTimes.parse(row.get("started_utc")), RunTimes.parse(row.get("ended_utc"))));
+    }
+
+    /**
+     * The machine of a row without the run's own conditions (an {@code error} run, or a row that
+     * predates them): only what the check before it found, if it was recorded.
+     */
+    private static RunMachine checkOnly(Map<String, String> row) {
+        String before = row.get("machine_before_run");
+        if (before.isEmpty()) {
+            return RunMachine.NOT_RECORDED;
+        }
+        String waited = row.get("waited_for_quiet_s");
+        return RunMachine.NOT_RECORDED.withCheck(new QuietGate.Passage(before, waited.isEmpty() ? 0 : Double.parseDouble(waited),
+                "", decimal(row.get("check_other_cpus")), decimal(row.get("check_steal_pct")),
+                decimal(row.get("check_load"))));
     }
 
     private static String number(double v) {

@@ -115,6 +115,18 @@ class ExperimentRunnerTest {
         assertEquals(new RunTimes(Instant.parse("2026-11-28T02:00:00.250Z"), Instant.parse("2026-11-28T02:01:30.250Z")),
                 read.times());
         assertEquals(0.03, read.machine().checkOtherCpus());
+        // A run that left no report (an error row) keeps the check it was admitted on too.
+        RunResult error = RunResult.error(1, 3, read.periods(), read.conditions())
+                .withMachine(RunMachine.NOT_RECORDED.withCheck(new QuietGate.Passage("busy", 12, "r", 0.4, 0.0, 1.5)));
+        ResultsCsv.append(dir.resolve(ResultsCsv.FILE_NAME), error);
+        RunMachine back = ResultsCsv.read(dir.resolve(ResultsCsv.FILE_NAME)).get(2).machine();
+        assertEquals(List.of("busy", 12.0, 0.4, 0.0, 1.5), List.of(back.beforeRun(), back.waitedS(), back.checkOtherCpus(),
+                back.checkStealPct(), back.checkLoad()));
+        // ... so the stated rule applies to it: a run that left no report counts as quiet when its check was.
+        RunResult quietError = RunResult.error(1, 4, read.periods(), read.conditions())
+                .withMachine(RunMachine.NOT_RECORDED.withCheck(new QuietGate.Passage("quiet", 0, "r", 0.01, 0.0, 0.2)));
+        ResultsCsv.append(dir.resolve(ResultsCsv.FILE_NAME), quietError);
+        assertTrue(ExperimentConditions.countsAsQuiet(ResultsCsv.read(dir.resolve(ResultsCsv.FILE_NAME)).get(3)));
     }
 
     @Test
