@@ -21,7 +21,7 @@ import java.util.TreeMap;
  * order (so its statistics are those of the same runs made in one folder), each run's folder,
  * {@code experiment.json} (the machines of all shards) and {@code plan.json}.
  *
- * <p>Folders of different plans are refused: the scenario, time scale, seed and grid must be
+ * <p>Folders of different plans are refused: the scenario, time scale, seed, grid and design must be
  * equal; where two folders have a {@code plan.json}, their sets (names, periods, top speeds) and
  * runs per set must be equal; every row's set must be the set of that number in the plan; and no
  * run may be in two folders. Each folder must pass {@link FolderCheck} (not being written, no
@@ -92,11 +92,13 @@ public final class ExperimentMerge {
         RunConditions x = a.conditions();
         RunConditions y = b.conditions();
         if (!x.scenario().equals(y.scenario()) || x.timeScale() != y.timeScale() || x.seed() != y.seed()
-                || !Objects.equals(x.gridResolutionM(), y.gridResolutionM())) {
+                || !Objects.equals(x.gridResolutionM(), y.gridResolutionM()) || x.design() != y.design()
+                || !Objects.equals(x.cpuLimitCpus(), y.cpuLimitCpus())) {
             throw new ExperimentInputException("cannot merge " + a.dir() + " (scenario " + x.scenario() + ", time scale "
-                    + x.timeScale() + ", seed " + x.seed() + ", grid " + x.gridResolutionM() + ") and " + b.dir()
-                    + " (scenario " + y.scenario() + ", time scale " + y.timeScale() + ", seed " + y.seed() + ", grid "
-                    + y.gridResolutionM() + "): different plans");
+                    + x.timeScale() + ", seed " + x.seed() + ", grid " + x.gridResolutionM() + ", design "
+                    + x.design().label() + ") and " + b.dir() + " (scenario " + y.scenario() + ", time scale "
+                    + y.timeScale() + ", seed " + y.seed() + ", grid " + y.gridResolutionM() + ", design "
+                    + y.design().label() + "): different plans");
         }
     }
 
@@ -146,8 +148,7 @@ public final class ExperimentMerge {
         }
         if (profile != null) {
             int runs = plan.map(ExperimentPlan::runsPerSet).orElse(profile.runsPerSet());
-            new ExperimentProfile(profile.scenario(), profile.timeScale(), profile.seed(), profile.gridResolutionM(), runs,
-                    machines.isEmpty() ? null : String.join(" + ", machines)).write(out);
+            profile.withRunsAndMachine(runs, machines.isEmpty() ? null : String.join(" + ", machines)).write(out);
         }
         if (plan.isPresent()) {
             ExperimentPlan p = plan.get();

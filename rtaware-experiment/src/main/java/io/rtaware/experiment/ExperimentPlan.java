@@ -85,8 +85,8 @@ public record ExperimentPlan(List<PeriodSet> sets, int runsPerSet, RunConditions
                 "--scenario", conditions.scenario(),
                 "--periods", planned.periods().periodsArgument(),
                 "--time-scale", plain(conditions.timeScale()),
-                "--seed", Long.toString(conditions.seedOf(planned.run())),
-                "--robot-seed", Long.toString(conditions.robotSeedOf(planned.run()))));
+                "--seed", Long.toString(conditions.seedOf(planned.set(), planned.run())),
+                "--robot-seed", Long.toString(conditions.robotSeedOf(planned.set(), planned.run()))));
         if (planned.periods().topSpeedMps() != null) {
             args.add("--top-speed");
             args.add(plain(planned.periods().topSpeedMps()));
@@ -94,6 +94,10 @@ public record ExperimentPlan(List<PeriodSet> sets, int runsPerSet, RunConditions
         if (conditions.gridResolutionM() != null) {
             args.add("--grid-resolution");
             args.add(plain(conditions.gridResolutionM()));
+        }
+        if (conditions.cpuLimitCpus() != null) {
+            args.add("--cpu-limit");
+            args.add(plain(conditions.cpuLimitCpus()));
         }
         args.addAll(List.of("--out", runDir.toString(), "--quiet"));
         return args;

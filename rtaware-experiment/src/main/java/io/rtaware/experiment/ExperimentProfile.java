@@ -1,5 +1,6 @@
 package io.rtaware.experiment;
 
+import com.fasterxml.jackson.annotation.JsonIgnore;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.core.conditions.HostFiles;
 import io.rtaware.core.conditions.HostReader;
@@ -20,13 +21,17 @@ import java.util.Optional;
  *
  * @param scenario the course
  * @param timeScale world time runs this many times faster than wall time
- * @param seed seed of run 1 (run j uses seed + j - 1)
+ * @param seed world seed of run 1 of set 1 (the others follow by the design)
  * @param gridResolutionM grid cell size in metres, or null for {@code run}'s default
  * @param runsPerSet runs planned per set
  * @param machine the machine the runs were made on, or null if not recorded
+ * @param design {@link ExperimentDesign#label()} of the runs ({@code independent} or
+ *     {@code blocked}), or null in a folder made before the design was recorded (all blocked:
+ *     {@link #experimentDesign()})
+ * @param cpuLimitCpus the CPU quota each run's JVM ran under ({@code --cpu-limit}), or null for none
  */
 public record ExperimentProfile(String scenario, double timeScale, long seed, Double gridResolutionM,
-                                int runsPerSet, String machine) {
+                                int runsPerSet, String machine, String design, Double cpuLimitCpus) {
 
     /** The profile's file name inside an experiment folder. */
     public static final String FILE_NAME = "experiment.json";
@@ -40,7 +45,26 @@ public record ExperimentProfile(String scenario, double timeScale, long seed, Do
      */
     public static ExperimentProfile of(ExperimentPlan plan, String machine) {
         RunConditions c = plan.conditions();
-        return new ExperimentProfile(c.scenario(), c.timeScale(), c.seed(), c.gridResolutionM(), plan.runsPerSet(), machine);
+        return new ExperimentProfile(c.scenario(), c.timeScale(), c.seed(), c.gridResolutionM(), plan.runsPerSet(), machine,
+                c.design().label(), c.cpuLimitCpus());
+    }
+
+    /**
+     * @param runs runs planned per set
+     * @param machines the machines the runs were made on, or null
+     * @return this profile with those
+     */
+    public ExperimentProfile withRunsAndMachine(int runs, String machines) {
+        return new ExperimentProfile(scenario, timeScale, seed, gridResolutionM, runs, machines, design, cpuLimitCpus);
+    }
+
+    /**
+     * @return the design of the runs; {@link ExperimentDesign#BLOCKED} for a folder made before it
+     *     was recorded, since every run j then shared seed j across the sets
+     */
+    @JsonIgnore
+    public ExperimentDesign experimentDesign() {
+        return design == null ? ExperimentDesign.BLOCKED : ExperimentDesign.parse(design);
     }
 
     /**
@@ -50,7 +74,8 @@ public record ExperimentProfile(String scenario, double timeScale, long seed, Do
     public static ExperimentProfile fromResults(List<RunResult> rows) {
         RunConditions c = rows.get(0).conditions();
         int runs = rows.stream().mapToInt(RunResult::run).max().orElse(0);
-        return new ExperimentProfile(c.scenario(), c.timeScale(), c.seed(), c.gridResolutionM(), runs, null);
+        return new ExperimentProfile(c.scenario(), c.timeScale(), c.seed(), c.gridResolutionM(), runs, null,
+                c.design().label(), c.cpuLimitCpus());
     }
 
     /**
@@ -63,7 +88,8 @@ public record ExperimentProfile(String scenario, double timeScale, long seed, Do
 
     /**
      * @param dir an experiment folder
-     * @return its profile, if {@code experiment.json} is there and readable
+     * @return its profile, if {@code experiment.json} is there and readable; a file written before the
+     *     design was recorded reads as {@code blocked}
      */
     public static Optional<ExperimentProfile> read(Path dir) {
         Path file = dir.resolve(FILE_NAME);
@@ -71,7 +97,10 @@ public record ExperimentProfile(String scenario, double timeScale, long seed, Do
             return Optional.empty();
         }
         try {
-            return Optional.of(MAPPER.readValue(file.toFile(), ExperimentProfile.class));
+            ExperimentProfile p = MAPPER.readValue(file.toFile(), ExperimentProfile.class);
+            // A file without the design predates it: its runs were blocked, and the summary says so.
+            return Optional.of(p.design() != null ? p : new ExperimentProfile(p.scenario(), p.timeScale(), p.seed(),
+                    p.gridResolutionM(), p.runsPerSet(), p.machine(), ExperimentDesign.BLOCKED.label(), p.cpuLimitCpus()));
         } catch (IOException e) {
             return Optional.empty();
         }

@@ -3,6 +3,8 @@ package io.rtaware.experiment;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Clock;
+import java.time.Instant;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
@@ -50,6 +52,7 @@ public final class ExperimentRunner {
     private volatile Process current;
     private boolean record;
     private QuietGate gate;
+    private Clock clock = Clock.systemUTC();
 
     /**
      * @param plan the runs to make
@@ -108,12 +111,14 @@ public final class ExperimentRunner {
                 break;
             }
             progress.started(planned, finished, total);
+            Instant started = clock.instant();
             RunResult result = runOne(planned);
             if (result == null) {
                 break;
             }
+            result = result.withTimes(new RunTimes(started, clock.instant()));
             if (passage != null) {
-                result = result.withMachine(result.machine().withCheck(passage.beforeRun(), passage.waitedS()));
+                result = result.withMachine(result.machine().withCheck(passage));
             }
             ResultsCsv.append(csv, result);
             finished++;
@@ -154,6 +159,16 @@ public final class ExperimentRunner {
      */
     public ExperimentRunner quietGate(QuietGate quietGate) {
         this.gate = quietGate;
+        return this;
+    }
+
+    /**
+     * @param wallClock the clock whose instants are each run's {@code started_utc} and {@code ended_utc}
+     *     (default: the system's, in UTC)
+     * @return this runner
+     */
+    public ExperimentRunner clock(Clock wallClock) {
+        this.clock = Objects.requireNonNull(wallClock, "wallClock");
         return this;
     }
 
@@ -237,14 +252,24 @@ public final class ExperimentRunner {
         }
         RunConditions c = plan.conditions();
         RunConditions rc = r.conditions();
-        if (!c.scenario().equals(rc.scenario()) || c.timeScale() != rc.timeScale() || c.seed() != rc.seed()
-                || !Objects.equals(c.gridResolutionM(), rc.gridResolutionM()) || c.robotSeedOf(r.run()) != rc.robotSeedOf(r.run())) {
+        long plannedSeed = c.seedOf(r.set(), r.run());
+        long plannedRobot = c.robotSeedOf(r.set(), r.run());
+        if (!c.scenario().equals(rc.scenario()) || c.timeScale() != rc.timeScale() || c.design() != rc.design()
+                || !Objects.equals(c.cpuLimitCpus(), rc.cpuLimitCpus())
+                || plannedSeed != r.worldSeed() || !Objects.equals(c.gridResolutionM(), rc.gridResolutionM())
+                || plannedRobot != r.robotSeed()) {
             throw new ExperimentInputException(where + " was made with scenario " + rc.scenario() + ", time scale "
-                    + rc.timeScale() + ", seed " + rc.seed() + ", grid " + gridLabel(rc.gridResolutionM()) + ", robot seed "
-                    + rc.robotSeedOf(r.run()) + "; now scenario " + c.scenario() + ", time scale " + c.timeScale() + ", seed "
-                    + c.seed() + ", grid " + gridLabel(c.gridResolutionM()) + ", robot seed " + c.robotSeedOf(r.run())
+                    + rc.timeScale() + ", design " + rc.design().label() + ", seed " + r.worldSeed() + ", grid "
+                    + gridLabel(rc.gridResolutionM()) + ", robot seed " + r.robotSeed() + ", CPU limit "
+                    + cpuLabel(rc.cpuLimitCpus()) + "; now scenario " + c.scenario() + ", time scale " + c.timeScale()
+                    + ", design " + c.design().label() + ", seed " + plannedSeed + ", grid " + gridLabel(c.gridResolutionM())
+                    + ", robot seed " + plannedRobot + ", CPU limit " + cpuLabel(c.cpuLimitCpus())
                     + "; use the same options or another --out");
         }
+    }
+
+    private static String cpuLabel(Double cpus) {
+        return cpus == null ? "none" : cpus + " CPUs";
     }
 
     private static String gridLabel(Double m) {

@@ -107,6 +107,23 @@ public record ExperimentSummary(String schema, ExperimentProfile profile, List<S
             return runs == 0 ? null : (double) completed / runs;
         }
 
+        /**
+         * The completion rate with its Wilson 95 % interval: an outcome of its own, since the runs
+         * that did not finish (stuck, timeout, error) have no run time and Table I cannot show them.
+         *
+         * @return completed runs of all runs with the interval, or null with no runs
+         */
+        public RateInterval completions95() {
+            return runs == 0 ? null : RateInterval.of(completed, runs);
+        }
+
+        /** @return {@link #completions95()}'s interval as {@code [lower, upper]}, 0 to 1, or null */
+        @JsonProperty("completion_rate_ci95")
+        public List<Double> completionRateCi95() {
+            RateInterval r = completions95();
+            return r == null ? null : List.of(r.lower(), r.upper());
+        }
+
         /** @return the share of measured runs with a collision, 0 to 1, or null with no measured run */
         @JsonProperty("collision_rate")
         public Double collisionRate() {

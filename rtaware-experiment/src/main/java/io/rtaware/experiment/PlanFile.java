@@ -23,9 +23,13 @@ import java.util.TreeMap;
  *
  * <pre>
  * {"schema": "rtaware.experiment-plan/1", "sets": [{"name": "Set 1", "periods_ms": {...}, "top_speed_mps": null}, ...],
- *  "runs_per_set": 10, "scenario": "paper-room", "time_scale": 10.0, "seed": 1, "robot_seed": 1, "robots": 1,
- *  "grid_resolution_m": null, "shard": "1/2", "order": ["set1-run1", "set2-run1", ...]}
+ *  "runs_per_set": 10, "scenario": "paper-room", "time_scale": 10.0, "seed": 1, "robot_seed": 1, "robots": 1000,
+ *  "design": "independent", "cpu_limit_cpus": null, "grid_resolution_m": null, "shard": "1/2", "order": ["set1-run1", "set2-run1", ...]}
  * </pre>
+ *
+ * {@code design} ({@link ExperimentDesign}) tells the analysis whether the sets are independent
+ * samples or blocked on the run number; a plan without it is {@code blocked}, as every experiment
+ * was before it was recorded.
  *
  * {@code order} is the order in which this folder's runs are made (sets interleaved over time,
  * {@link ExperimentPlan#fullOrder()}); it is written for the reader and not read back, since it
@@ -69,6 +73,8 @@ public final class PlanFile {
         root.put("seed", c.seed());
         root.put("robot_seed", c.robotSeed());
         root.put("robots", c.robots());
+        root.put("design", c.design().label());
+        root.put("cpu_limit_cpus", c.cpuLimitCpus());
         if (c.gridResolutionM() == null) {
             root.putNull("grid_resolution_m");
         } else {
@@ -110,15 +116,18 @@ public final class PlanFile {
             JsonNode grid = root.path("grid_resolution_m");
             JsonNode robotSeed = root.path("robot_seed");
             JsonNode robots = root.path("robots");
+            JsonNode design = root.path("design");
             RunConditions conditions = new RunConditions(required(root, "scenario").asText(),
                     required(root, "time_scale").asDouble(), required(root, "seed").asLong(),
                     grid.isNumber() ? grid.asDouble() : null,
                     robotSeed.isNumber() ? robotSeed.asLong() : RunConditions.DEFAULT_ROBOT_SEED,
-                    robots.isNumber() ? robots.asInt() : 1);
+                    robots.isNumber() ? robots.asInt() : 1,
+                    design.isTextual() ? ExperimentDesign.parse(design.asText()) : ExperimentDesign.BLOCKED,
+                    root.path("cpu_limit_cpus").isNumber() ? root.path("cpu_limit_cpus").asDouble() : null);
             JsonNode shard = root.path("shard");
             return Optional.of(new ExperimentPlan(sets, required(root, "runs_per_set").asInt(), conditions,
                     shard.isTextual() ? Shard.parse(shard.asText()) : Shard.WHOLE));
-        } catch (IllegalArgumentException e) {
+        } catch (IllegalArgumentException | ExperimentInputException e) {
             throw new ExperimentInputException(file + ": " + e.getMessage());
         }
     }

@@ -34,8 +34,16 @@ public final class QuietGate {
      * @param beforeRun the verdict of the last check ({@code quiet}, {@code busy}, ...)
      * @param waitedS how long it waited, s
      * @param reason the last check's line, e.g. {@code machine: busy (other processes used ...)}
+     * @param otherCpus the last check's other processes' CPU, CPUs ({@link MachineCheck.Reading}), or NaN
+     * @param stealPct the last check's steal, percent, or NaN
+     * @param load1 the last check's load average, or NaN
      */
-    public record Passage(String beforeRun, double waitedS, String reason) {
+    public record Passage(String beforeRun, double waitedS, String reason, double otherCpus, double stealPct,
+                          double load1) {
+
+        static Passage of(MachineCheck.Reading r, double waitedS) {
+            return new Passage(r.verdict().verdict(), waitedS, r.verdict().text(), r.otherCpus(), r.stealPct(), r.load1());
+        }
     }
 
     private final MachineCheck check;
@@ -71,23 +79,22 @@ public final class QuietGate {
     public Passage await(ProgressBar progress, BooleanSupplier stopped) throws InterruptedException {
         long start = nanoTime.getAsLong();
         while (!stopped.getAsBoolean()) {
-            MachineVerdict v = check.check();
+            MachineCheck.Reading reading = check.check();
+            MachineVerdict v = reading.verdict();
             double waited = (nanoTime.getAsLong() - start) / 1e9;
-            if (v.quiet() || MachineVerdict.UNKNOWN.equals(v.verdict())) {
-                return new Passage(v.verdict(), waited, v.text());
-            }
-            if (allowBusy) {
-                return new Passage(v.verdict(), waited, v.text());
+            if (v.quiet() || MachineVerdict.UNKNOWN.equals(v.verdict()) || allowBusy) {
+                return Passage.of(reading, waited);
             }
             if (waited >= maxWaitS) {
                 progress.note(String.format(Locale.ROOT, "waited %.0f s for a quiet machine, the most allowed "
                         + "(--quiet-wait); running anyway, labelled: %s", waited, v.text()));
-                return new Passage(v.verdict(), waited, v.text());
+                return Passage.of(reading, waited);
             }
             progress.waiting(String.format(Locale.ROOT, "waiting for a quiet machine (%.0f of at most %.0f s): %s",
                     waited, maxWaitS, v.text()));
             sleeper.sleep(Math.min(RETRY_S, Math.max(0, maxWaitS - waited)));
         }
-        return new Passage("interrupted", (nanoTime.getAsLong() - start) / 1e9, "interrupted while waiting");
+        return new Passage("interrupted", (nanoTime.getAsLong() - start) / 1e9, "interrupted while waiting", Double.NaN,
+                Double.NaN, Double.NaN);
     }
 }

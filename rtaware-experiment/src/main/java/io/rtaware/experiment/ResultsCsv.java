@@ -31,8 +31,16 @@ import java.util.Map;
  * machine, machine_reasons, other_cpus, steal_pct, load_start, load_end, gc_max_pause_ms,
  * time_to_safepoint_max_ms, machine_before_run, waited_for_quiet_s (the run's conditions:
  * {@link RunMachine}; {@code machine} is empty in rows that predate them), machine_cpus (the CPUs
- * the run's conditions counted; empty in rows that predate it)
+ * the run's conditions counted; empty in rows that predate it), design ({@link ExperimentDesign}'s
+ * label; empty in rows that predate it, which are all {@code blocked}), started_utc, ended_utc
+ * (when the run's process started and ended, ISO-8601 UTC: {@link RunTimes}), check_other_cpus,
+ * check_steal_pct, check_load (the figures of the quiet check's last look before the run, those its
+ * rule judged: {@link MachineCheck.Reading}); all empty in rows that predate them), cpu_limit_cpus
+ * (the CPU quota the run's JVM ran under, {@code --cpu-limit}; empty for none
  * </pre>
+ *
+ * {@code seed} and {@code robot_seed} are the run's own world seed and robot seed, as passed to
+ * {@code rtaware run}.
  *
  * RFC 4180 quoting; an empty field is a value the run did not give (an {@code error} row, or
  * {@code grid_resolution_m} when {@code run}'s default was used). Numbers are written exactly
@@ -84,6 +92,8 @@ public final class ResultsCsv {
         }
         h.addAll(List.of("robot_seed", "robots", "min_clearance_m", "near_misses"));
         h.addAll(MACHINE_COLUMNS);
+        h.addAll(List.of("design", "started_utc", "ended_utc", "check_other_cpus", "check_steal_pct", "check_load",
+                "cpu_limit_cpus"));
         return List.copyOf(h);
     }
 
@@ -167,7 +177,7 @@ public final class ResultsCsv {
         f.add(Integer.toString(r.run()));
         f.add(quote(r.conditions().scenario()));
         f.add(number(r.conditions().timeScale()));
-        f.add(Long.toString(r.conditions().seedOf(r.run())));
+        f.add(Long.toString(r.worldSeed()));
         f.add(r.conditions().gridResolutionM() == null ? "" : number(r.conditions().gridResolutionM()));
         r.periods().periodsMs().values().forEach(p -> f.add(Long.toString(p)));
         f.add(quote(r.outcome()));
@@ -203,7 +213,7 @@ public final class ResultsCsv {
             TaskResult t = r.tasks().get(task);
             f.add(t == null || t.maxSafePeriodMs() == null ? "" : number(t.maxSafePeriodMs()));
         }
-        f.add(Long.toString(r.conditions().robotSeedOf(r.run())));
+        f.add(Long.toString(r.robotSeed()));
         f.add(Integer.toString(r.conditions().robots()));
         f.add(r.minClearanceM() == null ? "" : number(r.minClearanceM()));
         f.add(r.nearMisses() == null ? "" : r.nearMisses().toString());
@@ -218,8 +228,15 @@ public final class ResultsCsv {
         f.add(number(m.gcMaxPauseMs()));
         f.add(number(m.timeToSafepointMaxMs()));
         f.add(quote(m.beforeRun()));
-        f.add(recorded ? number(m.waitedS()) : "");
+        f.add(recorded || !m.beforeRun().isEmpty() ? number(m.waitedS()) : "");
         f.add(m.machineCpus() > 0 ? Integer.toString(m.machineCpus()) : "");
+        f.add(r.conditions().design().label());
+        f.add(RunTimes.format(r.times().startedUtc()));
+        f.add(RunTimes.format(r.times().endedUtc()));
+        f.add(number(m.checkOtherCpus()));
+        f.add(number(m.checkStealPct()));
+        f.add(number(m.checkLoad()));
+        f.add(r.conditions().cpuLimitCpus() == null ? "" : number(r.conditions().cpuLimitCpus()));
         return String.join(",", f);
     }
 
@@ -336,11 +353,15 @@ public final class ResultsCsv {
         String robotSeed = row.get("robot_seed");
         String robotsText = row.get("robots");
         int robots = robotsText.isEmpty() ? 1 : Integer.parseInt(robotsText);
+        int setNumber = Integer.parseInt(row.get("set"));
+        ExperimentDesign design = row.get("design").isEmpty() ? ExperimentDesign.BLOCKED
+                : ExperimentDesign.parse(row.get("design"));
+        long worldSeed = Long.parseLong(row.get("seed"));
         long firstRobotSeed = robotSeed.isEmpty() ? RunConditions.DEFAULT_ROBOT_SEED
-                : Long.parseLong(robotSeed) - (run - 1) % robots;
+                : Long.parseLong(robotSeed) - design.robotIndex(worldSeed, run, robots);
         RunConditions conditions = new RunConditions(row.get("scenario"), Double.parseDouble(row.get("time_scale")),
-                Long.parseLong(row.get("seed")) - run + 1, grid.isEmpty() ? null : Double.parseDouble(grid),
-                firstRobotSeed, robots);
+                design.planSeed(worldSeed, setNumber, run), grid.isEmpty() ? null : Double.parseDouble(grid),
+                firstRobotSeed, robots, design, optionalDouble(row.get("cpu_limit_cpus")));
         Map<String, TaskResult> tasks = new LinkedHashMap<>();
         for (String t : PeriodSet.TASKS) {
             if (!row.get(t + "_releases").isEmpty()) {
@@ -359,21 +380,38 @@ public final class ResultsCsv {
         }
         String speed = row.get("top_speed_mps");
         PeriodSet set = new PeriodSet(row.get("set_name"), periods, speed.isEmpty() ? null : Double.valueOf(speed));
-        RunMachine machine = row.get("machine").isEmpty() ? RunMachine.NOT_RECORDED
-                : new RunMachine(row.get("machine"), row.get("machine_reasons"), decimal(row.get("other_cpus")),
+        RunMachine machine = row.get("machine").isEmpty() ? checkOnly(row) : new RunMachine(row.get("machine"), row.get("machine_reasons"), decimal(row.get("other_cpus")),
                         decimal(row.get("steal_pct")), decimal(row.get("load_start")), decimal(row.get("load_end")),
                         decimal(row.get("gc_max_pause_ms")), decimal(row.get("time_to_safepoint_max_ms")),
                         row.get("machine_before_run"), row.get("waited_for_quiet_s").isEmpty() ? 0
                         : Double.parseDouble(row.get("waited_for_quiet_s")),
-                        row.get("machine_cpus").isEmpty() ? 0 : Integer.parseInt(row.get("machine_cpus")));
+                        row.get("machine_cpus").isEmpty() ? 0 : Integer.parseInt(row.get("machine_cpus")),
+                        decimal(row.get("check_other_cpus")), decimal(row.get("check_steal_pct")),
+                        decimal(row.get("check_load")));
         machine.impossible().ifPresent(why -> {
             throw new IllegalArgumentException(why);
         });
-        return new RunResult(Integer.parseInt(row.get("set")), run, set, conditions,
+        return new RunResult(setNumber, run, set, conditions,
                 row.get("outcome"), decimal(row.get("run_time_s")), decimal(row.get("distance_to_finish_m")),
                 decimal(row.get("distance_travelled_m")), optionalInt(row.get("collisions")),
                 optionalInt(row.get("waypoints_reached")), optionalInt(row.get("waypoints_total")), tasks, mediator,
-                optionalDouble(row.get("min_clearance_m")), optionalLong(row.get("near_misses")), machine);
+                optionalDouble(row.get("min_clearance_m")), optionalLong(row.get("near_misses")), machine,
+                new RunTimes(RunTimes.parse(row.get("started_utc")), RunTimes.parse(row.get("ended_utc"))));
+    }
+
+    /**
+     * The machine of a row without the run's own conditions (an {@code error} run, or a row that
+     * predates them): only what the check before it found, if it was recorded.
+     */
+    private static RunMachine checkOnly(Map<String, String> row) {
+        String before = row.get("machine_before_run");
+        if (before.isEmpty()) {
+            return RunMachine.NOT_RECORDED;
+        }
+        String waited = row.get("waited_for_quiet_s");
+        return RunMachine.NOT_RECORDED.withCheck(new QuietGate.Passage(before, waited.isEmpty() ? 0 : Double.parseDouble(waited),
+                "", decimal(row.get("check_other_cpus")), decimal(row.get("check_steal_pct")),
+                decimal(row.get("check_load"))));
     }
 
     private static String number(double v) {

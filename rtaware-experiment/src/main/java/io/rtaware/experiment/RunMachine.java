@@ -23,10 +23,16 @@ import java.util.Set;
  * @param waitedS how long the experiment waited for a quiet machine before the run, s
  * @param machineCpus the CPUs the OS counted during the run (its conditions' {@code machine_cpus}),
  *     or 0 where not recorded
+ * @param checkOtherCpus other processes' CPU in the last check before the run, CPUs: the corrected
+ *     figure the quiet rule judged ({@link MachineCheck.Reading#otherCpus()}), or NaN where no check
+ *     was made or recorded
+ * @param checkStealPct steal in that check, percent, or NaN
+ * @param checkLoad the load average at that check's end, or NaN
  */
 public record RunMachine(String machine, String reasons, double otherCpus, double stealPct, double loadStart,
                          double loadEnd, double gcMaxPauseMs, double timeToSafepointMaxMs, String beforeRun,
-                         double waitedS, int machineCpus) {
+                         double waitedS, int machineCpus, double checkOtherCpus, double checkStealPct,
+                         double checkLoad) {
 
     /** The verdict of a run whose conditions were not recorded. */
     public static final String UNRECORDED = "unrecorded";
@@ -37,6 +43,28 @@ public record RunMachine(String machine, String reasons, double otherCpus, doubl
     public static final RunMachine NOT_RECORDED = new RunMachine(UNRECORDED, "", Double.NaN, Double.NaN, Double.NaN,
             Double.NaN, Double.NaN, Double.NaN, "", 0, 0);
 
+    /**
+     * The machine of a run without the readings of a check before it.
+     *
+     * @param machine the run's verdict
+     * @param reasons the figures behind it
+     * @param otherCpus other processes' CPU during the run, CPUs, or NaN
+     * @param stealPct steal during the run, percent, or NaN
+     * @param loadStart load average at the start, or NaN
+     * @param loadEnd load average at the end, or NaN
+     * @param gcMaxPauseMs longest GC pause, ms, or NaN
+     * @param timeToSafepointMaxMs longest time to safepoint, ms, or NaN
+     * @param beforeRun the verdict of the check before the run, or empty
+     * @param waitedS time waited for quiet, s
+     * @param machineCpus the CPUs counted, or 0
+     */
+    public RunMachine(String machine, String reasons, double otherCpus, double stealPct, double loadStart,
+                      double loadEnd, double gcMaxPauseMs, double timeToSafepointMaxMs, String beforeRun,
+                      double waitedS, int machineCpus) {
+        this(machine, reasons, otherCpus, stealPct, loadStart, loadEnd, gcMaxPauseMs, timeToSafepointMaxMs, beforeRun,
+                waitedS, machineCpus, Double.NaN, Double.NaN, Double.NaN);
+    }
+
     /** Verdicts a summary includes by default. */
     static final Set<String> INCLUDED_BY_DEFAULT = Set.of(QUIET);
 
@@ -46,13 +74,13 @@ public record RunMachine(String machine, String reasons, double otherCpus, doubl
     }
 
     /**
-     * @param beforeRun the verdict of the check before the run
-     * @param waitedS the time waited for quiet
-     * @return this with the check before the run
+     * @param check what the check before the run found
+     * @return this with the check's verdict, wait and readings
      */
-    public RunMachine withCheck(String beforeRun, double waitedS) {
+    public RunMachine withCheck(QuietGate.Passage check) {
         return new RunMachine(machine, reasons, otherCpus, stealPct, loadStart, loadEnd, gcMaxPauseMs,
-                timeToSafepointMaxMs, beforeRun, waitedS, machineCpus);
+                timeToSafepointMaxMs, check.beforeRun(), check.waitedS(), machineCpus, check.otherCpus(), check.stealPct(),
+                check.load1());
     }
 
     /**
@@ -67,6 +95,10 @@ public record RunMachine(String machine, String reasons, double otherCpus, doubl
         }
         if (otherCpus < 0 || stealPct < 0) {
             return Optional.of("other_cpus " + otherCpus + " and steal_pct " + stealPct + " cannot be negative");
+        }
+        if (checkOtherCpus < 0 || checkStealPct < 0 || checkLoad < 0) {
+            return Optional.of("check_other_cpus " + checkOtherCpus + ", check_steal_pct " + checkStealPct
+                    + " and check_load " + checkLoad + " cannot be negative");
         }
         if (machineCpus > 0 && otherCpus > machineCpus) {
             return Optional.of("other_cpus " + otherCpus + " is more than the machine's " + machineCpus

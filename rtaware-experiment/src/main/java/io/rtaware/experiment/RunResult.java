@@ -28,12 +28,43 @@ import java.util.Set;
  *     metres, or null if unknown
  * @param nearMisses approaches within the near-miss margin that did not touch, or null if unknown
  * @param machine the machine during the run ({@link RunMachine#NOT_RECORDED} for results that predate it)
+ * @param times when the run was made ({@link RunTimes#UNRECORDED} for results that predate them)
  */
 public record RunResult(int set, int run, PeriodSet periods, RunConditions conditions, String outcome,
                         double runTimeS, double distanceToFinishM, double distanceTravelledM,
                         Integer collisions, Integer waypointsReached, Integer waypointsTotal,
                         Map<String, TaskResult> tasks, Map<String, Long> mediatorCycles, Double minClearanceM,
-                        Long nearMisses, RunMachine machine) {
+                        Long nearMisses, RunMachine machine, RunTimes times) {
+
+    /**
+     * A result without the times it was made.
+     *
+     * @param set the set's number
+     * @param run the run's number
+     * @param periods the set
+     * @param conditions the shared conditions
+     * @param outcome how the run ended
+     * @param runTimeS run time, s
+     * @param distanceToFinishM distance to the finish, m
+     * @param distanceTravelledM path length, m
+     * @param collisions collisions, or null
+     * @param waypointsReached waypoints reached, or null
+     * @param waypointsTotal waypoints in the course, or null
+     * @param tasks per behavior
+     * @param mediatorCycles cycles per mediator winner
+     * @param minClearanceM the smallest clearance, m, or null
+     * @param nearMisses near misses, or null
+     * @param machine the machine during the run
+     */
+    public RunResult(int set, int run, PeriodSet periods, RunConditions conditions, String outcome,
+                     double runTimeS, double distanceToFinishM, double distanceTravelledM,
+                     Integer collisions, Integer waypointsReached, Integer waypointsTotal,
+                     Map<String, TaskResult> tasks, Map<String, Long> mediatorCycles, Double minClearanceM,
+                     Long nearMisses, RunMachine machine) {
+        this(set, run, periods, conditions, outcome, runTimeS, distanceToFinishM, distanceTravelledM, collisions,
+                waypointsReached, waypointsTotal, tasks, mediatorCycles, minClearanceM, nearMisses, machine,
+                RunTimes.UNRECORDED);
+    }
 
     /**
      * A result without clearance measures and without recorded machine conditions.
@@ -121,7 +152,16 @@ public record RunResult(int set, int run, PeriodSet periods, RunConditions condi
      */
     public RunResult withMachine(RunMachine m) {
         return new RunResult(set, run, periods, conditions, outcome, runTimeS, distanceToFinishM, distanceTravelledM,
-                collisions, waypointsReached, waypointsTotal, tasks, mediatorCycles, minClearanceM, nearMisses, m);
+                collisions, waypointsReached, waypointsTotal, tasks, mediatorCycles, minClearanceM, nearMisses, m, times);
+    }
+
+    /**
+     * @param t when the run was made
+     * @return this result with those times
+     */
+    public RunResult withTimes(RunTimes t) {
+        return new RunResult(set, run, periods, conditions, outcome, runTimeS, distanceToFinishM, distanceTravelledM,
+                collisions, waypointsReached, waypointsTotal, tasks, mediatorCycles, minClearanceM, nearMisses, machine, t);
     }
 
     /** What the position mediator can choose in a cycle: the avoider's request, the waypoint planner's, or a stop. */
@@ -154,8 +194,10 @@ public record RunResult(int set, int run, PeriodSet periods, RunConditions condi
      * @param minClearanceM the smallest clearance to any obstacle in the run, metres, or null if unknown
      * @param nearMisses approaches within the near-miss margin that did not touch, or null if unknown
      * @param machine the machine during the run
+     * @param times when the run was made
      */
     public RunResult {
+        Objects.requireNonNull(times, "times");
         Objects.requireNonNull(periods, "periods");
         Objects.requireNonNull(conditions, "conditions");
         Objects.requireNonNull(outcome, "outcome");
@@ -255,6 +297,16 @@ public record RunResult(int set, int run, PeriodSet periods, RunConditions condi
     public static RunResult error(int set, int run, PeriodSet periods, RunConditions conditions) {
         return new RunResult(set, run, periods, conditions, ERROR, Double.NaN, Double.NaN, Double.NaN,
                 null, null, null, Map.of());
+    }
+
+    /** @return the world seed this run was given ({@link RunConditions#seedOf(int, int)}) */
+    public long worldSeed() {
+        return conditions.seedOf(set, run);
+    }
+
+    /** @return the robot seed this run was given ({@link RunConditions#robotSeedOf(int, int)}) */
+    public long robotSeed() {
+        return conditions.robotSeedOf(set, run);
     }
 
     /** @return true if the run ended on the course (completed, timeout, stuck) */

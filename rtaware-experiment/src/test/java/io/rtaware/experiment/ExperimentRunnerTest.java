@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import io.rtaware.core.conditions.MachineVerdict;
 import io.rtaware.core.report.ReportDocument;
 import io.rtaware.experiment.report.ExperimentReport;
 import io.rtaware.experiment.report.MapBackground;
@@ -15,6 +16,10 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Clock;
+import java.time.Instant;
+import java.time.ZoneId;
+import java.time.ZoneOffset;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
@@ -71,6 +76,57 @@ class ExperimentRunnerTest {
         assertTrue(progress.contains("running set 2 (Set 4) run 2"), progress);
         assertTrue(progress.contains("last: set 2 run 1 completed"), progress);
         assertTrue(progress.contains("ETA"), progress);
+    }
+
+    @Test
+    void eachRowCarriesWhenItsRunWasMadeAndTheReadingsOfTheCheckBeforeIt() throws Exception {
+        // A wall clock that moves 90 s at every reading: the runner reads it once before and once
+        // after each run, so run k starts at 180 (k - 1) s and ends 90 s later.
+        long[] reads = {0};
+        Clock stepping = new Clock() {
+            @Override
+            public ZoneId getZone() {
+                return ZoneOffset.UTC;
+            }
+
+            @Override
+            public Clock withZone(ZoneId zone) {
+                return this;
+            }
+
+            @Override
+            public Instant instant() {
+                return Instant.parse("2026-11-28T02:00:00.250Z").plusSeconds(90 * reads[0]++);
+            }
+        };
+        MachineCheck.Reading quiet = new MachineCheck.Reading(new MachineVerdict(MachineVerdict.QUIET,
+                List.of("other processes used 0.03 of 2 CPUs"), "load 0.2 at start"), 0.03, 0.25, 0.2);
+        QuietGate gate = new QuietGate(() -> quiet, s -> { }, System::nanoTime, 0, false);
+        runner(List.of(ExperimentSets.paper().get(0)), 2, "paper-room").clock(stepping).quietGate(gate).run();
+        List<String> lines = Files.readAllLines(dir.resolve(ResultsCsv.FILE_NAME));
+        List<String> header = ResultsCsv.split(lines.get(0));
+        List<String> second = ResultsCsv.split(lines.get(2));
+        assertEquals("2026-11-28T02:03:00.250Z", second.get(header.indexOf("started_utc")));
+        assertEquals("2026-11-28T02:04:30.250Z", second.get(header.indexOf("ended_utc")));
+        assertEquals(List.of("0.03", "0.25", "0.2", "quiet"), List.of(second.get(header.indexOf("check_other_cpus")),
+                second.get(header.indexOf("check_steal_pct")), second.get(header.indexOf("check_load")),
+                second.get(header.indexOf("machine_before_run"))));
+        RunResult read = ResultsCsv.read(dir.resolve(ResultsCsv.FILE_NAME)).get(0);
+        assertEquals(new RunTimes(Instant.parse("2026-11-28T02:00:00.250Z"), Instant.parse("2026-11-28T02:01:30.250Z")),
+                read.times());
+        assertEquals(0.03, read.machine().checkOtherCpus());
+        // A run that left no report (an error row) keeps the check it was admitted on too.
+        RunResult error = RunResult.error(1, 3, read.periods(), read.conditions())
+                .withMachine(RunMachine.NOT_RECORDED.withCheck(new QuietGate.Passage("busy", 12, "r", 0.4, 0.0, 1.5)));
+        ResultsCsv.append(dir.resolve(ResultsCsv.FILE_NAME), error);
+        RunMachine back = ResultsCsv.read(dir.resolve(ResultsCsv.FILE_NAME)).get(2).machine();
+        assertEquals(List.of("busy", 12.0, 0.4, 0.0, 1.5), List.of(back.beforeRun(), back.waitedS(), back.checkOtherCpus(),
+                back.checkStealPct(), back.checkLoad()));
+        // ... so the stated rule applies to it: a run that left no report counts as quiet when its check was.
+        RunResult quietError = RunResult.error(1, 4, read.periods(), read.conditions())
+                .withMachine(RunMachine.NOT_RECORDED.withCheck(new QuietGate.Passage("quiet", 0, "r", 0.01, 0.0, 0.2)));
+        ResultsCsv.append(dir.resolve(ResultsCsv.FILE_NAME), quietError);
+        assertTrue(ExperimentConditions.countsAsQuiet(ResultsCsv.read(dir.resolve(ResultsCsv.FILE_NAME)).get(3)));
     }
 
     @Test

@@ -34,7 +34,7 @@ class QuietGateEndToEndTest {
         assumeTrue(Files.isReadable(Path.of("/proc/stat")), "needs Linux's /proc/stat");
         MachineCheck check = MachineCheck.overWindow(new HostReader(HostFiles.system(), System::nanoTime),
                 Duration.ofMillis(500));
-        MachineVerdict before = check.check();
+        MachineVerdict before = check.check().verdict();
         assumeTrue(before.quiet(), "the machine is not quiet without the burner (" + before.text() + "): skipped");
         ByteArrayOutputStream shown = new ByteArrayOutputStream();
         ProgressBar bar = new ProgressBar(new PrintStream(shown, true, StandardCharsets.UTF_8), false, System::nanoTime, 1);

@@ -37,6 +37,33 @@ class ResultsCsvTest {
     }
 
     @Test
+    void anIndependentRunKeepsItsOwnWorldSeedAndRobotSeedAndReadsBackTheSameConditions() throws Exception {
+        Path f = dir.resolve("results.csv");
+        RunConditions c = new RunConditions("paper-room", 10, 40, null, 1, 1000, ExperimentDesign.INDEPENDENT);
+        RunResult r = new RunResult(3, 7, PeriodSet.of("S", 100, 50, 100, 100), c, "completed", 233.5, 0.28, 25.0, 0, 4, 4,
+                Map.of());
+        ResultsCsv.append(f, r);
+        List<String> fields = ResultsCsv.split(Files.readAllLines(f).get(1));
+        assertEquals(Long.toString(40 + 2 * ExperimentDesign.SET_SEED_STRIDE + 6), fields.get(ResultsCsv.HEADER.indexOf("seed")));
+        assertEquals(Long.toString(c.robotSeedOf(3, 7)), fields.get(ResultsCsv.HEADER.indexOf("robot_seed")));
+        assertEquals("independent", fields.get(ResultsCsv.HEADER.indexOf("design")));
+        RunResult read = ResultsCsv.read(f).get(0);
+        assertEquals(c, read.conditions());
+        assertEquals(r.worldSeed(), read.worldSeed());
+        assertEquals(r.robotSeed(), read.robotSeed());
+    }
+
+    @Test
+    void anExperimentJsonFromBeforeTheDesignReadsAsBlocked() throws Exception {
+        Files.writeString(dir.resolve(ExperimentProfile.FILE_NAME), "{\"scenario\":\"paper-room\",\"time_scale\":10.0,"
+                + "\"seed\":1,\"grid_resolution_m\":null,\"runs_per_set\":12,\"machine\":\"m\"}\n");
+        ExperimentProfile p = ExperimentProfile.read(dir).orElseThrow();
+        assertEquals("blocked", p.design());
+        assertEquals(ExperimentDesign.BLOCKED, p.experimentDesign());
+        assertEquals(null, p.cpuLimitCpus());
+    }
+
+    @Test
     void aPartialLastLineIsIgnoredOnReadAndDroppedOnAppend() throws Exception {
         Path f = dir.resolve("results.csv");
         ResultsCsv.append(f, sample(1, "S"));

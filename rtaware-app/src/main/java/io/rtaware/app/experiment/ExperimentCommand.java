@@ -5,15 +5,16 @@ import io.rtaware.app.cli.DurationConverter;
 import io.rtaware.app.cli.TimeScaleConverter;
 import io.rtaware.app.output.OutputFolder;
 import io.rtaware.core.output.OutputWrites;
+import io.rtaware.core.conditions.CpuQuota;
 import io.rtaware.core.conditions.HostFiles;
 import io.rtaware.core.conditions.HostReader;
+import io.rtaware.experiment.ExperimentDesign;
 import io.rtaware.experiment.ExperimentInputException;
 import io.rtaware.experiment.ExperimentPlan;
 import io.rtaware.experiment.ExperimentProfile;
 import io.rtaware.experiment.ExperimentRunner;
 import io.rtaware.experiment.ExperimentSets;
 import io.rtaware.experiment.ExperimentSummary;
-import io.rtaware.experiment.ExperimentSummary.SetSummary;
 import io.rtaware.experiment.FolderLock;
 import io.rtaware.experiment.JvmRunCommand;
 import io.rtaware.experiment.MachineCheck;
@@ -25,7 +26,7 @@ import io.rtaware.experiment.ResultsCsv;
 import io.rtaware.experiment.RunConditions;
 import io.rtaware.experiment.RunResult;
 import io.rtaware.experiment.Shard;
-import io.rtaware.experiment.report.ExperimentReport;
+import io.rtaware.experiment.report.TerminalSummary;
 import io.rtaware.sim.scenario.ScenarioLoader;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -99,16 +100,25 @@ public final class ExperimentCommand implements Callable<Integer> {
     Double gridResolutionM;
 
     @Option(names = "--seed", defaultValue = "1", paramLabel = "S",
-            description = "Seed of run 1; run j of every set uses S + j - 1 (default: ${DEFAULT-VALUE}).")
+            description = "World seed of set 1 run 1; the design gives the others (default: ${DEFAULT-VALUE}).")
     long seed;
 
-    @Option(names = "--robot-seed", defaultValue = "4", paramLabel = "S",
-            description = "Seed of the simulated robot's systematic odometry errors: every run drives this one robot, as the paper's trials used one Koala (default: ${DEFAULT-VALUE}).")
-    long robotSeed;
+    @Option(names = "--design", defaultValue = "independent", paramLabel = "independent|blocked",
+            description = "'independent': every run its own world seed and a robot drawn from the population; 'blocked': "
+                    + "run j of every set shares world seed S + j - 1 and robot j, to be analysed blocked on j (default: ${DEFAULT-VALUE}).")
+    String design;
 
-    @Option(names = "--robots", defaultValue = "1", paramLabel = "N",
-            description = "Spread the runs over N robots (robot seeds S to S + N - 1, run j on S + (j - 1) mod N) to include robot-to-robot variation (default: ${DEFAULT-VALUE}, one robot).")
-    int robots;
+    @Option(names = "--robot-seed", paramLabel = "S", description = "First robot seed of the population (alone: every run "
+            + "drives this one robot) (default: a population of robots 1 to " + RunConditions.POPULATION_ROBOTS + ").")
+    Long robotSeed;
+
+    @Option(names = "--robots", paramLabel = "N", description = "The population's size: robot seeds S to S + N - 1 "
+            + "(default: 1 with --robot-seed, else " + RunConditions.POPULATION_ROBOTS + ").")
+    Integer robots;
+
+    @Option(names = "--cpu-limit", paramLabel = "CPUS", description = "Run each run's JVM (controller and built-in "
+            + "server) under a CPU quota (e.g. 0.5; 'run --cpu-limit'; needs root), to emulate a smaller computer.")
+    Double cpuLimit;
 
     @Option(names = "--out", paramLabel = "DIR", description = "Output folder (default: experiments/<timestamp>).")
     Path out;
@@ -141,6 +151,9 @@ public final class ExperimentCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException, InterruptedException {
         ExperimentPlan requested = resume ? null : plan();
+        CpuQuota.refusal(cpuLimit).ifPresent(line -> {
+            throw new UserError(line); // before the folder is made: exit 2, nothing written
+        });
         OutputFolder folder = OutputFolder.of("--out", outputFolder());
         Path dir = folder.path();
         try (FolderLock lock = FolderLock.acquire(folder.create())) {
@@ -195,7 +208,7 @@ public final class ExperimentCommand implements Callable<Integer> {
             }
             Optional<ExperimentSummary> summary = ReportRendering.render(dir, scenario, includeBusy, allowBusy,
                     System.err);
-            summary.ifPresent(s -> printSummary(s, dir));
+            summary.ifPresent(s -> TerminalSummary.print(s, dir, System.out));
             return runner.interrupted() ? 130 : summary.isPresent() ? 0 : OutputWrites.EXIT_WRITE_FAILED;
         } catch (ExperimentInputException e) {
             throw new UserError(e.getMessage());
@@ -217,23 +230,16 @@ public final class ExperimentCommand implements Callable<Integer> {
         if (gridResolutionM != null && !(gridResolutionM > 0)) {
             throw new UserError("--grid-resolution must be a positive number of metres, got " + gridResolutionM);
         }
-        List<PeriodSet> periodSets;
-        try {
-            periodSets = ExperimentSets.resolve(sets);
-        } catch (ExperimentInputException e) {
-            throw new UserError(e.getMessage());
-        }
+        ExperimentPlan plan;
         Shard share;
         try {
+            List<PeriodSet> periodSets = ExperimentSets.resolve(sets);
             share = Shard.parse(shard);
-        } catch (ExperimentInputException e) {
+            plan = new ExperimentPlan(periodSets, runs, RunConditions.ofPopulation(scenario, timeScale, seed, gridResolutionM,
+                    robotSeed, robots, ExperimentDesign.parse(design)).withCpuLimit(cpuLimit), share);
+        } catch (ExperimentInputException | IllegalArgumentException e) {
             throw new UserError(e.getMessage());
         }
-        if (robots < 1) {
-            throw new UserError("--robots must be at least 1, got " + robots);
-        }
-        ExperimentPlan plan = new ExperimentPlan(periodSets, runs, new RunConditions(scenario, timeScale, seed, gridResolutionM,
-                robotSeed, robots), share);
         if (plan.order().isEmpty()) {
             throw new UserError("--shard " + share + " has no runs: the plan has only " + plan.fullOrder().size()
                     + " run(s); use fewer shards");
@@ -256,30 +262,5 @@ public final class ExperimentCommand implements Callable<Integer> {
             return out;
         }
         return Path.of("experiments", LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
-    }
-
-    private static void printSummary(ExperimentSummary summary, Path dir) {
-        System.out.println();
-        if (summary.conditions() != null && summary.conditions().busyOnly()) {
-            System.out.println("BUSY MACHINE: " + summary.conditions().busyLabel());
-        }
-        System.out.println("set                     periods (ms)     completed  run time (s)    distance to finish (m)  misses (all four)");
-        for (SetSummary s : summary.sets()) {
-            System.out.printf(Locale.ROOT, "%-22s  %-16s %4d/%-4d  %6s +- %-5s  %6s +- %-12s  %s%n", s.name(),
-                    String.join("/", s.periodsMs().values().stream().map(String::valueOf).toList()),
-                    s.completed(), s.runs(), fmt(s.runTimeS().mean()), fmt(s.runTimeS().sd()),
-                    fmt(s.distanceToFinishM().mean()), fmt(s.distanceToFinishM().sd()),
-                    pct(s.misses().get(ExperimentSummary.ALL_TASKS).missPct()));
-        }
-        System.out.println();
-        System.out.println("report: " + dir.resolve(ExperimentReport.MARKDOWN_FILE) + " (and report.html, summary.json, figures)");
-    }
-
-    private static String fmt(Double v) {
-        return v == null ? "n/a" : String.format(Locale.ROOT, "%.2f", v);
-    }
-
-    private static String pct(Double v) {
-        return v == null ? "n/a" : String.format(Locale.ROOT, "%.2f%%", v);
     }
 }

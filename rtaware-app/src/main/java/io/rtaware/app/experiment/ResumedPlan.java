@@ -34,7 +34,8 @@ final class ResumedPlan {
         ExperimentPlan stored = PlanFile.fromFolder(dir);
         boolean anyGiven = given.hasMatchedOption("--sets") || given.hasMatchedOption("--scenario")
                 || given.hasMatchedOption("--time-scale") || given.hasMatchedOption("--seed")
-                || given.hasMatchedOption("--robot-seed") || given.hasMatchedOption("--robots")
+                || given.hasMatchedOption("--robot-seed") || given.hasMatchedOption("--robots") || given.hasMatchedOption("--design")
+                || given.hasMatchedOption("--cpu-limit")
                 || given.hasMatchedOption("--grid-resolution") || given.hasMatchedOption("--runs")
                 || given.hasMatchedOption("--shard");
         if (!anyGiven) {
@@ -49,6 +50,8 @@ final class ResumedPlan {
         check(given, "--seed", s.seed() == a.seed(), a.seed(), s.seed(), dir);
         check(given, "--robot-seed", s.robotSeed() == a.robotSeed(), a.robotSeed(), s.robotSeed(), dir);
         check(given, "--robots", s.robots() == a.robots(), a.robots(), s.robots(), dir);
+        check(given, "--design", s.design() == a.design(), a.design().label(), s.design().label(), dir);
+        check(given, "--cpu-limit", Objects.equals(s.cpuLimitCpus(), a.cpuLimitCpus()), a.cpuLimitCpus(), s.cpuLimitCpus(), dir);
         check(given, "--grid-resolution", Objects.equals(s.gridResolutionM(), a.gridResolutionM()),
                 a.gridResolutionM(), s.gridResolutionM() == null ? "run's default" : s.gridResolutionM(), dir);
         check(given, "--shard", stored.shard().equals(asked.shard()), asked.shard(), stored.shard(), dir);

@@ -13,6 +13,7 @@ import io.rtaware.app.ros2.DdsMixin;
 import io.rtaware.app.ros2.ExportMixin;
 import io.rtaware.app.ros2.Ros2RunMixin;
 import io.rtaware.app.ros2.RosDistroMixin;
+import io.rtaware.core.conditions.CpuQuota;
 import io.rtaware.core.time.Durations;
 import io.rtaware.experiment.ExperimentRunner;
 import io.rtaware.ros2.graph.DdsSettings;
@@ -118,6 +119,11 @@ public final class RunCommand implements Callable<Integer> {
                     + "asking for 1 ns, to compare; the slack they had is in the report's conditions (timer_slack_ns).")
     boolean kernelTimerSlack;
 
+    @Option(names = "--cpu-limit", paramLabel = "CPUS", description = "Run under a CPU quota (e.g. 0.5): this JVM, with "
+            + "the controller and the built-in server, in a cgroup of its own (v2 cpu.max or v1 cpu.cfs_quota_us; needs "
+            + "root), removed at exit; the report's conditions give it as cgroup_quota_cpus.")
+    Double cpuLimit;
+
     @Mixin
     LiveMixin live;
 
@@ -153,6 +159,15 @@ public final class RunCommand implements Callable<Integer> {
         RunOptions options = options();
         foxglove.address(); // a bad --foxglove ends the command before anything runs
         ExperimentParentWatch.start(System.getenv(ExperimentRunner.PARENT_PID_ENV), System.err, System::exit);
+        try (CpuQuota quota = cpuLimit == null ? null : CpuQuota.confineThisProcess(cpuLimit)) {
+            return execute(options);
+        } catch (CpuQuota.Unavailable e) {
+            throw new UserError(e.getMessage());
+        }
+    }
+
+    /** Runs after this process is under its CPU quota, if any: nothing before it measures or starts a server. */
+    private int execute(RunOptions options) throws IOException {
         memory.get().require(trace.heapBytes(), trace.describe());
         Ros2Distro distro = rosDistro.distro(ros2.requested() || export.requested(), "--ros2 or --export");
         Optional<DdsSettings> ddsSettings = dds.settings(ros2.requested() || export.requested(), "--ros2 or --export",

@@ -54,14 +54,24 @@ class CrossingPersonTest {
                 List.of(new Point2d(4.0, 0.3), new Point2d(4.0, 3.7)), 0.5, ActorSpec.Repeat.ONCE, 0, 2.5, 0, 0);
     }
 
+    /**
+     * The laser this crossing was laid out and measured with (docs/moving-world.md): the URG-04LX at
+     * the 4 m range the model had before it took SCIP 2.0's {@code DMAX:5600} (issue 35). At 5.6 m
+     * this one crossing (trigger 2.5 m, seed 7) is not hit at any avoider period: the robot passes
+     * 0.405 m from the person at 50, 200, 400 and 800 ms alike (stepped, 2026-11-28). Kept at 4 m
+     * so the test still shows what the avoider's period does when the person is hit; the dependence
+     * on the range is stated in docs/moving-world.md.
+     */
+    static final LaserConfig HALL_LASER = IdealTrajectoryTest.EARLIER_LASER;
+
     /** @return the world after the robot drove the hall with the avoider at {@code obstacleMs} */
     static World drive(long obstacleMs, long seconds) {
         RobotModel koala = RobotModel.koala(SPEED_MPS);
-        World world = new World(hall(), new Pose2d(1.0, 2.0, 0), koala, LaserConfig.URG_04LX, 7L, 1L, List.of(person()));
+        World world = new World(hall(), new Pose2d(1.0, 2.0, 0), koala, HALL_LASER, 7L, 1L, List.of(person()));
         NavController nav = new NavController(NavConfig.builder()
                 .topSpeedMps(SPEED_MPS)
                 .inflationMarginM(0)
-                .reactionLimits(koala.stoppingDistanceM(SPEED_MPS), koala.laserDelayNs(LaserConfig.URG_04LX))
+                .reactionLimits(koala.stoppingDistanceM(SPEED_MPS), koala.laserDelayNs(HALL_LASER))
                 .obstacleSpeedMps(0.5)
                 .periodsNs(Map.of("obstacle", obstacleMs * MS))
                 .goalToleranceM(0.3)

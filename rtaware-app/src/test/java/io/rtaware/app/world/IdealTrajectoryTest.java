@@ -41,6 +41,14 @@ class IdealTrajectoryTest {
     private static final long MS = 1_000_000L;
     static final String RESOURCE = "/trajectories/paper-room-ideal-60s.csv";
 
+    /**
+     * The laser of the code the trajectory was recorded from: today's URG-04LX but with the 4 m
+     * range it had before the SCIP 2.0 {@code DMAX:5600} was adopted (issue 35).
+     */
+    static final LaserConfig EARLIER_LASER = new LaserConfig(LaserConfig.URG_04LX.beams(),
+            LaserConfig.URG_04LX.angleIncrementRad(), LaserConfig.URG_04LX.minRangeM(), 4.0,
+            LaserConfig.URG_04LX.rateHz(), LaserConfig.URG_04LX.noiseSigmaM());
+
     /** The simulator as a task: steps the world, publishes what it produced, applies the motor command. */
     static final class WorldTask implements Task {
         private final World world;
@@ -103,7 +111,7 @@ class IdealTrajectoryTest {
 
     static World idealWorld(Scenario scenario) {
         OccupancyMap map = scenario.map().orElseThrow();
-        return new World(map, scenario.start(), RobotModel.named(RobotModel.IDEAL_NAME, 0.1), LaserConfig.URG_04LX, 1L);
+        return new World(map, scenario.start(), RobotModel.named(RobotModel.IDEAL_NAME, 0.1), EARLIER_LASER, 1L);
     }
 
     @Test

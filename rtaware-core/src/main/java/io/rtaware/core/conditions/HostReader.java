@@ -137,8 +137,15 @@ public final class HostReader {
                 return quota.get();
             }
         }
-        Optional<String> quotaUs = files.firstLine("/sys/fs/cgroup/cpu/cpu.cfs_quota_us");
-        Optional<String> periodUs = files.firstLine("/sys/fs/cgroup/cpu/cpu.cfs_period_us");
+        // v1: this process's group in the cpu hierarchy (where CpuQuota puts it), else the
+        // hierarchy's root (a container sees its own group there, under a path it cannot see).
+        String v1 = files.read("/proc/self/cgroup").map(HostReader::cgroupV1CpuPath).orElse(null);
+        String base = "/sys/fs/cgroup/cpu";
+        if (v1 != null && !v1.equals("/") && files.firstLine(base + v1 + "/cpu.cfs_quota_us").isPresent()) {
+            base = base + v1;
+        }
+        Optional<String> quotaUs = files.firstLine(base + "/cpu.cfs_quota_us");
+        Optional<String> periodUs = files.firstLine(base + "/cpu.cfs_period_us");
         if (quotaUs.isPresent() && periodUs.isPresent()) {
             try {
                 long q = Long.parseLong(quotaUs.get());
@@ -348,7 +355,22 @@ public final class HostReader {
 
     /**
      * @param cgroup the text of {@code /proc/self/cgroup}
-     * @return the path of the unified (v2) hierarchy's line {@code 0::PATH}, or null
+     * @return the path of this process's group in the v1 hierarchy whose controllers include
+     *     {@code cpu} (a line {@code N:cpu,cpuacct:PATH}), or null
+     */
+    static String cgroupV1CpuPath(String cgroup) {
+        for (String line : cgroup.lines().toList()) {
+            String[] f = line.split(":", 3);
+            if (f.length == 3 && List.of(f[1].split(",")).contains("cpu")) {
+                return f[2].strip();
+            }
+        }
+        return null;
+    }
+
+    /**
+     * @param cgroup the text of {@code /proc/self/cgroup}
+     * @return the path of this process's group in the unified (v2) hierarchy, or null
      */
     static String cgroupV2Path(String cgroup) {
         return cgroup.lines().filter(l -> l.startsWith("0::")).map(l -> l.substring(3).strip()).findFirst().orElse(null);

@@ -127,6 +127,23 @@ class HostReaderTest {
     }
 
     @Test
+    void cgroupV1QuotaIsThatOfTheProcesssOwnGroup(@TempDir Path root) throws Exception {
+        Path v1 = Files.createDirectories(root.resolve("sys/fs/cgroup/cpu"));
+        Files.writeString(v1.resolve("cpu.cfs_quota_us"), "-1\n");
+        Files.writeString(v1.resolve("cpu.cfs_period_us"), "100000\n");
+        Path own = Files.createDirectories(v1.resolve("rtaware-77"));
+        Files.writeString(own.resolve("cpu.cfs_quota_us"), "25000\n");
+        Files.writeString(own.resolve("cpu.cfs_period_us"), "100000\n");
+        Files.createDirectories(root.resolve("proc/self"));
+        Files.writeString(root.resolve("proc/self/cgroup"), "4:memory:/x\n1:cpu,cpuacct:/rtaware-77\n0::/\n");
+        assertEquals(0.25, new HostReader(new HostFiles(root), () -> 0).cgroupQuotaCpus(), 1e-12,
+                "the quota of /rtaware-77, not the hierarchy root's none");
+        Files.writeString(root.resolve("proc/self/cgroup"), "1:cpu,cpuacct:/docker/abc\n0::/\n");
+        assertNull(new HostReader(new HostFiles(root), () -> 0).cgroupQuotaCpus(),
+                "a group not visible here: the root's, which has none");
+    }
+
+    @Test
     void parsersOfSingleLines() {
         assertEquals(Optional.empty(), HostReader.cpuMax("max 100000"), "no quota");
         assertEquals(Optional.of(2.0), HostReader.cpuMax("200000 100000"));

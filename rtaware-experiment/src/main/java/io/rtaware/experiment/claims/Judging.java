@@ -112,7 +112,7 @@ final class Judging {
 
     /** @return the world seed of a run (run j of every set shares seed j in the blocked design) */
     static long worldSeed(RunResult r) {
-        return r.conditions().seedOf(r.run());
+        return r.worldSeed();
     }
 
     /** @return e.g. {@code 200/300/500/800 ms at 0.4 m/s}: a set as its periods in task order and its top speed */

@@ -18,6 +18,7 @@ import io.rtaware.experiment.RunConditions;
 import io.rtaware.experiment.RunResult;
 import io.rtaware.experiment.claims.Claim;
 import io.rtaware.experiment.claims.PaperClaims;
+import io.rtaware.experiment.stats.RateInterval;
 import io.rtaware.experiment.stats.SampleStats;
 import io.rtaware.experiment.stats.WelchTest;
 import java.io.IOException;
@@ -162,9 +163,12 @@ public final class ExperimentReport {
                 + " times faster than wall time, so each task's computation weighs " + k
                 + " times more against its period), grid resolution "
                 + (p.gridResolutionM() == null ? "`run`'s default" : plain(p.gridResolutionM()) + " m")
-                + ", seed " + p.seed() + " (run j uses seed + j - 1), " + p.runsPerSet() + " run(s) per set planned.");
-        b.text("Robot: " + robots.robotsInWords() + "; the systematic odometry errors come from the robot seed, "
-                + "each run's noise from its seed (results.csv: robot_seed, robots).");
+                + ", seed " + p.seed() + " (set 1 run 1's), " + p.runsPerSet() + " run(s) per set planned"
+                + (robots.cpuLimitCpus() == null ? "" : ", each run's JVM (controller and built-in server) under a CPU "
+                        + "quota of " + plain(robots.cpuLimitCpus()) + " CPUs (--cpu-limit; results.csv: cpu_limit_cpus)")
+                + ".");
+        b.text("Design: " + robots.robotsInWords() + "; the systematic odometry errors come from the robot seed, "
+                + "each run's noise from its world seed (results.csv: seed, robot_seed, robots, design).");
         b.text("Machine: " + (p.machine() == null ? "not recorded (no experiment.json)" : p.machine())
                 + ". The paper's runs: " + s.paper().source() + ".");
         if (s.conditions() != null) {
@@ -176,6 +180,8 @@ public final class ExperimentReport {
                 + "Columns marked **paper** are the paper's published numbers, not ours.");
 
         claims(b, s);
+
+        completion(b, s);
 
         b.heading(2, "Table I: periods and run time");
         List<List<String>> rows = new ArrayList<>();
@@ -394,6 +400,20 @@ public final class ExperimentReport {
             }
         }
         return NA;
+    }
+
+    private static void completion(Blocks b, ExperimentSummary s) {
+        b.heading(2, "Completion per set");
+        b.text("The share of each set's runs that reached the finish, with its Wilson 95 % interval (summary.json: "
+                + "`completion_rate`, `completion_rate_ci95`): an outcome of its own, since a run that got stuck, ran out "
+                + "of time or failed has no run time and Table I leaves it out. Two sets whose intervals do not overlap "
+                + "differ at about that confidence or better.");
+        List<List<String>> rows = new ArrayList<>();
+        for (SetSummary set : s.sets()) {
+            RateInterval r = set.completions95();
+            rows.add(List.of(set.name(), r == null ? NA : r.text(), outcomes(set.outcomes())));
+        }
+        b.table(List.of("set", "completed (rate, 95 % CI)", "outcomes"), rows);
     }
 
     private static String rate(Double share) {

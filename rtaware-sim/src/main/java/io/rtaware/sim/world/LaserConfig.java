@@ -23,10 +23,11 @@ public record LaserConfig(int beams, double angleIncrementRad, double minRangeM,
 
     /**
      * Hokuyo URG-04LX-like: 683 beams 0.3515625 deg (360/1024) apart, i.e. 240 deg nominal field
-     * of view (239.77 deg between the outer beams), 0.02..4.0 m, 10 Hz, 1 cm noise.
+     * of view (239.77 deg between the outer beams), 0.02..5.6 m (the sensor's SCIP 2.0 {@code PP}
+     * answer, {@code DMIN:20}, {@code DMAX:5600}), 10 Hz, 1 cm noise.
      */
     public static final LaserConfig URG_04LX =
-            new LaserConfig(683, Math.toRadians(360.0 / 1024.0), 0.02, 4.0, 10.0, 0.01);
+            new LaserConfig(683, Math.toRadians(360.0 / 1024.0), 0.02, 5.6, 10.0, 0.01);
 
     /**
      * @param beams number of beams, 1..4096
@@ -107,8 +108,8 @@ public record LaserConfig(int beams, double angleIncrementRad, double minRangeM,
         s.put("laser_beams", "source: SCIP 2.0, the URG-04LX's PP answer AMIN:44, AMAX:725: 683 steps");
         s.put("laser_angle_increment_rad", "source: SCIP 2.0, ARES:1024 steps per turn, 0.3515625 degree");
         s.put("laser_min_range_m", "source: SCIP 2.0 PP answer of the URG-04LX, DMIN:20 (mm)");
-        s.put("laser_max_range_m", "estimate: 4 m, the range the URG-04LX is commonly sold with; we found no stored "
-                + "copy of Hokuyo's data sheet for this model to cite, and its firmware may report readings beyond it");
+        s.put("laser_max_range_m", "source: SCIP 2.0 PP answer of the URG-04LX, DMAX:5600 (mm): the longest range the "
+                + "sensor reports (Hokuyo quotes 4 m for the model; the sensor itself reports ranges up to DMAX)");
         s.put("laser_rate_hz", "source: the paper, 'the Hokuyo laser sends out its data at a rate of 10Hz' (600 rpm)");
         s.put("laser_range_noise_m", "estimate: 1 cm standard deviation, the order of the URG-04LX's quoted accuracy "
                 + "at short range (about +-10 mm); not measured on the paper's unit");

@@ -126,7 +126,8 @@ class ActorTest {
         World w = new World(empty(), new Pose2d(0, 0, 0), RobotModel.ideal(0.1), LaserConfig.URG_04LX.withNoise(0), 1L, 1L,
                 List.of(person));
         int ahead = LaserConfig.URG_04LX.beams() / 2;
-        assertEquals(4.0, w.scan().rangesM[ahead], 1e-6, "nothing ahead at the start: the person is 3 m to the side");
+        assertEquals(LaserConfig.URG_04LX.maxRangeM(), w.scan().rangesM[ahead], 1e-6,
+                "nothing ahead at the start: the person is 3 m to the side");
         for (int i = 0; i < 300; i++) {
             w.step(10 * MS);
         }

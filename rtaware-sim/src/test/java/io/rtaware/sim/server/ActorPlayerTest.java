@@ -50,7 +50,8 @@ class ActorPlayerTest {
             step(server, 1000);
             client.requestData();
             client.poll(5000, true);
-            assertEquals(4.0, client.laserScan().rangesM[ahead], 1e-5, "1 s: nothing ahead within 4 m");
+            assertEquals(LaserConfig.URG_04LX.maxRangeM(), client.laserScan().rangesM[ahead], 1e-5,
+                    "1 s: nothing ahead within the laser's range");
             step(server, 2200);
             client.requestData();
             client.poll(5000, true);
@@ -62,7 +63,8 @@ class ActorPlayerTest {
             assertEquals(3.0, p.xM(), 1e-12);
             assertEquals(3.5 - 2.2, p.yM(), 1e-9, "2.2 s after its start at 1.0 m/s");
             assertEquals(-Math.PI / 2, p.yawRad(), 1e-12, "heading along its motion");
-            assertEquals(4.0, client.laserScan().rangesM[left], 1e-5, "before 5 s: nothing to the left within 4 m");
+            assertEquals(6.2 - 1.5, client.laserScan().rangesM[left], 1e-5,
+                    "before 5 s: nothing to the left but the north wall, 4.7 m away");
             step(server, 2000);
             client.requestData();
             client.poll(5000, true);

@@ -101,7 +101,7 @@ class PlayerSimServerTest {
             PlayerCodec.readLaserScan(last.reader(), scan);
             assertEquals(683, scan.rangeCount);
             assertEquals(Math.toRadians(0.3515625), scan.resolutionRad, 1e-6);
-            assertEquals(4.0f, scan.maxRangeM);
+            assertEquals((float) LaserConfig.URG_04LX.maxRangeM(), scan.maxRangeM);
         }
     }
 

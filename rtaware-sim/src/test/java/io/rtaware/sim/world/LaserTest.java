@@ -36,15 +36,16 @@ class LaserTest {
         assertEquals(341 * inc, s.maxAngleRad, 1e-12);
         assertEquals(Math.toRadians(240), s.maxAngleRad - s.minAngleRad, Math.toRadians(0.3));
         assertEquals(0.0, s.bearingRad(341), 1e-12);
-        assertEquals(4.0, s.maxRangeM);
+        assertEquals(5.6, s.maxRangeM, "SCIP 2.0's DMAX:5600");
         assertEquals(1.5, s.serverTimeS);
     }
 
     @Test
     void rangesMatchAnalyticDistances() {
-        // at (4.0, 1.5) facing +x: nothing within 4 m ahead (box starts at y 2.3, pillar y <= 1.0)
+        // at (4.0, 1.5) facing +x: nothing before the east wall (box starts at y 2.3, pillar y <= 1.0),
+        // which at x 9.6 is exactly the 5.6 m range away
         LaserScan s = scan(EXACT, new Pose2d(4.0, 1.5, 0.0), 1);
-        assertEquals(4.0f, s.rangesM[beamAt(s, 0.0)]);
+        assertEquals(5.6f, s.rangesM[beamAt(s, 0.0)]);
         // right (-90 deg): south wall at y = 0
         assertEquals(1.5, s.rangesM[beamAt(s, -Math.PI / 2)], CELL);
         // left (+90 deg): box bottom face at y = 2.3
@@ -62,7 +63,7 @@ class LaserTest {
         assertEquals(1.3, s.rangesM[beamAt(s, 0.0)], CELL);
         // corner view: every beam is at most the max range and at least the robot radius
         for (int i = 0; i < s.count(); i++) {
-            assertTrue(s.rangesM[i] <= 4.0f && s.rangesM[i] >= 0.2f);
+            assertTrue(s.rangesM[i] <= 5.6f && s.rangesM[i] >= 0.2f);
         }
     }
 
