@@ -56,7 +56,8 @@ public final class ResultsMarkdown {
                 .append("the folder's summary.json, and rtaware's own rules, apart from the paper's claims, as `rule `FOLDER/ID`: ")
                 .append("VERDICT`. Each claim is judged on the runs the folder's report uses and again on all runs: ")
                 .append("**Fragile** marks a verdict that differs on all runs, busy ones included; **Contradicted** one that ")
-                .append("another folder under the same course, top speed and swept tasks does not share.\n");
+                .append("another folder under the same course, top speed and swept tasks, judging it on at least one set of ")
+                .append("the same periods, does not share.\n");
         for (Folder f : folders) {
             ExperimentSummary s = f.summary();
             ExperimentProfile p = s.profile();
