@@ -356,10 +356,7 @@ final class PooledExecutor implements Executor {
     }
 
     private void runCycle(int worker, TaskRuntime runtime) {
-        // An ordered store, not a volatile one (no fence per release): the cycle's token.start,
-        // a volatile store, follows at once, and the watchdog looks at a worker's slot only at a
-        // deadline, long after either store is visible; until then the batch deadline covers it.
-        current.setRelease(worker, runtime);
+        current.set(worker, runtime);
         try {
             Executor.runCycle(runtime, clock, faults);
         } finally {
