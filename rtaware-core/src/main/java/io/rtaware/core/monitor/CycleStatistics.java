@@ -182,19 +182,6 @@ final class CycleStatistics {
         return count % RECORD_BATCH == flushPhase;
     }
 
-    /**
-     * Reads a word of each cache line the next cycle's {@link #released} and {@link #cycleEnded}
-     * write first (these counters, the lateness ring's next slot, the execution ring's next
-     * slot), so that a pool worker can have them brought in while it still runs the cycle before
-     * (see {@link TaskRuntime#touchAhead()}). The thread that will run the cycle only.
-     *
-     * @return a value of no meaning, for the caller to keep so the reads are not left out
-     */
-    long touchAhead() {
-        return releases + pendingLatenessNs[(int) (latenessCount % RECORD_BATCH)]
-                + recentExecNs[(int) (recentExecCount % RECENT_EXEC_CYCLES)];
-    }
-
     /** @return lateness values noted but not yet in their histogram (cycle's thread) */
     long latenessWaiting() {
         return latenessCount - latenessRecordedCount;

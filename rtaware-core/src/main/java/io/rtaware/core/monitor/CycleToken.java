@@ -52,11 +52,6 @@ final class CycleToken {
         return TOKEN.compareAndSet(this, 2 * k + 1, 2 * k + 2);
     }
 
-    /** @return the token, read plainly: a touch of its cache line ahead of a cycle (see {@link TaskRuntime#touchAhead()}) */
-    long touchAhead() {
-        return token;
-    }
-
     /** @return the index of the running cycle, or -1 if none runs */
     long running() {
         long t = (long) TOKEN.getVolatile(this);

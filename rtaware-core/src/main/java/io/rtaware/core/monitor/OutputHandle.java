@@ -45,11 +45,6 @@ final class OutputHandle<T extends StateValue<T>> implements Output<T> {
         marked = false;
     }
 
-    /** @return a read of this handle and of its variable: a touch of their cache lines ahead of a cycle (see {@link TaskRuntime#touchAhead()}) */
-    long touchAhead() {
-        return marked ? variable.generation() : commits;
-    }
-
     @Override
     public Key<T> key() {
         return key;

@@ -82,11 +82,6 @@ final class PooledExecutor implements Executor {
      * to wake in time and does not wake it again: one wake per batch deadline, not one per cycle.
      */
     private final AtomicLongArray batchDeadlineNs;
-    /**
-     * Per worker: what its touches ahead read ({@link TaskRuntime#touchAhead()}), kept only so
-     * the compiler cannot leave the reads out; written by that worker once per batch.
-     */
-    private final long[] touchedSum;
 
     // The timer structure, guarded by the lock.
     private final Object lock = new Object();
@@ -145,7 +140,6 @@ final class PooledExecutor implements Executor {
         this.waiting = new TaskHeap(pooled.length);
         this.ready = new TaskHeap(pooled.length);
         this.parkedUntil = new long[workerCount];
-        this.touchedSum = new long[workerCount];
     }
 
     /** @return whether the pool runs this task (periodic and not blocking), else it gets a thread */
@@ -250,15 +244,10 @@ final class PooledExecutor implements Executor {
                     earliest = Math.min(earliest, pooled[batch[i]].nextDeadlineNs());
                     deadlinesFrom[i] = earliest;
                 }
-                long touched = 0;
                 for (int i = 0; i < claimed && running; i++) {
-                    if (i + 1 < claimed) {
-                        touched += pooled[batch[i + 1]].touchAhead();
-                    }
                     batchDeadlineNs.setRelease(worker, deadlinesFrom[i]);
                     runCycle(worker, pooled[batch[i]]);
                 }
-                touchedSum[worker] = touched;
                 batchDeadlineNs.setRelease(worker, Long.MAX_VALUE);
             }
         } catch (VirtualMachineError fatal) {

@@ -315,25 +315,6 @@ final class TaskRuntime implements TaskInfo {
     }
 
     /**
-     * Reads a word of each object a cycle of this task touches first (this runtime, its
-     * statistics and their rings' next slots, its deadline token, its release grid, its outputs),
-     * without changing anything. A pool worker calls it for the next cycle of its batch before it
-     * runs the current one: with thousands of tasks each of those objects is out of the caches,
-     * and the loads, issued early and independent of the running cycle, arrive while it runs
-     * instead of one after another when the next cycle starts. Only by the thread that has
-     * claimed the task's next cycle.
-     *
-     * @return a value of no meaning, for the caller to keep so the reads are not left out
-     */
-    long touchAhead() {
-        long touched = nextReleaseNs + statistics.touchAhead() + token.touchAhead() + grid.deadlineOf(nextIndex);
-        for (OutputHandle<?> output : outputs) {
-            touched += output.touchAhead();
-        }
-        return touched;
-    }
-
-    /**
      * Runs the due release: copy-in, execute, commit, bookkeeping, then decides the next release
      * ({@link #nextReleaseNs()}), the task's new state, and, under STOP_ALL, asks the executor to
      * stop. Listener faults are contained; only a {@link VirtualMachineError} of the task escapes.
