@@ -120,7 +120,7 @@ public final class RunCommand implements Callable<Integer> {
     boolean kernelTimerSlack;
 
     @Option(names = "--cpu-limit", paramLabel = "CPUS", description = "Run under a CPU quota (e.g. 0.5): this JVM, with "
-            + "the controller and the built-in server, in a cgroup of its own (v2 cpu.max or v1 cpu.cfs_quota_us; needs "
+            + "the controller and the built-in server, in a cgroup of its own (the CPU controller of cgroup v2 or v1; needs "
             + "root), removed at exit; the report's conditions give it as cgroup_quota_cpus.")
     Double cpuLimit;
 

@@ -53,9 +53,9 @@ class Ros2ActorScanTest {
         try (ServerSocket s = new ServerSocket(0)) {
             endpoint = "tcp/127.0.0.1:" + s.getLocalPort();
         }
-        // The paper room, the robot at (2, 1.5) facing +x: nothing within the laser's 4 m to its left
-        // until a 0.4 m box appears at (2, 2.6) at 5 s, its near face 0.9 m away (5 s leave the subscription
-        // time to reach the robot before it).
+        // The paper room, the robot at (2, 1.5) facing +x: to its left only the room's far wall, 4.7 m
+        // away (within the laser's 5.6 m), until a 0.4 m box appears at (2, 2.6) at 5 s, its near face
+        // 0.9 m away (5 s leave the subscription time to reach the robot before it).
         ActorSpec box = new ActorSpec("box", ActorSpec.Kind.OBSTACLE, new ActorShape.Box(0.4, 0.4),
                 List.of(new Point2d(2.0, 2.6)), 0, ActorSpec.Repeat.ONCE, 0, 0, 0, APPEAR_S);
         World world = new World(ScenarioLoader.load("paper-room").map().orElseThrow(), new Pose2d(2.0, 1.5, 0),
@@ -87,7 +87,7 @@ class Ros2ActorScanTest {
                 codec.decode(new CdrReader().wrap(bytes, 0, n), new Ros2Header(), scan);
                 if (scan.serverTimeS < APPEAR_S - 1e-9) {
                     before[0]++;
-                    assertEquals(4.0, scan.rangesM[left], 1e-5, "at " + scan.serverTimeS + " s, before the box appears");
+                    assertEquals(4.7, scan.rangesM[left], 1e-5, "at " + scan.serverTimeS + " s, before the box appears");
                 } else {
                     after[0]++;
                     assertEquals(0.9, scan.rangesM[left], 1e-5, "at " + scan.serverTimeS + " s, the box 0.9 m to the left");
