@@ -40,10 +40,14 @@ say "mvn test in the generated project"
 
 # The main in the background, in a process group of its own (job control on), so that SIGINT reaches
 # it: a script's background jobs otherwise start with SIGINT ignored, and the JVM then keeps it so.
+# perl puts SIGINT back to its default before it starts Maven: a shell cannot, when it was itself
+# started with SIGINT ignored (a CI job run in the background of a non-interactive shell), and a JVM
+# that starts with SIGINT ignored never runs its shutdown hooks on Ctrl-C.
 log="$work/run.log"
 say "mvn exec:java in the generated project, SIGINT after it has run ${run_s} s"
 set -m
-"${mvn[@]}" -q compile exec:java >"$log" 2>&1 &
+perl -e '$SIG{INT} = "DEFAULT"; exec @ARGV or die "cannot start $ARGV[0]: $!\n"' -- \
+  "${mvn[@]}" -q compile exec:java >"$log" 2>&1 &
 pid=$!
 set +m
 for _ in $(seq 1 600); do
@@ -56,6 +60,14 @@ if ! grep -q 'Ctrl-C stops' "$log"; then
 fi
 sleep "$run_s"
 kill -INT -- "-$pid"
+# A controller that ignores SIGINT would keep the check waiting for ever: it gets a minute.
+for _ in $(seq 1 300); do
+  kill -0 "$pid" 2>/dev/null || break
+  sleep 0.2
+done
+if kill -0 "$pid" 2>/dev/null; then
+  say "the controller did not stop within 60 s of SIGINT:"; cat "$log" >&2; exit 1
+fi
 status=0
 wait "$pid" || status=$?
 pid=""
