@@ -96,7 +96,7 @@ public final class PlatformJvmProbe implements JvmProbe {
         private final Path logFile;
         private final StallWatch stalls = StallWatch.start();
         private final String safepointNote;
-        /** Why the recording gave no figures, or null. */
+        /** Why the log gave no figures, or null. */
         private String unreadable;
         private boolean closed;
         /** Every stop, ms, in the order seen (a handful a minute); past {@link #STOPS_KEPT} only counted. */
@@ -130,7 +130,7 @@ public final class PlatformJvmProbe implements JvmProbe {
             }
         }
 
-        /** One collection: its pauses summed and its longest, ms. */
+        /** One collection (a notification) or one collector pause (the log): its pauses summed and its longest, ms. */
         private void collected(double pausesMs, double longestMs) {
             count.incrementAndGet();
             totalMs.add(pausesMs);

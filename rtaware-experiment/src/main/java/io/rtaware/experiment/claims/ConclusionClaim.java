@@ -129,7 +129,7 @@ final class ConclusionClaim extends ClaimFamily {
             if (column < 0) {
                 continue;
             }
-            long seed = Judging.worldSeed(r);
+            long seed = r.worldSeed();
             counts.computeIfAbsent(seed, k -> new int[sets.size()])[column]++;
             double v = m.gives().test(r) ? m.value().applyAsDouble(r) : Double.NaN;
             bySeed.computeIfAbsent(seed, k -> new double[sets.size()])[column] = v;
@@ -144,7 +144,7 @@ final class ConclusionClaim extends ClaimFamily {
     private static boolean sharesSeeds(Judging j, List<SetSummary> sets) {
         Map<Long, java.util.Set<Integer>> setsBySeed = new TreeMap<>();
         j.rows().stream().filter(r -> indexOf(sets, r.set()) >= 0)
-                .forEach(r -> setsBySeed.computeIfAbsent(Judging.worldSeed(r), k -> new java.util.HashSet<>()).add(r.set()));
+                .forEach(r -> setsBySeed.computeIfAbsent(r.worldSeed(), k -> new java.util.HashSet<>()).add(r.set()));
         return setsBySeed.values().stream().anyMatch(s -> s.size() > 1);
     }
 

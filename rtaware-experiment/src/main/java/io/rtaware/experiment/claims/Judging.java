@@ -110,11 +110,6 @@ final class Judging {
         return verdicts.stream().distinct().count() == 1 ? verdicts.get(0) : Verdict.MIXED;
     }
 
-    /** @return the world seed of a run (run j of every set shares seed j in the blocked design) */
-    static long worldSeed(RunResult r) {
-        return r.worldSeed();
-    }
-
     /** @return e.g. {@code 200/300/500/800 ms at 0.4 m/s}: a set as its periods in task order and its top speed */
     static String cell(SetSummary set) {
         return String.join("/", PeriodSet.TASKS.stream().map(t -> String.valueOf(set.periodsMs().get(t))).toList())
