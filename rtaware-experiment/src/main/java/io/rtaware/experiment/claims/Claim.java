@@ -22,7 +22,7 @@ import java.util.List;
  * @param fewestRunsPerCell the fewest runs (or blocks) in any set the verdict rests on, or null
  * @param smallSample true when {@code fewestRunsPerCell} is below {@link PaperClaims#SMALL_SAMPLE_RUNS}
  * @param family the id of the claim's family, without the scope
- * @param judgedOn the conditions the claim was judged on (course, top speed, swept tasks), by which
+ * @param judgedOn the conditions the claim was judged on (course, top speed, swept tasks, CPU quota), by which
  *     verdicts of different experiments under the same conditions are compared
  * @param cells the sets the verdict rests on, each as its periods in task order and its top speed
  *     (e.g. {@code 200/300/500/800 ms at 0.4 m/s}): two experiments contradict each other only where

@@ -69,6 +69,7 @@ final class ConclusionClaim extends ClaimFamily {
                 if (blocks.length >= MIN_BLOCKS) {
                     BlockedComparison c = BlockedComparison.of(blocks);
                     tested++;
+                    cells.addAll(sets.stream().filter(s -> !cells.contains(s)).toList());
                     fewest = Math.min(fewest, blocks.length);
                     boolean anova = c.anovaP() < PaperClaims.ALPHA;
                     boolean friedman = c.friedmanP() < PaperClaims.ALPHA;
@@ -79,23 +80,40 @@ final class ConclusionClaim extends ClaimFamily {
                             + num(c.f(), 2) + ", p = " + num(c.anovaP(), 4) + "; Friedman chi2 = " + num(c.friedmanChi2(), 2)
                             + ", p = " + num(c.friedmanP(), 4) + "; paired differences against " + sets.get(0).name() + ": "
                             + paired(sets, blocks, m.unit()));
-                } else if (samples.stream().allMatch(x -> x.length >= 2)) {
+                } else {
+                    // The sets with at least two values are compared; a set with fewer (e.g. one whose
+                    // runs never completed) is named and left out rather than stopping the test.
+                    List<double[]> tested2 = new ArrayList<>();
+                    List<SetSummary> testedSets = new ArrayList<>();
+                    List<String> leftOut = new ArrayList<>();
+                    for (int i = 0; i < sets.size(); i++) {
+                        if (samples.get(i).length >= 2) {
+                            tested2.add(samples.get(i));
+                            testedSets.add(sets.get(i));
+                        } else {
+                            leftOut.add(sets.get(i).name() + " (" + samples.get(i).length + ")");
+                        }
+                    }
+                    if (tested2.size() < 2) {
+                        reasons.add(at + m.name() + ": fewer than two sets have two runs that give it");
+                        continue;
+                    }
                     OneWayAnova anova = new OneWayAnova();
-                    double p = anova.anovaPValue(samples);
+                    double p = anova.anovaPValue(tested2);
                     tested++;
-                    fewest = Math.min(fewest, samples.stream().mapToInt(x -> x.length).min().orElseThrow());
+                    cells.addAll(testedSets.stream().filter(s -> !cells.contains(s)).toList());
+                    fewest = Math.min(fewest, tested2.stream().mapToInt(x -> x.length).min().orElseThrow());
                     significant += p < PaperClaims.ALPHA ? 1 : 0;
                     partly += p < PaperClaims.ALPHA ? 1 : 0;
                     parts.add(at + m.name() + ", as independent samples (" + (!sharesSeeds(j, sets)
                             ? "the sets share no world seed" : "only " + blocks.length + " seed(s) complete in every set; "
                             + "the shared seeds ignored, with less power than the blocked test") + "): one-way ANOVA F = "
-                            + num(anova.anovaFValue(samples), 2) + ", p = " + num(p, 4));
-                } else {
-                    reasons.add(at + m.name() + ": a set has fewer than two runs that give it");
+                            + num(anova.anovaFValue(tested2), 2) + ", p = " + num(p, 4)
+                            + (leftOut.isEmpty() ? "" : "; left out, with fewer than two runs that give it: "
+                            + String.join(", ", leftOut)));
                 }
             }
             if (tested > 0) {
-                cells.addAll(sets);
                 verdicts.add(significant > 0 ? Verdict.REPRODUCED : partly > 0 ? Verdict.MIXED : Verdict.NOT_REPRODUCED);
             }
         }
@@ -109,7 +127,8 @@ final class ConclusionClaim extends ClaimFamily {
                         + (reasons.isEmpty() ? "" : " Not tested: " + String.join("; ", reasons) + "."),
                 "does performance differ between the sets? Blocked on the world seed where at least " + MIN_BLOCKS
                         + " seeds are complete in every set (two-way ANOVA without replication and Friedman's test, seed "
-                        + "as block; a measure differs if both give p < " + PaperClaims.ALPHA + "), else a one-way ANOVA "
+                        + "as block; a measure differs if both give p < " + PaperClaims.ALPHA + "), else a one-way ANOVA on the sets "
+                        + "with at least two values "
                         + "(p < " + PaperClaims.ALPHA + "); reproduced if run time or distance to the finish differs, "
                         + "mixed if only one blocked test says so, not reproduced if no test does (no correction for the "
                         + "two measures; a difference in either direction counts, the direction is in the paired "

@@ -116,12 +116,26 @@ final class Judging {
                 + " ms at " + speedLabel(set.topSpeedMps());
     }
 
-    /** @return e.g. {@code office at 0.4 m/s, swept: obstacle}: the conditions shared by experiments that agree */
+    /**
+     * @return e.g. {@code office at 0.4 m/s, swept: obstacle} (and {@code , under 1 CPU} with a CPU quota): the
+     *     conditions shared by experiments that agree
+     */
     private String conditions(List<SetSummary> cells) {
         String speeds = String.join(", ", cells.stream().map(s -> speedLabel(s.topSpeedMps())).distinct().toList());
         List<String> swept = sweptTasks();
+        Double quota = cpuQuota();
         return (scenario == null ? Scope.PAPER_COURSE : scenario) + " at " + speeds + ", swept: "
-                + (swept.isEmpty() ? "none" : String.join("+", swept));
+                + (swept.isEmpty() ? "none" : String.join("+", swept))
+                + (quota == null ? "" : ", under " + cpus(quota) + " CPU");
+    }
+
+    /**
+     * @return the CPU quota every run's JVM ran under ({@code --cpu-limit}), or null when a run had none or the
+     *     runs differ (an experiment is made with one quota or none; merged folders must agree)
+     */
+    Double cpuQuota() {
+        List<Double> quotas = rows.stream().map(r -> r.conditions().cpuLimitCpus()).distinct().toList();
+        return quotas.size() == 1 ? quotas.get(0) : null;
     }
 
     List<Claim> claims() {
@@ -235,6 +249,11 @@ final class Judging {
 
     static String pct(double share) {
         return num(100 * share, 1) + "%";
+    }
+
+    /** @return a CPU quota as written on the command line, e.g. {@code 1} or {@code 0.5} */
+    static String cpus(double quota) {
+        return java.math.BigDecimal.valueOf(quota).stripTrailingZeros().toPlainString();
     }
 
     static String num(Double v, int decimals) {

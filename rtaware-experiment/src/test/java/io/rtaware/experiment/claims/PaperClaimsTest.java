@@ -1,6 +1,7 @@
 package io.rtaware.experiment.claims;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.rtaware.experiment.ExperimentProfile;
@@ -230,6 +231,20 @@ class PaperClaimsTest {
                 c.evidence());
         assertTrue(c.evidence().contains("for comparison, all 100 ms (100 ms): 0 of 2 runs locked up, 2 completed"),
                 c.evidence());
+
+        // The same runs on the emulated starved machine (--cpu-limit 1): no lock-up now speaks against the paper.
+        List<RunResult> starved = rows(sweep, 2, (s, p, r) -> p <= 5
+                ? new Object[] {"timeout", 360.0, 4.0, 0} : completed(230), FALLING).stream()
+                .map(r -> new RunResult(r.set(), r.run(), r.periods(), r.conditions().withCpuLimit(1.0), r.outcome(),
+                        r.runTimeS(), r.distanceToFinishM(), r.distanceTravelledM(), r.collisions(),
+                        r.waypointsReached(), r.waypointsTotal(), r.tasks(), r.mediatorCycles(), r.minClearanceM(),
+                        r.nearMisses(), r.machine())).toList();
+        Claim onQuota = claim(summary(starved), "fast-locks-up");
+        assertEquals(Verdict.NOT_REPRODUCED, onQuota.verdict(), onQuota.evidence());
+        assertTrue(onQuota.evidence().startsWith("each run's JVM (controller and built-in server) under a quota of 1 CPU"),
+                onQuota.evidence());
+        assertFalse(onQuota.evidence().contains(PaperClaims.LOCK_UP_MECHANISM), onQuota.evidence());
+        assertTrue(onQuota.judgedOn().endsWith(", under 1 CPU"), onQuota.judgedOn());
     }
 
     @Test
@@ -531,6 +546,18 @@ class PaperClaimsTest {
         assertEquals(Verdict.REPRODUCED, independent.verdict(), independent.evidence());
         assertTrue(independent.evidence().startsWith("run time, as independent samples (the sets share no world seed): "
                 + "one-way ANOVA"), independent.evidence());
+        // a set none of whose runs completes (Set 1 stuck every time) is left out of the run-time test and named,
+        // not a reason to test nothing
+        Claim withoutSet1 = claim(summary(rows(paper, 6, (x, p, r) -> paper.indexOf(x) == 0
+                ? new Object[] {"stuck", 120.0, 3.0 + 0.1 * r, 1} : completed(230 + 5 * r), FALLING)),
+                "conclusion-timing-matters");
+        assertTrue(withoutSet1.evidence().startsWith("run time, as independent samples (the sets share no world seed): "
+                + "one-way ANOVA F = 0.00, p = 1.0000; left out, with fewer than two runs that give it: Set 1 (0)"),
+                withoutSet1.evidence());
+        assertEquals(List.of("100/10/100/100 ms at run's default top speed", "50/50/50/50 ms at run's default top speed",
+                "100/50/100/100 ms at run's default top speed", "100/100/100/100 ms at run's default top speed",
+                "10/10/10/10 ms at run's default top speed"), withoutSet1.cells(), "run time rests on Sets 2-5, the "
+                + "distance on all five");
     }
 
     @Test
