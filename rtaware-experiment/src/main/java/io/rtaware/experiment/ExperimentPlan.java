@@ -1,6 +1,5 @@
 package io.rtaware.experiment;
 
-import java.math.BigDecimal;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -84,26 +83,23 @@ public record ExperimentPlan(List<PeriodSet> sets, int runsPerSet, RunConditions
         List<String> args = new ArrayList<>(List.of(
                 "--scenario", conditions.scenario(),
                 "--periods", planned.periods().periodsArgument(),
-                "--time-scale", plain(conditions.timeScale()),
+                "--time-scale", Decimals.plain(conditions.timeScale()),
                 "--seed", Long.toString(conditions.seedOf(planned.set(), planned.run())),
                 "--robot-seed", Long.toString(conditions.robotSeedOf(planned.set(), planned.run()))));
         if (planned.periods().topSpeedMps() != null) {
             args.add("--top-speed");
-            args.add(plain(planned.periods().topSpeedMps()));
+            args.add(Decimals.plain(planned.periods().topSpeedMps()));
         }
         if (conditions.gridResolutionM() != null) {
             args.add("--grid-resolution");
-            args.add(plain(conditions.gridResolutionM()));
+            args.add(Decimals.plain(conditions.gridResolutionM()));
         }
         if (conditions.cpuLimitCpus() != null) {
             args.add("--cpu-limit");
-            args.add(plain(conditions.cpuLimitCpus()));
+            args.add(Decimals.plain(conditions.cpuLimitCpus()));
         }
         args.addAll(List.of("--out", runDir.toString(), "--quiet"));
         return args;
     }
 
-    private static String plain(double v) {
-        return BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
-    }
 }

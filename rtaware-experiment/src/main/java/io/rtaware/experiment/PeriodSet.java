@@ -105,6 +105,6 @@ public record PeriodSet(String name, Map<String, Long> periodsMs, Double topSpee
      * @return it without trailing zeros, e.g. {@code 0.3}
      */
     public static String plainSpeed(double speedMps) {
-        return java.math.BigDecimal.valueOf(speedMps).stripTrailingZeros().toPlainString();
+        return Decimals.plain(speedMps);
     }
 }

@@ -5,6 +5,7 @@ import static io.rtaware.experiment.claims.Judging.onAxis;
 import static io.rtaware.experiment.claims.Judging.pct;
 import static io.rtaware.experiment.claims.Judging.periodsHere;
 
+import io.rtaware.experiment.Decimals;
 import io.rtaware.experiment.ExperimentSummary;
 import io.rtaware.experiment.ExperimentSummary.Misses;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
@@ -98,7 +99,7 @@ final class CollisionClaims {
                     : none ? (quota != null ? Verdict.NOT_REPRODUCED : Verdict.NOT_COMPARABLE) : Verdict.MIXED;
             List<String> parts = new ArrayList<>();
             if (quota != null) {
-                parts.add("each run's JVM (controller and built-in server) under a quota of " + Judging.cpus(quota)
+                parts.add("each run's JVM (controller and built-in server) under a quota of " + Decimals.plain(quota)
                         + " CPU (--cpu-limit), the paper's one starved computer emulated");
             }
             for (SetSummary s : fastSets) {

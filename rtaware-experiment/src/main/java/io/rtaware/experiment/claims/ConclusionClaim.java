@@ -8,8 +8,10 @@ import io.rtaware.experiment.RunResult;
 import io.rtaware.experiment.stats.BlockedComparison;
 import io.rtaware.experiment.stats.PairedDifference;
 import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeMap;
 import java.util.function.Predicate;
 import java.util.function.ToDoubleFunction;
@@ -46,7 +48,7 @@ final class ConclusionClaim extends ClaimFamily {
         List<Verdict> verdicts = new ArrayList<>();
         List<String> parts = new ArrayList<>();
         List<String> reasons = new ArrayList<>();
-        List<SetSummary> cells = new ArrayList<>();
+        Set<SetSummary> cells = new LinkedHashSet<>();
         int fewest = Integer.MAX_VALUE;
         Map<String, List<SetSummary>> bySpeed = j.bySpeed();
         for (Map.Entry<String, List<SetSummary>> group : bySpeed.entrySet()) {
@@ -69,7 +71,7 @@ final class ConclusionClaim extends ClaimFamily {
                 if (blocks.length >= MIN_BLOCKS) {
                     BlockedComparison c = BlockedComparison.of(blocks);
                     tested++;
-                    cells.addAll(sets.stream().filter(s -> !cells.contains(s)).toList());
+                    cells.addAll(sets);
                     fewest = Math.min(fewest, blocks.length);
                     boolean anova = c.anovaP() < PaperClaims.ALPHA;
                     boolean friedman = c.friedmanP() < PaperClaims.ALPHA;
@@ -83,32 +85,32 @@ final class ConclusionClaim extends ClaimFamily {
                 } else {
                     // The sets with at least two values are compared; a set with fewer (e.g. one whose
                     // runs never completed) is named and left out rather than stopping the test.
-                    List<double[]> tested2 = new ArrayList<>();
+                    List<double[]> testable = new ArrayList<>();
                     List<SetSummary> testedSets = new ArrayList<>();
                     List<String> leftOut = new ArrayList<>();
                     for (int i = 0; i < sets.size(); i++) {
                         if (samples.get(i).length >= 2) {
-                            tested2.add(samples.get(i));
+                            testable.add(samples.get(i));
                             testedSets.add(sets.get(i));
                         } else {
                             leftOut.add(sets.get(i).name() + " (" + samples.get(i).length + ")");
                         }
                     }
-                    if (tested2.size() < 2) {
+                    if (testable.size() < 2) {
                         reasons.add(at + m.name() + ": fewer than two sets have two runs that give it");
                         continue;
                     }
                     OneWayAnova anova = new OneWayAnova();
-                    double p = anova.anovaPValue(tested2);
+                    double p = anova.anovaPValue(testable);
                     tested++;
-                    cells.addAll(testedSets.stream().filter(s -> !cells.contains(s)).toList());
-                    fewest = Math.min(fewest, tested2.stream().mapToInt(x -> x.length).min().orElseThrow());
+                    cells.addAll(testedSets);
+                    fewest = Math.min(fewest, testable.stream().mapToInt(x -> x.length).min().orElseThrow());
                     significant += p < PaperClaims.ALPHA ? 1 : 0;
                     partly += p < PaperClaims.ALPHA ? 1 : 0;
                     parts.add(at + m.name() + ", as independent samples (" + (!sharesSeeds(j, sets)
                             ? "the sets share no world seed" : "only " + blocks.length + " seed(s) complete in every set; "
                             + "the shared seeds ignored, with less power than the blocked test") + "): one-way ANOVA F = "
-                            + num(anova.anovaFValue(tested2), 2) + ", p = " + num(p, 4)
+                            + num(anova.anovaFValue(testable), 2) + ", p = " + num(p, 4)
                             + (leftOut.isEmpty() ? "" : "; left out, with fewer than two runs that give it: "
                             + String.join(", ", leftOut)));
                 }
@@ -133,7 +135,7 @@ final class ConclusionClaim extends ClaimFamily {
                         + "mixed if only one blocked test says so, not reproduced if no test does (no correction for the "
                         + "two measures; a difference in either direction counts, the direction is in the paired "
                         + "differences)" + (bySpeed.size() > 1 ? "; judged per top speed, the verdicts combined (mixed if "
-                        + "they differ)" : ""), cells, s -> blocksOrRuns);
+                        + "they differ)" : ""), List.copyOf(cells), s -> blocksOrRuns);
     }
 
     /**

@@ -1,6 +1,7 @@
 package io.rtaware.experiment.claims;
 
 import io.rtaware.experiment.ExperimentSummary.PairTest;
+import io.rtaware.experiment.Decimals;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
 import io.rtaware.experiment.PaperReference;
 import io.rtaware.experiment.PeriodSet;
@@ -27,6 +28,8 @@ final class Judging {
     private final List<RunResult> rows;
     private final String scenario;
     private final Map<Integer, SetSummary> paper;
+    /** The CPU quota every run ran under, or null: see {@link #cpuQuota()}. */
+    private final Double cpuQuota;
     private final List<Claim> claims = new ArrayList<>();
     private final List<NotEvaluated> notEvaluated = new ArrayList<>();
 
@@ -36,6 +39,8 @@ final class Judging {
         this.rows = results.rows();
         this.scenario = scenario;
         this.paper = paperSets(sets);
+        List<Double> quotas = rows.stream().map(r -> r.conditions().cpuLimitCpus()).distinct().toList();
+        this.cpuQuota = quotas.size() == 1 ? quotas.get(0) : null;
     }
 
     /** @return every set of the experiment, in set order */
@@ -123,10 +128,9 @@ final class Judging {
     private String conditions(List<SetSummary> cells) {
         String speeds = String.join(", ", cells.stream().map(s -> speedLabel(s.topSpeedMps())).distinct().toList());
         List<String> swept = sweptTasks();
-        Double quota = cpuQuota();
         return (scenario == null ? Scope.PAPER_COURSE : scenario) + " at " + speeds + ", swept: "
                 + (swept.isEmpty() ? "none" : String.join("+", swept))
-                + (quota == null ? "" : ", under " + cpus(quota) + " CPU");
+                + (cpuQuota == null ? "" : ", under " + Decimals.plain(cpuQuota) + " CPU");
     }
 
     /**
@@ -134,8 +138,7 @@ final class Judging {
      *     runs differ (an experiment is made with one quota or none; merged folders must agree)
      */
     Double cpuQuota() {
-        List<Double> quotas = rows.stream().map(r -> r.conditions().cpuLimitCpus()).distinct().toList();
-        return quotas.size() == 1 ? quotas.get(0) : null;
+        return cpuQuota;
     }
 
     List<Claim> claims() {
@@ -249,11 +252,6 @@ final class Judging {
 
     static String pct(double share) {
         return num(100 * share, 1) + "%";
-    }
-
-    /** @return a CPU quota as written on the command line, e.g. {@code 1} or {@code 0.5} */
-    static String cpus(double quota) {
-        return java.math.BigDecimal.valueOf(quota).stripTrailingZeros().toPlainString();
     }
 
     static String num(Double v, int decimals) {

@@ -3,6 +3,7 @@ package io.rtaware.experiment.report;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import io.rtaware.core.output.OutputFiles;
 import io.rtaware.core.report.ReportDocument;
+import io.rtaware.experiment.Decimals;
 import io.rtaware.experiment.ExperimentConditions;
 import io.rtaware.experiment.ExperimentInputException;
 import io.rtaware.experiment.ExperimentProfile;
@@ -158,14 +159,14 @@ public final class ExperimentReport {
         if (s.conditions() != null && s.conditions().busyOnly()) {
             b.text("**Busy machine.** " + s.conditions().busyLabel());
         }
-        String k = plain(p.timeScale());
+        String k = Decimals.plain(p.timeScale());
         b.text("Profile: scenario `" + p.scenario() + "`, time scale x" + k + " (world time runs " + k
                 + " times faster than wall time, so each task's computation weighs " + k
                 + " times more against its period), grid resolution "
-                + (p.gridResolutionM() == null ? "`run`'s default" : plain(p.gridResolutionM()) + " m")
+                + (p.gridResolutionM() == null ? "`run`'s default" : Decimals.plain(p.gridResolutionM()) + " m")
                 + ", seed " + p.seed() + " (set 1 run 1's), " + p.runsPerSet() + " run(s) per set planned"
                 + (robots.cpuLimitCpus() == null ? "" : ", each run's JVM (controller and built-in server) under a CPU "
-                        + "quota of " + plain(robots.cpuLimitCpus()) + " CPUs (--cpu-limit; results.csv: cpu_limit_cpus)")
+                        + "quota of " + Decimals.plain(robots.cpuLimitCpus()) + " CPUs (--cpu-limit; results.csv: cpu_limit_cpus)")
                 + ".");
         b.text("Design: " + robots.robotsInWords() + "; the systematic odometry errors come from the robot seed, "
                 + "each run's noise from its world seed (results.csv: seed, robot_seed, robots, design).");
@@ -434,9 +435,6 @@ public final class ExperimentReport {
         return num(m.missPct(), 2) + " (" + m.misses() + " / " + m.releases() + ")";
     }
 
-    private static String plain(double v) {
-        return java.math.BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
-    }
 
     private static String num(Double v, int decimals) {
         if (v == null || !Double.isFinite(v)) {

@@ -1,6 +1,7 @@
 package io.rtaware.experiment.report;
 
 import io.rtaware.core.output.OutputFiles;
+import io.rtaware.experiment.Decimals;
 import io.rtaware.experiment.ExperimentProfile;
 import io.rtaware.experiment.ExperimentSummary;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
@@ -62,7 +63,7 @@ public final class ResultsMarkdown {
             ExperimentSummary s = f.summary();
             ExperimentProfile p = s.profile();
             md.append("\n## ").append(f.name()).append("\n\n");
-            md.append("Profile: scenario `").append(p.scenario()).append("`, time scale x").append(plain(p.timeScale()))
+            md.append("Profile: scenario `").append(p.scenario()).append("`, time scale x").append(Decimals.plain(p.timeScale()))
                     .append(", seed ").append(p.seed()).append(", ").append(p.runsPerSet()).append(" run(s) per set. Machine: ")
                     .append(p.machine() == null ? "not recorded" : p.machine()).append(".\n\n");
             if (s.conditions() != null) {
@@ -165,7 +166,4 @@ public final class ResultsMarkdown {
         return String.format(Locale.ROOT, "%.2f", v);
     }
 
-    private static String plain(double v) {
-        return java.math.BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
-    }
 }
