@@ -18,6 +18,7 @@ import org.openjdk.jmh.annotations.Level;
 import org.openjdk.jmh.annotations.Measurement;
 import org.openjdk.jmh.annotations.Mode;
 import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
 import org.openjdk.jmh.annotations.Scope;
 import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
@@ -130,6 +131,39 @@ public class MonitorBench {
     }
 
     /**
+     * Many periodic tasks released at one instant, as in the pool's in-phase drain (issue 36): each
+     * step runs the next of them in slot order, so every release meets its task's state after the
+     * other tasks' releases have pushed it out of the caches, as on the pool's workers. The time
+     * per op is the bookkeeping of one release with the memory traffic of that many tasks, without
+     * the pool's lock, heap hand-over and wake-ups.
+     */
+    @State(Scope.Thread)
+    public static class InPhase {
+        /** Tasks, all with a 10 ms period and released together. */
+        @Param({"1000", "10000"})
+        public int tasks;
+        Monitor monitor;
+        StepExecutor step;
+
+        /** Builds and starts the monitor on a manual clock. */
+        @Setup(Level.Trial)
+        public void start() {
+            Monitor.Builder builder = Monitor.builder(new ManualClock());
+            for (int i = 0; i < tasks; i++) {
+                builder.task("t" + i, Schedule.periodic(10_000_000), new EmptyTask());
+            }
+            monitor = builder.build();
+            step = monitor.startStepped();
+        }
+
+        /** Terminates the monitor. */
+        @TearDown(Level.Trial)
+        public void stop() {
+            monitor.stop();
+        }
+    }
+
+    /**
      * @param s the monitor
      * @return whether a cycle ran (always true)
      */
@@ -146,6 +180,17 @@ public class MonitorBench {
      */
     @Benchmark
     public boolean poseProducerConsumerCycle(PosePair s) {
+        return s.step.step();
+    }
+
+    /**
+     * One release of the in-phase drain: the next task in slot order, a full cycle of bookkeeping.
+     *
+     * @param s the monitor with its in-phase tasks
+     * @return whether a cycle ran (always true)
+     */
+    @Benchmark
+    public boolean inPhaseRelease(InPhase s) {
         return s.step.step();
     }
 }

@@ -38,6 +38,11 @@ final class TaskHeap {
         return size == 0 ? Long.MAX_VALUE : keys[0];
     }
 
+    /** Empties the heap. */
+    void clear() {
+        size = 0;
+    }
+
     /** @return the slot with the smallest key; only when not empty */
     int peek() {
         return slots[0];
