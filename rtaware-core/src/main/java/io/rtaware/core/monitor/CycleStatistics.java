@@ -14,15 +14,18 @@ import org.HdrHistogram.IntCountsHistogram;
  * <p>Writers: the task's cycle (its own thread, or whichever pool worker runs it) records every
  * cycle; the watchdog adds misses it detects, and any thread may count a listener fault. Counts
  * written by the cycle alone are published with ordered stores (no read-modify-write on the hot
- * path); misses, which two threads add, are atomic. The counters are plain fields of this one
- * object, accessed through {@link VarHandle}s, rather than an object each: with thousands of
- * tasks a pool worker finds every task's state out of its caches, and each object touched per
- * cycle is one more cache miss (issue 16's profile at 10 000 tasks).
+ * path); misses, which two threads add, are atomic. The counters, running sums and the lateness
+ * values waiting for their histogram are this task's column of its monitor's
+ * {@link StatisticsTable}, accessed through a {@link VarHandle}, rather than fields of this object
+ * or an object each: with thousands of tasks a pool worker finds every task's state out of its
+ * caches, each object touched per cycle is one more cache miss (issue 16's profile at 10 000
+ * tasks), and in the table the tasks released together share cache lines (issue 36).
  *
  * <p>Memory (issue 16: 10 000 tasks in the launcher's 512 MB heap): two histograms per task,
  * lateness and execution time, recorded by the cycle and read only after the task's cycles have
- * stopped, plus a ring of the latest {@value #RECENT_EXEC_CYCLES} execution times for the live
- * p99. The histograms keep HdrHistogram's two significant digits with a resolution of
+ * stopped, plus the task's column of the table, which holds a ring of the latest
+ * {@value #RECENT_EXEC_CYCLES} execution times for the live p99. The histograms keep
+ * HdrHistogram's two significant digits with a resolution of
  * {@value #LOWEST_DISCERNIBLE_NS} ns below 2 us, which is the resolution a 1 ns histogram has
  * from 1 us up anyway (the report rounds to 0.1 us). Their range ends at {@value
  * #HIGHEST_TRACKABLE_NS} ns (about 17 s, longer than any deadline a controller is built for):
@@ -48,9 +51,10 @@ final class CycleStatistics {
      * touch per batch instead of one per cycle is the saving (issue 16's profiles at 10 000
      * tasks: recording into the two histograms took a third to a half of the workers' samples,
      * most of them the first read of the histogram's minimum and maximum). Execution times wait
-     * in the ring of recent ones (written anyway for the live p99), lateness in a ring of its own
-     * of this size. Divides {@link #RECENT_EXEC_CYCLES}, so a waiting value is never overwritten.
-     * Each task flushes at its own phase of the batch ({@link #CycleStatistics(int)}): tasks
+     * in the ring of recent ones (written anyway for the live p99), lateness in the task's this
+     * many waiting values of the {@link StatisticsTable}. Divides {@link #RECENT_EXEC_CYCLES}, so a
+     * waiting value is never overwritten. Each group of {@link StatisticsTable#TASKS_PER_LINE}
+     * tasks flushes at its own phase of the batch ({@link #flushPhaseOf}): tasks
      * released together would otherwise all record a whole batch in the same cycle, and with
      * 10 000 tasks in phase every 16th period took 7.5 ms to release instead of 2.7 ms (issue
      * 16: the longest release of each period, period by period, showed the spikes 16 periods
@@ -58,102 +62,74 @@ final class CycleStatistics {
      */
     static final int RECORD_BATCH = 16;
     /**
-     * Heap besides HdrHistogram's footprint estimate of the histograms and the rings' elements:
-     * this object, the rings' headers, and what the histograms' objects take beyond that estimate
-     * (80 bytes each), as {@code MonitorFootprintTest} measures them with the JVM's allocation
-     * counter.
+     * Heap besides HdrHistogram's footprint estimate of the histograms and the task's column of
+     * its {@link StatisticsTable}: this object, what the histograms' objects take beyond that
+     * estimate (80 bytes each), and the table object and array headers of statistics with a
+     * table of their own (about 400 bytes, which the tasks of a monitor share), as
+     * {@code MonitorFootprintTest} measures them with the JVM's allocation counter.
      */
-    private static final long FIELDS_BYTES = 416;
+    private static final long FIELDS_BYTES = 608;
 
-    // Atomic adds are invoked on these constants directly and with getAndAdd's exact type
-    // ((long) H.getAndAdd(this, long)): a VarHandle passed as an argument is not a constant, and
-    // where such a call is not compiled yet (a path first taken in steady state, e.g. the first
-    // miss), its access check allocated strings (seen by the Epsilon guard, JFR stack
-    // VarHandle.checkExactAccessMode <- missed()).
-    private static final VarHandle RELEASES;
-    private static final VarHandle RUNS;
-    private static final VarHandle MISSES;
-    private static final VarHandle SKIPPED;
-    private static final VarHandle STALE_RUNS;
-    private static final VarHandle ERRORS;
-    private static final VarHandle EXPIRED_READS;
-    private static final VarHandle LISTENER_ERRORS;
-    private static final VarHandle RECENT_EXEC_COUNT;
-    private static final VarHandle RECENT_EXEC_SLOT = MethodHandles.arrayElementVarHandle(long[].class);
+    private static final VarHandle LONGS = StatisticsTable.LONGS;
 
-    static {
-        try {
-            MethodHandles.Lookup lookup = MethodHandles.lookup();
-            RELEASES = lookup.findVarHandle(CycleStatistics.class, "releases", long.class);
-            RUNS = lookup.findVarHandle(CycleStatistics.class, "runs", long.class);
-            MISSES = lookup.findVarHandle(CycleStatistics.class, "misses", long.class);
-            SKIPPED = lookup.findVarHandle(CycleStatistics.class, "skipped", long.class);
-            STALE_RUNS = lookup.findVarHandle(CycleStatistics.class, "staleRuns", long.class);
-            ERRORS = lookup.findVarHandle(CycleStatistics.class, "errors", long.class);
-            EXPIRED_READS = lookup.findVarHandle(CycleStatistics.class, "expiredReads", long.class);
-            LISTENER_ERRORS = lookup.findVarHandle(CycleStatistics.class, "listenerErrors", long.class);
-            RECENT_EXEC_COUNT = lookup.findVarHandle(CycleStatistics.class, "recentExecCount", long.class);
-        } catch (ReflectiveOperationException e) {
-            throw new ExceptionInInitializerError(e);
-        }
-    }
-
-    // Written through the VarHandles above: ordered stores by the cycle's thread, atomic adds
-    // where two threads write (misses, listener errors), acquiring reads by anyone.
-    private long releases;
-    private long runs;
-    private long misses;
-    private long skipped;
-    private long staleRuns;
-    private long errors;
-    private long expiredReads;
-    private long listenerErrors;
+    /**
+     * The counters and sums, in the table's arrays at {@link #slot}: written with ordered stores
+     * by the cycle's thread, atomic adds where two threads write (misses, listener errors), read
+     * with acquiring reads by anyone.
+     */
+    private final StatisticsTable table;
+    private final int slot;
 
     private AbstractHistogram latenessNs = newHistogram();
-    private long latenessMaxNs;
-    private double latenessSumNs;
-    /** Lateness values not yet in {@link #latenessNs}: slot {@code n % RECORD_BATCH} for the n-th release. */
-    private final long[] pendingLatenessNs = new long[RECORD_BATCH];
-    /** Lateness values noted so far. */
-    private long latenessCount;
-    /** Lateness values recorded into {@link #latenessNs} so far (the rest wait in the ring). */
-    private long latenessRecordedCount;
-
     private AbstractHistogram execNs = newHistogram();
-    private long execMaxNs;
-    private double execSumNs;
 
-    /** The latest execution times, slot {@code n % RECENT_EXEC_CYCLES} for the n-th cycle. */
-    private final long[] recentExecNs = new long[RECENT_EXEC_CYCLES];
-    /** Execution times written to {@link #recentExecNs} so far. */
-    private long recentExecCount;
-    /** Execution times recorded into {@link #execNs} so far (the rest wait in the ring). */
-    private long execRecordedCount;
-    /** The values wait until the count of values noted is {@code flushPhase} modulo {@link #RECORD_BATCH}. */
-    private final int flushPhase;
-
-    /** Statistics that flush their batches when the count of values noted is a multiple of {@link #RECORD_BATCH}. */
+    /** Statistics of their own, that flush their batches when the count of values noted is a multiple of {@link #RECORD_BATCH}. */
     CycleStatistics() {
         this(0);
     }
 
     /**
-     * @param spreadIndex spreads the batches of many tasks over the cycles: a task's waiting
-     *     values go into its histograms when the count noted is {@code spreadIndex} modulo
-     *     {@link #RECORD_BATCH} (the task's index serves; the first batch is then shorter)
+     * Statistics of their own (a table of one task).
+     *
+     * @param spreadIndex the batches of values go into the histograms when the count noted is
+     *     {@code spreadIndex} modulo {@link #RECORD_BATCH} (the first batch is then shorter)
      */
     CycleStatistics(int spreadIndex) {
-        this.flushPhase = Math.floorMod(spreadIndex, RECORD_BATCH);
+        this(new StatisticsTable(1), 0, spreadIndex);
     }
 
     /**
-     * @return the heap bytes one instance takes: its two histograms as HdrHistogram estimates
-     *     their footprint, the rings of recent execution times and of lateness values waiting to
-     *     be recorded, and its fields
+     * One task's column of a monitor's table.
+     *
+     * @param table the table of every task of the monitor
+     * @param slot the task's column
+     * @param spreadIndex spreads the batches of many tasks over the cycles: the task's waiting
+     *     values go into its histograms when the count noted is {@code spreadIndex} modulo
+     *     {@link #RECORD_BATCH} ({@link #flushPhaseOf} of the task's index serves)
+     */
+    CycleStatistics(StatisticsTable table, int slot, int spreadIndex) {
+        this.table = table;
+        this.slot = slot;
+        table.flushPhase[slot] = Math.floorMod(spreadIndex, RECORD_BATCH);
+    }
+
+    /**
+     * @param taskIndex a task's index
+     * @return the spread index for the task's statistics: the same for the
+     *     {@link StatisticsTable#TASKS_PER_LINE} tasks whose values share cache lines, so they
+     *     flush in the same cycle, one after the other, and read the same waiting lines
+     */
+    static int flushPhaseOf(int taskIndex) {
+        return taskIndex / StatisticsTable.TASKS_PER_LINE;
+    }
+
+    /**
+     * @return the heap bytes one task's statistics take: its two histograms as HdrHistogram
+     *     estimates their footprint, its column of the table (the lateness values waiting to be
+     *     recorded and the ring of recent execution times included) and this object
      */
     static long estimatedHeapBytes() {
-        return 2 * newHistogram().getEstimatedFootprintInBytes()
-                + (long) (RECENT_EXEC_CYCLES + RECORD_BATCH) * Long.BYTES + FIELDS_BYTES;
+        return 2 * newHistogram().getEstimatedFootprintInBytes() + StatisticsTable.bytesPerTask() + FIELDS_BYTES;
     }
 
     /** @return HdrHistogram's footprint estimate of the two histograms this instance holds now */
@@ -163,134 +139,121 @@ final class CycleStatistics {
 
     /** A release came due and its cycle starts now (cycle's thread). */
     void released(long latenessNs) {
-        RELEASES.setRelease(this, releases + 1);
-        RUNS.setRelease(this, runs + 1);
-        latenessSumNs += latenessNs;
-        if (latenessNs > latenessMaxNs) {
-            latenessMaxNs = latenessNs;
+        if (table.released(slot, latenessNs)) {
+            recordLatenessWaiting();
         }
-        long n = latenessCount;
-        pendingLatenessNs[(int) (n % RECORD_BATCH)] = latenessNs;
-        latenessCount = n + 1;
-        if (flushDue(n + 1)) {
-            recordLatenessUpTo(n + 1);
-        }
-    }
-
-    /** @return whether the values waiting go into their histogram once {@code count} have been noted */
-    private boolean flushDue(long count) {
-        return count % RECORD_BATCH == flushPhase;
-    }
-
-    /** @return lateness values noted but not yet in their histogram (cycle's thread) */
-    long latenessWaiting() {
-        return latenessCount - latenessRecordedCount;
-    }
-
-    /** @return execution times noted but not yet in their histogram (cycle's thread) */
-    long execWaiting() {
-        return recentExecCount - execRecordedCount;
-    }
-
-    /** Records the lateness values waiting in their ring, up to the {@code count}-th (cycle's thread, or after it). */
-    private void recordLatenessUpTo(long count) {
-        latenessNs = recordFromRing(latenessNs, pendingLatenessNs, latenessRecordedCount, count);
-        latenessRecordedCount = count;
     }
 
     /** A cycle ended after {@code execNs} of world time (cycle's thread). */
     void cycleEnded(long execNs) {
-        execSumNs += execNs;
-        if (execNs > execMaxNs) {
-            execMaxNs = execNs;
-        }
-        long n = recentExecCount;
-        RECENT_EXEC_SLOT.setRelease(recentExecNs, (int) (n % RECENT_EXEC_CYCLES), execNs);
-        RECENT_EXEC_COUNT.setRelease(this, n + 1);
-        if (flushDue(n + 1)) {
-            recordExecUpTo(n + 1);
+        if (table.cycleEnded(slot, execNs)) {
+            recordExecWaiting();
         }
     }
 
-    /** Records the execution times waiting in the ring, up to the {@code count}-th (cycle's thread, or after it). */
-    private void recordExecUpTo(long count) {
-        execNs = recordFromRing(execNs, recentExecNs, execRecordedCount, count);
-        execRecordedCount = count;
+    /** @return lateness values noted but not yet in their histogram (cycle's thread) */
+    long latenessWaiting() {
+        return table.latenessCount[slot] - table.latenessRecordedCount[slot];
+    }
+
+    /** @return execution times noted but not yet in their histogram (cycle's thread) */
+    long execWaiting() {
+        return table.recentExecCount[slot] - table.execRecordedCount[slot];
     }
 
     /**
-     * Records the {@code from}-th to the {@code to - 1}-th value noted in a ring (the n-th in slot
-     * {@code n % ring.length}).
-     *
-     * @return the histogram to keep (see {@link #record})
+     * Records the lateness values waiting in the table into their histogram (the cycle's thread,
+     * when {@link StatisticsTable#released} says they are due, or a reader once the cycles have
+     * stopped).
      */
-    private static AbstractHistogram recordFromRing(AbstractHistogram histogram, long[] ring, long from, long to) {
-        AbstractHistogram target = histogram;
-        for (long i = from; i < to; i++) {
-            target = record(target, ring[(int) (i % ring.length)]);
+    void recordLatenessWaiting() {
+        StatisticsTable t = table;
+        long count = t.latenessCount[slot];
+        AbstractHistogram target = latenessNs;
+        for (long n = t.latenessRecordedCount[slot]; n < count; n++) {
+            target = record(target, t.pendingLatenessNs[(int) (n % RECORD_BATCH) * t.size + slot]);
         }
-        return target;
+        latenessNs = target;
+        t.latenessRecordedCount[slot] = count;
+    }
+
+    /**
+     * Records the execution times waiting in the task's ring into their histogram (the cycle's
+     * thread, when {@link StatisticsTable#cycleEnded} says they are due, or a reader once the
+     * cycles have stopped).
+     */
+    void recordExecWaiting() {
+        StatisticsTable t = table;
+        long count = t.recentExecCount[slot];
+        int ring = slot * RECENT_EXEC_CYCLES;
+        AbstractHistogram target = execNs;
+        for (long n = t.execRecordedCount[slot]; n < count; n++) {
+            target = record(target, t.recentExecNs[ring + (int) (n % RECENT_EXEC_CYCLES)]);
+        }
+        execNs = target;
+        t.execRecordedCount[slot] = count;
     }
 
     /** {@code count} releases were skipped, each a release and a miss (cycle's thread). */
     void skipped(long count) {
-        RELEASES.setRelease(this, releases + count);
-        SKIPPED.setRelease(this, skipped + count);
-        long unused = (long) MISSES.getAndAdd(this, count);
+        StatisticsTable t = table;
+        LONGS.setRelease(t.releases, slot, t.releases[slot] + count);
+        LONGS.setRelease(t.skipped, slot, t.skipped[slot] + count);
+        long unused = (long) LONGS.getAndAdd(t.misses, slot, count);
     }
 
     /** A cycle missed its deadline (cycle's thread or watchdog). */
     void missed() {
-        long unused = (long) MISSES.getAndAdd(this, 1L);
+        long unused = (long) LONGS.getAndAdd(table.misses, slot, 1L);
     }
 
     void staleRun() {
-        STALE_RUNS.setRelease(this, staleRuns + 1);
+        LONGS.setRelease(table.staleRuns, slot, table.staleRuns[slot] + 1);
     }
 
     void error() {
-        ERRORS.setRelease(this, errors + 1);
+        LONGS.setRelease(table.errors, slot, table.errors[slot] + 1);
     }
 
     void expiredRead() {
-        EXPIRED_READS.setRelease(this, expiredReads + 1);
+        LONGS.setRelease(table.expiredReads, slot, table.expiredReads[slot] + 1);
     }
 
     /** A listener failed on one of this task's events (any thread). */
     void listenerError() {
-        long unused = (long) LISTENER_ERRORS.getAndAdd(this, 1L);
+        long unused = (long) LONGS.getAndAdd(table.listenerErrors, slot, 1L);
     }
 
     long releases() {
-        return (long) RELEASES.getAcquire(this);
+        return (long) LONGS.getAcquire(table.releases, slot);
     }
 
     long runs() {
-        return (long) RUNS.getAcquire(this);
+        return (long) LONGS.getAcquire(table.runs, slot);
     }
 
     long misses() {
-        return (long) MISSES.getAcquire(this);
+        return (long) LONGS.getAcquire(table.misses, slot);
     }
 
     long skippedReleases() {
-        return (long) SKIPPED.getAcquire(this);
+        return (long) LONGS.getAcquire(table.skipped, slot);
     }
 
     long staleRuns() {
-        return (long) STALE_RUNS.getAcquire(this);
+        return (long) LONGS.getAcquire(table.staleRuns, slot);
     }
 
     long errors() {
-        return (long) ERRORS.getAcquire(this);
+        return (long) LONGS.getAcquire(table.errors, slot);
     }
 
     long expiredReads() {
-        return (long) EXPIRED_READS.getAcquire(this);
+        return (long) LONGS.getAcquire(table.expiredReads, slot);
     }
 
     long listenerErrors() {
-        return (long) LISTENER_ERRORS.getAcquire(this);
+        return (long) LONGS.getAcquire(table.listenerErrors, slot);
     }
 
     /** Live counters, safe at any time from any thread; allocates (not for the cycle's thread). */
@@ -306,14 +269,14 @@ final class CycleStatistics {
      * may replace the oldest value read, which a live figure can afford.
      */
     private long recentExecP99Ns() {
-        long count = (long) RECENT_EXEC_COUNT.getAcquire(this);
+        long count = (long) LONGS.getAcquire(table.recentExecCount, slot);
         int n = (int) Math.min(count, RECENT_EXEC_CYCLES);
         if (n == 0) {
             return 0;
         }
         long[] latest = new long[n];
         for (int i = 0; i < n; i++) {
-            latest[i] = (long) RECENT_EXEC_SLOT.getAcquire(recentExecNs, i);
+            latest[i] = (long) LONGS.getAcquire(table.recentExecNs, slot * RECENT_EXEC_CYCLES + i);
         }
         Arrays.sort(latest);
         return latest[(int) Math.ceil(0.99 * n) - 1];
@@ -321,14 +284,14 @@ final class CycleStatistics {
 
     /** @return execution times over the run; call only after the task's cycles have stopped */
     Percentiles execUs() {
-        recordExecUpTo(recentExecCount);
-        return Percentiles.ofNanos(execNs, execMaxNs, execSumNs);
+        recordExecWaiting();
+        return Percentiles.ofNanos(execNs, table.execMaxNs[slot], table.execSumNs[slot]);
     }
 
     /** @return lateness over the run; call only after the task's cycles have stopped */
     Percentiles latenessUs() {
-        recordLatenessUpTo(latenessCount);
-        return Percentiles.ofNanos(latenessNs, latenessMaxNs, latenessSumNs);
+        recordLatenessWaiting();
+        return Percentiles.ofNanos(latenessNs, table.latenessMaxNs[slot], table.latenessSumNs[slot]);
     }
 
     private static AbstractHistogram newHistogram() {

@@ -744,8 +744,9 @@ public final class Monitor {
                     errorHandler != null ? errorHandler : new RateLimitedErrorPrinter());
             ListenerFanOut events = new ListenerFanOut(faults);
             List<TaskRuntime> runtimes = new ArrayList<>();
+            StatisticsTable statistics = new StatisticsTable(declared.size());
             for (DeclaringSetup declarations : declared) {
-                TaskRuntime runtime = new TaskRuntime(declarations.spec, runtimes.size(), clock, events,
+                TaskRuntime runtime = new TaskRuntime(declarations.spec, runtimes.size(), statistics, clock, events,
                         declarations.inputs.toArray(NO_INPUTS), declarations.outputs.toArray(NO_OUTPUTS));
                 if (adaptivePolicy != null) {
                     runtime.adaptive(adaptivePolicy);

@@ -98,6 +98,11 @@ final class TaskRuntime implements TaskInfo {
     private final Release release;
     private final long offsetNs;
     private final CycleStatistics statistics;
+    /**
+     * The table that holds {@link #statistics}' counters: a cycle notes its release and its end
+     * there directly, and touches {@link #statistics} only when a batch goes into the histograms.
+     */
+    private final StatisticsTable statisticsTable;
     private final CycleToken token = new CycleToken();
     private volatile ReleaseGrid grid;
     /** Null unless adaptive periods are enabled on the monitor and the schedule has a range. */
@@ -131,12 +136,13 @@ final class TaskRuntime implements TaskInfo {
         }
     }
 
-    TaskRuntime(TaskSpec spec, int index, Clock clock, ListenerFanOut events, InputHandle<?>[] inputs,
-                OutputHandle<?>[] outputs) {
+    TaskRuntime(TaskSpec spec, int index, StatisticsTable statisticsTable, Clock clock, ListenerFanOut events,
+                InputHandle<?>[] inputs, OutputHandle<?>[] outputs) {
         this.spec = spec;
         this.task = spec.task();
         this.index = index;
-        this.statistics = new CycleStatistics(index);
+        this.statisticsTable = statisticsTable;
+        this.statistics = new CycleStatistics(statisticsTable, index, CycleStatistics.flushPhaseOf(index));
         this.clock = clock;
         this.events = events;
         this.inputs = inputs;
@@ -323,7 +329,9 @@ final class TaskRuntime implements TaskInfo {
         long k = nextIndex;
         long releaseNs = nextReleaseNs;
         long cycleStartNs = clock.nanos();
-        statistics.released(Math.max(0, cycleStartNs - releaseNs));
+        if (statisticsTable.released(index, Math.max(0, cycleStartNs - releaseNs))) {
+            statistics.recordLatenessWaiting();
+        }
         boolean periodic = release == Release.PERIODIC;
         if (periodic) {
             long deadline = deadlineOf(k);
@@ -396,7 +404,9 @@ final class TaskRuntime implements TaskInfo {
             missed = true; // claimed by the watchdog: reported as missed while running
         }
         long execNs = endNs - cycleStartNs;
-        statistics.cycleEnded(execNs);
+        if (statisticsTable.cycleEnded(index, execNs)) {
+            statistics.recordExecWaiting();
+        }
         if (adaptive != null) {
             adaptive.cycleEnded(execNs);
         }

@@ -1,0 +1,152 @@
+package io.rtaware.core.monitor;
+
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
+
+/**
+ * The counters and running sums of every task of one monitor, one dense array per quantity,
+ * indexed by the task's index ({@link CycleStatistics} is each task's view of its column).
+ *
+ * <p>Why arrays and not fields of each task's object: the pool releases thousands of tasks at
+ * one instant in index order, and every release updates these values. Held in one object per
+ * task, they were a few cache lines per release, each out of the caches after the other tasks'
+ * releases had passed; held here, consecutive tasks' values share cache lines (eight longs to a
+ * 64-byte line) and a drain walks each array in order, which the processor's prefetchers follow
+ * (issue 36: {@code MonitorBench.inPhaseRelease}, before and after, in docs/performance.md).
+ *
+ * <p>The lateness values that wait to be recorded into their histogram
+ * ({@link CycleStatistics#RECORD_BATCH} per task) are laid out by position in the batch first,
+ * then by task: the n-th value of task i is at {@code (n % RECORD_BATCH) * size + i}, so tasks
+ * released together write neighbouring words. Tasks flush their batches in groups of
+ * {@link #TASKS_PER_LINE} neighbours ({@link CycleStatistics#flushPhaseOf}), which then read the same
+ * lines one after the other.
+ *
+ * <p>A task's cycle notes its release and its end here ({@link #released}, {@link #cycleEnded})
+ * without touching its {@link CycleStatistics}, which it needs only when a batch of values goes
+ * into the histograms; everything else reads and writes through {@link CycleStatistics}, under
+ * the threading rules stated there (one writer per task for most, ordered stores and acquiring reads for the live
+ * counters). Sized once, at construction; nothing is allocated afterwards.
+ */
+final class StatisticsTable {
+
+    /** Longs per 64-byte cache line: the tasks whose counters share a line. */
+    static final int TASKS_PER_LINE = 8;
+    /** Arrays with one element per task: every one below but the waiting lateness values and the rings. */
+    static final int ARRAYS_PER_TASK = 17;
+
+    // Ordered stores and atomic adds on the arrays. Invoked on this constant directly with the
+    // exact types ((long) LONGS.getAndAdd(array, int, long)): a VarHandle passed as an argument
+    // is not a constant, and where such a call is not compiled yet (a path first taken in steady
+    // state, e.g. the first miss), its access check allocated strings (seen by the Epsilon guard,
+    // JFR stack VarHandle.checkExactAccessMode <- missed()).
+    static final VarHandle LONGS = MethodHandles.arrayElementVarHandle(long[].class);
+
+    /** Tasks (columns). */
+    final int size;
+    final long[] releases;
+    final long[] runs;
+    final long[] misses;
+    final long[] skipped;
+    final long[] staleRuns;
+    final long[] errors;
+    final long[] expiredReads;
+    final long[] listenerErrors;
+    final long[] latenessMaxNs;
+    final double[] latenessSumNs;
+    /** Lateness values noted so far, per task. */
+    final long[] latenessCount;
+    /** Lateness values recorded into the task's histogram so far (the rest wait in {@link #pendingLatenessNs}). */
+    final long[] latenessRecordedCount;
+    /** Lateness values not yet in their histogram: the n-th of task i at {@code (n % RECORD_BATCH) * size + i}. */
+    final long[] pendingLatenessNs;
+    final long[] execMaxNs;
+    final double[] execSumNs;
+    /** Execution times written to the task's ring of recent ones so far. */
+    final long[] recentExecCount;
+    /** Execution times recorded into the task's histogram so far (the rest wait in its ring). */
+    final long[] execRecordedCount;
+    /**
+     * The latest execution times of each task, for the live p99 and waiting for the histogram:
+     * the n-th of task i at {@code i * RECENT_EXEC_CYCLES + n % RECENT_EXEC_CYCLES}.
+     */
+    final long[] recentExecNs;
+    /** Per task: its waiting values go into its histograms when the count noted is this modulo {@link CycleStatistics#RECORD_BATCH}. */
+    final int[] flushPhase;
+
+    /**
+     * @param size the number of tasks
+     */
+    StatisticsTable(int size) {
+        if (size < 0) {
+            throw new IllegalArgumentException("a table of " + size + " tasks");
+        }
+        this.size = size;
+        releases = new long[size];
+        runs = new long[size];
+        misses = new long[size];
+        skipped = new long[size];
+        staleRuns = new long[size];
+        errors = new long[size];
+        expiredReads = new long[size];
+        listenerErrors = new long[size];
+        latenessMaxNs = new long[size];
+        latenessSumNs = new double[size];
+        latenessCount = new long[size];
+        latenessRecordedCount = new long[size];
+        pendingLatenessNs = new long[Math.multiplyExact(CycleStatistics.RECORD_BATCH, size)];
+        execMaxNs = new long[size];
+        execSumNs = new double[size];
+        recentExecCount = new long[size];
+        execRecordedCount = new long[size];
+        recentExecNs = new long[Math.multiplyExact(CycleStatistics.RECENT_EXEC_CYCLES, size)];
+        flushPhase = new int[size];
+    }
+
+    /**
+     * Notes that a release of task {@code i} came due and its cycle starts now (the task's cycle's
+     * thread): counts it and keeps its lateness waiting for the histogram.
+     *
+     * @param i the task
+     * @param latenessNs how late the cycle starts
+     * @return whether the task's waiting lateness values are now due to go into its histogram
+     *     ({@link CycleStatistics#recordLatenessWaiting})
+     */
+    boolean released(int i, long latenessNs) {
+        LONGS.setRelease(releases, i, releases[i] + 1);
+        LONGS.setRelease(runs, i, runs[i] + 1);
+        latenessSumNs[i] += latenessNs;
+        if (latenessNs > latenessMaxNs[i]) {
+            latenessMaxNs[i] = latenessNs;
+        }
+        long n = latenessCount[i];
+        pendingLatenessNs[(int) (n % CycleStatistics.RECORD_BATCH) * size + i] = latenessNs;
+        latenessCount[i] = n + 1;
+        return (n + 1) % CycleStatistics.RECORD_BATCH == flushPhase[i];
+    }
+
+    /**
+     * Notes that a cycle of task {@code i} ended (the task's cycle's thread): keeps its execution
+     * time in the task's ring of recent ones.
+     *
+     * @param i the task
+     * @param execNs how long the cycle took
+     * @return whether the task's waiting execution times are now due to go into its histogram
+     *     ({@link CycleStatistics#recordExecWaiting})
+     */
+    boolean cycleEnded(int i, long execNs) {
+        execSumNs[i] += execNs;
+        if (execNs > execMaxNs[i]) {
+            execMaxNs[i] = execNs;
+        }
+        long n = recentExecCount[i];
+        LONGS.setRelease(recentExecNs, i * CycleStatistics.RECENT_EXEC_CYCLES + (int) (n % CycleStatistics.RECENT_EXEC_CYCLES),
+                execNs);
+        LONGS.setRelease(recentExecCount, i, n + 1);
+        return (n + 1) % CycleStatistics.RECORD_BATCH == flushPhase[i];
+    }
+
+    /** @return heap bytes per task: one element of each array, its waiting lateness values and its ring */
+    static long bytesPerTask() {
+        return (long) (ARRAYS_PER_TASK + CycleStatistics.RECORD_BATCH + CycleStatistics.RECENT_EXEC_CYCLES) * Long.BYTES;
+    }
+}
