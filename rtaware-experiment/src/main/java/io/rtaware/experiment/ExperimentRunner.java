@@ -269,7 +269,7 @@ public final class ExperimentRunner {
     }
 
     private static String cpuLabel(Double cpus) {
-        return cpus == null ? "none" : cpus + " CPUs";
+        return cpus == null ? "none" : Decimals.plain(cpus) + (cpus == 1 ? " CPU" : " CPUs");
     }
 
     private static String gridLabel(Double m) {
