@@ -37,6 +37,7 @@ import io.rtaware.core.monitor.ExecutorKind;
 import io.rtaware.core.monitor.Monitor;
 import io.rtaware.core.monitor.ThreadSetup;
 import io.rtaware.core.output.OutputFiles;
+import io.rtaware.core.report.LatenessSpread;
 import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
 import io.rtaware.core.report.SummaryTable;
@@ -102,6 +103,9 @@ public final class BenchCommand implements Callable<Integer> {
 
     /** Exit status when the run ended before its duration (a task hit a fatal VM error). */
     public static final int EXIT_ENDED_EARLY = 1;
+    /** The report section with the spread of the tasks' p99 lateness ({@link LatenessSpread}). */
+    static final String LATENESS_SPREAD_SECTION = "lateness_spread";
+
     /** Exit status of {@code --fail-on-alloc} when the framework allocated in steady state. */
     public static final int EXIT_ALLOCATED = 4;
 
@@ -560,6 +564,11 @@ public final class BenchCommand implements Callable<Integer> {
         out.println();
         out.print(SummaryTable.format(report));
         ReportDocument doc = new ReportDocument(report);
+        // With one task the line would repeat its row of the table.
+        LatenessSpread.of(report).filter(spread -> spread.tasks() > 1).ifPresent(spread -> {
+            out.println(spread.line());
+            doc.section(LATENESS_SPREAD_SECTION, spread);
+        });
         ConditionsMeter.Span span = conditions;
         Conditions measured = null;
         if (span != null) {
