@@ -83,7 +83,10 @@ final class CycleStatistics {
     private AbstractHistogram latenessNs = newHistogram();
     private AbstractHistogram execNs = newHistogram();
 
-    /** Statistics of their own, that flush their batches when the count of values noted is a multiple of {@link #RECORD_BATCH}. */
+    /**
+     * Statistics of their own (a table of one task), that flush their batches when the count of
+     * values noted is a multiple of {@link #RECORD_BATCH}.
+     */
     CycleStatistics() {
         this(0);
     }
