@@ -566,6 +566,7 @@ public final class BenchCommand implements Callable<Integer> {
         ReportDocument doc = new ReportDocument(report);
         // With one task the line would repeat its row of the table.
         LatenessSpread.of(report).filter(spread -> spread.tasks() > 1).ifPresent(spread -> {
+            out.println();
             out.println(spread.line());
             doc.section(LATENESS_SPREAD_SECTION, spread);
         });
