@@ -77,11 +77,10 @@ public final class StepExecutor implements Executor {
      * @return false if no task is left to release, or the monitor was stopped
      */
     public boolean step() {
-        TaskRuntime next = earliestDueBefore(TaskRuntime.NEVER);
-        if (next == null || stopped) {
+        if (stopped || !dueBefore(TaskRuntime.NEVER)) {
             return false;
         }
-        runOne(next);
+        runNext();
         return true;
     }
 
@@ -91,12 +90,8 @@ public final class StepExecutor implements Executor {
      * @param endNs world time to run until
      */
     public void runUntil(long endNs) {
-        while (!stopped) {
-            TaskRuntime next = earliestDueBefore(endNs);
-            if (next == null) {
-                break;
-            }
-            runOne(next);
+        while (!stopped && dueBefore(endNs)) {
+            runNext();
         }
         clock.advanceTo(endNs);
     }
@@ -139,15 +134,12 @@ public final class StepExecutor implements Executor {
         }
     }
 
-    /** @return the task with the earliest release before {@code limitNs} (ties: the lowest slot), or null */
-    private TaskRuntime earliestDueBefore(long limitNs) {
+    /** @return whether the earliest next release (ties: the lowest slot) is before {@code limitNs} */
+    private boolean dueBefore(long limitNs) {
         if (dueStale) {
             rebuildDue();
         }
-        if (due.size() == 0 || due.peekKey() >= limitNs) {
-            return null;
-        }
-        return runtimes[due.peek()];
+        return due.size() > 0 && due.peekKey() < limitNs;
     }
 
     /** Queues every task that will be released again, by its next release. */
@@ -163,8 +155,9 @@ public final class StepExecutor implements Executor {
     }
 
     /** Runs the task at the top of the heap, then queues it again by its new next release. */
-    private void runOne(TaskRuntime runtime) {
+    private void runNext() {
         int slot = due.pop();
+        TaskRuntime runtime = runtimes[slot];
         clock.advanceTo(runtime.nextReleaseNs());
         current = runtime;
         try {
