@@ -101,5 +101,4 @@ public record ExperimentPlan(List<PeriodSet> sets, int runsPerSet, RunConditions
         args.addAll(List.of("--out", runDir.toString(), "--quiet"));
         return args;
     }
-
 }

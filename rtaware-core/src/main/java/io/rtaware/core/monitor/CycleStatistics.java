@@ -1,7 +1,6 @@
 package io.rtaware.core.monitor;
 
 import io.rtaware.core.report.Percentiles;
-import java.lang.invoke.MethodHandles;
 import java.lang.invoke.VarHandle;
 import java.util.Arrays;
 import org.HdrHistogram.AbstractHistogram;
@@ -140,14 +139,20 @@ final class CycleStatistics {
         return latenessNs.getEstimatedFootprintInBytes() + execNs.getEstimatedFootprintInBytes();
     }
 
-    /** A release came due and its cycle starts now (cycle's thread). */
+    /**
+     * A release came due and its cycle starts now (cycle's thread). A task's own cycle does the
+     * same through the table ({@link TaskRuntime} holds it), so as not to touch this object.
+     */
     void released(long latenessNs) {
         if (table.released(slot, latenessNs)) {
             recordLatenessWaiting();
         }
     }
 
-    /** A cycle ended after {@code execNs} of world time (cycle's thread). */
+    /**
+     * A cycle ended after {@code execNs} of world time (cycle's thread). A task's own cycle does
+     * the same through the table ({@link TaskRuntime} holds it), so as not to touch this object.
+     */
     void cycleEnded(long execNs) {
         if (table.cycleEnded(slot, execNs)) {
             recordExecWaiting();

@@ -1,7 +1,7 @@
 package io.rtaware.experiment.claims;
 
-import io.rtaware.experiment.ExperimentSummary.PairTest;
 import io.rtaware.experiment.Decimals;
+import io.rtaware.experiment.ExperimentSummary.PairTest;
 import io.rtaware.experiment.ExperimentSummary.SetSummary;
 import io.rtaware.experiment.PaperReference;
 import io.rtaware.experiment.PeriodSet;

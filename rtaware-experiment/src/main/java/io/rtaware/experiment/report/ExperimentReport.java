@@ -435,7 +435,6 @@ public final class ExperimentReport {
         return num(m.missPct(), 2) + " (" + m.misses() + " / " + m.releases() + ")";
     }
 
-
     private static String num(Double v, int decimals) {
         if (v == null || !Double.isFinite(v)) {
             return NA;

@@ -165,5 +165,4 @@ public final class ResultsMarkdown {
     private static String num(double v) {
         return String.format(Locale.ROOT, "%.2f", v);
     }
-
 }
