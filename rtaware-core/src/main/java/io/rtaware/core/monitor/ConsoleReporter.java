@@ -6,6 +6,7 @@ import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.SystemClock;
 import java.io.PrintStream;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
@@ -23,6 +24,13 @@ import org.agrona.concurrent.SleepingMillisIdleStrategy;
  * span it covers ({@code 37 deadline misses in the last 4.0 s}): counts are never dropped, only
  * held back, and {@link #flush()} prints what is held back (at the end of a run).
  *
+ * <p>Across tasks, at most {@value #TASK_LINES_PER_SECOND} task lines are printed in a wall
+ * second. When more tasks are due (hundreds of tasks missing together), the rest fold into one
+ * line a second that says how many tasks it covers, their counts together and the task with the
+ * most misses ({@code [rtaware] 4117 more tasks: 9311 deadline misses (...) ...; most: t802, 4}).
+ * A flood of misses then costs a few lines, not a line per task: thousands of lines a second
+ * would hide the cause and take the CPU and memory the tasks need.
+ *
  * <p>Events only bump counters (no allocation, no I/O on task threads); a daemon thread of
  * the reporter's own prints every {@value #POLL_MS} ms. {@link #flush()} prints what is left,
  * e.g. before the termination summary. A fault of that thread goes to the framework error
@@ -35,6 +43,8 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
     private static final long LINE_INTERVAL_NS = 1_000_000_000L;
     /** The longest wait between two lines of one task while its events keep coming, s. */
     static final int LONGEST_INTERVAL_S = 8;
+    /** Most task lines in one wall second, over all tasks; the rest fold into one line a second. */
+    static final int TASK_LINES_PER_SECOND = 10;
     private static final int MISSES = 0;
     private static final int SKIPPED = 1;
     private static final int STALE = 2;
@@ -53,6 +63,18 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
     private final AtomicReferenceArray<Throwable> lastError;
     private final AtomicReferenceArray<PeriodChange> lastPeriodChange;
     private final LinePacer[] pacers;
+    /** Wall time the current second of the task-line budget began, and task lines printed in it. */
+    private long budgetSecondStartNs = Long.MIN_VALUE;
+    private int taskLinesThisSecond;
+    /** The counts of the tasks over the budget, since the last fold line (printer's state). */
+    private final long[] folded = new long[KINDS];
+    /** Per task: whether it is in the next fold line, and its misses and skipped releases there. */
+    private final boolean[] inFold;
+    private final String[] nameByIndex;
+    private final long[] foldedMissesOf;
+    private int foldedTasks;
+    private final LinePacer foldPacer = new LinePacer(LINE_INTERVAL_NS, LINE_INTERVAL_NS);
+    private long firstFoldNs;
     private final AgentThread printer;
     /**
      * Where a fault of the printer's thread goes: the framework's default printer until the
@@ -93,6 +115,12 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         this.lastError = new AtomicReferenceArray<>(n);
         this.lastPeriodChange = new AtomicReferenceArray<>(n);
         this.pacers = new LinePacer[n];
+        this.inFold = new boolean[n];
+        this.nameByIndex = new String[n];
+        for (TaskInfo task : tasks) {
+            nameByIndex[task.index()] = task.name();
+        }
+        this.foldedMissesOf = new long[n];
         for (int i = 0; i < n; i++) {
             pacers[i] = new LinePacer(LINE_INTERVAL_NS, LONGEST_INTERVAL_S * LINE_INTERVAL_NS);
         }
@@ -175,6 +203,10 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
 
     private synchronized void printDue(boolean force) {
         long wallNs = wallClock.nanos();
+        if (force || budgetSecondStartNs == Long.MIN_VALUE || wallNs - budgetSecondStartNs >= LINE_INTERVAL_NS) {
+            budgetSecondStartNs = wallNs;
+            taskLinesThisSecond = 0;
+        }
         for (TaskInfo task : tasks) {
             int i = task.index();
             if (!force && !pacers[i].due(wallNs)) {
@@ -193,8 +225,81 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
                 continue;
             }
             long spanNs = pacers[i].printed(wallNs);
-            out.println(line(task, misses, skipped, stale, expired, errors, spanNs) + periodLine(i, changes));
+            if (taskLinesThisSecond < TASK_LINES_PER_SECOND) {
+                taskLinesThisSecond++;
+                out.println(line(task, misses, skipped, stale, expired, errors, spanNs) + periodLine(i, changes));
+            } else {
+                fold(i, wallNs, misses, skipped, stale, expired, errors, changes);
+            }
         }
+        if (foldedTasks > 0 && (force || foldPacer.due(wallNs))) {
+            foldPacer.printed(wallNs);
+            out.println(foldLine(wallNs - firstFoldNs));
+            Arrays.fill(folded, 0);
+            Arrays.fill(inFold, false);
+            Arrays.fill(foldedMissesOf, 0);
+            foldedTasks = 0;
+        }
+    }
+
+    /** Adds one task's counts, over the budget, to the next fold line. */
+    private void fold(int i, long wallNs, long misses, long skipped, long stale, long expired, long errors,
+                      long changes) {
+        if (foldedTasks == 0) {
+            firstFoldNs = wallNs;
+        }
+        if (!inFold[i]) {
+            inFold[i] = true;
+            foldedTasks++;
+        }
+        foldedMissesOf[i] += misses + skipped;
+        folded[MISSES] += misses;
+        folded[SKIPPED] += skipped;
+        folded[STALE] += stale;
+        folded[EXPIRED] += expired;
+        folded[ERRORS] += errors;
+        folded[PERIOD_CHANGES] += changes;
+    }
+
+    /** @return the line of the tasks over the budget, covering {@code spanNs} of wall time */
+    private String foldLine(long spanNs) {
+        StringBuilder sb = new StringBuilder("[rtaware] ").append(foldedTasks)
+                .append(foldedTasks == 1 ? " more task:" : " more tasks:");
+        String sep = " ";
+        long missed = folded[MISSES] + folded[SKIPPED];
+        if (missed > 0) {
+            sb.append(sep).append(missed).append(missed == 1 ? " deadline miss" : " deadline misses");
+            if (folded[SKIPPED] > 0) {
+                sb.append(" (").append(folded[SKIPPED]).append(" skipped releases)");
+            }
+            sep = ", ";
+        }
+        sep = foldedCount(sb, sep, folded[STALE], " stale run", " stale runs");
+        sep = foldedCount(sb, sep, folded[EXPIRED], " expired read", " expired reads");
+        sep = foldedCount(sb, sep, folded[ERRORS], " error", " errors");
+        foldedCount(sb, sep, folded[PERIOD_CHANGES], " period change", " period changes");
+        if (spanNs > LINE_INTERVAL_NS + LINE_INTERVAL_NS / 2) {
+            sb.append(String.format(Locale.ROOT, " in the last %.1f s", spanNs / 1e9));
+        }
+        int most = -1;
+        for (int i = 0; i < foldedMissesOf.length; i++) {
+            if (foldedMissesOf[i] > 0 && (most < 0 || foldedMissesOf[i] > foldedMissesOf[most])) {
+                most = i;
+            }
+        }
+        if (most >= 0) {
+            sb.append("; most misses: ").append(nameByIndex[most]).append(", ").append(foldedMissesOf[most]);
+        }
+        return sb.append(" (at most ").append(TASK_LINES_PER_SECOND)
+                .append(" task lines a second; each task's counts are in the summary)").toString();
+    }
+
+    private static String foldedCount(StringBuilder sb, String sep, long count, String one, String many) {
+        if (count == 0) {
+            return sep;
+        }
+        sb.append(sep).append(count).append(count == 1 ? one : many);
+        return ", ";
     }
 
     private String line(TaskInfo task, long misses, long skipped, long stale, long expired, long errors, long spanNs) {

@@ -149,4 +149,97 @@ class ConsoleReporterTest {
         assertTrue(lines().get(lines().size() - 1).contains("last: IllegalStateException: boom"),
                 "an error line names the exception: " + lines().get(lines().size() - 1));
     }
+
+    /** A reporter of {@code n} tasks named t0, t1, ... (replaces the two-task one). */
+    private List<TaskInfo> manyTasks(int n) {
+        List<TaskInfo> many = new java.util.ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            many.add(task("t" + i, i));
+        }
+        reporter = new ConsoleReporter(new PrintStream(buffer, true, StandardCharsets.UTF_8), many, true, wall, false);
+        return many;
+    }
+
+    private static long foldedMisses(List<String> lines) {
+        Pattern p = Pattern.compile("\\] \\d+ more tasks?: (\\d+) deadline miss");
+        long sum = 0;
+        for (String line : lines) {
+            Matcher m = p.matcher(line);
+            if (m.find()) {
+                sum += Long.parseLong(m.group(1));
+            }
+        }
+        return sum;
+    }
+
+    private long allMisses(List<TaskInfo> many) {
+        long sum = foldedMisses(lines());
+        for (TaskInfo t : many) {
+            sum += countOf(lines(), t.name(), "deadline miss");
+        }
+        return sum;
+    }
+
+    @Test
+    void aFloodOfTasksGetsTenTaskLinesAndOneLineForTheRest() {
+        List<TaskInfo> many = manyTasks(25);
+        long total = 0;
+        for (TaskInfo t : many) {
+            misses(t, t.index() + 1);
+            total += t.index() + 1;
+        }
+        reporter.poll();
+        List<String> lines = lines();
+        assertEquals(ConsoleReporter.TASK_LINES_PER_SECOND + 1, lines.size(), "10 task lines and one fold: " + lines);
+        for (int i = 0; i < ConsoleReporter.TASK_LINES_PER_SECOND; i++) {
+            assertTrue(lines.get(i).startsWith("[rtaware] t" + i + ": " + (i + 1) + " deadline miss"), lines.get(i));
+        }
+        assertEquals("[rtaware] 15 more tasks: " + (total - 55) + " deadline misses; most misses: t24, 25 (at most "
+                + ConsoleReporter.TASK_LINES_PER_SECOND + " task lines a second; each task's counts are in the summary)",
+                lines.get(ConsoleReporter.TASK_LINES_PER_SECOND));
+        assertEquals(total, allMisses(many), "every miss counted in some line");
+    }
+
+    @Test
+    void theFoldLineComesAtMostOnceASecondAndFlushPrintsWhatIsLeft() {
+        List<TaskInfo> many = manyTasks(25);
+        long total = 0;
+        for (int round = 0; round < 3; round++) {
+            for (TaskInfo t : many) {
+                misses(t, 2);
+                total += 2;
+            }
+            wall.advance(400 * MS);
+            reporter.poll();
+        }
+        // Round 0 printed 10 task lines and a fold line; rounds 1 and 2 (0.4 and 0.8 s later) find
+        // no task due again (each task waits a second) and the fold line not due either.
+        assertEquals(11, lines().size(), lines().toString());
+        wall.advance(300 * MS);
+        reporter.poll();
+        assertEquals(22, lines().size(), "a second after the first, 10 task lines and a fold line again: " + lines());
+        assertTrue(lines().get(21).startsWith("[rtaware] 15 more tasks: 60 deadline misses;"), lines().get(21));
+        for (TaskInfo t : many) {
+            misses(t, 1);
+            total += 1;
+        }
+        reporter.flush();
+        assertEquals(33, lines().size(), "the flush: 10 task lines and the fold line at once: " + lines());
+        assertEquals(total, allMisses(many), "every miss counted in some line");
+    }
+
+    @Test
+    void aFoldLineCountsEveryKindAndSaysOneTaskInTheSingular() {
+        List<TaskInfo> many = manyTasks(ConsoleReporter.TASK_LINES_PER_SECOND + 1);
+        for (TaskInfo t : many) {
+            reporter.onStaleRun(t, 0);
+        }
+        TaskInfo last = many.get(many.size() - 1);
+        reporter.onExpiredInput(last, "scan", 3 * MS, MS, 0);
+        reporter.onTaskError(last, new IllegalStateException("boom"), ErrorPolicy.CONTINUE, 0);
+        reporter.poll();
+        assertEquals("[rtaware] 1 more task: 1 stale run, 1 expired read, 1 error (at most "
+                + ConsoleReporter.TASK_LINES_PER_SECOND + " task lines a second; each task's counts are in the summary)",
+                lines().get(lines().size() - 1));
+    }
 }
