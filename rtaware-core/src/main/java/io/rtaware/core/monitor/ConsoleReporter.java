@@ -10,6 +10,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicLongArray;
 import java.util.concurrent.atomic.AtomicReferenceArray;
 import org.agrona.concurrent.Agent;
@@ -74,6 +75,18 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
     private final long[] foldedMissesOf;
     private int foldedTasks;
     private final LinePacer foldPacer = new LinePacer(LINE_INTERVAL_NS, LINE_INTERVAL_NS);
+    /**
+     * Every event counted, over all tasks: a poll that finds it unchanged, with nothing held back
+     * and nothing folded, has nothing to print and does not look at every task (10 000 tasks cost
+     * a few milliseconds of a core a look, taken from the workers).
+     */
+    private final AtomicLong events = new AtomicLong();
+    /** The count of {@link #events} the last full look started from. */
+    private long eventsSeen = -1;
+    /** Whether the last full look left counts held back by a task's pacer. */
+    private boolean holding;
+    /** The wall time of the last poll that had nothing at all to print, or {@link Long#MIN_VALUE}. */
+    private long lastQuietPollNs = Long.MIN_VALUE;
     private long firstFoldNs;
     private final AgentThread printer;
     /**
@@ -138,38 +151,44 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
     @Override
     public void onDeadlineMiss(TaskInfo task, long releaseNs, long deadlineNs, long detectedNs, boolean stillRunning) {
         int i = task.index();
-        pending.incrementAndGet(i * KINDS + MISSES);
         lastMissDetectedNs.set(i, detectedNs);
         lastMissDeadlineNs.set(i, deadlineNs);
+        pending.incrementAndGet(i * KINDS + MISSES);
+        events.incrementAndGet();
     }
 
     @Override
     public void onSkippedReleases(TaskInfo task, long skipped, long nowNs) {
         pending.addAndGet(task.index() * KINDS + SKIPPED, skipped);
+        events.incrementAndGet();
     }
 
     @Override
     public void onStaleRun(TaskInfo task, long nowNs) {
         if (includeStale) {
             pending.incrementAndGet(task.index() * KINDS + STALE);
+            events.incrementAndGet();
         }
     }
 
     @Override
     public void onExpiredInput(TaskInfo task, String key, long ageNs, long maxAgeNs, long nowNs) {
         pending.incrementAndGet(task.index() * KINDS + EXPIRED);
+        events.incrementAndGet();
     }
 
     @Override
     public void onTaskError(TaskInfo task, Throwable error, ErrorPolicy policy, long nowNs) {
-        pending.incrementAndGet(task.index() * KINDS + ERRORS);
         lastError.set(task.index(), error);
+        pending.incrementAndGet(task.index() * KINDS + ERRORS);
+        events.incrementAndGet();
     }
 
     @Override
     public void onPeriodChange(TaskInfo task, PeriodChange change, long nowNs) {
         lastPeriodChange.set(task.index(), change);
         pending.incrementAndGet(task.index() * KINDS + PERIOD_CHANGES);
+        events.incrementAndGet();
     }
 
     /** The printer's loop: a poll every {@value #POLL_MS} ms. */
@@ -207,9 +226,20 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
             budgetSecondStartNs = wallNs;
             taskLinesThisSecond = 0;
         }
+        long eventsNow = events.get();
+        if (!force && eventsNow == eventsSeen && !holding && foldedTasks == 0) {
+            lastQuietPollNs = wallNs;
+            return;
+        }
+        eventsSeen = eventsNow;
+        holding = false;
         for (TaskInfo task : tasks) {
             int i = task.index();
+            if (lastQuietPollNs != Long.MIN_VALUE) {
+                pacers[i].calmIfDueAt(lastQuietPollNs);
+            }
             if (!force && !pacers[i].due(wallNs)) {
+                holding |= hasPending(i);
                 continue;
             }
             long misses = pending.getAndSet(i * KINDS + MISSES, 0);
@@ -232,6 +262,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
                 fold(i, wallNs, misses, skipped, stale, expired, errors, changes);
             }
         }
+        lastQuietPollNs = Long.MIN_VALUE;
         if (foldedTasks > 0 && (force || foldPacer.due(wallNs))) {
             foldPacer.printed(wallNs);
             out.println(foldLine(wallNs - firstFoldNs));
@@ -240,6 +271,16 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
             Arrays.fill(foldedMissesOf, 0);
             foldedTasks = 0;
         }
+    }
+
+    /** @return whether task {@code i} has counts no line has printed yet */
+    private boolean hasPending(int i) {
+        for (int kind = 0; kind < KINDS; kind++) {
+            if (pending.get(i * KINDS + kind) != 0) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Adds one task's counts, over the budget, to the next fold line. */

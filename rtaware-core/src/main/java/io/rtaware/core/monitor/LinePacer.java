@@ -62,6 +62,19 @@ final class LinePacer {
         intervalNs = firstIntervalNs;
     }
 
+    /**
+     * Records, later, a moment at which there was nothing to print: the same as {@link #calm()}
+     * called then, if a line was due then (and none has been printed since). For a printer that
+     * skips its look at the pacers while nothing happens at all.
+     *
+     * @param quietNs the wall clock at that moment
+     */
+    void calmIfDueAt(long quietNs) {
+        if (due(quietNs) && (!printedAny || quietNs > lastLineNs)) {
+            calm();
+        }
+    }
+
     /** @return the wait before the next line may be printed */
     long intervalNs() {
         return intervalNs;

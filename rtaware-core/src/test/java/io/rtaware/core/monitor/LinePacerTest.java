@@ -41,4 +41,21 @@ class LinePacerTest {
         }
         assertThrows(IllegalArgumentException.class, () -> new LinePacer(2 * S, S));
     }
+
+    @Test
+    void aCalmMomentRecordedLaterCountsOnlyIfALineWasDueThenAndNoneCameAfter() {
+        LinePacer p = new LinePacer(S, 8 * S);
+        p.printed(0);
+        p.printed(S);
+        assertEquals(2 * S, p.intervalNs());
+        p.calmIfDueAt(2 * S);
+        assertEquals(2 * S, p.intervalNs(), "at 2 s no line was due (the wait was 2 s from 1 s): not calm");
+        p.calmIfDueAt(3 * S);
+        assertEquals(S, p.intervalNs(), "at 3 s a line was due and there was nothing: the wait starts over");
+        p.printed(4 * S);
+        assertEquals(S, p.intervalNs(), "after a calm spell the next line's wait is the first");
+        p.printed(5 * S);
+        p.calmIfDueAt(4 * S);
+        assertEquals(2 * S, p.intervalNs(), "a moment before the last line says nothing about the wait after it");
+    }
 }
