@@ -13,25 +13,35 @@ import java.util.concurrent.atomic.AtomicReferenceArray;
 import java.util.concurrent.locks.LockSupport;
 
 /**
- * A few worker threads release the periodic tasks that do not block from one timer structure,
- * in deadline order: for thousands of tasks, where a thread per task costs more than the work.
- * Continuous tasks, once tasks and tasks that {@link io.rtaware.core.task.Task#blocks() block}
- * keep a thread of their own, on an inner {@link ThreadedExecutor}.
+ * A few worker threads release the periodic tasks that do not block, in deadline order: for
+ * thousands of tasks, where a thread per task costs more than the work. Continuous tasks, once
+ * tasks and tasks that {@link io.rtaware.core.task.Task#blocks() block} keep a thread of their
+ * own, on an inner {@link ThreadedExecutor}.
  *
- * <p>The timer structure is two {@link TaskHeap}s under one lock: <em>waiting</em>, ordered by
- * next release, and <em>ready</em>, the releases already due, ordered by absolute deadline
- * (earliest deadline first) or by period (rate-monotonic). A worker, holding the lock, puts back
- * the tasks it has just run (keyed by the release each {@link TaskRuntime} decided), moves every
- * due release to ready, takes its share of the first ready tasks (at most {@link #MAX_BATCH}),
- * wakes a parked worker if work is left, and runs them outside the lock; with nothing ready it
- * parks with its {@link ClockWaiter} until the earliest waiting release. Under earliest deadline
- * first with one fixed relative deadline for every pooled task, release order is deadline order
- * and workers take due releases straight from the waiting heap (see
- * {@link #releaseOrderIsRunOrder}). The lock is the
- * happens-before edge between the workers that run one task's consecutive cycles. Every rule of
- * what a cycle means stays the runtime's: the same grid, misses, skips and counts as on the
- * threaded executor (a release that waited for a free worker is late, and one still waiting past
- * its next grid point is skipped by the same rule as after an overrun).
+ * <p>Each worker has a {@link Shard}: the timer structure of a block of consecutive pool slots,
+ * two {@link TaskHeap}s under the shard's own lock: <em>waiting</em>, ordered by next release,
+ * and <em>ready</em>, the releases already due, ordered by absolute deadline (earliest deadline
+ * first) or by period (rate-monotonic). A worker, holding its shard's lock, puts back the tasks
+ * it has just run (keyed by the release each {@link TaskRuntime} decided), moves every due
+ * release to ready, takes up to {@link #MAX_BATCH} of the first ready tasks and runs them outside
+ * the lock. With nothing due in its own shard it takes due releases from another's (work
+ * stealing: what that shard's worker, busy with its batch, would run next); with nothing due
+ * anywhere it parks with its {@link ClockWaiter} until the earliest release of any shard. A
+ * worker about to run a batch wakes a parked one that would sleep past the earliest due release.
+ * Under earliest deadline first with one fixed relative deadline for every pooled task, release
+ * order is deadline order and workers take due releases straight from the waiting heap (see
+ * {@link #releaseOrderIsRunOrder}).
+ *
+ * <p>Why shards: with one structure for all workers (the design before), each lock hold moved the
+ * heap's lines and the state of every task between the cores' caches, because consecutive cycles
+ * of a task ran on whichever worker came first; with a shard each, a task's state stays in the
+ * cache of the core that ran it last, and the locks are uncontended but for a steal. The order
+ * is earliest deadline first within a shard and across shards up to a batch: a worker whose own
+ * shard has a due release does not look at the others. The shard's lock is the happens-before
+ * edge between the workers that run one task's consecutive cycles (a stolen task is put back
+ * under it). Every rule of what a cycle means stays the runtime's: the same grid, misses, skips
+ * and counts as on the threaded executor (a release that waited for a free worker is late, and
+ * one still waiting past its next grid point is skipped by the same rule as after an overrun).
  *
  * <p>A watchdog thread reports misses at the deadline, as on the threaded executor, but it only
  * looks at the cycles the workers run now and the rest of their batches (one slot each per
@@ -45,8 +55,8 @@ import java.util.concurrent.locks.LockSupport;
  * once every worker has run it; the tasks with their own thread run
  * {@link ThreadSetup#onTaskThreadStart}.
  *
- * <p>Steady state allocates nothing: heaps and slots are arrays sized at construction, the lock
- * is an object monitor. Thread-safe: started once, stopped once, by the monitor.
+ * <p>Steady state allocates nothing: heaps and slots are arrays sized at construction, the locks
+ * are object monitors. Thread-safe: started once, stopped once, by the monitor.
  */
 final class PooledExecutor implements Executor {
 
@@ -83,12 +93,12 @@ final class PooledExecutor implements Executor {
      */
     private final AtomicLongArray batchDeadlineNs;
 
-    // The timer structure, guarded by the lock.
-    private final Object lock = new Object();
-    private final TaskHeap waiting;
-    private final TaskHeap ready;
-    /** Per worker: the world time it parks until, or {@link #NOT_PARKED}. */
-    private final long[] parkedUntil;
+    /** Each worker's share of the pooled tasks, by worker; a task's home is {@link #homeOf}. */
+    private final Shard[] shards;
+    /** Per pool slot: the shard its releases wait in. */
+    private final int[] homeOf;
+    /** Per worker: the world time it parks until, or {@link #NOT_PARKED}; set by itself, cleared by a waker. */
+    private final AtomicLongArray parkedUntil;
     private static final long NOT_PARKED = Long.MIN_VALUE;
 
     /**
@@ -96,7 +106,7 @@ final class PooledExecutor implements Executor {
      * deadline first, and every pooled task has the same fixed relative deadline, so release
      * order is deadline order (ties by slot in both). Workers then take due releases straight
      * from the waiting heap: no move to the ready heap, half the heap operations per release.
-     * Set at start, under the lock.
+     * Set at start, before the workers go.
      */
     private boolean releaseOrderIsRunOrder;
     private volatile boolean running;
@@ -137,9 +147,46 @@ final class PooledExecutor implements Executor {
         for (int w = 0; w < workerCount; w++) {
             batchDeadlineNs.set(w, Long.MAX_VALUE);
         }
-        this.waiting = new TaskHeap(pooled.length);
-        this.ready = new TaskHeap(pooled.length);
-        this.parkedUntil = new long[workerCount];
+        this.homeOf = new int[pooled.length];
+        int[] sizes = new int[workerCount];
+        for (int slot = 0; slot < pooled.length; slot++) {
+            homeOf[slot] = (int) ((long) slot * workerCount / pooled.length);
+            sizes[homeOf[slot]]++;
+        }
+        this.shards = new Shard[workerCount];
+        for (int w = 0; w < workerCount; w++) {
+            shards[w] = new Shard(sizes[w]);
+        }
+        this.parkedUntil = new AtomicLongArray(workerCount);
+    }
+
+    /**
+     * One worker's share of the pooled tasks (a block of consecutive slots): its timer structure,
+     * two {@link TaskHeap}s guarded by the shard itself as lock. Its worker takes due releases
+     * from it without meeting the other workers; a worker with nothing due takes (steals) due
+     * releases from another's shard. The earliest release is published for workers deciding how
+     * long to park and whether to steal.
+     */
+    private static final class Shard {
+        /** The releases not yet due, by release time. */
+        final TaskHeap waiting;
+        /** The due releases, in the order they run (only when release order is not run order). */
+        final TaskHeap ready;
+        /**
+         * The earliest world time this shard has a release due: {@link Long#MIN_VALUE} if one is
+         * ready now, {@link Long#MAX_VALUE} if it has none. Written under the shard's lock.
+         */
+        volatile long earliestNs = Long.MAX_VALUE;
+
+        Shard(int capacity) {
+            waiting = new TaskHeap(capacity);
+            ready = new TaskHeap(capacity);
+        }
+
+        /** Publishes the earliest release; holding the shard's lock. */
+        void publishEarliest() {
+            earliestNs = ready.size() > 0 ? Long.MIN_VALUE : waiting.peekKey();
+        }
     }
 
     /** @return whether the pool runs this task (periodic and not blocking), else it gets a thread */
@@ -163,7 +210,7 @@ final class PooledExecutor implements Executor {
             int worker = w;
             workers[w] = factory.newThread(() -> work(worker, go));
             workerParties[w] = waiter.register(workers[w]);
-            parkedUntil[w] = NOT_PARKED;
+            parkedUntil.set(w, NOT_PARKED);
         }
         for (Thread worker : workers) {
             worker.start();
@@ -172,14 +219,16 @@ final class PooledExecutor implements Executor {
         // thread setup, so the setup never makes release 0 late.
         ThreadedExecutor.awaitUninterruptibly(ready);
         long startNs = dedicated != null ? dedicated.start() : clock.nanos();
-        synchronized (lock) {
-            releaseOrderIsRunOrder = order == ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST && oneFixedDeadline();
-            for (int slot = 0; slot < pooled.length; slot++) {
-                TaskRuntime runtime = pooled[slot];
-                runtime.watchedBy(watchdog);
-                runtime.begin(startNs, stopAllRequest, waiter.zeroCycleSpacingNs());
-                waiting.push(slot, runtime.nextReleaseNs());
-            }
+        // The workers wait on the latch 'go': what is written here happens before their first step.
+        releaseOrderIsRunOrder = order == ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST && oneFixedDeadline();
+        for (int slot = 0; slot < pooled.length; slot++) {
+            TaskRuntime runtime = pooled[slot];
+            runtime.watchedBy(watchdog);
+            runtime.begin(startNs, stopAllRequest, waiter.zeroCycleSpacingNs());
+            shards[homeOf[slot]].waiting.push(slot, runtime.nextReleaseNs());
+        }
+        for (Shard shard : shards) {
+            shard.publishEarliest();
         }
         watchdog.start();
         go.countDown();
@@ -197,48 +246,41 @@ final class PooledExecutor implements Executor {
         int[] batch = new int[MAX_BATCH];
         // deadlinesFrom[i]: the earliest deadline of batch[i..claimed-1] (what is left from cycle i on).
         long[] deadlinesFrom = new long[MAX_BATCH];
+        Shard own = shards[worker];
+        Shard from = own;
         int claimed = 0;
         try {
             while (running) {
-                long parkUntilNs = 0;
-                synchronized (lock) {
-                    for (int i = 0; i < claimed; i++) {
-                        long next = pooled[batch[i]].nextReleaseNs();
-                        if (next != TaskRuntime.NEVER) {
-                            waiting.push(batch[i], next);
-                        }
+                if (claimed > 0 && from != own) {
+                    synchronized (from) {
+                        putBack(from, batch, claimed);
+                        from.publishEarliest();
                     }
                     claimed = 0;
-                    long now = clock.nanos();
-                    if (releaseOrderIsRunOrder) {
-                        // How many are due is not known without popping: take one if another
-                        // worker is parked (it is woken for the rest), else up to a batch.
-                        int share = anotherWorkerParked(worker) ? 1 : MAX_BATCH;
-                        while (claimed < share && waiting.size() > 0 && waiting.peekKey() <= now) {
-                            batch[claimed++] = waiting.pop();
+                }
+                long now;
+                synchronized (own) {
+                    putBack(own, batch, claimed);
+                    now = clock.nanos();
+                    claimed = claim(own, now, batch);
+                    own.publishEarliest();
+                }
+                from = own;
+                for (int k = 1; k < shards.length && claimed == 0; k++) {
+                    Shard victim = shards[(worker + k) % shards.length];
+                    if (victim.earliestNs <= now) {
+                        synchronized (victim) {
+                            claimed = claim(victim, clock.nanos(), batch);
+                            victim.publishEarliest();
                         }
-                    } else {
-                        while (waiting.size() > 0 && waiting.peekKey() <= now) {
-                            int due = waiting.pop();
-                            ready.push(due, readyKey(pooled[due]));
-                        }
-                        int share = Math.min(MAX_BATCH, Math.max(1, ready.size() / workers.length));
-                        while (claimed < share && ready.size() > 0) {
-                            batch[claimed++] = ready.pop();
-                        }
-                    }
-                    if (claimed > 0) {
-                        parkedUntil[worker] = NOT_PARKED;
-                        wakeParkedWorker(ready.size() > 0 ? Long.MAX_VALUE : waiting.peekKey());
-                    } else {
-                        parkUntilNs = waiting.peekKey();
-                        parkedUntil[worker] = parkUntilNs;
+                        from = victim;
                     }
                 }
                 if (claimed == 0) {
-                    party.park(parkUntilNs);
+                    parkUntilDue(worker, now);
                     continue;
                 }
+                wakeParkedWorker(worker);
                 long earliest = Long.MAX_VALUE;
                 for (int i = claimed - 1; i >= 0; i--) {
                     earliest = Math.min(earliest, pooled[batch[i]].nextDeadlineNs());
@@ -255,6 +297,89 @@ final class PooledExecutor implements Executor {
             stopAllRequest.run();
         } finally {
             party.done();
+        }
+    }
+
+    /**
+     * Puts the tasks of a batch back into the shard they were claimed from, each keyed by the
+     * release its runtime decided (none for a task that stopped). Holding the shard's lock.
+     */
+    private void putBack(Shard shard, int[] batch, int claimed) {
+        for (int i = 0; i < claimed; i++) {
+            long next = pooled[batch[i]].nextReleaseNs();
+            if (next != TaskRuntime.NEVER) {
+                shard.waiting.push(batch[i], next);
+            }
+        }
+    }
+
+    /**
+     * Takes up to {@link #MAX_BATCH} due releases of a shard, in run order, into {@code batch}.
+     * Holding the shard's lock.
+     *
+     * @return how many were taken
+     */
+    private int claim(Shard shard, long nowNs, int[] batch) {
+        int claimed = 0;
+        TaskHeap waiting = shard.waiting;
+        if (releaseOrderIsRunOrder) {
+            while (claimed < MAX_BATCH && waiting.peekKey() <= nowNs) {
+                batch[claimed++] = waiting.pop();
+            }
+            return claimed;
+        }
+        while (waiting.peekKey() <= nowNs) {
+            int due = waiting.pop();
+            shard.ready.push(due, readyKey(pooled[due]));
+        }
+        while (claimed < MAX_BATCH && shard.ready.size() > 0) {
+            batch[claimed++] = shard.ready.pop();
+        }
+        return claimed;
+    }
+
+    /** @return the earliest release due in any shard ({@link Long#MIN_VALUE}: one is ready now) */
+    private long earliestOfAllShards() {
+        long earliest = Long.MAX_VALUE;
+        for (Shard shard : shards) {
+            earliest = Math.min(earliest, shard.earliestNs);
+        }
+        return earliest;
+    }
+
+    /**
+     * Parks a worker that found nothing due until the earliest release of any shard (its own or
+     * one it may steal from). It says so in {@link #parkedUntil} first and then looks at the
+     * shards again: a worker that publishes an earlier release and then finds this one parked
+     * past it wakes it ({@link #wakeParkedWorker}), so with both sides ordered no wake-up is lost.
+     */
+    private void parkUntilDue(int worker, long nowNs) {
+        long until = earliestOfAllShards();
+        if (until <= nowNs) {
+            return;
+        }
+        parkedUntil.set(worker, until);
+        if (earliestOfAllShards() < until) {
+            parkedUntil.set(worker, NOT_PARKED);
+            return;
+        }
+        workerParties[worker].park(until);
+        parkedUntil.set(worker, NOT_PARKED);
+    }
+
+    /**
+     * Called by a worker about to run a batch: wakes one parked worker that would otherwise
+     * sleep past the earliest release of any shard, so that releases this worker cannot take
+     * while it runs its batch are stolen in time.
+     */
+    private void wakeParkedWorker(int worker) {
+        long due = earliestOfAllShards();
+        for (int w = 0; w < parkedUntil.length(); w++) {
+            long until = parkedUntil.get(w);
+            if (w != worker && until != NOT_PARKED && due < until && parkedUntil.compareAndSet(w, until, NOT_PARKED)) {
+                workerParties[w].wake();
+                return;
+            }
         }
     }
 
@@ -313,31 +438,6 @@ final class PooledExecutor implements Executor {
             }
         }
         return true;
-    }
-
-    /** @return whether a worker other than {@code worker} is parked; holding the lock */
-    private boolean anotherWorkerParked(int worker) {
-        for (int w = 0; w < parkedUntil.length; w++) {
-            if (w != worker && parkedUntil[w] != NOT_PARKED) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /**
-     * Wakes one parked worker that would otherwise sleep past {@code dueNs} (work that another
-     * worker could take now, or an earlier release than it waits for). Holding the lock.
-     */
-    private void wakeParkedWorker(long dueNs) {
-        for (int w = 0; w < parkedUntil.length; w++) {
-            long until = parkedUntil[w];
-            if (until != NOT_PARKED && (dueNs == Long.MAX_VALUE || dueNs < until)) {
-                parkedUntil[w] = NOT_PARKED;
-                workerParties[w].wake();
-                return;
-            }
-        }
     }
 
     private long readyKey(TaskRuntime runtime) {

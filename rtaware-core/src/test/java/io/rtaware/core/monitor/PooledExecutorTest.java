@@ -13,6 +13,9 @@ import io.rtaware.core.time.ManualClock;
 import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -109,6 +112,46 @@ class PooledExecutorTest {
             assertEquals(10, report.task("t" + i).runs(), "t" + i + ": releases at 0, 10, ..., 90 ms");
             assertEquals(0, report.task("t" + i).misses(), "t" + i);
             assertEquals(0.0, report.task("t" + i).latenessUs().max(), "t" + i + ": zero-time cycles are never late");
+        }
+    }
+
+    @Test
+    void aWorkerWithNothingDueTakesTheDueReleaseOfABusyWorkersShard() {
+        // Three tasks on two workers: slots 0 and 1 are worker 0's shard, slot 2 worker 1's.
+        // 'busy' (slot 0) holds worker 0 from 0 ms: it moves the clock to 2 ms, then waits until
+        // 'stolen' (slot 1, released at 1 ms) has run. Worker 1 ran 'idle' at 0 ms and has nothing
+        // due in its shard until 10 ms: it takes 'stolen' from worker 0's shard.
+        CountDownLatch stolenRan = new CountDownLatch(1);
+        AtomicBoolean ranWhileBusy = new AtomicBoolean();
+        List<String> stolenOn = new CopyOnWriteArrayList<>();
+        Monitor.Builder builder = Monitor.builder(clock)
+                .task("busy", periodic(10, 10), FnTask.of(now -> {
+                    if (now == 0) {
+                        clock.advance(ms(2));
+                        ranWhileBusy.set(awaitUninterruptibly(stolenRan));
+                    }
+                }))
+                .task("stolen", Schedule.periodic(Duration.ofMillis(10), Duration.ofMillis(1), Duration.ofMillis(10)),
+                        FnTask.of(now -> {
+                            stolenOn.add(Thread.currentThread().getName() + "@" + now / 1_000_000);
+                            stolenRan.countDown();
+                        }))
+                .task("idle", periodic(10, 10), FnTask.of(now -> { }));
+        Report report = run(ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST, 2, 5, builder);
+
+        assertTrue(ranWhileBusy.get(), "'stolen' ran while 'busy' held worker 0, not after");
+        assertEquals(List.of("rtaware-pool-1@2"), stolenOn, "on worker 1, when the clock reached 2 ms");
+        assertEquals(1000.0, report.task("stolen").latenessUs().max(), "released at 1 ms, started at 2 ms");
+        assertEquals(0, report.task("stolen").misses());
+    }
+
+    /** @return whether the latch opened (a guard against a hang, not a timing: it opens at once when the pool works) */
+    private static boolean awaitUninterruptibly(CountDownLatch latch) {
+        try {
+            return latch.await(30, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return false;
         }
     }
 
