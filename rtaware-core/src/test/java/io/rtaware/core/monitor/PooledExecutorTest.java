@@ -2,6 +2,7 @@ package io.rtaware.core.monitor;
 
 import static io.rtaware.core.Ms.ms;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import io.rtaware.core.FnTask;
@@ -116,17 +117,21 @@ class PooledExecutorTest {
     }
 
     @Test
-    void aWorkerWithNothingDueTakesTheDueReleaseOfABusyWorkersShard() {
+    void aWorkerWithNothingDueTakesTheDueReleasesOfABusyWorkersShard() {
         // Three tasks on two workers: slots 0 and 1 are worker 0's shard, slot 2 worker 1's.
-        // 'busy' (slot 0) holds worker 0 from 0 ms: it moves the clock to 2 ms, then waits until
-        // 'stolen' (slot 1, released at 1 ms) has run. Worker 1 ran 'idle' at 0 ms and has nothing
-        // due in its shard until 10 ms: it takes 'stolen' from worker 0's shard.
+        // 'busy' (slot 0, released at 0 ms) moves the clock to 2 ms, then holds its worker until
+        // 'stolen' (slot 1, released at 1 ms) has run. Without stealing, both would wait for the
+        // one worker of their shard. With it, whichever worker comes second to shard 0 takes what
+        // the other cannot: worker 1 ('idle' is all its shard has due, at 0 ms) takes 'stolen' at
+        // 2 ms, or, if it reached shard 0 at 0 ms first, 'busy', and worker 0 then runs 'stolen'.
         CountDownLatch stolenRan = new CountDownLatch(1);
         AtomicBoolean ranWhileBusy = new AtomicBoolean();
+        List<String> busyOn = new CopyOnWriteArrayList<>();
         List<String> stolenOn = new CopyOnWriteArrayList<>();
         Monitor.Builder builder = Monitor.builder(clock)
                 .task("busy", periodic(10, 10), FnTask.of(now -> {
                     if (now == 0) {
+                        busyOn.add(Thread.currentThread().getName());
                         clock.advance(ms(2));
                         ranWhileBusy.set(awaitUninterruptibly(stolenRan));
                     }
@@ -139,8 +144,11 @@ class PooledExecutorTest {
                 .task("idle", periodic(10, 10), FnTask.of(now -> { }));
         Report report = run(ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST, 2, 5, builder);
 
-        assertTrue(ranWhileBusy.get(), "'stolen' ran while 'busy' held worker 0, not after");
-        assertEquals(List.of("rtaware-pool-1@2"), stolenOn, "on worker 1, when the clock reached 2 ms");
+        assertTrue(ranWhileBusy.get(), "'stolen' ran while 'busy' held its worker, not after");
+        assertEquals(1, busyOn.size());
+        assertEquals(1, stolenOn.size(), stolenOn.toString());
+        assertTrue(stolenOn.get(0).endsWith("@2"), "when the clock reached 2 ms: " + stolenOn);
+        assertFalse(stolenOn.get(0).startsWith(busyOn.get(0) + "@"), "on the other worker: " + busyOn + " " + stolenOn);
         assertEquals(1000.0, report.task("stolen").latenessUs().max(), "released at 1 ms, started at 2 ms");
         assertEquals(0, report.task("stolen").misses());
     }
