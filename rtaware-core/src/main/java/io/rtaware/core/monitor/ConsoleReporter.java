@@ -6,11 +6,12 @@ import io.rtaware.core.task.ErrorPolicy;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.SystemClock;
 import java.io.PrintStream;
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
-import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicLongArray;
 import java.util.concurrent.atomic.AtomicReferenceArray;
 import org.agrona.concurrent.Agent;
@@ -53,6 +54,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
     private static final int ERRORS = 4;
     private static final int PERIOD_CHANGES = 5;
     private static final int KINDS = 6;
+    private static final VarHandle EVENT_BITS = MethodHandles.arrayElementVarHandle(long[].class);
 
     private final PrintStream out;
     private final Clock wallClock;
@@ -71,23 +73,26 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
     private final long[] folded = new long[KINDS];
     /** Per task: whether it is in the next fold line, and its misses and skipped releases there. */
     private final boolean[] inFold;
-    private final String[] nameByIndex;
     private final long[] foldedMissesOf;
     private int foldedTasks;
-    private final LinePacer foldPacer = new LinePacer(LINE_INTERVAL_NS, LINE_INTERVAL_NS);
-    /**
-     * Every event counted, over all tasks: a poll that finds it unchanged, with nothing held back
-     * and nothing folded, has nothing to print and does not look at every task (10 000 tasks cost
-     * a few milliseconds of a core a look, taken from the workers).
-     */
-    private final AtomicLong events = new AtomicLong();
-    /** The count of {@link #events} the last full look started from. */
-    private long eventsSeen = -1;
-    /** Whether the last full look left counts held back by a task's pacer. */
-    private boolean holding;
-    /** The wall time of the last poll that had nothing at all to print, or {@link Long#MIN_VALUE}. */
-    private long lastQuietPollNs = Long.MIN_VALUE;
+    /** The wall time of the first report in the next fold line. */
     private long firstFoldNs;
+    private final LinePacer foldPacer = new LinePacer(LINE_INTERVAL_NS, LINE_INTERVAL_NS);
+    /** The tasks by index. */
+    private final TaskInfo[] taskByIndex;
+    /**
+     * One bit per task, set after each event of the task: the printer looks only at the tasks
+     * with a bit set or counts held back, not at every task (10 000 tasks cost milliseconds of a
+     * core a look, ten looks a second, taken from the workers). Cleared by the printer.
+     */
+    private final long[] eventBits;
+    /** Printer's: one bit per task whose counts its pacer held back at the last look. */
+    private final long[] heldBits;
+    /**
+     * The wall time of the previous poll, {@link Long#MIN_VALUE} before the first: a task not
+     * looked at then had nothing to print then, which is a calm moment if a line was due.
+     */
+    private long previousPollNs = Long.MIN_VALUE;
     private final AgentThread printer;
     /**
      * Where a fault of the printer's thread goes: the framework's default printer until the
@@ -129,9 +134,11 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         this.lastPeriodChange = new AtomicReferenceArray<>(n);
         this.pacers = new LinePacer[n];
         this.inFold = new boolean[n];
-        this.nameByIndex = new String[n];
+        this.eventBits = new long[(n + 63) >>> 6];
+        this.heldBits = new long[eventBits.length];
+        this.taskByIndex = new TaskInfo[n];
         for (TaskInfo task : tasks) {
-            nameByIndex[task.index()] = task.name();
+            taskByIndex[task.index()] = task;
         }
         this.foldedMissesOf = new long[n];
         for (int i = 0; i < n; i++) {
@@ -154,41 +161,41 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         lastMissDetectedNs.set(i, detectedNs);
         lastMissDeadlineNs.set(i, deadlineNs);
         pending.incrementAndGet(i * KINDS + MISSES);
-        events.incrementAndGet();
+        markEvent(i);
     }
 
     @Override
     public void onSkippedReleases(TaskInfo task, long skipped, long nowNs) {
         pending.addAndGet(task.index() * KINDS + SKIPPED, skipped);
-        events.incrementAndGet();
+        markEvent(task.index());
     }
 
     @Override
     public void onStaleRun(TaskInfo task, long nowNs) {
         if (includeStale) {
             pending.incrementAndGet(task.index() * KINDS + STALE);
-            events.incrementAndGet();
+            markEvent(task.index());
         }
     }
 
     @Override
     public void onExpiredInput(TaskInfo task, String key, long ageNs, long maxAgeNs, long nowNs) {
         pending.incrementAndGet(task.index() * KINDS + EXPIRED);
-        events.incrementAndGet();
+        markEvent(task.index());
     }
 
     @Override
     public void onTaskError(TaskInfo task, Throwable error, ErrorPolicy policy, long nowNs) {
         lastError.set(task.index(), error);
         pending.incrementAndGet(task.index() * KINDS + ERRORS);
-        events.incrementAndGet();
+        markEvent(task.index());
     }
 
     @Override
     public void onPeriodChange(TaskInfo task, PeriodChange change, long nowNs) {
         lastPeriodChange.set(task.index(), change);
         pending.incrementAndGet(task.index() * KINDS + PERIOD_CHANGES);
-        events.incrementAndGet();
+        markEvent(task.index());
     }
 
     /** The printer's loop: a poll every {@value #POLL_MS} ms. */
@@ -220,49 +227,31 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         faults = monitorFaults;
     }
 
+    /** Notes, after its count, that task {@code i} has something to print (any thread). */
+    private void markEvent(int i) {
+        EVENT_BITS.getAndBitwiseOr(eventBits, i >>> 6, 1L << i);
+    }
+
     private synchronized void printDue(boolean force) {
         long wallNs = wallClock.nanos();
         if (force || budgetSecondStartNs == Long.MIN_VALUE || wallNs - budgetSecondStartNs >= LINE_INTERVAL_NS) {
             budgetSecondStartNs = wallNs;
             taskLinesThisSecond = 0;
         }
-        long eventsNow = events.get();
-        if (!force && eventsNow == eventsSeen && !holding && foldedTasks == 0) {
-            lastQuietPollNs = wallNs;
-            return;
-        }
-        eventsSeen = eventsNow;
-        holding = false;
-        for (TaskInfo task : tasks) {
-            int i = task.index();
-            if (lastQuietPollNs != Long.MIN_VALUE) {
-                pacers[i].calmIfDueAt(lastQuietPollNs);
+        for (int word = 0; word < eventBits.length; word++) {
+            // The bit is taken before the counts are read: an event counted later sets it again.
+            long bits = (long) EVENT_BITS.getAndSet(eventBits, word, 0L) | heldBits[word];
+            heldBits[word] = 0;
+            if (force) {
+                bits = word == eventBits.length - 1 && (tasks.size() & 63) != 0 ? (1L << (tasks.size() & 63)) - 1 : -1L;
             }
-            if (!force && !pacers[i].due(wallNs)) {
-                holding |= hasPending(i);
-                continue;
-            }
-            long misses = pending.getAndSet(i * KINDS + MISSES, 0);
-            long skipped = pending.getAndSet(i * KINDS + SKIPPED, 0);
-            long stale = pending.getAndSet(i * KINDS + STALE, 0);
-            long expired = pending.getAndSet(i * KINDS + EXPIRED, 0);
-            long errors = pending.getAndSet(i * KINDS + ERRORS, 0);
-            long changes = pending.getAndSet(i * KINDS + PERIOD_CHANGES, 0);
-            if (misses + skipped + stale + expired + errors + changes == 0) {
-                if (!force) {
-                    pacers[i].calm();
-                }
-                continue;
-            }
-            long spanNs = pacers[i].printed(wallNs);
-            if (taskLinesThisSecond < TASK_LINES_PER_SECOND) {
-                taskLinesThisSecond++;
-                out.println(line(task, misses, skipped, stale, expired, errors, spanNs) + periodLine(i, changes));
-            } else {
-                fold(i, wallNs, misses, skipped, stale, expired, errors, changes);
+            while (bits != 0) {
+                int i = (word << 6) + Long.numberOfTrailingZeros(bits);
+                bits &= bits - 1;
+                look(i, wallNs, force);
             }
         }
-        lastQuietPollNs = Long.MIN_VALUE;
+        previousPollNs = wallNs;
         if (foldedTasks > 0 && (force || foldPacer.due(wallNs))) {
             foldPacer.printed(wallNs);
             out.println(foldLine(wallNs - firstFoldNs));
@@ -270,6 +259,38 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
             Arrays.fill(inFold, false);
             Arrays.fill(foldedMissesOf, 0);
             foldedTasks = 0;
+        }
+    }
+
+    /** Prints task {@code i}'s line if it is due and has something, or folds it, or holds it back. */
+    private void look(int i, long wallNs, boolean force) {
+        if (previousPollNs != Long.MIN_VALUE) {
+            pacers[i].calmIfDueAt(previousPollNs);
+        }
+        if (!force && !pacers[i].due(wallNs)) {
+            if (hasPending(i)) {
+                heldBits[i >>> 6] |= 1L << i;
+            }
+            return;
+        }
+        long misses = pending.getAndSet(i * KINDS + MISSES, 0);
+        long skipped = pending.getAndSet(i * KINDS + SKIPPED, 0);
+        long stale = pending.getAndSet(i * KINDS + STALE, 0);
+        long expired = pending.getAndSet(i * KINDS + EXPIRED, 0);
+        long errors = pending.getAndSet(i * KINDS + ERRORS, 0);
+        long changes = pending.getAndSet(i * KINDS + PERIOD_CHANGES, 0);
+        if (misses + skipped + stale + expired + errors + changes == 0) {
+            if (!force) {
+                pacers[i].calm();
+            }
+            return;
+        }
+        long spanNs = pacers[i].printed(wallNs);
+        if (taskLinesThisSecond < TASK_LINES_PER_SECOND) {
+            taskLinesThisSecond++;
+            out.println(line(taskByIndex[i], misses, skipped, stale, expired, errors, spanNs) + periodLine(i, changes));
+        } else {
+            fold(i, wallNs, misses, skipped, stale, expired, errors, changes);
         }
     }
 
@@ -329,7 +350,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
             }
         }
         if (most >= 0) {
-            sb.append("; most misses: ").append(nameByIndex[most]).append(", ").append(foldedMissesOf[most]);
+            sb.append("; most misses: ").append(taskByIndex[most].name()).append(", ").append(foldedMissesOf[most]);
         }
         return sb.append(" (at most ").append(TASK_LINES_PER_SECOND)
                 .append(" task lines a second; each task's counts are in the summary)").toString();

@@ -242,4 +242,31 @@ class ConsoleReporterTest {
                 + ConsoleReporter.TASK_LINES_PER_SECOND + " task lines a second; each task's counts are in the summary)",
                 lines().get(lines().size() - 1));
     }
+
+    @Test
+    void aPollLooksOnlyAtTasksWithEventsYetHeldBackCountsAndCalmSpellsAreKept() {
+        List<TaskInfo> many = manyTasks(130);
+        TaskInfo late = many.get(129);
+        misses(late, 1);
+        reporter.poll();
+        assertEquals(List.of("[rtaware] t129: 1 deadline miss, last detected at t=0.150s (deadline t=0.100s)"), lines());
+        misses(late, 2);
+        wall.advance(500 * MS);
+        reporter.poll();
+        assertEquals(1, lines().size(), "held back: its next line waits a second");
+        wall.advance(600 * MS);
+        reporter.poll();
+        assertEquals(2, lines().size(), "printed without a new event: " + lines());
+        assertTrue(lines().get(1).startsWith("[rtaware] t129: 2 deadline misses"), lines().get(1));
+        for (int poll = 0; poll < 30; poll++) { // 3 s of polls without an event: a calm spell
+            wall.advance(100 * MS);
+            reporter.poll();
+        }
+        misses(late, 1);
+        reporter.poll();
+        misses(late, 1);
+        wall.advance(1000 * MS);
+        reporter.poll();
+        assertEquals(4, lines().size(), "after the calm spell, at once and then a second later: " + lines());
+    }
 }
