@@ -472,6 +472,7 @@ public final class BenchCommand implements Callable<Integer> {
         conditions = ConditionsMeter.ofThisProcess().start(timeScale, realtime
                 ? "--realtime: SCHED_FIFO priority " + rtPriority + (affinity.isEmpty() ? "" : ", affinity " + affinity)
                 + ", CPU latency request 0 us" : "none").timerSlackOf(monitor.timerSlack());
+        monitor.onTasksStopped(conditions::end); // the report's building and its garbage are not the run's
         monitor.start();
         long wallNs = clock.toWallNanos(durationNs);
         // Steady state: the last two thirds of the run (the first third warms up the JIT).

@@ -226,6 +226,7 @@ public final class RobotRun {
         ConditionsMeter.Span conditions = ConditionsMeter.ofThisProcess().start(options.timeScale(), options.realtime()
                 ? "--realtime: SCHED_FIFO from priority " + RealtimeThreads.DEFAULT_TOP_PRIORITY + ", CPU latency request 0 us"
                 : "none").timerSlackOf(monitor.timerSlack());
+        monitor.onTasksStopped(conditions::end); // the report's building and its garbage are not the run's
         LiveView live;
         try {
             live = LiveView.start(options.live(), monitor, new RunScene(scenario.name(),

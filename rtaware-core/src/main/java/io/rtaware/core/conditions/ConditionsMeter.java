@@ -60,6 +60,8 @@ public final class ConditionsMeter {
         private final HostSample start;
         private final JvmProbe.PauseWatch pauses;
         private ThreadTimerSlack timerSlack;
+        /** The machine's counters at the end of the window, null while it goes on. */
+        private HostSample end;
         private Conditions finished;
 
         private Span(StaticConditions setup, HostSample start, JvmProbe.PauseWatch pauses) {
@@ -81,7 +83,22 @@ public final class ConditionsMeter {
         }
 
         /**
-         * Ends the measurement (once; later calls return the same conditions).
+         * Ends the window now (once; later calls do nothing): what the machine and the JVM do
+         * after this, such as building the report of thousands of tasks and collecting its
+         * garbage, is not the run's. Register it with {@link
+         * io.rtaware.core.monitor.Monitor#onTasksStopped}; without it, {@link #finish} ends the
+         * window when it is called.
+         */
+        public synchronized void end() {
+            if (end == null) {
+                end = host.sample();
+                pauses.close(); // the JVM may deliver the last pauses while closing
+            }
+        }
+
+        /**
+         * Ends the measurement, if {@link #end()} has not, and gives its conditions (once; later
+         * calls return the same conditions).
          *
          * @param shortestPeriodWorldMs the run's shortest task period, ms of world time, or NaN
          *     when it has none; the JVM's pauses are judged against it in wall time (divided by the
@@ -90,8 +107,7 @@ public final class ConditionsMeter {
          */
         public synchronized Conditions finish(double shortestPeriodWorldMs) {
             if (finished == null) {
-                HostSample end = host.sample();
-                pauses.close(); // first: the JVM may deliver the last pauses while closing
+                end();
                 finished = between(end, shortestPeriodWorldMs);
             }
             return finished;
@@ -106,7 +122,7 @@ public final class ConditionsMeter {
          * @return the conditions so far, with the verdict on them
          */
         public synchronized Conditions sofar(double shortestPeriodWorldMs) {
-            return finished != null ? finished : between(host.sample(), shortestPeriodWorldMs);
+            return finished != null ? finished : between(end != null ? end : host.sample(), shortestPeriodWorldMs);
         }
 
         private Conditions between(HostSample end, double shortestPeriodWorldMs) {

@@ -54,6 +54,7 @@ public final class Monitor {
     private final List<TaskRuntime> runtimes;
     private final DataGraph graph;
     private final List<Consumer<Report>> terminationHandlers = new CopyOnWriteArrayList<>();
+    private final List<Runnable> tasksStoppedHandlers = new CopyOnWriteArrayList<>();
     private final List<MonitorListener> listeners;
     private final ThreadSetup threadSetup;
     private final ThreadTimerSlack timerSlack = ThreadTimerSlack.ofThisMachine();
@@ -257,6 +258,20 @@ public final class Monitor {
     }
 
     /**
+     * Registers a handler that runs once, as soon as every task has stopped and terminated and
+     * before the report is built: the end of what the tasks did, for whatever measures the run
+     * beside the monitor (the machine's conditions, see
+     * {@link io.rtaware.core.conditions.ConditionsMeter.Span#end()}), so that building the report
+     * of thousands of tasks, and the collector's work after it, is not counted as the run's. Runs
+     * on the thread that completes {@link #stop()}; a fault is reported and the stop goes on.
+     *
+     * @param handler the handler
+     */
+    public void onTasksStopped(Runnable handler) {
+        tasksStoppedHandlers.add(Objects.requireNonNull(handler, "handler"));
+    }
+
+    /**
      * Starts the tasks on the builder's executor: by default every task on its own platform
      * thread, named {@code rtaware-<task>}, with rate-monotonic Java priorities and the builder's
      * {@link ThreadSetup}; with {@link ExecutorKind#pooled()} the periodic tasks that do not block
@@ -420,6 +435,13 @@ public final class Monitor {
             tasksStopped = true;
             stopNs = clock.nanos();
             terminate(stopAfter, stopNs, faults);
+            for (Runnable handler : tasksStoppedHandlers) {
+                try {
+                    handler.run();
+                } catch (Throwable t) {
+                    faults.report("tasks-stopped handler", t);
+                }
+            }
             report = ReportBuilder.build(clock.timeScale(), stopNs - startNs, runtimes, graph, faults.count(),
                     reactions);
             for (Consumer<Report> handler : terminationHandlers) {

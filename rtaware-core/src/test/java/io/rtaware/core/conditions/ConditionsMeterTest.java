@@ -181,4 +181,21 @@ class ConditionsMeterTest {
         assertEquals(0.4, MeasuredConditions.between(start, withTable, null, Double.NaN).otherCpus(), 1e-12,
                 "a table at one end only is no table");
     }
+
+    @Test
+    void theWindowEndsWhenEndIsCalledNotWhenTheConditionsAreMade(@TempDir Path root) throws IOException {
+        HostReaderTest.lay("busy-start", root);
+        AtomicLong now = new AtomicLong();
+        FakeJvm jvm = new FakeJvm();
+        ConditionsMeter.Span span = new ConditionsMeter(new HostReader(new HostFiles(root), now::get), jvm,
+                new BuildInfo("0.1.0", null)).start(1, "none");
+        HostReaderTest.lay("busy-end", root);
+        now.set(10_000_000_000L);
+        span.end(); // the tasks stopped
+        assertTrue(jvm.closed, "the pauses after the tasks stopped are not counted");
+        now.set(25_000_000_000L); // the report of many tasks took 15 s to build
+        span.end();
+        assertEquals(10.0, span.sofar(100).measured().durationS(), 1e-12, "so far: the window ended");
+        assertEquals(10.0, span.finish(100).measured().durationS(), 1e-12, "the window is the run's");
+    }
 }

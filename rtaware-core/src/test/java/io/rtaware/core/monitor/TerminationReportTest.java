@@ -83,6 +83,25 @@ class TerminationReportTest {
     }
 
     @Test
+    void theTasksStoppedHandlersRunOnceAfterEveryTerminateAndBeforeTheReportIsBuilt() {
+        Monitor monitor = twoTasks();
+        List<String> order = new ArrayList<>();
+        monitor.onTasksStopped(() -> order.add("stopped after " + (a.terminations + b.terminations) + " terminations"));
+        monitor.onTasksStopped(() -> {
+            throw new IllegalStateException("a faulty handler");
+        });
+        monitor.onTasksStopped(() -> order.add("the next handler"));
+        monitor.onTermination(report -> order.add("report"));
+        monitor.startStepped().runUntil(ms(100));
+
+        monitor.stop();
+        monitor.stop();
+
+        assertEquals(List.of("stopped after 2 terminations", "the next handler", "report"), order);
+        assertEquals(1, monitor.frameworkErrors(), "the faulty handler is reported and the stop goes on");
+    }
+
+    @Test
     void stopTerminatesEveryTaskOnceAndHandsTheReportToTheHandlers() {
         Monitor monitor = twoTasks();
         List<Report> handled = new ArrayList<>();
