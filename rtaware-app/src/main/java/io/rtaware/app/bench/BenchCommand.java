@@ -61,7 +61,9 @@ import io.rtaware.rt.CpuLatencyRequest;
 import io.rtaware.rt.MinimalTimerSlack;
 import io.rtaware.rt.RealtimeThreads;
 import java.io.IOException;
+import java.io.OutputStream;
 import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -535,10 +537,22 @@ public final class BenchCommand implements Callable<Integer> {
         List<BenchSpec> subset = specs.subList(0, Math.min(specs.size(), WARM_UP_TASKS));
         System.err.printf(Locale.ROOT, "rtaware bench: warm-up, %d task(s) for %s (not counted)%n", subset.size(),
                 Durations.format(warmUpNs));
-        Monitor warmUp = CommandMonitor.build(tasks(Monitor.builder(new SystemClock()), subset, work));
+        Monitor.Builder builder = tasks(Monitor.builder(new SystemClock()), subset, work);
+        if (latenessHistogram != null) {
+            builder.listener(new LatenessHistogram());
+        }
+        Monitor warmUp = CommandMonitor.build(builder);
+        // The listeners the measured run will have, of the same classes: a cycle calls each, and
+        // code the JIT compiled for none is thrown away at the measured run's first cycles (the
+        // first periods of 10 000 tasks then ran interpreted and missed). Their output is dropped.
+        ConsoleReporter console = CommandMonitor.console(warmUp, quiet,
+                new PrintStream(OutputStream.nullOutputStream(), false, StandardCharsets.UTF_8));
         warmUp.start();
         warmUp.awaitTermination(java.time.Duration.ofNanos(warmUpNs));
         warmUp.stop();
+        if (console != null) {
+            console.close();
+        }
     }
 
     /** The measurement of the run's conditions, from just before the monitor's start (null before). */
