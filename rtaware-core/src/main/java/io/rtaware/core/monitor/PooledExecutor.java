@@ -243,60 +243,84 @@ final class PooledExecutor implements Executor {
             party.done();
             return;
         }
-        int[] batch = new int[MAX_BATCH];
-        // deadlinesFrom[i]: the earliest deadline of batch[i..claimed-1] (what is left from cycle i on).
-        long[] deadlinesFrom = new long[MAX_BATCH];
-        Shard own = shards[worker];
-        Shard from = own;
-        int claimed = 0;
+        Worker self = new Worker(worker);
         try {
             while (running) {
-                if (claimed > 0 && from != own) {
-                    synchronized (from) {
-                        putBack(from, batch, claimed);
-                        from.publishEarliest();
-                    }
-                    claimed = 0;
-                }
-                long now;
-                synchronized (own) {
-                    putBack(own, batch, claimed);
-                    now = clock.nanos();
-                    claimed = claim(own, now, batch);
-                    own.publishEarliest();
-                }
-                from = own;
-                for (int k = 1; k < shards.length && claimed == 0; k++) {
-                    Shard victim = shards[(worker + k) % shards.length];
-                    if (victim.earliestNs <= now) {
-                        synchronized (victim) {
-                            claimed = claim(victim, clock.nanos(), batch);
-                            victim.publishEarliest();
-                        }
-                        from = victim;
-                    }
-                }
-                if (claimed == 0) {
-                    parkUntilDue(worker, now);
-                    continue;
-                }
-                wakeParkedWorker(worker);
-                long earliest = Long.MAX_VALUE;
-                for (int i = claimed - 1; i >= 0; i--) {
-                    earliest = Math.min(earliest, pooled[batch[i]].nextDeadlineNs());
-                    deadlinesFrom[i] = earliest;
-                }
-                for (int i = 0; i < claimed && running; i++) {
-                    batchDeadlineNs.setRelease(worker, deadlinesFrom[i]);
-                    runCycle(worker, pooled[batch[i]]);
-                }
-                batchDeadlineNs.setRelease(worker, Long.MAX_VALUE);
+                self.step();
             }
         } catch (VirtualMachineError fatal) {
             faults.report("pool worker " + worker + " (fatal VM error: stopping every task)", fatal);
             stopAllRequest.run();
         } finally {
             party.done();
+        }
+    }
+
+    /**
+     * One worker's state between its steps: the batch it ran last and the shard it came from.
+     * A step is a method of its own, called once a batch, rather than the body of the worker's
+     * loop: the JIT compiles it as a whole method, which the workers of a monitor started later
+     * (a bench's measured run after its warm-up) use from their first step. A loop's body is
+     * compiled on the stack of the running loop, and that code is thrown away when the loop
+     * ends with its monitor; a new monitor's workers then ran their first periods interpreted.
+     */
+    private final class Worker {
+        private final int index;
+        private final Shard own;
+        private final int[] batch = new int[MAX_BATCH];
+        /** deadlinesFrom[i]: the earliest deadline of batch[i..claimed-1] (what is left from cycle i on). */
+        private final long[] deadlinesFrom = new long[MAX_BATCH];
+        private Shard from;
+        private int claimed;
+
+        Worker(int index) {
+            this.index = index;
+            this.own = shards[index];
+            this.from = own;
+        }
+
+        /** Puts back the last batch, takes the next (its own shard's, else another's) and runs it, or parks. */
+        void step() {
+            if (claimed > 0 && from != own) {
+                synchronized (from) {
+                    putBack(from, batch, claimed);
+                    from.publishEarliest();
+                }
+                claimed = 0;
+            }
+            long now;
+            synchronized (own) {
+                putBack(own, batch, claimed);
+                now = clock.nanos();
+                claimed = claim(own, now, batch);
+                own.publishEarliest();
+            }
+            from = own;
+            for (int k = 1; k < shards.length && claimed == 0; k++) {
+                Shard victim = shards[(index + k) % shards.length];
+                if (victim.earliestNs <= now) {
+                    synchronized (victim) {
+                        claimed = claim(victim, clock.nanos(), batch);
+                        victim.publishEarliest();
+                    }
+                    from = victim;
+                }
+            }
+            if (claimed == 0) {
+                parkUntilDue(index, now);
+                return;
+            }
+            wakeParkedWorker(index);
+            long earliest = Long.MAX_VALUE;
+            for (int i = claimed - 1; i >= 0; i--) {
+                earliest = Math.min(earliest, pooled[batch[i]].nextDeadlineNs());
+                deadlinesFrom[i] = earliest;
+            }
+            for (int i = 0; i < claimed && running; i++) {
+                batchDeadlineNs.setRelease(index, deadlinesFrom[i]);
+                runCycle(index, pooled[batch[i]]);
+            }
+            batchDeadlineNs.setRelease(index, Long.MAX_VALUE);
         }
     }
 
