@@ -42,6 +42,7 @@ import io.rtaware.core.report.Report;
 import io.rtaware.core.report.ReportDocument;
 import io.rtaware.core.report.SummaryTable;
 import io.rtaware.core.report.TaskReport;
+import io.rtaware.core.task.Schedule;
 import io.rtaware.core.testing.ThreadAllocation;
 import io.rtaware.core.time.Clock;
 import io.rtaware.core.time.Durations;
@@ -113,6 +114,8 @@ public final class BenchCommand implements Callable<Integer> {
 
     /** Most tasks the warm-up runs (enough to compile every path of a cycle, few enough to fit beside the set). */
     static final int WARM_UP_TASKS = 1000;
+    /** The warm-up's task that overruns now and then (not in the measured run). */
+    static final String WARM_UP_OVERRUN_TASK = "warm-up-overrun";
 
     @Option(names = "--tasks", paramLabel = "N", description = "Number of identical tasks (default: ${DEFAULT-VALUE}).", defaultValue = "4")
     int tasks;
@@ -538,6 +541,12 @@ public final class BenchCommand implements Callable<Integer> {
         System.err.printf(Locale.ROOT, "rtaware bench: warm-up, %d task(s) for %s (not counted)%n", subset.size(),
                 Durations.format(warmUpNs));
         Monitor.Builder builder = tasks(Monitor.builder(new SystemClock()), subset, work);
+        // One more task, of the shortest period, overruns by a period and a half every 50th cycle:
+        // the paths of a miss and of skipped releases are compiled before the measured run meets
+        // them (compiled without them, the first miss threw the cycle's code away).
+        long shortestNs = subset.stream().mapToLong(BenchSpec::periodNs).min().orElse(10_000_000L);
+        builder.task(WARM_UP_OVERRUN_TASK, Schedule.periodic(java.time.Duration.ofNanos(shortestNs)),
+                BenchTask.overrunning(WARM_UP_OVERRUN_TASK, 0, shortestNs + shortestNs / 2, 50, work));
         if (latenessHistogram != null) {
             builder.listener(new LatenessHistogram());
         }
