@@ -68,6 +68,14 @@ final class PooledExecutor implements Executor {
      */
     static final int MAX_BATCH = 32;
 
+    /**
+     * Preparing the pooled tasks for the start took longer than this: the start instant is put
+     * ahead by twice that time, so that starting each of them is done before its first release
+     * (the tasks with a thread of their own, when there are any, keep the instant their executor
+     * takes; on a manual clock preparing takes no time).
+     */
+    static final long START_AHEAD_ABOVE_NS = 500_000;
+
     private final Clock clock;
     private final ClockWaiter waiter;
     private final List<TaskRuntime> runtimes;
@@ -218,13 +226,18 @@ final class PooledExecutor implements Executor {
         // As on the threaded executor: the start instant is taken once every worker has run its
         // thread setup, so the setup never makes release 0 late.
         ThreadedExecutor.awaitUninterruptibly(ready);
-        long startNs = dedicated != null ? dedicated.start() : clock.nanos();
         // The workers wait on the latch 'go': what is written here happens before their first step.
         releaseOrderIsRunOrder = order == ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST && oneFixedDeadline();
+        long preparingNs = clock.nanos();
+        for (TaskRuntime runtime : pooled) {
+            runtime.watchedBy(watchdog);
+            runtime.prepareStart(stopAllRequest, waiter.zeroCycleSpacingNs());
+        }
+        preparingNs = clock.nanos() - preparingNs;
+        long startNs = dedicated != null ? dedicated.start() : startInstantNs(clock.nanos(), preparingNs);
         for (int slot = 0; slot < pooled.length; slot++) {
             TaskRuntime runtime = pooled[slot];
-            runtime.watchedBy(watchdog);
-            runtime.begin(startNs, stopAllRequest, waiter.zeroCycleSpacingNs());
+            runtime.begin(startNs);
             shards[homeOf[slot]].waiting.push(slot, runtime.nextReleaseNs());
         }
         for (Shard shard : shards) {
@@ -233,6 +246,21 @@ final class PooledExecutor implements Executor {
         watchdog.start();
         go.countDown();
         return startNs;
+    }
+
+    /**
+     * The start instant of a pool without tasks of their own thread: starting every task after
+     * the instant takes about as long as preparing them did, with thousands of tasks milliseconds
+     * by which every first release would be late (10 000 tasks: 7-14 ms on the development VM,
+     * just after they were built, so each missed its first deadline). Past
+     * {@link #START_AHEAD_ABOVE_NS}, the instant is put twice that far ahead.
+     *
+     * @param nowNs the clock when the tasks have been prepared
+     * @param preparingNs how long preparing them took
+     * @return the start instant
+     */
+    static long startInstantNs(long nowNs, long preparingNs) {
+        return preparingNs > START_AHEAD_ABOVE_NS ? nowNs + 2 * preparingNs : nowNs;
     }
 
     private void work(int worker, CountDownLatch go) {

@@ -57,6 +57,9 @@ public final class StepExecutor implements Executor {
 
     @Override
     public long start() {
+        for (TaskRuntime runtime : runtimes) {
+            runtime.prepareStart(stop, idleStepNs());
+        }
         long startNs = clock.nanos();
         unsubscribe = clock.onAdvance((fromNs, toNs) -> {
             TaskRuntime running = current;
@@ -65,7 +68,7 @@ public final class StepExecutor implements Executor {
             }
         });
         for (TaskRuntime runtime : runtimes) {
-            runtime.begin(startNs, stop, idleStepNs());
+            runtime.begin(startNs);
         }
         rebuildDue();
         return startNs;

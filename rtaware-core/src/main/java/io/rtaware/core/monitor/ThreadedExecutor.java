@@ -93,6 +93,7 @@ final class ThreadedExecutor implements Executor {
         int[] ranks = rateMonotonicRanks(runtimes);
         for (TaskRuntime runtime : runtimes) {
             runtime.watchedBy(watchdog);
+            runtime.prepareStart(stopAllRequest, waiter.zeroCycleSpacingNs());
             int rank = ranks[runtime.index()];
             int slot = threads.size();
             Thread thread = new Thread(() -> runTask(runtime, parties.get(slot), rank, ready, go),
@@ -109,7 +110,7 @@ final class ThreadedExecutor implements Executor {
         awaitUninterruptibly(ready);
         long startNs = clock.nanos();
         for (TaskRuntime runtime : runtimes) {
-            runtime.begin(startNs, stopAllRequest, waiter.zeroCycleSpacingNs());
+            runtime.begin(startNs);
         }
         watchdog.start();
         go.countDown();

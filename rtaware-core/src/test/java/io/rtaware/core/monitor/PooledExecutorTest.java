@@ -153,6 +153,15 @@ class PooledExecutorTest {
         assertEquals(0, report.task("stolen").misses());
     }
 
+    @Test
+    void aPoolWhosePreparationTookMillisecondsStartsThatFarAheadTwiceAndAQuickOneNow() {
+        assertEquals(ms(100), PooledExecutor.startInstantNs(ms(100), 0), "on a manual clock preparing takes no time");
+        assertEquals(ms(100), PooledExecutor.startInstantNs(ms(100), PooledExecutor.START_AHEAD_ABOVE_NS),
+                "up to half a millisecond: now");
+        assertEquals(ms(100) + ms(20), PooledExecutor.startInstantNs(ms(100), ms(10)),
+                "10 000 tasks prepared in 10 ms start 20 ms ahead, so each is started before its first release");
+    }
+
     /** @return whether the latch opened (a guard against a hang, not a timing: it opens at once when the pool works) */
     private static boolean awaitUninterruptibly(CountDownLatch latch) {
         try {
