@@ -65,13 +65,9 @@ class ConditionsMeterTest {
 
     @Test
     void theVerdictSoFarFollowsTheRunAndIsTheFinalOneOnceFinished(@TempDir Path root) throws IOException {
-        HostReaderTest.lay("busy-start", root);
         AtomicLong now = new AtomicLong();
         FakeJvm jvm = new FakeJvm();
-        ConditionsMeter.Span span = new ConditionsMeter(new HostReader(new HostFiles(root), now::get), jvm,
-                new BuildInfo("0.1.0", null)).start(1, "none");
-        HostReaderTest.lay("busy-end", root);
-        now.set(10_000_000_000L);
+        ConditionsMeter.Span span = busyTenSeconds(root, now, jvm);
         Conditions later = span.sofar(100);
         assertEquals("busy", later.machine(), "the other processes' 1.6 CPUs since the start");
         assertEquals(10.0, later.measured().durationS(), 1e-12);
@@ -184,18 +180,24 @@ class ConditionsMeterTest {
 
     @Test
     void theWindowEndsWhenEndIsCalledNotWhenTheConditionsAreMade(@TempDir Path root) throws IOException {
-        HostReaderTest.lay("busy-start", root);
         AtomicLong now = new AtomicLong();
         FakeJvm jvm = new FakeJvm();
-        ConditionsMeter.Span span = new ConditionsMeter(new HostReader(new HostFiles(root), now::get), jvm,
-                new BuildInfo("0.1.0", null)).start(1, "none");
-        HostReaderTest.lay("busy-end", root);
-        now.set(10_000_000_000L);
+        ConditionsMeter.Span span = busyTenSeconds(root, now, jvm);
         span.end(); // the tasks stopped
         assertTrue(jvm.closed, "the pauses after the tasks stopped are not counted");
         now.set(25_000_000_000L); // the report of many tasks took 15 s to build
         span.end();
         assertEquals(10.0, span.sofar(100).measured().durationS(), 1e-12, "so far: the window ended");
         assertEquals(10.0, span.finish(100).measured().durationS(), 1e-12, "the window is the run's");
+    }
+
+    /** A span at time scale 1 over the "busy" fixture's two samples, its clock moved to 10 s. */
+    private static ConditionsMeter.Span busyTenSeconds(Path root, AtomicLong now, FakeJvm jvm) throws IOException {
+        HostReaderTest.lay("busy-start", root);
+        ConditionsMeter.Span span = new ConditionsMeter(new HostReader(new HostFiles(root), now::get), jvm,
+                new BuildInfo("0.1.0", null)).start(1, "none");
+        HostReaderTest.lay("busy-end", root);
+        now.set(10_000_000_000L);
+        return span;
     }
 }

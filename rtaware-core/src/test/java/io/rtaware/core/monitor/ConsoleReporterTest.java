@@ -50,7 +50,11 @@ class ConsoleReporterTest {
     }
 
     private static long countOf(List<String> lines, String task, String what) {
-        Pattern p = Pattern.compile("\\] " + task + ":.*? (\\d+) " + what);
+        return sumOf(lines, Pattern.compile("\\] " + task + ":.*? (\\d+) " + what));
+    }
+
+    /** @return the sum over the lines of the number the pattern's first group finds, once a line */
+    private static long sumOf(List<String> lines, Pattern p) {
         long sum = 0;
         for (String line : lines) {
             Matcher m = p.matcher(line);
@@ -161,15 +165,7 @@ class ConsoleReporterTest {
     }
 
     private static long foldedMisses(List<String> lines) {
-        Pattern p = Pattern.compile("\\] \\d+ more tasks?: (\\d+) deadline miss");
-        long sum = 0;
-        for (String line : lines) {
-            Matcher m = p.matcher(line);
-            if (m.find()) {
-                sum += Long.parseLong(m.group(1));
-            }
-        }
-        return sum;
+        return sumOf(lines, Pattern.compile("\\] \\d+ more tasks?: (\\d+) deadline miss"));
     }
 
     private long allMisses(List<TaskInfo> many) {
