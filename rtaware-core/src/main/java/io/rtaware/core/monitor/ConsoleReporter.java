@@ -29,7 +29,7 @@ import org.agrona.concurrent.SleepingMillisIdleStrategy;
  * <p>Across tasks, at most {@value #TASK_LINES_PER_SECOND} task lines are printed in a wall
  * second. When more tasks are due (hundreds of tasks missing together), the rest fold into one
  * line a second that says how many tasks it covers, their counts together and the task with the
- * most misses ({@code [rtaware] 4117 more tasks: 9311 deadline misses (...) ...; most: t802, 4}).
+ * most misses ({@code [rtaware] 4117 more tasks: 9311 deadline misses; most misses: t802, 4 (...)}).
  * A flood of misses then costs a few lines, not a line per task: thousands of lines a second
  * would hide the cause and take the CPU and memory the tasks need.
  *

@@ -229,10 +229,11 @@ final class TaskRuntime implements TaskInfo {
     }
 
     /**
-     * Before the start instant is taken: what the start needs that does not depend on it. The
-     * executor calls it for every task first, so that fixing the grids after the instant is
-     * quick (10 000 pooled tasks took 12-14 ms to start in one pass on the development VM, the
-     * first release of every one of them that late; their objects, cold, were the cost).
+     * Before the start instant is taken: what the start needs that does not depend on it, and
+     * the anchoring {@link #begin} does, on a provisional instant. An executor that starts
+     * thousands of tasks calls it for every one first and times that pass: starting them after
+     * the instant takes about as long (the pooled executor puts its instant ahead by it; 10 000
+     * pooled tasks took 7-14 ms to start on the development VM, each first release that late).
      *
      * @param stopAllRequest how the executor stops the monitor when a task's policy says
      *     {@link ErrorPolicy#STOP_ALL}; called on the cycle's thread
@@ -243,7 +244,7 @@ final class TaskRuntime implements TaskInfo {
     void prepareStart(Runnable stopAllRequest, long zeroCycleSpacingNs) {
         this.stopAllRequest = stopAllRequest;
         this.zeroCycleSpacingNs = zeroCycleSpacingNs;
-        anchor(Long.MIN_VALUE / 2); // the same work as at the start, on a provisional instant
+        anchor(Long.MIN_VALUE / 2); // the work of the start, so that timing this pass predicts it
     }
 
     /** Fixes the grid and the first release on {@code startNs}. */
