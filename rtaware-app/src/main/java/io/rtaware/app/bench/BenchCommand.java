@@ -142,9 +142,10 @@ public final class BenchCommand implements Callable<Integer> {
 
     @Option(names = "--warmup", converter = DurationConverter.class, paramLabel = "DURATION", defaultValue = "2s",
             description = "Before the measured run, run up to " + WARM_UP_TASKS + " of the tasks on the same "
-                    + "executor for this long and discard the numbers: the JIT compiles the cycle's code and the "
-                    + "collector settles after the monitor's allocation; 0 for none (default: ${DEFAULT-VALUE}). "
-                    + "--compare and --sweep-tasks warm up with a round of their own.")
+                    + "executor for this long, with the same live console, plus one task that overruns now and "
+                    + "then, and discard the numbers: the JIT compiles the cycle's code, a missed deadline's "
+                    + "too, and the collector settles after the monitor's allocation; 0 for none (default: "
+                    + "${DEFAULT-VALUE}). --compare and --sweep-tasks warm up with a round of their own.")
     long warmUpNs;
 
     @Option(names = "--duration", converter = DurationConverter.class, paramLabel = "DURATION", defaultValue = "10s",
@@ -538,8 +539,8 @@ public final class BenchCommand implements Callable<Integer> {
             return;
         }
         List<BenchSpec> subset = specs.subList(0, Math.min(specs.size(), WARM_UP_TASKS));
-        System.err.printf(Locale.ROOT, "rtaware bench: warm-up, %d task(s) for %s (not counted)%n", subset.size(),
-                Durations.format(warmUpNs));
+        System.err.printf(Locale.ROOT, "rtaware bench: warm-up, %d task(s) and one that overruns now and then, for %s"
+                + " (not counted)%n", subset.size(), Durations.format(warmUpNs));
         Monitor.Builder builder = tasks(Monitor.builder(new SystemClock()), subset, work);
         // One more task, of the shortest period, overruns by a period and a half every 50th cycle:
         // the paths of a miss and of skipped releases are compiled before the measured run meets
