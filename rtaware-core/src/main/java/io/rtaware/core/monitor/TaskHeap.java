@@ -81,25 +81,22 @@ final class TaskHeap {
      * @param key its key
      */
     void push(int slot, long key) {
-        if (runSize == 0) {
-            runHead = 0;
-            runKeys[0] = key;
-            runSlots[0] = slot;
-            runSize = 1;
-            return;
+        if (runSize > 0) {
+            int tail = ring(runHead + runSize - 1);
+            if (before(key, slot, runKeys[tail], runSlots[tail])) {
+                pushOnHeap(slot, key);
+                return;
+            }
         }
-        int tail = runHead + runSize - 1;
-        if (tail >= runKeys.length) {
-            tail -= runKeys.length;
-        }
-        if (!before(key, slot, runKeys[tail], runSlots[tail])) {
-            int next = tail + 1 == runKeys.length ? 0 : tail + 1;
-            runKeys[next] = key;
-            runSlots[next] = slot;
-            runSize++;
-            return;
-        }
-        pushOnHeap(slot, key);
+        int next = ring(runHead + runSize);
+        runKeys[next] = key;
+        runSlots[next] = slot;
+        runSize++;
+    }
+
+    /** @return position {@code i} of the sorted run's ring, for {@code i} below twice its length */
+    private int ring(int i) {
+        return i >= runKeys.length ? i - runKeys.length : i;
     }
 
     private void pushOnHeap(int slot, long key) {
@@ -123,7 +120,7 @@ final class TaskHeap {
     int pop() {
         if (runFirst()) {
             int top = runSlots[runHead];
-            runHead = runHead + 1 == runKeys.length ? 0 : runHead + 1;
+            runHead = ring(runHead + 1);
             runSize--;
             return top;
         }
