@@ -311,16 +311,16 @@ final class PooledExecutor implements Executor {
         void step() {
             if (claimed > 0 && from != own) {
                 synchronized (from) {
-                    putBack(from, batch, claimed);
+                    putBack(from);
                     from.publishEarliest();
                 }
                 claimed = 0;
             }
             long now;
             synchronized (own) {
-                putBack(own, batch, claimed);
+                putBack(own);
                 now = clock.nanos();
-                claimed = claim(own, now, batch);
+                claimed = claim(own, now);
                 own.publishEarliest();
             }
             from = own;
@@ -328,7 +328,7 @@ final class PooledExecutor implements Executor {
                 Shard victim = shards[(index + k) % shards.length];
                 if (victim.earliestNs <= now) {
                     synchronized (victim) {
-                        claimed = claim(victim, clock.nanos(), batch);
+                        claimed = claim(victim, clock.nanos());
                         victim.publishEarliest();
                     }
                     from = victim;
@@ -338,7 +338,7 @@ final class PooledExecutor implements Executor {
                 parkUntilDue(index, now);
                 return;
             }
-            wakeParkedWorker(index);
+            wakeParkedWorker();
             long earliest = Long.MAX_VALUE;
             for (int i = claimed - 1; i >= 0; i--) {
                 earliest = Math.min(earliest, pooled[batch[i]].nextDeadlineNs());
@@ -350,45 +350,46 @@ final class PooledExecutor implements Executor {
             }
             batchDeadlineNs.setRelease(index, Long.MAX_VALUE);
         }
-    }
 
-    /**
-     * Puts the tasks of a batch back into the shard they were claimed from, each keyed by the
-     * release its runtime decided (none for a task that stopped). Holding the shard's lock.
-     */
-    private void putBack(Shard shard, int[] batch, int claimed) {
-        for (int i = 0; i < claimed; i++) {
-            long next = pooled[batch[i]].nextReleaseNs();
-            if (next != TaskRuntime.NEVER) {
-                shard.waiting.push(batch[i], next);
+        /**
+         * Puts the tasks of the last batch back into the shard they were claimed from, each keyed
+         * by the release its runtime decided (none for a task that stopped). Holding the shard's lock.
+         */
+        private void putBack(Shard shard) {
+            for (int i = 0; i < claimed; i++) {
+                long next = pooled[batch[i]].nextReleaseNs();
+                if (next != TaskRuntime.NEVER) {
+                    shard.waiting.push(batch[i], next);
+                }
             }
         }
+
+        /**
+         * Takes up to {@link #MAX_BATCH} due releases of a shard, in run order, into the batch.
+         * Holding the shard's lock.
+         *
+         * @return how many were taken
+         */
+        private int claim(Shard shard, long nowNs) {
+            int taken = 0;
+            TaskHeap waiting = shard.waiting;
+            if (releaseOrderIsRunOrder) {
+                while (taken < MAX_BATCH && waiting.peekKey() <= nowNs) {
+                    batch[taken++] = waiting.pop();
+                }
+                return taken;
+            }
+            while (waiting.peekKey() <= nowNs) {
+                int due = waiting.pop();
+                shard.ready.push(due, readyKey(pooled[due]));
+            }
+            while (taken < MAX_BATCH && shard.ready.size() > 0) {
+                batch[taken++] = shard.ready.pop();
+            }
+            return taken;
+        }
     }
 
-    /**
-     * Takes up to {@link #MAX_BATCH} due releases of a shard, in run order, into {@code batch}.
-     * Holding the shard's lock.
-     *
-     * @return how many were taken
-     */
-    private int claim(Shard shard, long nowNs, int[] batch) {
-        int claimed = 0;
-        TaskHeap waiting = shard.waiting;
-        if (releaseOrderIsRunOrder) {
-            while (claimed < MAX_BATCH && waiting.peekKey() <= nowNs) {
-                batch[claimed++] = waiting.pop();
-            }
-            return claimed;
-        }
-        while (waiting.peekKey() <= nowNs) {
-            int due = waiting.pop();
-            shard.ready.push(due, readyKey(pooled[due]));
-        }
-        while (claimed < MAX_BATCH && shard.ready.size() > 0) {
-            batch[claimed++] = shard.ready.pop();
-        }
-        return claimed;
-    }
 
     /** @return the earliest release due in any shard ({@link Long#MIN_VALUE}: one is ready now) */
     private long earliestOfAllShards() {
@@ -422,13 +423,14 @@ final class PooledExecutor implements Executor {
     /**
      * Called by a worker about to run a batch: wakes one parked worker that would otherwise
      * sleep past the earliest release of any shard, so that releases this worker cannot take
-     * while it runs its batch are stolen in time.
+     * while it runs its batch are stolen in time. (The caller's own entry is not parked: a
+     * worker clears it before its park returns.)
      */
-    private void wakeParkedWorker(int worker) {
+    private void wakeParkedWorker() {
         long due = earliestOfAllShards();
         for (int w = 0; w < parkedUntil.length(); w++) {
             long until = parkedUntil.get(w);
-            if (w != worker && until != NOT_PARKED && due < until && parkedUntil.compareAndSet(w, until, NOT_PARKED)) {
+            if (until != NOT_PARKED && due < until && parkedUntil.compareAndSet(w, until, NOT_PARKED)) {
                 workerParties[w].wake();
                 return;
             }
