@@ -58,7 +58,6 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
 
     private final PrintStream out;
     private final Clock wallClock;
-    private final List<TaskInfo> tasks;
     private final boolean includeStale;
     private final AtomicLongArray pending;
     private final AtomicLongArray lastMissDetectedNs;
@@ -124,9 +123,8 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
                     Clock wallClock, boolean printerThread) {
         this.wallClock = Objects.requireNonNull(wallClock, "wallClock");
         this.out = Objects.requireNonNull(out, "out");
-        this.tasks = List.copyOf(monitor);
         this.includeStale = includeStale;
-        int n = tasks.size();
+        int n = monitor.size();
         this.pending = new AtomicLongArray(n * KINDS);
         this.lastMissDetectedNs = new AtomicLongArray(n);
         this.lastMissDeadlineNs = new AtomicLongArray(n);
@@ -137,7 +135,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         this.eventBits = new long[(n + 63) >>> 6];
         this.heldBits = new long[eventBits.length];
         this.taskByIndex = new TaskInfo[n];
-        for (TaskInfo task : tasks) {
+        for (TaskInfo task : monitor) {
             taskByIndex[task.index()] = task;
         }
         this.foldedMissesOf = new long[n];
@@ -243,7 +241,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
             long bits = (long) EVENT_BITS.getAndSet(eventBits, word, 0L) | heldBits[word];
             heldBits[word] = 0;
             if (force) {
-                bits = word == eventBits.length - 1 && (tasks.size() & 63) != 0 ? (1L << (tasks.size() & 63)) - 1 : -1L;
+                bits = word == eventBits.length - 1 && (taskByIndex.length & 63) != 0 ? (1L << (taskByIndex.length & 63)) - 1 : -1L;
             }
             while (bits != 0) {
                 int i = (word << 6) + Long.numberOfTrailingZeros(bits);
