@@ -64,10 +64,10 @@ final class CycleStatistics {
      * Heap besides HdrHistogram's footprint estimate of the histograms and the task's column of
      * its {@link StatisticsTable}: this object, what the histograms' objects take beyond that
      * estimate (80 bytes each), and the table object and array headers of statistics with a
-     * table of their own (about 400 bytes, which the tasks of a monitor share), as
+     * table of their own (about 450 bytes, which the tasks of a monitor share), as
      * {@code MonitorFootprintTest} measures them with the JVM's allocation counter.
      */
-    private static final long FIELDS_BYTES = 608;
+    private static final long FIELDS_BYTES = 624;
 
     private static final VarHandle LONGS = StatisticsTable.LONGS;
 
@@ -78,9 +78,6 @@ final class CycleStatistics {
      */
     private final StatisticsTable table;
     private final int slot;
-
-    private AbstractHistogram latenessNs = newHistogram();
-    private AbstractHistogram execNs = newHistogram();
 
     /**
      * Statistics of their own (a table of one task), that flush their batches when the count of
@@ -136,7 +133,8 @@ final class CycleStatistics {
 
     /** @return HdrHistogram's footprint estimate of the two histograms this instance holds now */
     long histogramFootprintBytes() {
-        return latenessNs.getEstimatedFootprintInBytes() + execNs.getEstimatedFootprintInBytes();
+        return table.latenessHistograms[slot].getEstimatedFootprintInBytes()
+                + table.execHistograms[slot].getEstimatedFootprintInBytes();
     }
 
     /**
@@ -177,11 +175,11 @@ final class CycleStatistics {
     void recordLatenessWaiting() {
         StatisticsTable t = table;
         long count = t.latenessCount[slot];
-        AbstractHistogram target = latenessNs;
+        AbstractHistogram target = t.latenessHistograms[slot];
         for (long n = t.latenessRecordedCount[slot]; n < count; n++) {
             target = record(target, t.pendingLatenessNs[(int) (n % RECORD_BATCH) * t.size + slot]);
         }
-        latenessNs = target;
+        t.latenessHistograms[slot] = target;
         t.latenessRecordedCount[slot] = count;
     }
 
@@ -194,11 +192,11 @@ final class CycleStatistics {
         StatisticsTable t = table;
         long count = t.recentExecCount[slot];
         int ring = slot * RECENT_EXEC_CYCLES;
-        AbstractHistogram target = execNs;
+        AbstractHistogram target = t.execHistograms[slot];
         for (long n = t.execRecordedCount[slot]; n < count; n++) {
             target = record(target, t.recentExecNs[ring + (int) (n % RECENT_EXEC_CYCLES)]);
         }
-        execNs = target;
+        t.execHistograms[slot] = target;
         t.execRecordedCount[slot] = count;
     }
 
@@ -293,16 +291,17 @@ final class CycleStatistics {
     /** @return execution times over the run; call only after the task's cycles have stopped */
     Percentiles execUs() {
         recordExecWaiting();
-        return Percentiles.ofNanos(execNs, table.execMaxNs[slot], table.execSumNs[slot]);
+        return Percentiles.ofNanos(table.execHistograms[slot], table.execMaxNs[slot], table.execSumNs[slot]);
     }
 
     /** @return lateness over the run; call only after the task's cycles have stopped */
     Percentiles latenessUs() {
         recordLatenessWaiting();
-        return Percentiles.ofNanos(latenessNs, table.latenessMaxNs[slot], table.latenessSumNs[slot]);
+        return Percentiles.ofNanos(table.latenessHistograms[slot], table.latenessMaxNs[slot], table.latenessSumNs[slot]);
     }
 
-    private static AbstractHistogram newHistogram() {
+    /** @return an empty histogram of a task's lateness or execution times */
+    static AbstractHistogram newHistogram() {
         return new IntCountsHistogram(LOWEST_DISCERNIBLE_NS, HIGHEST_TRACKABLE_NS, SIGNIFICANT_DIGITS);
     }
 

@@ -2,6 +2,7 @@ package io.rtaware.core.monitor;
 
 import java.lang.invoke.MethodHandles;
 import java.lang.invoke.VarHandle;
+import org.HdrHistogram.AbstractHistogram;
 
 /**
  * The counters and running sums of every task of one monitor, one dense array per quantity,
@@ -29,13 +30,23 @@ import java.lang.invoke.VarHandle;
  * into the histograms; everything else reads and writes through {@link CycleStatistics}, under
  * the threading rules stated there (one writer per task for most, ordered stores and acquiring
  * reads for the live counters). Sized once, at construction; nothing is allocated afterwards.
+ *
+ * <p>The table builds every task's two histograms (27 KB a task) at construction, before the
+ * monitor builds its tasks' runtimes: the few small objects a release touches (the runtime, its
+ * release grid and deadline token) then lie next to those of the tasks before and after it in
+ * memory, rather than 27 KB apart, and a drain in index order reads memory forward, which the
+ * processor's prefetcher follows (the pool's drain of 10 000 in-phase releases, measured before
+ * and after: docs/performance.md, "The drain").
  */
 final class StatisticsTable {
 
     /** Longs per 64-byte cache line: the tasks whose counters share a line. */
     static final int TASKS_PER_LINE = 8;
-    /** Arrays with one element per task: every one below but the waiting lateness values and the rings. */
-    static final int ARRAYS_PER_TASK = 17;
+    /**
+     * Arrays with one element per task: every one below but the waiting lateness values and the
+     * rings (the histograms' references counted as longs).
+     */
+    static final int ARRAYS_PER_TASK = 19;
 
     // Ordered stores and atomic adds on the arrays. Invoked on this constant directly with the
     // exact types ((long) LONGS.getAndAdd(array, int, long)): a VarHandle passed as an argument
@@ -78,6 +89,10 @@ final class StatisticsTable {
      * {@link CycleStatistics#RECORD_BATCH}.
      */
     final int[] flushPhase;
+    /** Each task's histogram of lateness values, ns (written on a flush; a 64-bit copy replaces it when it fills). */
+    final AbstractHistogram[] latenessHistograms;
+    /** Each task's histogram of execution times, ns (as {@link #latenessHistograms}). */
+    final AbstractHistogram[] execHistograms;
 
     /**
      * @param size the number of tasks
@@ -106,6 +121,12 @@ final class StatisticsTable {
         execRecordedCount = new long[size];
         recentExecNs = new long[Math.multiplyExact(CycleStatistics.RECENT_EXEC_CYCLES, size)];
         flushPhase = new int[size];
+        latenessHistograms = new AbstractHistogram[size];
+        execHistograms = new AbstractHistogram[size];
+        for (int i = 0; i < size; i++) {
+            latenessHistograms[i] = CycleStatistics.newHistogram();
+            execHistograms[i] = CycleStatistics.newHistogram();
+        }
     }
 
     /**
