@@ -2,6 +2,8 @@ package io.rtaware.core.monitor;
 
 import io.rtaware.core.agent.ThreadNames;
 import io.rtaware.core.time.Clock;
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
 import java.util.concurrent.locks.LockSupport;
 
 /**
@@ -54,9 +56,27 @@ final class Watchdog {
     private Thread thread;
     /**
      * The world time it sleeps until; {@link #wakeFor} compares a new cycle's deadline with it.
-     * {@link Long#MIN_VALUE} until the first scan: it is about to look anyway.
+     * {@link #SCANNING} while it scans (and before its first scan).
      */
-    private volatile long wakeNs = Long.MIN_VALUE;
+    private volatile long wakeNs = SCANNING;
+    /** {@link #wakeNs} while the watchdog scans: its wake time is not decided yet. */
+    private static final long SCANNING = Long.MIN_VALUE;
+    /**
+     * The earliest deadline {@link #wakeFor} was asked for while the watchdog scanned
+     * ({@link Long#MAX_VALUE}: none): a cycle that started after the scan looked at its slot, which
+     * the scan's end takes into its wake time.
+     */
+    private volatile long requestedDuringScanNs = Long.MAX_VALUE;
+    private static final VarHandle REQUESTED_DURING_SCAN_NS;
+
+    static {
+        try {
+            REQUESTED_DURING_SCAN_NS = MethodHandles.lookup()
+                    .findVarHandle(Watchdog.class, "requestedDuringScanNs", long.class);
+        } catch (ReflectiveOperationException e) {
+            throw new ExceptionInInitializerError(e);
+        }
+    }
     /** Set by {@link #wakeFor} before it wakes the thread; cleared by the thread before each scan. */
     private volatile boolean wakeRequested;
     /** Scans so far; written by the watchdog thread only. */
@@ -96,10 +116,30 @@ final class Watchdog {
      * marked running (a volatile write), so that either the watchdog's next scan sees the cycle or
      * this call sees the wake time that scan set; allocation-free.
      *
+     * <p>While the watchdog scans, its wake time is not decided, and the scan may already have
+     * looked at the slot of the cycle that starts now: the deadline is then left for the scan's
+     * end, which wakes no later than it, and looked at again once the wake time is set (before
+     * this, a cycle that started during a scan whose slot the scan had passed was not watched
+     * until some later cycle woke the watchdog: a task that hung in it was reported only when
+     * it returned).
+     *
      * @param deadlineNs the deadline of the cycle that starts now
      */
     void wakeFor(long deadlineNs) {
-        if (deadlineNs < wakeNs) {
+        long wake = wakeNs;
+        if (wake == SCANNING) {
+            long requested;
+            do {
+                requested = requestedDuringScanNs;
+            } while (deadlineNs < requested
+                    && !REQUESTED_DURING_SCAN_NS.compareAndSet(this, requested, deadlineNs));
+            // Either the scan's end reads the request, or this reads the wake time it set.
+            wake = wakeNs;
+            if (wake == SCANNING) {
+                return;
+            }
+        }
+        if (deadlineNs < wake) {
             wakeRequested = true;
             party.wake();
         }
@@ -114,8 +154,12 @@ final class Watchdog {
     private void watch() {
         try {
             while (running) {
-                // Cleared before the scan: a request made from here on leads to another scan.
+                // Cleared before the scan: a request made from here on leads to another scan, or
+                // to an earlier wake (a request made during the scan; a cycle that started before
+                // these stores is seen by the scan).
                 wakeRequested = false;
+                requestedDuringScanNs = Long.MAX_VALUE;
+                wakeNs = SCANNING;
                 scans++;
                 long earliest = Long.MAX_VALUE;
                 try {
@@ -124,6 +168,11 @@ final class Watchdog {
                     faults.report(faultSource, fault);
                 }
                 wakeNs = earliest;
+                long requested = requestedDuringScanNs;
+                if (requested < earliest) {
+                    earliest = requested;
+                    wakeNs = earliest;
+                }
                 long targetNs = earliest == Long.MAX_VALUE ? Long.MAX_VALUE : earliest + 1;
                 while (running && !wakeRequested && clock.nanos() < targetNs) {
                     party.park(targetNs);

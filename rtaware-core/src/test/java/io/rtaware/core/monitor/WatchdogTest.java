@@ -1,0 +1,114 @@
+package io.rtaware.core.monitor;
+
+import static io.rtaware.core.Ms.ms;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import io.rtaware.core.time.ManualClock;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.AtomicReference;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The watchdog's wake-up protocol with a cycle that starts while it scans, on a manual clock:
+ * the cycle starts from inside the scan (the slots' callback, on the watchdog's own thread),
+ * right after the scan has read that cycle's slot, so the interleaving is the same on every run.
+ */
+class WatchdogTest {
+
+    private final ManualClock clock = new ManualClock();
+    private final ManualClockWaiter waiter = new ManualClockWaiter(clock);
+    private final List<String> faults = new CopyOnWriteArrayList<>();
+
+    /**
+     * The scan read the slot before the cycle was published there, and the cycle's
+     * {@link Watchdog#wakeFor} came before the scan had set its wake time: the scan's end takes
+     * the deadline into its wake time. Before, the request compared the deadline with the wake
+     * time of the scan before (here none yet: "about to look anyway") and was dropped, and the
+     * watchdog slept until another cycle asked (here: never), so a task hung in that cycle was
+     * reported only when it returned.
+     */
+    @Test
+    void aCycleThatStartsDuringAScanAfterItsSlotWasReadIsWatchedFromTheScansEnd() {
+        AtomicReference<Watchdog> watchdog = new AtomicReference<>();
+        AtomicLong publishedDeadlineNs = new AtomicLong(Long.MAX_VALUE);
+        AtomicInteger looks = new AtomicInteger();
+        Watchdog.Slots slots = new Watchdog.Slots() {
+            @Override
+            public int count() {
+                return 1;
+            }
+
+            @Override
+            public TaskRuntime taskAt(int slot) {
+                return null;
+            }
+
+            @Override
+            public long nextDeadlineNs(int slot, TaskRuntime task, long nowNs) {
+                long seen = publishedDeadlineNs.get();
+                if (looks.getAndIncrement() == 0) {
+                    // The slot has been read: a worker now starts a cycle in it, deadline at 30 ms.
+                    publishedDeadlineNs.set(ms(30));
+                    watchdog.get().wakeFor(ms(30));
+                }
+                return seen > nowNs ? seen : Long.MAX_VALUE;
+            }
+        };
+        Watchdog dog = new Watchdog(clock, waiter, new FrameworkFaults((source, error) -> faults.add(source)),
+                "test watchdog", slots);
+        watchdog.set(dog);
+        dog.prepare();
+        dog.start();
+
+        assertEquals(ms(30) + 1, waiter.awaitIdleNextWakeNs(),
+                "the first scan saw no cycle, yet the watchdog sleeps only until just after the one that started in it");
+        clock.advanceTo(ms(30) + 1);
+        assertEquals(Long.MAX_VALUE, waiter.awaitIdleNextWakeNs(), "the second scan found nothing more to watch");
+        assertEquals(2, dog.scans(), "one scan at the start, one just after the cycle's deadline");
+        dog.stopAndJoin();
+        assertEquals(List.of(), faults);
+    }
+
+    /**
+     * A request during a scan for a deadline later than the earliest the scan finds changes
+     * nothing: the watchdog wakes for the earlier one, and a cycle started during a scan costs
+     * no scan of its own.
+     */
+    @Test
+    void aLaterDeadlineAskedForDuringAScanLeavesTheWakeTimeAlone() {
+        AtomicReference<Watchdog> watchdog = new AtomicReference<>();
+        AtomicInteger looks = new AtomicInteger();
+        Watchdog.Slots slots = new Watchdog.Slots() {
+            @Override
+            public int count() {
+                return 1;
+            }
+
+            @Override
+            public TaskRuntime taskAt(int slot) {
+                return null;
+            }
+
+            @Override
+            public long nextDeadlineNs(int slot, TaskRuntime task, long nowNs) {
+                if (looks.getAndIncrement() == 0) {
+                    watchdog.get().wakeFor(ms(50));
+                }
+                return ms(20) > nowNs ? ms(20) : Long.MAX_VALUE;
+            }
+        };
+        Watchdog dog = new Watchdog(clock, waiter, new FrameworkFaults((source, error) -> faults.add(source)),
+                "test watchdog", slots);
+        watchdog.set(dog);
+        dog.prepare();
+        dog.start();
+
+        assertEquals(ms(20) + 1, waiter.awaitIdleNextWakeNs(), "the scan's own earliest deadline, 20 ms");
+        assertEquals(1, dog.scans());
+        dog.stopAndJoin();
+        assertEquals(List.of(), faults);
+    }
+}
