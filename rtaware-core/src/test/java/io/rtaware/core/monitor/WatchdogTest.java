@@ -32,36 +32,16 @@ class WatchdogTest {
      */
     @Test
     void aCycleThatStartsDuringAScanAfterItsSlotWasReadIsWatchedFromTheScansEnd() {
-        AtomicReference<Watchdog> watchdog = new AtomicReference<>();
         AtomicLong publishedDeadlineNs = new AtomicLong(Long.MAX_VALUE);
-        AtomicInteger looks = new AtomicInteger();
-        Watchdog.Slots slots = new Watchdog.Slots() {
-            @Override
-            public int count() {
-                return 1;
+        Watchdog dog = startOverOneSlot((watchdog, looksBefore, nowNs) -> {
+            long seen = publishedDeadlineNs.get();
+            if (looksBefore == 0) {
+                // The slot has been read: a worker now starts a cycle in it, deadline at 30 ms.
+                publishedDeadlineNs.set(ms(30));
+                watchdog.wakeFor(ms(30));
             }
-
-            @Override
-            public TaskRuntime taskAt(int slot) {
-                return null;
-            }
-
-            @Override
-            public long nextDeadlineNs(int slot, TaskRuntime task, long nowNs) {
-                long seen = publishedDeadlineNs.get();
-                if (looks.getAndIncrement() == 0) {
-                    // The slot has been read: a worker now starts a cycle in it, deadline at 30 ms.
-                    publishedDeadlineNs.set(ms(30));
-                    watchdog.get().wakeFor(ms(30));
-                }
-                return seen > nowNs ? seen : Long.MAX_VALUE;
-            }
-        };
-        Watchdog dog = new Watchdog(clock, waiter, new FrameworkFaults((source, error) -> faults.add(source)),
-                "test watchdog", slots);
-        watchdog.set(dog);
-        dog.prepare();
-        dog.start();
+            return seen > nowNs ? seen : Long.MAX_VALUE;
+        });
 
         assertEquals(ms(30) + 1, waiter.awaitIdleNextWakeNs(),
                 "the first scan saw no cycle, yet the watchdog sleeps only until just after the one that started in it");
@@ -79,7 +59,27 @@ class WatchdogTest {
      */
     @Test
     void aLaterDeadlineAskedForDuringAScanLeavesTheWakeTimeAlone() {
-        AtomicReference<Watchdog> watchdog = new AtomicReference<>();
+        Watchdog dog = startOverOneSlot((watchdog, looksBefore, nowNs) -> {
+            if (looksBefore == 0) {
+                watchdog.wakeFor(ms(50));
+            }
+            return ms(20) > nowNs ? ms(20) : Long.MAX_VALUE;
+        });
+
+        assertEquals(ms(20) + 1, waiter.awaitIdleNextWakeNs(), "the scan's own earliest deadline, 20 ms");
+        assertEquals(1, dog.scans());
+        dog.stopAndJoin();
+        assertEquals(List.of(), faults);
+    }
+
+    /** What a look at the one slot returns (and does), on the watchdog's thread. */
+    private interface SlotLook {
+        long nextDeadlineNs(Watchdog watchdog, int looksBefore, long nowNs);
+    }
+
+    /** Starts a watchdog over one slot that never holds a task and whose deadline {@code look} gives. */
+    private Watchdog startOverOneSlot(SlotLook look) {
+        AtomicReference<Watchdog> self = new AtomicReference<>();
         AtomicInteger looks = new AtomicInteger();
         Watchdog.Slots slots = new Watchdog.Slots() {
             @Override
@@ -94,21 +94,14 @@ class WatchdogTest {
 
             @Override
             public long nextDeadlineNs(int slot, TaskRuntime task, long nowNs) {
-                if (looks.getAndIncrement() == 0) {
-                    watchdog.get().wakeFor(ms(50));
-                }
-                return ms(20) > nowNs ? ms(20) : Long.MAX_VALUE;
+                return look.nextDeadlineNs(self.get(), looks.getAndIncrement(), nowNs);
             }
         };
         Watchdog dog = new Watchdog(clock, waiter, new FrameworkFaults((source, error) -> faults.add(source)),
                 "test watchdog", slots);
-        watchdog.set(dog);
+        self.set(dog);
         dog.prepare();
         dog.start();
-
-        assertEquals(ms(20) + 1, waiter.awaitIdleNextWakeNs(), "the scan's own earliest deadline, 20 ms");
-        assertEquals(1, dog.scans());
-        dog.stopAndJoin();
-        assertEquals(List.of(), faults);
+        return dog;
     }
 }
