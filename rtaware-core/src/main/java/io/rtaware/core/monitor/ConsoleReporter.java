@@ -230,6 +230,12 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         EVENT_BITS.getAndBitwiseOr(eventBits, i >>> 6, 1L << i);
     }
 
+    /** @return a bit for every task in word {@code word} of {@link #eventBits} (the last word may be partly used) */
+    private long taskBitsOf(int word) {
+        int tasksInLastWord = taskByIndex.length & 63;
+        return word == eventBits.length - 1 && tasksInLastWord != 0 ? (1L << tasksInLastWord) - 1 : -1L;
+    }
+
     private synchronized void printDue(boolean force) {
         long wallNs = wallClock.nanos();
         if (force || budgetSecondStartNs == Long.MIN_VALUE || wallNs - budgetSecondStartNs >= LINE_INTERVAL_NS) {
@@ -241,7 +247,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
             long bits = (long) EVENT_BITS.getAndSet(eventBits, word, 0L) | heldBits[word];
             heldBits[word] = 0;
             if (force) {
-                bits = word == eventBits.length - 1 && (taskByIndex.length & 63) != 0 ? (1L << (taskByIndex.length & 63)) - 1 : -1L;
+                bits = taskBitsOf(word);
             }
             while (bits != 0) {
                 int i = (word << 6) + Long.numberOfTrailingZeros(bits);
