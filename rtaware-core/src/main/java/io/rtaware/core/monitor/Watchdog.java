@@ -167,6 +167,7 @@ final class Watchdog {
                 } catch (Throwable fault) {
                     faults.report(faultSource, fault);
                 }
+                // The wake time is written before the requests are read (see wakeFor).
                 wakeNs = earliest;
                 long requested = requestedDuringScanNs;
                 if (requested < earliest) {
