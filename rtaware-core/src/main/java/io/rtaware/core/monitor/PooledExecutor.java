@@ -91,15 +91,29 @@ final class PooledExecutor implements Executor {
     private final Thread[] workers;
     /** Each worker's handle in the waiter; set before the workers start. */
     private final ClockWaiter.Party[] workerParties;
-    /** What each worker runs now (null: nothing); the watchdog scans these. */
+    /**
+     * What each worker runs now (null: nothing), at {@link #refSlot}; the watchdog scans these.
+     * Written twice a release by its worker, so each worker's entry has cache lines of its own.
+     */
     private final AtomicReferenceArray<TaskRuntime> current;
     /**
      * Per worker: the earliest deadline among the cycles of its batch not yet ended (the running
      * one included), {@link Long#MAX_VALUE} between batches. The watchdog sleeps until the
      * earliest of these, so a worker starting the next cycle of its batch finds it already due
      * to wake in time and does not wake it again: one wake per batch deadline, not one per cycle.
+     * At {@link #longSlot}: each worker's entry has cache lines of its own.
      */
     private final AtomicLongArray batchDeadlineNs;
+
+    /**
+     * Entries between two workers' in {@link #batchDeadlineNs} and {@link #current}, which the
+     * workers write every release: 128 bytes (two cache lines, which the adjacent-line prefetcher
+     * fetches together), so that no two workers write one line. Packed, both workers' entries
+     * shared a line that moved between the cores at every release (false sharing).
+     */
+    private static final int LONG_STRIDE = 128 / Long.BYTES;
+    /** As {@link #LONG_STRIDE}, for references (4 bytes when compressed). */
+    private static final int REF_STRIDE = 128 / Integer.BYTES;
 
     /** Each worker's share of the pooled tasks, by worker; a task's home is {@link #homeOf}. */
     private final Shard[] shards;
@@ -150,10 +164,12 @@ final class PooledExecutor implements Executor {
         this.watchdog = new Watchdog(clock, waiter, faults, "pool watchdog", new WorkerSlots());
         this.workers = new Thread[workerCount];
         this.workerParties = new ClockWaiter.Party[workerCount];
-        this.current = new AtomicReferenceArray<>(workerCount);
-        this.batchDeadlineNs = new AtomicLongArray(workerCount);
+        // One stride of padding before the first worker's entry and after the last's: the
+        // array's header and the objects beside it are not written by another core either.
+        this.current = new AtomicReferenceArray<>(refSlot(workerCount) + REF_STRIDE);
+        this.batchDeadlineNs = new AtomicLongArray(longSlot(workerCount) + LONG_STRIDE);
         for (int w = 0; w < workerCount; w++) {
-            batchDeadlineNs.set(w, Long.MAX_VALUE);
+            batchDeadlineNs.set(longSlot(w), Long.MAX_VALUE);
         }
         this.homeOf = new int[pooled.length];
         int[] sizes = new int[workerCount];
@@ -166,6 +182,16 @@ final class PooledExecutor implements Executor {
             shards[w] = new Shard(sizes[w]);
         }
         this.parkedUntil = new AtomicLongArray(workerCount);
+    }
+
+    /** @return the index of a worker's entry in {@link #batchDeadlineNs} */
+    private static int longSlot(int worker) {
+        return (worker + 1) * LONG_STRIDE;
+    }
+
+    /** @return the index of a worker's entry in {@link #current} */
+    private static int refSlot(int worker) {
+        return (worker + 1) * REF_STRIDE;
     }
 
     /**
@@ -344,11 +370,16 @@ final class PooledExecutor implements Executor {
                 earliest = Math.min(earliest, pooled[batch[i]].nextDeadlineNs());
                 deadlinesFrom[i] = earliest;
             }
+            int deadlineSlot = longSlot(index);
+            long published = Long.MAX_VALUE;
             for (int i = 0; i < claimed && running; i++) {
-                batchDeadlineNs.setRelease(index, deadlinesFrom[i]);
+                if (deadlinesFrom[i] != published) {
+                    published = deadlinesFrom[i];
+                    batchDeadlineNs.setRelease(deadlineSlot, published);
+                }
                 runCycle(index, pooled[batch[i]]);
             }
-            batchDeadlineNs.setRelease(index, Long.MAX_VALUE);
+            batchDeadlineNs.setRelease(deadlineSlot, Long.MAX_VALUE);
         }
 
         /**
@@ -499,12 +530,13 @@ final class PooledExecutor implements Executor {
     }
 
     private void runCycle(int worker, TaskRuntime runtime) {
-        current.set(worker, runtime);
+        int slot = refSlot(worker);
+        current.set(slot, runtime);
         try {
             Executor.runCycle(runtime, clock, faults);
         } finally {
             // An ordered store: a watchdog that still sees the finished task finds its token done.
-            current.setRelease(worker, null);
+            current.setRelease(slot, null);
         }
     }
 
@@ -520,7 +552,7 @@ final class PooledExecutor implements Executor {
 
         @Override
         public TaskRuntime taskAt(int worker) {
-            return current.get(worker);
+            return current.get(refSlot(worker));
         }
 
         @Override
@@ -532,7 +564,7 @@ final class PooledExecutor implements Executor {
                     earliest = deadline;
                 }
             }
-            long batchDeadline = batchDeadlineNs.getAcquire(worker);
+            long batchDeadline = batchDeadlineNs.getAcquire(longSlot(worker));
             return batchDeadline > nowNs && batchDeadline < earliest ? batchDeadline : earliest;
         }
     }
