@@ -56,9 +56,9 @@ class LimitsCliTest {
         long needed = MemoryBudget.times(10_000, io.rtaware.core.monitor.Monitor.estimatedHeapBytesPerTask());
         new MemoryBudget(HEAP_512_MB, 64L * 1024 * 1024).require(needed, "--tasks 10000");
         CliRun.of(HEAP_512, "bench", "--compare", "--executor", "pooled", "--tasks", "10000", "--duration", "1s")
-                .assertOneLineUserError("10000 task(s) (43 KB of monitor and comparison bookkeeping per task)");
+                .assertOneLineUserError("10000 task(s) (44 KB of monitor and comparison bookkeeping per task)");
         CliRun.of(HEAP_512, "bench", "--sweep-tasks", "10,10000", "--duration", "1s")
-                .assertOneLineUserError("10000 task(s) (43 KB of monitor and comparison bookkeeping per task)");
+                .assertOneLineUserError("10000 task(s) (44 KB of monitor and comparison bookkeeping per task)");
     }
 
     /**

@@ -502,7 +502,8 @@ public final class BenchCommand implements Callable<Integer> {
             return EXIT_ENDED_EARLY;
         }
         out.printf(Locale.ROOT, "steady state (last 2/3 of the run): %d bytes allocated on %d framework thread(s)"
-                        + " (tasks + watchdog) over %d releases = %.2f B/release%n", allocatedBytes,
+                        + " (task threads or pool workers, watchdog, the pool's statistics recorder)"
+                        + " over %d releases = %.2f B/release%n", allocatedBytes,
                 allocation.threads(), releases, releases == 0 ? 0.0 : (double) allocatedBytes / releases);
         if (failOnAlloc && allocatedBytes != 0) {
             System.err.println("rtaware: --fail-on-alloc: the framework allocated " + allocatedBytes

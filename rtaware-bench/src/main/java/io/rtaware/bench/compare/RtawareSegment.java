@@ -15,6 +15,7 @@ import io.rtaware.core.time.MonotonicSleeper;
 import io.rtaware.core.time.SystemClock;
 import java.util.List;
 import java.util.stream.LongStream;
+import java.util.stream.Stream;
 
 /**
  * rtaware on one of its executors (threaded: {@code rtaware}; pooled: {@code rtaware-pooled}): a
@@ -70,15 +71,16 @@ final class RtawareSegment implements SegmentExecutor {
     }
 
     /**
-     * Finds the watchdog by name among the live threads with {@link Thread#enumerate}, not
+     * Finds the watchdog, the pool's workers and its statistics recorder by name among the live
+     * threads with {@link Thread#enumerate}, not
      * {@code Thread.getAllStackTraces()}: that one stops every thread at a safepoint and walks
      * all their stacks (1000 task threads: 28 MB and a stall inside the measured window, seen
      * in issue 16's profile).
      */
     @Override
     public long[] helperThreadIds() {
-        return LongStream.concat(LongStream.of(LiveThreads.idsNamed(ThreadNames.WATCHDOG)),
-                LongStream.of(LiveThreads.idsNamed(ThreadNames.POOL_WORKER_PREFIX))).toArray();
+        return Stream.of(ThreadNames.WATCHDOG, ThreadNames.POOL_WORKER_PREFIX, ThreadNames.STATISTICS)
+                .map(LiveThreads::idsNamed).flatMapToLong(LongStream::of).toArray();
     }
 
     @Override

@@ -2,8 +2,8 @@ package io.rtaware.core.agent;
 
 /**
  * The names of rtaware's own threads that something outside the thread's module looks for, in
- * one place: the task threads, pool workers and watchdog, which make up the per-release path
- * whose allocation {@link io.rtaware.core.testing.ThreadAllocation#ofFrameworkThreads()} counts
+ * one place: the task threads, pool workers, watchdog and the pool's statistics recorder, which
+ * make up the per-release path whose allocation {@link io.rtaware.core.testing.ThreadAllocation#ofFrameworkThreads()} counts
  * and the bench watches, and the observers off that path, which it leaves out (the console
  * printer, the stop helpers, the recorder's writer in rtaware-record, the live view's
  * publisher and HTTP threads in rtaware-live). Each thread is named from here, so a rename cannot split a thread
@@ -17,6 +17,8 @@ public final class ThreadNames {
     public static final String WATCHDOG = PREFIX + "monitor";
     /** The pool workers' prefix, followed by the worker's number from 0. */
     public static final String POOL_WORKER_PREFIX = PREFIX + "pool-";
+    /** The pool's statistics recorder, which records the pooled tasks' values into their histograms. */
+    public static final String STATISTICS = PREFIX + "statistics";
     /** The console reporter's printer. */
     public static final String CONSOLE = PREFIX + "console";
     /** The shutdown hook that stops a monitor when the JVM exits. */

@@ -46,28 +46,34 @@ final class CycleStatistics {
     static final int RECENT_EXEC_CYCLES = 256;
     /**
      * Lateness and execution times wait in small rings and go into their histograms this many at
-     * a time: with thousands of tasks a histogram is out of the caches at every cycle, and one
-     * touch per batch instead of one per cycle is the saving (issue 16's profiles at 10 000
-     * tasks: recording into the two histograms took a third to a half of the workers' samples,
-     * most of them the first read of the histogram's minimum and maximum). Execution times wait
-     * in the ring of recent ones (written anyway for the live p99), lateness in the task's this
-     * many waiting values of the {@link StatisticsTable}. Divides {@link #RECENT_EXEC_CYCLES}, so a
-     * waiting value is never overwritten. Each group of {@link StatisticsTable#TASKS_PER_LINE}
-     * tasks flushes at its own phase of the batch ({@link #flushPhaseOf}): tasks
-     * released together would otherwise all record a whole batch in the same cycle, and with
-     * 10 000 tasks in phase every 16th period took 7.5 ms to release instead of 2.7 ms (issue
-     * 16: the longest release of each period, period by period, showed the spikes 16 periods
-     * apart, and they set every task's p99).
+     * a time when the task's cycle records them: with thousands of tasks a histogram is out of
+     * the caches at every cycle, and one touch per batch instead of one per cycle is the saving
+     * (issue 16's profiles at 10 000 tasks: recording into the two histograms took a third to a
+     * half of the workers' samples, most of them the first read of the histogram's minimum and
+     * maximum). Execution times wait in the ring of recent ones (written anyway for the live
+     * p99), lateness in the task's {@link #WAITING_CAPACITY} waiting values of the
+     * {@link StatisticsTable}. Divides both. Each group of {@link StatisticsTable#TASKS_PER_LINE}
+     * tasks flushes at its own phase of the batch ({@link #flushPhaseOf}): tasks released
+     * together would otherwise all record a whole batch in the same cycle, and with 10 000 tasks
+     * in phase every 16th period took 7.5 ms to release instead of 2.7 ms (issue 16: the longest
+     * release of each period, period by period, showed the spikes 16 periods apart, and they set
+     * every task's p99). The pool's tasks are recorded by a {@link StatisticsRecorder} instead.
      */
     static final int RECORD_BATCH = 16;
+    /**
+     * Lateness values that may wait per task: room for a {@link StatisticsRecorder} to fall
+     * {@link StatisticsTable#RECORD_WHEN_WAITING} cycles behind before the cycle records them
+     * itself, and one batch more.
+     */
+    static final int WAITING_CAPACITY = 64;
     /**
      * Heap besides HdrHistogram's footprint estimate of the histograms and the task's column of
      * its {@link StatisticsTable}: this object, what the histograms' objects take beyond that
      * estimate (80 bytes each), and the table object and array headers of statistics with a
-     * table of their own (about 450 bytes, which the tasks of a monitor share), as
+     * table of their own (about 470 bytes, which the tasks of a monitor share), as
      * {@code MonitorFootprintTest} measures them with the JVM's allocation counter.
      */
-    private static final long FIELDS_BYTES = 624;
+    private static final long FIELDS_BYTES = 640;
 
     private static final VarHandle LONGS = StatisticsTable.LONGS;
 
@@ -90,8 +96,8 @@ final class CycleStatistics {
     /**
      * Statistics of their own (a table of one task).
      *
-     * @param spreadIndex the batches of values go into the histograms when the count noted is
-     *     {@code spreadIndex} modulo {@link #RECORD_BATCH} (the first batch is then shorter)
+     * @param spreadIndex the batches of values go into the histograms when the count of cycles
+     *     ended is {@code spreadIndex} modulo {@link #RECORD_BATCH} (the first batch is then shorter)
      */
     CycleStatistics(int spreadIndex) {
         this(new StatisticsTable(1), 0, spreadIndex);
@@ -103,8 +109,8 @@ final class CycleStatistics {
      * @param table the table of every task of the monitor
      * @param slot the task's column
      * @param spreadIndex spreads the batches of many tasks over the cycles: the task's waiting
-     *     values go into its histograms when the count noted is {@code spreadIndex} modulo
-     *     {@link #RECORD_BATCH} ({@link #flushPhaseOf} of the task's index serves)
+     *     values go into its histograms when the count of cycles ended is {@code spreadIndex}
+     *     modulo {@link #RECORD_BATCH} ({@link #flushPhaseOf} of the task's index serves)
      */
     CycleStatistics(StatisticsTable table, int slot, int spreadIndex) {
         this.table = table;
@@ -143,7 +149,7 @@ final class CycleStatistics {
      */
     void released(long latenessNs) {
         if (table.released(slot, latenessNs)) {
-            recordLatenessWaiting();
+            table.tryRecordWaiting(slot);
         }
     }
 
@@ -153,51 +159,20 @@ final class CycleStatistics {
      */
     void cycleEnded(long execNs) {
         if (table.cycleEnded(slot, execNs)) {
-            recordExecWaiting();
+            table.tryRecordWaiting(slot);
         }
     }
 
-    /** @return lateness values noted but not yet in their histogram (cycle's thread) */
+    /** @return lateness values noted but not yet in their histogram */
     long latenessWaiting() {
-        return table.latenessCount[slot] - table.latenessRecordedCount[slot];
+        return (long) LONGS.getAcquire(table.latenessCount, slot)
+                - (long) LONGS.getAcquire(table.latenessRecordedCount, slot);
     }
 
-    /** @return execution times noted but not yet in their histogram (cycle's thread) */
+    /** @return execution times noted but not yet in their histogram */
     long execWaiting() {
-        return table.recentExecCount[slot] - table.execRecordedCount[slot];
-    }
-
-    /**
-     * Records the lateness values waiting in the table into their histogram (the cycle's thread,
-     * when {@link StatisticsTable#released} says they are due, or a reader once the cycles have
-     * stopped).
-     */
-    void recordLatenessWaiting() {
-        StatisticsTable t = table;
-        long count = t.latenessCount[slot];
-        AbstractHistogram target = t.latenessHistograms[slot];
-        for (long n = t.latenessRecordedCount[slot]; n < count; n++) {
-            target = record(target, t.pendingLatenessNs[(int) (n % RECORD_BATCH) * t.size + slot]);
-        }
-        t.latenessHistograms[slot] = target;
-        t.latenessRecordedCount[slot] = count;
-    }
-
-    /**
-     * Records the execution times waiting in the task's ring into their histogram (the cycle's
-     * thread, when {@link StatisticsTable#cycleEnded} says they are due, or a reader once the
-     * cycles have stopped).
-     */
-    void recordExecWaiting() {
-        StatisticsTable t = table;
-        long count = t.recentExecCount[slot];
-        int ring = slot * RECENT_EXEC_CYCLES;
-        AbstractHistogram target = t.execHistograms[slot];
-        for (long n = t.execRecordedCount[slot]; n < count; n++) {
-            target = record(target, t.recentExecNs[ring + (int) (n % RECENT_EXEC_CYCLES)]);
-        }
-        t.execHistograms[slot] = target;
-        t.execRecordedCount[slot] = count;
+        return (long) LONGS.getAcquire(table.recentExecCount, slot)
+                - (long) LONGS.getAcquire(table.execRecordedCount, slot);
     }
 
     /** {@code count} releases were skipped, each a release and a miss (cycle's thread). */
@@ -290,13 +265,13 @@ final class CycleStatistics {
 
     /** @return execution times over the run; call only after the task's cycles have stopped */
     Percentiles execUs() {
-        recordExecWaiting();
+        table.recordWaiting(slot);
         return Percentiles.ofNanos(table.execHistograms[slot], table.execMaxNs[slot], table.execSumNs[slot]);
     }
 
     /** @return lateness over the run; call only after the task's cycles have stopped */
     Percentiles latenessUs() {
-        recordLatenessWaiting();
+        table.recordWaiting(slot);
         return Percentiles.ofNanos(table.latenessHistograms[slot], table.latenessMaxNs[slot], table.latenessSumNs[slot]);
     }
 

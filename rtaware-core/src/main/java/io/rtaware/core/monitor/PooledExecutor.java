@@ -47,6 +47,11 @@ import java.util.concurrent.locks.LockSupport;
  * looks at the cycles the workers run now and the rest of their batches (one slot each per
  * worker), not at every task.
  *
+ * <p>The pooled tasks' lateness and execution times are recorded into their histograms by a
+ * {@link StatisticsRecorder} thread, which a worker wakes when it has run releases and finds
+ * nothing more due: a drain only notes the values (the recording was the largest cost of a drain
+ * of 10 000 in-phase releases that a release does not need; docs/performance.md).
+ *
  * <p>Each worker, the pool's watchdog and the inner executor's threads register with the one
  * {@link ClockWaiter} and wait and are woken through the {@link ClockWaiter.Party} they get.
  * Workers are made by a
@@ -88,6 +93,8 @@ final class PooledExecutor implements Executor {
     /** The tasks with a thread of their own; null if there are none. */
     private final ThreadedExecutor dedicated;
     private final Watchdog watchdog;
+    /** Records the pooled tasks' values into their histograms after the drains; null without pooled tasks. */
+    private final StatisticsRecorder recorder;
     private final Thread[] workers;
     /** Each worker's handle in the waiter; set before the workers start. */
     private final ClockWaiter.Party[] workerParties;
@@ -162,6 +169,7 @@ final class PooledExecutor implements Executor {
         this.dedicated = own.isEmpty() ? null
                 : new ThreadedExecutor(clock, waiter, own, stopAllRequest, threadSetup, faults);
         this.watchdog = new Watchdog(clock, waiter, faults, "pool watchdog", new WorkerSlots());
+        this.recorder = pooled.length == 0 ? null : new StatisticsRecorder(pooled, faults);
         this.workers = new Thread[workerCount];
         this.workerParties = new ClockWaiter.Party[workerCount];
         // One stride of padding before the first worker's entry and after the last's: the
@@ -270,6 +278,9 @@ final class PooledExecutor implements Executor {
             shard.publishEarliest();
         }
         watchdog.start();
+        if (recorder != null) {
+            recorder.start();
+        }
         go.countDown();
         return startNs;
     }
@@ -326,6 +337,8 @@ final class PooledExecutor implements Executor {
         private final long[] deadlinesFrom = new long[MAX_BATCH];
         private Shard from;
         private int claimed;
+        /** Whether it has run a batch since it last went to park: the recorder then has values to record. */
+        private boolean ranSinceParking;
 
         Worker(int index) {
             this.index = index;
@@ -361,9 +374,14 @@ final class PooledExecutor implements Executor {
                 }
             }
             if (claimed == 0) {
+                if (ranSinceParking) {
+                    ranSinceParking = false;
+                    recorder.wake();
+                }
                 parkUntilDue(index, now);
                 return;
             }
+            ranSinceParking = true;
             wakeParkedWorker();
             long earliest = Long.MAX_VALUE;
             for (int i = claimed - 1; i >= 0; i--) {
@@ -610,6 +628,9 @@ final class PooledExecutor implements Executor {
             Watchdog.joinOrInterrupt(worker, Watchdog.JOIN_TIMEOUT_MS, faults);
         }
         watchdog.stopAndJoin();
+        if (recorder != null) {
+            recorder.stopAndJoin();
+        }
         waiter.close();
     }
 }

@@ -18,18 +18,26 @@ import org.HdrHistogram.AbstractHistogram;
  * changed. Tasks run by different threads at once may share a line, which then moves between
  * cores: no effect was measurable with 1000 thread-per-task tasks at 100 Hz.
  *
- * <p>The lateness values that wait to be recorded into their histogram
- * ({@link CycleStatistics#RECORD_BATCH} per task) are laid out by position in the batch first,
- * then by task: the n-th value of task i is at {@code (n % RECORD_BATCH) * size + i}, so tasks
- * released together write neighbouring words. Tasks flush their batches in groups of
+ * <p>A cycle notes its lateness and execution time here ({@link #released}, {@link #cycleEnded});
+ * the values wait, up to {@link CycleStatistics#WAITING_CAPACITY} per task, to be recorded into
+ * the task's two histograms. Who records them: the cycle itself, every
+ * {@link CycleStatistics#RECORD_BATCH} cycles at the task's phase ({@link #flushPhase}), or, for
+ * a task {@link #recordedByRecorder recorded by a recorder}, a {@link StatisticsRecorder} thread
+ * after the pool's drains; the cycle then records only if the recorder falls
+ * {@link #RECORD_WHEN_WAITING} values behind, and waits for it only when the ring is full. A
+ * task's histograms have one writer at a time: whoever holds the task's claim in
+ * {@link #recording} ({@link #tryRecordWaiting}, {@link #recordWaiting}); the claim's
+ * compare-and-set and release store order the histograms between the threads that take it.
+ *
+ * <p>The lateness values that wait are laid out by position in the ring first, then by task:
+ * the n-th value of task i is at {@code (n % WAITING_CAPACITY) * size + i}, so tasks released
+ * together write neighbouring words. Tasks flush their batches in groups of
  * {@link #TASKS_PER_LINE} neighbours ({@link CycleStatistics#flushPhaseOf}), which then read
  * the same lines one after the other.
  *
- * <p>A task's cycle notes its release and its end here ({@link #released}, {@link #cycleEnded})
- * without touching its {@link CycleStatistics}, which it needs only when a batch of values goes
- * into the histograms; everything else reads and writes through {@link CycleStatistics}, under
- * the threading rules stated there (one writer per task for most, ordered stores and acquiring
- * reads for the live counters). Sized once, at construction; nothing is allocated afterwards.
+ * <p>Everything else reads and writes through {@link CycleStatistics}, under the threading rules
+ * stated there (one writer per task for most, ordered stores and acquiring reads for the live
+ * counters). Sized once, at construction; nothing is allocated afterwards.
  *
  * <p>The table builds every task's two histograms (27 KB a task) at construction, before the
  * monitor builds its tasks' runtimes: the few small objects a release touches (the runtime, its
@@ -46,7 +54,16 @@ final class StatisticsTable {
      * Arrays with one element per task: every one below but the waiting lateness values and the
      * rings (the histograms' references counted as longs).
      */
-    static final int ARRAYS_PER_TASK = 19;
+    static final int ARRAYS_PER_TASK = 20;
+    /**
+     * A cycle records its task's waiting values itself once this many wait, though a
+     * {@link StatisticsRecorder} records them: the recorder has fallen behind (it runs at normal
+     * priority beside workers that may be real-time, or the workers never rest), and the ring
+     * must not fill. {@link CycleStatistics#WAITING_CAPACITY} minus one batch.
+     */
+    static final int RECORD_WHEN_WAITING = CycleStatistics.WAITING_CAPACITY - CycleStatistics.RECORD_BATCH;
+    /** {@link #flushPhase} of a task whose values a {@link StatisticsRecorder} records: no phase. */
+    private static final int NO_PHASE = -1;
 
     // Ordered stores and atomic adds on the arrays. Invoked on this constant directly with the
     // exact types ((long) LONGS.getAndAdd(array, int, long)): a VarHandle passed as an argument
@@ -54,6 +71,8 @@ final class StatisticsTable {
     // state, e.g. the first miss), its access check allocated strings (seen by the Epsilon guard,
     // JFR stack VarHandle.checkExactAccessMode <- missed()).
     static final VarHandle LONGS = MethodHandles.arrayElementVarHandle(long[].class);
+    /** Compare-and-set and release stores on {@link #recording}. */
+    private static final VarHandle INTS = MethodHandles.arrayElementVarHandle(int[].class);
 
     /** Tasks (columns). */
     final int size;
@@ -71,7 +90,7 @@ final class StatisticsTable {
     final long[] latenessCount;
     /** Lateness values recorded into the task's histogram so far (the rest wait in {@link #pendingLatenessNs}). */
     final long[] latenessRecordedCount;
-    /** Lateness values not yet in their histogram: the n-th of task i at {@code (n % RECORD_BATCH) * size + i}. */
+    /** Lateness values not yet in their histogram: the n-th of task i at {@code (n % WAITING_CAPACITY) * size + i}. */
     final long[] pendingLatenessNs;
     final long[] execMaxNs;
     final double[] execSumNs;
@@ -85,10 +104,13 @@ final class StatisticsTable {
      */
     final long[] recentExecNs;
     /**
-     * Per task: its waiting values go into its histograms when the count noted is this modulo
-     * {@link CycleStatistics#RECORD_BATCH}.
+     * Per task: its cycle records its waiting values when the count of cycles ended is this
+     * modulo {@link CycleStatistics#RECORD_BATCH}; {@link #NO_PHASE} when a
+     * {@link StatisticsRecorder} records them.
      */
     final int[] flushPhase;
+    /** Per task: 1 while a thread records its waiting values into its histograms, else 0. */
+    private final int[] recording;
     /** Each task's histogram of lateness values, ns (written on a flush; a 64-bit copy replaces it when it fills). */
     final AbstractHistogram[] latenessHistograms;
     /** Each task's histogram of execution times, ns (as {@link #latenessHistograms}). */
@@ -114,13 +136,14 @@ final class StatisticsTable {
         latenessSumNs = new double[size];
         latenessCount = new long[size];
         latenessRecordedCount = new long[size];
-        pendingLatenessNs = new long[Math.multiplyExact(CycleStatistics.RECORD_BATCH, size)];
+        pendingLatenessNs = new long[Math.multiplyExact(CycleStatistics.WAITING_CAPACITY, size)];
         execMaxNs = new long[size];
         execSumNs = new double[size];
         recentExecCount = new long[size];
         execRecordedCount = new long[size];
         recentExecNs = new long[Math.multiplyExact(CycleStatistics.RECENT_EXEC_CYCLES, size)];
         flushPhase = new int[size];
+        recording = new int[size];
         latenessHistograms = new AbstractHistogram[size];
         execHistograms = new AbstractHistogram[size];
         for (int i = 0; i < size; i++) {
@@ -131,12 +154,15 @@ final class StatisticsTable {
 
     /**
      * Notes that a release of task {@code i} came due and its cycle starts now (the task's cycle's
-     * thread): counts it and keeps its lateness waiting for the histogram.
+     * thread): counts it and keeps its lateness waiting for the histogram. If the task's ring of
+     * waiting values is full (a {@link StatisticsRecorder} that has not run for
+     * {@link CycleStatistics#WAITING_CAPACITY} cycles and holds the task's claim), waits for the
+     * values to be recorded first: none is lost.
      *
      * @param i the task
      * @param latenessNs how late the cycle starts
-     * @return whether the task's waiting lateness values are now due to go into its histogram
-     *     ({@link CycleStatistics#recordLatenessWaiting})
+     * @return whether the cycle should record the task's waiting values now
+     *     ({@link #tryRecordWaiting}): its recorder has fallen behind
      */
     boolean released(int i, long latenessNs) {
         LONGS.setRelease(releases, i, releases[i] + 1);
@@ -146,19 +172,24 @@ final class StatisticsTable {
             latenessMaxNs[i] = latenessNs;
         }
         long n = latenessCount[i];
-        pendingLatenessNs[(int) (n % CycleStatistics.RECORD_BATCH) * size + i] = latenessNs;
-        latenessCount[i] = n + 1;
-        return (n + 1) % CycleStatistics.RECORD_BATCH == flushPhase[i];
+        long waiting = n - (long) LONGS.getAcquire(latenessRecordedCount, i);
+        if (waiting >= CycleStatistics.WAITING_CAPACITY) {
+            recordWaiting(i);
+            waiting = 0;
+        }
+        pendingLatenessNs[(int) (n % CycleStatistics.WAITING_CAPACITY) * size + i] = latenessNs;
+        LONGS.setRelease(latenessCount, i, n + 1);
+        return waiting + 1 >= RECORD_WHEN_WAITING;
     }
 
     /**
      * Notes that a cycle of task {@code i} ended (the task's cycle's thread): keeps its execution
-     * time in the task's ring of recent ones.
+     * time in the task's ring of recent ones, which is also where it waits for the histogram.
      *
      * @param i the task
      * @param execNs how long the cycle took
-     * @return whether the task's waiting execution times are now due to go into its histogram
-     *     ({@link CycleStatistics#recordExecWaiting})
+     * @return whether the cycle should record the task's waiting values now
+     *     ({@link #tryRecordWaiting}): its phase has come, or its recorder has fallen behind
      */
     boolean cycleEnded(int i, long execNs) {
         execSumNs[i] += execNs;
@@ -166,15 +197,84 @@ final class StatisticsTable {
             execMaxNs[i] = execNs;
         }
         long n = recentExecCount[i];
+        long waiting = n - (long) LONGS.getAcquire(execRecordedCount, i);
+        if (waiting >= CycleStatistics.RECENT_EXEC_CYCLES) {
+            recordWaiting(i);
+            waiting = 0;
+        }
         int ring = i * CycleStatistics.RECENT_EXEC_CYCLES;
         LONGS.setRelease(recentExecNs, ring + (int) (n % CycleStatistics.RECENT_EXEC_CYCLES), execNs);
         LONGS.setRelease(recentExecCount, i, n + 1);
-        return (n + 1) % CycleStatistics.RECORD_BATCH == flushPhase[i];
+        return (n + 1) % CycleStatistics.RECORD_BATCH == flushPhase[i] || waiting + 1 >= RECORD_WHEN_WAITING;
+    }
+
+    /**
+     * From now on a {@link StatisticsRecorder} records task {@code i}'s waiting values: its cycle
+     * no longer does at its phase (before the task's first cycle).
+     */
+    void recordedByRecorder(int i) {
+        flushPhase[i] = NO_PHASE;
+    }
+
+    /**
+     * @return whether task {@code i} has values waiting for its histograms (any thread)
+     */
+    boolean hasWaiting(int i) {
+        return (long) LONGS.getAcquire(latenessCount, i) != (long) LONGS.getAcquire(latenessRecordedCount, i)
+                || (long) LONGS.getAcquire(recentExecCount, i) != (long) LONGS.getAcquire(execRecordedCount, i);
+    }
+
+    /**
+     * Records task {@code i}'s waiting values into its histograms unless another thread is
+     * recording them now (any thread; nothing is allocated but a histogram's one 64-bit copy).
+     *
+     * @return whether this thread recorded them
+     */
+    boolean tryRecordWaiting(int i) {
+        if (!INTS.compareAndSet(recording, i, 0, 1)) {
+            return false;
+        }
+        try {
+            recordClaimed(i);
+        } finally {
+            INTS.setRelease(recording, i, 0);
+        }
+        return true;
+    }
+
+    /**
+     * Records task {@code i}'s waiting values into its histograms, first waiting for a thread
+     * recording them now to finish (a report's reader, or a cycle whose ring is full).
+     */
+    void recordWaiting(int i) {
+        while (!tryRecordWaiting(i)) {
+            Thread.onSpinWait();
+        }
+    }
+
+    /** Records the waiting values, holding the task's claim. */
+    private void recordClaimed(int i) {
+        long count = (long) LONGS.getAcquire(latenessCount, i);
+        AbstractHistogram target = latenessHistograms[i];
+        for (long n = latenessRecordedCount[i]; n < count; n++) {
+            target = CycleStatistics.record(target, pendingLatenessNs[(int) (n % CycleStatistics.WAITING_CAPACITY) * size + i]);
+        }
+        latenessHistograms[i] = target;
+        LONGS.setRelease(latenessRecordedCount, i, count);
+
+        count = (long) LONGS.getAcquire(recentExecCount, i);
+        int ring = i * CycleStatistics.RECENT_EXEC_CYCLES;
+        target = execHistograms[i];
+        for (long n = execRecordedCount[i]; n < count; n++) {
+            target = CycleStatistics.record(target, recentExecNs[ring + (int) (n % CycleStatistics.RECENT_EXEC_CYCLES)]);
+        }
+        execHistograms[i] = target;
+        LONGS.setRelease(execRecordedCount, i, count);
     }
 
     /** @return heap bytes per task: one element of each array, its waiting lateness values and its ring */
     static long bytesPerTask() {
-        long longs = ARRAYS_PER_TASK + CycleStatistics.RECORD_BATCH + CycleStatistics.RECENT_EXEC_CYCLES;
+        long longs = ARRAYS_PER_TASK + CycleStatistics.WAITING_CAPACITY + CycleStatistics.RECENT_EXEC_CYCLES;
         return longs * Long.BYTES;
     }
 }

@@ -175,6 +175,11 @@ final class TaskRuntime implements TaskInfo {
         return index;
     }
 
+    /** @return the table of the monitor's statistics, where this task's column is {@link #index()} */
+    StatisticsTable statisticsTable() {
+        return statisticsTable;
+    }
+
     @Override
     public Schedule schedule() {
         return spec.schedule();
@@ -348,7 +353,7 @@ final class TaskRuntime implements TaskInfo {
         long releaseNs = nextReleaseNs;
         long cycleStartNs = clock.nanos();
         if (statisticsTable.released(index, Math.max(0, cycleStartNs - releaseNs))) {
-            statistics.recordLatenessWaiting();
+            statisticsTable.tryRecordWaiting(index);
         }
         boolean periodic = release == Release.PERIODIC;
         if (periodic) {
@@ -423,7 +428,7 @@ final class TaskRuntime implements TaskInfo {
         }
         long execNs = endNs - cycleStartNs;
         if (statisticsTable.cycleEnded(index, execNs)) {
-            statistics.recordExecWaiting();
+            statisticsTable.tryRecordWaiting(index);
         }
         if (adaptive != null) {
             adaptive.cycleEnded(execNs);

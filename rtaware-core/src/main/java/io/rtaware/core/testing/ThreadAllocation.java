@@ -57,8 +57,9 @@ public final class ThreadAllocation {
     /**
      * Snapshots the framework's threads on the per-release path: every live thread named
      * {@value ThreadNames#PREFIX}{@code *} that is {@link #onReleasePath on the per-release path}:
-     * the task threads, the pool workers {@value ThreadNames#POOL_WORKER_PREFIX}{@code N} and the
-     * watchdog {@value ThreadNames#WATCHDOG}.
+     * the task threads, the pool workers {@value ThreadNames#POOL_WORKER_PREFIX}{@code N}, the
+     * watchdog {@value ThreadNames#WATCHDOG} and the pool's statistics recorder
+     * {@value ThreadNames#STATISTICS}.
      *
      * @return the snapshot
      */

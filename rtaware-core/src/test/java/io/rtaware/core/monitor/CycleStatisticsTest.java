@@ -87,11 +87,11 @@ class CycleStatisticsTest {
 
     /**
      * Tasks released together flush their batches in different cycles: task i records its waiting
-     * values when the count noted is i modulo the batch, so no cycle records every task's batch.
+     * values (both series) when the count of cycles ended is i modulo the batch, so no cycle
+     * records every task's batch.
      */
-    @ParameterizedTest
-    @MethodSource("series")
-    void eachTaskFlushesItsBatchAtItsOwnPhase(Series series) {
+    @Test
+    void eachTaskFlushesItsBatchAtItsOwnPhase() {
         int batch = CycleStatistics.RECORD_BATCH;
         CycleStatistics task3 = new CycleStatistics(3);
         CycleStatistics task19 = new CycleStatistics(batch + 3);
@@ -99,18 +99,36 @@ class CycleStatisticsTest {
         long[] waiting3 = new long[3 * batch + 1];
         for (int count = 1; count <= 3 * batch; count++) {
             for (CycleStatistics statistics : new CycleStatistics[] {task3, task19, task0}) {
-                series.note().accept(statistics, 1_000 + count);
+                statistics.released(1_000 + count);
+                statistics.cycleEnded(2_000 + count);
             }
-            waiting3[count] = series.waiting().applyAsLong(task3);
-            assertEquals(waiting3[count], series.waiting().applyAsLong(task19), "the phase is the index modulo the batch");
+            waiting3[count] = task3.latenessWaiting();
+            assertEquals(waiting3[count], task3.execWaiting(), "both series flush together");
+            assertEquals(waiting3[count], task19.latenessWaiting(), "the phase is the index modulo the batch");
             boolean flushed3 = waiting3[count] == 0;
-            boolean flushed0 = series.waiting().applyAsLong(task0) == 0;
-            assertEquals(count % batch == 3, flushed3, series + ": task 3 after " + count + " values");
-            assertEquals(count % batch == 0, flushed0, series + ": task 0 after " + count + " values");
+            boolean flushed0 = task0.latenessWaiting() == 0 && task0.execWaiting() == 0;
+            assertEquals(count % batch == 3, flushed3, "task 3 after " + count + " cycles");
+            assertEquals(count % batch == 0, flushed0, "task 0 after " + count + " cycles");
         }
         assertEquals(2, waiting3[2], "before the first flush every value waits");
         assertEquals(batch - 1, waiting3[batch + 2], "a full batch minus one waits just before the next flush");
         assertEquals(1, waiting3[batch + 4]);
+    }
+
+    /**
+     * Releases noted without their cycles' ends (the phase is counted in cycles ended) are recorded
+     * once their ring is nearly full, before any is overwritten.
+     */
+    @Test
+    void latenessNotedAloneIsRecordedBeforeItsRingFills() {
+        CycleStatistics statistics = new CycleStatistics(5);
+        long most = 0;
+        for (int i = 0; i < 10 * CycleStatistics.WAITING_CAPACITY; i++) {
+            statistics.released(1_000 + i);
+            most = Math.max(most, statistics.latenessWaiting());
+        }
+        assertEquals(StatisticsTable.RECORD_WHEN_WAITING - 1, most,
+                "recorded when the count waiting reaches " + StatisticsTable.RECORD_WHEN_WAITING);
     }
 
     @Test
