@@ -190,6 +190,13 @@ final class PooledExecutor implements Executor {
             shards[w] = new Shard(sizes[w]);
         }
         this.parkedUntil = new AtomicLongArray(workerCount);
+        // A compare-and-set that changes nothing, now: the JVM's first compare-and-set on any
+        // AtomicLongArray links the VarHandle call inside it (2256 bytes of MethodType and its
+        // kin), and the pool's first is a worker waking another (wakeParkedWorker), which with
+        // a few tasks may not happen before steady state. It did, on a worker, in about one
+        // run of the Epsilon guard in eight (found with a JVMTI allocation probe printing the
+        // stack of every allocation on the pool's threads; docs/performance.md).
+        parkedUntil.compareAndSet(0, NOT_PARKED, NOT_PARKED);
     }
 
     /** @return the index of a worker's entry in {@link #batchDeadlineNs} */
