@@ -46,7 +46,7 @@ interface Executor {
         } catch (VirtualMachineError fatal) {
             throw fatal;
         } catch (Throwable fault) {
-            faults.report("executor, cycle of task '" + runtime.name() + "'", fault);
+            faults.report(OffPathText.executorCycle(runtime.name()), fault);
             runtime.recoverAfterFault(clock.nanos());
         }
     }

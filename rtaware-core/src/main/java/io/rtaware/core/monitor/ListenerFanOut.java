@@ -19,8 +19,9 @@ final class ListenerFanOut {
      * cycle to resolve. A heap dump of a pooled run whose zero-allocation guard failed (288 bytes,
      * about one run in six) showed exactly this class's unresolved constants (the names of events
      * no cycle had reported, and the message's concatenation recipe) interned together late in the
-     * run, on a worker thread, just after a JIT deoptimization; why the JVM resolved them then is
-     * not known, but with no constant left it cannot recur.
+     * run, on a worker thread, just after a JIT deoptimization: before a C2 compile HotSpot resolves
+     * every string constant of the method's class on the thread that asked for it (OffPathText);
+     * with no constant left it cannot recur.
      */
     private static final int DEADLINE_MISS = 0;
     private static final int SKIPPED_RELEASES = 1;

@@ -321,7 +321,7 @@ final class PooledExecutor implements Executor {
                 self.step();
             }
         } catch (VirtualMachineError fatal) {
-            faults.report("pool worker " + worker + " (fatal VM error: stopping every task)", fatal);
+            faults.report(OffPathText.poolWorkerFatal(worker), fatal);
             stopAllRequest.run();
         } finally {
             party.done();
@@ -527,7 +527,7 @@ final class PooledExecutor implements Executor {
                         threadSetup.onPoolWorkerStart(worker, rmRank, runtimes.size());
                     }
                 } catch (Throwable t) {
-                    faults.report("thread setup of pool worker " + worker, t);
+                    faults.report(OffPathText.poolWorkerSetup(worker), t);
                 } finally {
                     ready.countDown();
                 }

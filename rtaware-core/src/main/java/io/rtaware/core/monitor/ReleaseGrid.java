@@ -61,4 +61,25 @@ record ReleaseGrid(long baseIndex, long baseNs, long periodNs, long deadlineNs) 
         }
         return next;
     }
+
+    // The record's generated equals, hashCode and toString keep the component names as a string
+    // constant, which a C2 compile of any of this class's methods, asked for by a cycle in steady
+    // state, would resolve on the cycle's thread (see OffPathText): written out, they keep none.
+
+    @Override
+    public boolean equals(Object other) {
+        return other instanceof ReleaseGrid g && g.baseIndex == baseIndex && g.baseNs == baseNs
+                && g.periodNs == periodNs && g.deadlineNs == deadlineNs;
+    }
+
+    @Override
+    public int hashCode() {
+        return Long.hashCode(baseIndex) + 31 * (Long.hashCode(baseNs) + 31 * (Long.hashCode(periodNs)
+                + 31 * Long.hashCode(deadlineNs)));
+    }
+
+    @Override
+    public String toString() {
+        return OffPathText.releaseGrid(this);
+    }
 }

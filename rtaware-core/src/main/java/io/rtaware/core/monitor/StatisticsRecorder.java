@@ -66,12 +66,11 @@ final class StatisticsRecorder {
 
     private static StatisticsTable tableOf(TaskRuntime[] tasks) {
         if (tasks.length == 0) {
-            throw new IllegalArgumentException("a statistics recorder for no task");
+            throw new IllegalArgumentException(OffPathText.recorderForNoTask());
         }
         for (TaskRuntime task : tasks) {
             if (task.statisticsTable() != tasks[0].statisticsTable()) {
-                throw new IllegalArgumentException("task '" + task.name() + "' is not of the same monitor as '"
-                        + tasks[0].name() + "'");
+                throw new IllegalArgumentException(OffPathText.notOfOneMonitor(task.name(), tasks[0].name()));
             }
         }
         return tasks[0].statisticsTable();
@@ -129,8 +128,7 @@ final class StatisticsRecorder {
                 }
             }
         } catch (RuntimeException e) {
-            faults.report("the pool's statistics recorder (each cycle records its task's values once "
-                    + StatisticsTable.RECORD_WHEN_WAITING + " wait)", e);
+            faults.report(OffPathText.statisticsRecorder(), e);
         }
     }
 }

@@ -121,7 +121,7 @@ final class StatisticsTable {
      */
     StatisticsTable(int size) {
         if (size < 0) {
-            throw new IllegalArgumentException("a table of " + size + " tasks");
+            throw new IllegalArgumentException(OffPathText.tableOfTasks(size));
         }
         this.size = size;
         releases = new long[size];

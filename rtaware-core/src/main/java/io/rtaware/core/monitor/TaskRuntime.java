@@ -471,11 +471,10 @@ final class TaskRuntime implements TaskInfo {
      */
     void releaseNow(long nowNs) {
         if (release != Release.CONTINUOUS) {
-            throw new IllegalStateException("task '" + name() + "' is " + spec.schedule().kind()
-                    + ": only a continuous task can be released by hand");
+            throw new IllegalStateException(OffPathText.notContinuous(name(), spec.schedule().kind()));
         }
         if (nextReleaseNs == NEVER) {
-            throw new IllegalStateException("task '" + name() + "' is " + state + " and will not run again");
+            throw new IllegalStateException(OffPathText.willNotRunAgain(name(), state));
         }
         nextReleaseNs = nowNs;
         runCycle();

@@ -140,7 +140,7 @@ final class ThreadedExecutor implements Executor {
                 threadSetup.onTaskThreadStart(runtime, rank, runtimes.size());
             }
         } catch (Throwable t) {
-            faults.report("thread setup of task '" + runtime.name() + "'", t);
+            faults.report(OffPathText.taskThreadSetup(runtime.name()), t);
         } finally {
             ready.countDown();
         }
@@ -154,7 +154,7 @@ final class ThreadedExecutor implements Executor {
                 Executor.runCycle(runtime, clock, faults);
             }
         } catch (VirtualMachineError fatal) {
-            faults.report("task '" + runtime.name() + "' (fatal VM error: stopping every task)", fatal);
+            faults.report(OffPathText.taskThreadFatal(runtime.name()), fatal);
             stopAllRequest.run();
         } finally {
             party.done();

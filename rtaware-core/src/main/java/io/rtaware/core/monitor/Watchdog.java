@@ -235,8 +235,7 @@ final class Watchdog {
         try {
             thread.join(timeoutMs);
             if (thread.isAlive()) {
-                faults.report("stop", new IllegalStateException(thread.getName() + " did not return within "
-                        + timeoutMs + " ms of stop; interrupting it"));
+                faults.report(OffPathText.stopping(), OffPathText.didNotStop(thread, timeoutMs));
                 thread.interrupt();
                 thread.join(timeoutMs);
             }
