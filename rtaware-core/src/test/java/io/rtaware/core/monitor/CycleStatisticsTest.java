@@ -10,7 +10,6 @@ import org.HdrHistogram.Histogram;
 import org.HdrHistogram.IntCountsHistogram;
 import java.util.function.Function;
 import java.util.function.ObjLongConsumer;
-import java.util.function.ToLongFunction;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -37,7 +36,7 @@ class CycleStatisticsTest {
 
     /** One of the two series recorded in batches: how a value is noted, and how the report reads the series. */
     private record Series(String name, ObjLongConsumer<CycleStatistics> note,
-                          Function<CycleStatistics, Percentiles> report, ToLongFunction<CycleStatistics> waiting) {
+                          Function<CycleStatistics, Percentiles> report) {
         @Override
         public String toString() {
             return name;
@@ -45,10 +44,8 @@ class CycleStatisticsTest {
     }
 
     static Stream<Series> series() {
-        return Stream.of(new Series("lateness", CycleStatistics::released, CycleStatistics::latenessUs,
-                        CycleStatistics::latenessWaiting),
-                new Series("execution time", CycleStatistics::cycleEnded, CycleStatistics::execUs,
-                        CycleStatistics::execWaiting));
+        return Stream.of(new Series("lateness", CycleStatistics::released, CycleStatistics::latenessUs),
+                new Series("execution time", CycleStatistics::cycleEnded, CycleStatistics::execUs));
     }
 
     @ParameterizedTest

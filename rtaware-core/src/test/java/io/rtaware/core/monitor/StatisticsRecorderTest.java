@@ -28,15 +28,12 @@ class StatisticsRecorderTest {
         }
     }
 
-    private static long waiting(StatisticsTable table, int i) {
-        return table.latenessCount[i] - table.latenessRecordedCount[i];
-    }
-
     @Test
     void aRecordedTaskWaitsForItsRecorderAndTheOthersRecordAtTheirPhase() {
         StatisticsTable table = new StatisticsTable(3);
+        List<CycleStatistics> tasks = new ArrayList<>();
         for (int i = 0; i < 3; i++) {
-            new CycleStatistics(table, i, 0);
+            tasks.add(new CycleStatistics(table, i, 0));
         }
         StatisticsRecorder recorder = new StatisticsRecorder(table, new int[] {0, 2}, NO_FAULTS);
         for (int n = 0; n < CycleStatistics.RECORD_BATCH; n++) {
@@ -44,15 +41,16 @@ class StatisticsRecorderTest {
                 cycle(table, i, 1_000 + n, 500 + n);
             }
         }
-        assertEquals(CycleStatistics.RECORD_BATCH, waiting(table, 0), "the recorder's task does not record at its phase");
-        assertEquals(0, waiting(table, 1), "a task of the cycle's own recording records at its phase");
-        assertEquals(CycleStatistics.RECORD_BATCH, waiting(table, 2));
+        assertEquals(CycleStatistics.RECORD_BATCH, tasks.get(0).latenessWaiting(),
+                "the recorder's task does not record at its phase");
+        assertEquals(0, tasks.get(1).latenessWaiting(), "a task of the cycle's own recording records at its phase");
+        assertEquals(CycleStatistics.RECORD_BATCH, tasks.get(2).latenessWaiting());
         assertTrue(table.hasWaiting(0));
 
         assertEquals(2, recorder.recordPass(), "the pass records both of its tasks");
-        assertEquals(0, waiting(table, 0));
-        assertEquals(0, waiting(table, 2));
-        assertEquals(0, table.execRecordedCount[2] - table.recentExecCount[2], "execution times too");
+        assertEquals(0, tasks.get(0).latenessWaiting());
+        assertEquals(0, tasks.get(2).latenessWaiting());
+        assertEquals(0, tasks.get(2).execWaiting(), "execution times too");
         assertEquals(0, recorder.recordPass(), "nothing waits: nothing to record");
         assertEquals(CycleStatistics.RECORD_BATCH, table.latenessHistograms[0].getTotalCount());
         assertEquals(CycleStatistics.RECORD_BATCH, table.execHistograms[2].getTotalCount());
@@ -61,12 +59,12 @@ class StatisticsRecorderTest {
     @Test
     void aCycleWhoseRecorderFallsBehindRecordsItsOwnValues() {
         StatisticsTable table = new StatisticsTable(1);
-        new CycleStatistics(table, 0, 0);
+        CycleStatistics task = new CycleStatistics(table, 0, 0);
         new StatisticsRecorder(table, new int[] {0}, NO_FAULTS);
         long most = 0;
         for (int n = 0; n < 5 * CycleStatistics.WAITING_CAPACITY; n++) {
             cycle(table, 0, 1_000 + n, 500);
-            most = Math.max(most, waiting(table, 0));
+            most = Math.max(most, task.latenessWaiting());
         }
         assertEquals(StatisticsTable.RECORD_WHEN_WAITING - 1, most,
                 "with no pass at all, the cycle records once " + StatisticsTable.RECORD_WHEN_WAITING + " wait");
