@@ -1,5 +1,6 @@
 package io.rtaware.robotrun;
 
+import io.rtaware.core.report.Rounding;
 import io.rtaware.core.time.Clock;
 import java.util.Locale;
 import java.util.function.LongSupplier;
@@ -137,13 +138,19 @@ public final class Supervisor {
      * reached by odometry (the controller's belief decides it), and where the true pose is known,
      * how far it was from the finish.
      *
+     * The distance is first rounded to the millimetre, the resolution at which the report records
+     * each waypoint pass's true distance, and only then to the two decimals shown: rounding the raw
+     * value straight to two decimals could print 0.28 here beside the pass's 0.285, shown as 0.29,
+     * for the same pose.
+     *
      * @param trueDistanceM the true pose's distance from the finish at the ending, metres, or NaN
      *     where no ground truth exists
      * @return e.g. {@code finish reached by odometry; 1.06 m from it in truth}
      */
     public static String finishReached(double trueDistanceM) {
         return Double.isFinite(trueDistanceM)
-                ? String.format(Locale.ROOT, "finish reached by odometry; %.2f m from it in truth", trueDistanceM)
+                ? String.format(Locale.ROOT, "finish reached by odometry; %.2f m from it in truth",
+                        Rounding.toDecimals(trueDistanceM, 3))
                 : "finish reached by odometry";
     }
 

@@ -93,9 +93,18 @@ class SupervisorTest {
     void theFinishWinsOverTheTimeLimit() {
         advance(400 * S, S);
         view.done = true;
-        view.trueDistanceM = 1.0649;
+        view.trueDistanceM = 1.0644;
         assertEquals(new RunState.Ending(RunOutcome.COMPLETED, "finish reached by odometry; 1.06 m from it in truth"),
                 supervisor.check(), "the finish is the controller's belief; the truth is measured beside it");
+    }
+
+    @Test
+    void theFinishsTruthIsShownFromTheMillimetreTheReportRecords() {
+        advance(S, S);
+        view.done = true;
+        view.trueDistanceM = 0.28496; // recorded as 0.285 for the waypoint pass, which the report shows as 0.29
+        assertEquals(new RunState.Ending(RunOutcome.COMPLETED, "finish reached by odometry; 0.29 m from it in truth"),
+                supervisor.check(), "the ending and the pass's line agree on one pose");
     }
 
     @Test
