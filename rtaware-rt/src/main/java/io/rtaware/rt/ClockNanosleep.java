@@ -38,7 +38,16 @@ public final class ClockNanosleep implements MonotonicSleeper {
         static native int clock_nanosleep(int clockId, int flags, long[] request, Pointer remain);
     }
 
+    /**
+     * {@link #toString()}'s text, loaded by the constructor: {@link #sleepUntil} runs every
+     * cycle, and before HotSpot compiles it with C2 it resolves every string constant of this
+     * class not resolved yet on the task thread that asked, which a constant of
+     * {@code toString()} would be until someone printed the sleeper.
+     */
+    private final String description;
+
     private ClockNanosleep() {
+        description = "clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME)";
     }
 
     /**
@@ -77,6 +86,6 @@ public final class ClockNanosleep implements MonotonicSleeper {
 
     @Override
     public String toString() {
-        return "clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME)";
+        return description;
     }
 }

@@ -5,12 +5,22 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import com.sun.jna.Platform;
+import io.rtaware.core.testing.ReleasePathStrings;
 import io.rtaware.core.time.MonotonicSleeper;
+import java.io.IOException;
 import java.lang.management.ManagementFactory;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 
 /** The libc sleep, for real: never early, and nothing allocated per call. */
 class ClockNanosleepTest {
+
+    /** A task thread sleeps with it every cycle: no string constant may wait to be resolved there by a C2 compile. */
+    @Test
+    void itsStringConstantsAreLoadedOnlyWhileItIsBuilt() throws IOException {
+        assertEquals(List.of(), ReleasePathStrings.unresolvedAfterBuilding(ClockNanosleep.class));
+    }
+
 
     @Test
     void onLinuxItSleepsUntilTheAbsoluteInstantAndNeverWakesBeforeIt() {

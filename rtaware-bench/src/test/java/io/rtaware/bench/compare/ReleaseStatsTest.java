@@ -3,10 +3,26 @@ package io.rtaware.bench.compare;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
+import io.rtaware.core.testing.ReleasePathStrings;
+import java.io.IOException;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 
 /** The comparison's bookkeeping, on made-up times (no threads, no clock). */
 class ReleaseStatsTest {
+
+    /**
+     * Its {@code onRun}, and the rtaware rows' listener that calls it, run on the task threads
+     * inside the measured windows, whose allocation the comparison counts as the framework's: no
+     * string constant may wait to be resolved there.
+     */
+    @Test
+    void itsStringConstantsAreLoadedOnlyWhileItIsBuilt() throws IOException, ClassNotFoundException {
+        assertEquals(List.of(), ReleasePathStrings.unresolvedAfterBuilding(ReleaseStats.class));
+        assertEquals(List.of(), ReleasePathStrings.unresolvedAfterBuilding(
+                Class.forName(RtawareSegment.class.getName() + "$StatsListener")));
+    }
+
 
     private static final long PERIOD = 10_000_000;
 

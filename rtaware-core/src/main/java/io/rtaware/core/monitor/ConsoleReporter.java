@@ -10,7 +10,6 @@ import java.lang.invoke.MethodHandles;
 import java.lang.invoke.VarHandle;
 import java.util.Arrays;
 import java.util.List;
-import java.util.Locale;
 import java.util.Objects;
 import java.util.concurrent.atomic.AtomicLongArray;
 import java.util.concurrent.atomic.AtomicReferenceArray;
@@ -144,7 +143,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         }
         linkEventPaths();
         this.printer = printerThread ? AgentThread.start(new Printer(), new SleepingMillisIdleStrategy(POLL_MS),
-                error -> faults.report("console reporter", error)) : null;
+                error -> faults.report(ConsoleLines.faultSource(), error)) : null;
     }
 
     /**
@@ -220,6 +219,17 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
 
     /** The printer's loop: a poll every {@value #POLL_MS} ms. */
     private final class Printer implements Agent {
+        /**
+         * Its thread's name, loaded by the constructor (not initialized at its declaration, where
+         * javac would fold it into {@link #roleName()} as a constant that method loads later,
+         * unresolved until then; see {@link ConsoleLines}).
+         */
+        private final String role;
+
+        Printer() {
+            role = ThreadNames.CONSOLE;
+        }
+
         @Override
         public int doWork() {
             poll();
@@ -228,7 +238,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
 
         @Override
         public String roleName() {
-            return ThreadNames.CONSOLE;
+            return role;
         }
     }
 
@@ -314,7 +324,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         long spanNs = pacers[i].printed(wallNs);
         if (taskLinesThisSecond < TASK_LINES_PER_SECOND) {
             taskLinesThisSecond++;
-            out.println(line(taskByIndex[i], misses, skipped, stale, expired, errors, spanNs) + periodLine(i, changes));
+            out.println(taskLine(i, misses, skipped, stale, expired, errors, changes, spanNs));
         } else {
             fold(i, wallNs, misses, skipped, stale, expired, errors, changes);
         }
@@ -351,92 +361,23 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
 
     /** @return the line of the tasks over the budget, covering {@code spanNs} of wall time */
     private String foldLine(long spanNs) {
-        StringBuilder sb = new StringBuilder("[rtaware] ").append(foldedTasks)
-                .append(foldedTasks == 1 ? " more task:" : " more tasks:");
-        String sep = " ";
-        long missed = folded[MISSES] + folded[SKIPPED];
-        if (missed > 0) {
-            sb.append(sep).append(missed).append(missed == 1 ? " deadline miss" : " deadline misses");
-            if (folded[SKIPPED] > 0) {
-                sb.append(" (").append(folded[SKIPPED]).append(" skipped releases)");
-            }
-            sep = ", ";
-        }
-        sep = foldedCount(sb, sep, folded[STALE], " stale run", " stale runs");
-        sep = foldedCount(sb, sep, folded[EXPIRED], " expired read", " expired reads");
-        sep = foldedCount(sb, sep, folded[ERRORS], " error", " errors");
-        foldedCount(sb, sep, folded[PERIOD_CHANGES], " period change", " period changes");
-        if (spanNs > LINE_INTERVAL_NS + LINE_INTERVAL_NS / 2) {
-            sb.append(String.format(Locale.ROOT, " in the last %.1f s", spanNs / 1e9));
-        }
         int most = -1;
         for (int i = 0; i < foldedMissesOf.length; i++) {
             if (foldedMissesOf[i] > 0 && (most < 0 || foldedMissesOf[i] > foldedMissesOf[most])) {
                 most = i;
             }
         }
-        if (most >= 0) {
-            sb.append("; most misses: ").append(taskByIndex[most].name()).append(", ").append(foldedMissesOf[most]);
-        }
-        return sb.append(" (at most ").append(TASK_LINES_PER_SECOND)
-                .append(" task lines a second; each task's counts are in the summary)").toString();
+        return ConsoleLines.foldLine(foldedTasks, folded[MISSES], folded[SKIPPED], folded[STALE], folded[EXPIRED],
+                folded[ERRORS], folded[PERIOD_CHANGES], spanNs, most < 0 ? null : taskByIndex[most].name(),
+                most < 0 ? 0 : foldedMissesOf[most], TASK_LINES_PER_SECOND);
     }
 
-    private static String foldedCount(StringBuilder sb, String sep, long count, String one, String many) {
-        if (count == 0) {
-            return sep;
-        }
-        sb.append(sep).append(count).append(count == 1 ? one : many);
-        return ", ";
-    }
-
-    private String line(TaskInfo task, long misses, long skipped, long stale, long expired, long errors, long spanNs) {
-        int i = task.index();
-        StringBuilder sb = new StringBuilder("[rtaware] ").append(task.name()).append(':');
-        if (misses + skipped > 0) {
-            sb.append(' ').append(misses + skipped).append(misses + skipped == 1 ? " deadline miss" : " deadline misses");
-            if (spanNs > LINE_INTERVAL_NS + LINE_INTERVAL_NS / 2) {
-                sb.append(String.format(Locale.ROOT, " in the last %.1f s", spanNs / 1e9));
-            }
-            if (skipped > 0) {
-                sb.append(" (").append(skipped).append(" skipped releases)");
-            }
-            if (misses > 0) {
-                long origin = originNs == Long.MIN_VALUE ? 0 : originNs;
-                sb.append(String.format(Locale.ROOT, ", last detected at t=%.3fs (deadline t=%.3fs)",
-                        (lastMissDetectedNs.get(i) - origin) / 1e9, (lastMissDeadlineNs.get(i) - origin) / 1e9));
-            }
-        }
-        if (stale > 0) {
-            sb.append(' ').append(stale).append(stale == 1 ? " stale run" : " stale runs").append(" (no new input)");
-        }
-        if (expired > 0) {
-            sb.append(' ').append(expired).append(" expired reads (input older than its max age)");
-        }
-        if (errors > 0) {
-            Throwable t = lastError.get(i);
-            sb.append(' ').append(errors).append(errors == 1 ? " error" : " errors");
-            if (t != null) {
-                sb.append(", last: ").append(t.getClass().getSimpleName());
-                if (t.getMessage() != null) {
-                    sb.append(": ").append(t.getMessage());
-                }
-            }
-        }
-        return sb.toString();
-    }
-
-    private String periodLine(int i, long changes) {
-        PeriodChange c = lastPeriodChange.get(i);
-        if (changes == 0 || c == null) {
-            return "";
-        }
-        return String.format(Locale.ROOT, " period %s -> %s (%s: %d misses, %d/%d stale runs, exec max %s in the last"
-                        + " %d releases)%s", io.rtaware.core.time.Durations.format(c.fromPeriodNs()),
-                io.rtaware.core.time.Durations.format(c.toPeriodNs()), c.reason().name().toLowerCase(Locale.ROOT),
-                c.windowMisses(), c.windowStaleRuns(), c.windowRuns(),
-                io.rtaware.core.time.Durations.format(c.windowExecMaxNs()), c.windowReleases(),
-                changes > 1 ? " [" + changes + " changes since the last line]" : "");
+    private String taskLine(int i, long misses, long skipped, long stale, long expired, long errors, long changes,
+                            long spanNs) {
+        long origin = originNs == Long.MIN_VALUE ? 0 : originNs;
+        return ConsoleLines.taskLine(taskByIndex[i].name(), misses, skipped, stale, expired, errors, spanNs,
+                (lastMissDetectedNs.get(i) - origin) / 1e9, (lastMissDeadlineNs.get(i) - origin) / 1e9,
+                lastError.get(i), changes, lastPeriodChange.get(i));
     }
 
     /** Stops the printer thread, then prints what is left. */

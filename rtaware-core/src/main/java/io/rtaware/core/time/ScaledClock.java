@@ -10,6 +10,12 @@ public final class ScaledClock implements Clock {
 
     private final double scale;
     private final long wallOriginNs;
+    /**
+     * {@link #toString()}'s text, built here: {@link #nanos()} runs every release, and before
+     * HotSpot compiles it with C2 it resolves every string constant of this class on the release
+     * thread that asked (see {@code ReleasePathConstantsTest}).
+     */
+    private final String description;
 
     /**
      * @param scale world nanoseconds per wall nanosecond; must be positive and finite
@@ -17,10 +23,22 @@ public final class ScaledClock implements Clock {
      */
     public ScaledClock(double scale) {
         if (!(scale > 0) || Double.isInfinite(scale)) {
-            throw new IllegalArgumentException("time scale must be positive and finite, got " + scale);
+            throw new IllegalArgumentException(CheckText.badScale(scale));
         }
         this.scale = scale;
         this.wallOriginNs = System.nanoTime();
+        this.description = "ScaledClock(x" + scale + ")";
+    }
+
+    /**
+     * The argument check's text, in a class of its own: a message built only when the check fails
+     * stays unresolved in this class's constants, to be resolved on a release thread (see
+     * {@link #description}).
+     */
+    private static final class CheckText {
+        static String badScale(double scale) {
+            return "time scale must be positive and finite, got " + scale;
+        }
     }
 
     @Override
@@ -35,6 +53,6 @@ public final class ScaledClock implements Clock {
 
     @Override
     public String toString() {
-        return "ScaledClock(x" + scale + ")";
+        return description;
     }
 }

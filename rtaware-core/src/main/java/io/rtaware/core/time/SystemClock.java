@@ -10,8 +10,13 @@ public final class SystemClock implements Clock {
         return System.nanoTime();
     }
 
+    /**
+     * @return {@code SystemClock}, from the class's name: a string constant here would be
+     *     resolved, and allocated, on the release thread whose call of {@link #nanos()} has it
+     *     compiled by C2 (see {@code ReleasePathConstantsTest})
+     */
     @Override
     public String toString() {
-        return "SystemClock";
+        return getClass().getSimpleName();
     }
 }
