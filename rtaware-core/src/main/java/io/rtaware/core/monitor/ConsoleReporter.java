@@ -33,7 +33,8 @@ import org.agrona.concurrent.SleepingMillisIdleStrategy;
  * would hide the cause and take the CPU and memory the tasks need.
  *
  * <p>Events only bump counters (no allocation, no I/O on task threads); a daemon thread of
- * the reporter's own prints every {@value #POLL_MS} ms. {@link #flush()} prints what is left,
+ * the reporter's own prints every {@value #POLL_MS} ms, the lines' text built by
+ * {@link ConsoleLines}, a class of its own so that none of it is resolved on a task thread. {@link #flush()} prints what is left,
  * e.g. before the termination summary. A fault of that thread goes to the framework error
  * handler of the monitor the reporter listens to, and is counted there
  * ({@link Monitor#frameworkErrors()}). Thread-safe.
