@@ -62,8 +62,6 @@ final class StatisticsTable {
      * must not fill. {@link CycleStatistics#WAITING_CAPACITY} minus one batch.
      */
     static final int RECORD_WHEN_WAITING = CycleStatistics.WAITING_CAPACITY - CycleStatistics.RECORD_BATCH;
-    /** {@link #flushPhase} of a task whose values a {@link StatisticsRecorder} records: no phase. */
-    private static final int NO_PHASE = -1;
 
     // Ordered stores and atomic adds on the arrays. Invoked on this constant directly with the
     // exact types ((long) LONGS.getAndAdd(array, int, long)): a VarHandle passed as an argument
@@ -105,8 +103,8 @@ final class StatisticsTable {
     final long[] recentExecNs;
     /**
      * Per task: its cycle records its waiting values when the count of cycles ended is this
-     * modulo {@link CycleStatistics#RECORD_BATCH}; {@link #NO_PHASE} when a
-     * {@link StatisticsRecorder} records them.
+     * modulo {@link CycleStatistics#RECORD_BATCH}; when a {@link StatisticsRecorder} records
+     * them, {@code -1 - phase}, which no count matches (the recorder's phase, {@link #recorderPhase}).
      */
     final int[] flushPhase;
     /** Per task: 1 while a thread records its waiting values into its histograms, else 0. */
@@ -209,19 +207,37 @@ final class StatisticsTable {
     }
 
     /**
-     * From now on a {@link StatisticsRecorder} records task {@code i}'s waiting values: its cycle
-     * no longer does at its phase (before the task's first cycle).
+     * From now on a {@link StatisticsRecorder} records task {@code i}'s waiting values, at the
+     * phase its cycle had ({@link #recorderBatchDue}): its cycle no longer does (before the
+     * task's first cycle).
      */
     void recordedByRecorder(int i) {
-        flushPhase[i] = NO_PHASE;
+        if (flushPhase[i] >= 0) {
+            flushPhase[i] = -1 - flushPhase[i];
+        }
     }
 
     /**
-     * @return whether task {@code i} has values waiting for its histograms (any thread)
+     * Whether a {@link StatisticsRecorder} should record task {@code i}'s waiting values now: a
+     * batch of {@link CycleStatistics#RECORD_BATCH} values waits, or the count of lateness values
+     * noted has reached the task's phase of the batch, the same phase its cycle would have
+     * recorded at (so 10 000 tasks released together are recorded a sixteenth at a time, not all
+     * in one pass every sixteenth period). Any thread.
+     *
+     * @param i a task recorded by a recorder ({@link #recordedByRecorder})
+     * @return whether its values are due
      */
-    boolean hasWaiting(int i) {
-        return (long) LONGS.getAcquire(latenessCount, i) != (long) LONGS.getAcquire(latenessRecordedCount, i)
-                || (long) LONGS.getAcquire(recentExecCount, i) != (long) LONGS.getAcquire(execRecordedCount, i);
+    boolean recorderBatchDue(int i) {
+        long count = (long) LONGS.getAcquire(latenessCount, i);
+        long waiting = count - (long) LONGS.getAcquire(latenessRecordedCount, i);
+        long execWaiting = (long) LONGS.getAcquire(recentExecCount, i) - (long) LONGS.getAcquire(execRecordedCount, i);
+        return waiting >= CycleStatistics.RECORD_BATCH || execWaiting >= CycleStatistics.RECORD_BATCH
+                || ((waiting > 0 || execWaiting > 0) && count % CycleStatistics.RECORD_BATCH == recorderPhase(i));
+    }
+
+    /** @return the phase of the batch at which a recorder records task {@code i} (see {@link #recordedByRecorder}) */
+    private int recorderPhase(int i) {
+        return -1 - flushPhase[i];
     }
 
     /**

@@ -1,6 +1,7 @@
 package io.rtaware.core.monitor;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -45,15 +46,60 @@ class StatisticsRecorderTest {
                 "the recorder's task does not record at its phase");
         assertEquals(0, tasks.get(1).latenessWaiting(), "a task of the cycle's own recording records at its phase");
         assertEquals(CycleStatistics.RECORD_BATCH, tasks.get(2).latenessWaiting());
-        assertTrue(table.hasWaiting(0));
+        assertTrue(table.recorderBatchDue(0));
 
-        assertEquals(2, recorder.recordPass(), "the pass records both of its tasks");
+        assertEquals(2, recorder.recordPass(), "the pass records both of its tasks, each with a batch waiting");
         assertEquals(0, tasks.get(0).latenessWaiting());
         assertEquals(0, tasks.get(2).latenessWaiting());
         assertEquals(0, tasks.get(2).execWaiting(), "execution times too");
         assertEquals(0, recorder.recordPass(), "nothing waits: nothing to record");
         assertEquals(CycleStatistics.RECORD_BATCH, table.latenessHistograms[0].getTotalCount());
         assertEquals(CycleStatistics.RECORD_BATCH, table.execHistograms[2].getTotalCount());
+    }
+
+    @Test
+    void aPassRecordsATaskOnlyOnceABatchOfItsValuesWaits() {
+        StatisticsTable table = new StatisticsTable(1);
+        CycleStatistics task = new CycleStatistics(table, 0, 0);
+        StatisticsRecorder recorder = new StatisticsRecorder(table, new int[] {0}, NO_FAULTS);
+        for (int n = 1; n < CycleStatistics.RECORD_BATCH; n++) {
+            cycle(table, 0, 1_000 + n, 500);
+            assertEquals(0, recorder.recordPass(), "after " + n + " cycles the values wait for a batch");
+            assertEquals(n, task.latenessWaiting());
+        }
+        cycle(table, 0, 2_000, 500);
+        assertEquals(1, recorder.recordPass(), "a batch waits: recorded at once");
+        assertEquals(0, task.latenessWaiting());
+        assertEquals(0, task.execWaiting());
+        assertEquals(CycleStatistics.RECORD_BATCH, table.latenessHistograms[0].getTotalCount());
+
+        cycle(table, 0, 3_000, 500);
+        assertFalse(table.recorderBatchDue(0));
+        assertEquals(0, recorder.recordPass());
+        task.latenessUs();
+        assertEquals(CycleStatistics.RECORD_BATCH + 1, table.latenessHistograms[0].getTotalCount(),
+                "the report records what still waits");
+        assertEquals(0, task.latenessWaiting());
+    }
+
+    @Test
+    void aRecorderRecordsEachTaskAtItsPhaseSoThatTasksReleasedTogetherAreSpreadOverThePasses() {
+        StatisticsTable table = new StatisticsTable(2);
+        new CycleStatistics(table, 0, 0);
+        CycleStatistics late = new CycleStatistics(table, 1, 5);
+        StatisticsRecorder recorder = new StatisticsRecorder(table, new int[] {0, 1}, NO_FAULTS);
+        List<Integer> recordedAtCycle = new ArrayList<>();
+        for (int n = 1; n <= 3 * CycleStatistics.RECORD_BATCH; n++) {
+            cycle(table, 0, 1_000, 500);
+            cycle(table, 1, 1_000, 500);
+            long before = late.latenessWaiting();
+            int recorded = recorder.recordPass();
+            if (before > 0 && late.latenessWaiting() == 0) {
+                recordedAtCycle.add(n);
+            }
+            assertTrue(recorded <= 1, "the two tasks' phases differ: never both in one pass (cycle " + n + ")");
+        }
+        assertEquals(List.of(5, 21, 37), recordedAtCycle, "a shorter first batch at phase 5, then every 16 cycles");
     }
 
     @Test
