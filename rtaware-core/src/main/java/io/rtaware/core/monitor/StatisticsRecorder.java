@@ -104,8 +104,9 @@ final class StatisticsRecorder {
      * the task's phase) and whose values no other thread records now.
      *
      * <p>Why batches: recording the one new value of each of 10 000 tasks every pass touched two
-     * cold histograms per value, about 230 ns each, and the thread took 46 % of a core at 10 ms
-     * periods on issue 36's session 10 VM (2.28-2.39 s of CPU in 5 s, {@code /proc} schedstat);
+     * cold histograms per value, about 230 ns each, and the thread took 45-54 % of a core at 10 ms
+     * periods on issue 36's session 10 VM (2.27-2.68 s of CPU in 5 s, {@code /proc} schedstat;
+     * 0.62-0.73 s in batches, docs/performance.md);
      * in batches, a task's histograms are touched once per {@value CycleStatistics#RECORD_BATCH}
      * values, as the cycles' own recording did, and the phases spread the tasks over the passes.
      * The histograms are read only once the cycles have stopped, after the rest is recorded
