@@ -24,11 +24,6 @@ final class ConsoleLines {
     private ConsoleLines() {
     }
 
-    /** @return how a fault of the reporter's printer thread is named to the framework error handler */
-    static String faultSource() {
-        return "console reporter";
-    }
-
     /**
      * One task's line.
      *

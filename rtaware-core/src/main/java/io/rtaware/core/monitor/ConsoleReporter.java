@@ -34,7 +34,8 @@ import org.agrona.concurrent.SleepingMillisIdleStrategy;
  *
  * <p>Events only bump counters (no allocation, no I/O on task threads); a daemon thread of
  * the reporter's own prints every {@value #POLL_MS} ms, the lines' text built by
- * {@link ConsoleLines}, a class of its own so that none of it is resolved on a task thread. {@link #flush()} prints what is left,
+ * {@link ConsoleLines}, a class of its own so that none of it is resolved on a task thread.
+ * {@link #flush()} prints what is left,
  * e.g. before the termination summary. A fault of that thread goes to the framework error
  * handler of the monitor the reporter listens to, and is counted there
  * ({@link Monitor#frameworkErrors()}). Thread-safe.
@@ -144,7 +145,7 @@ public final class ConsoleReporter implements MonitorListener, AutoCloseable {
         }
         linkEventPaths();
         this.printer = printerThread ? AgentThread.start(new Printer(), new SleepingMillisIdleStrategy(POLL_MS),
-                error -> faults.report(ConsoleLines.faultSource(), error)) : null;
+                error -> faults.report(OffPathText.consoleReporter(), error)) : null;
     }
 
     /**

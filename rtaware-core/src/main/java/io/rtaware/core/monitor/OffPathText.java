@@ -88,6 +88,11 @@ final class OffPathText {
                 + StatisticsTable.RECORD_WHEN_WAITING + " wait)";
     }
 
+    /** @return the fault source of the console reporter's printer thread */
+    static String consoleReporter() {
+        return "console reporter";
+    }
+
     /** @return a release grid as text */
     static String releaseGrid(ReleaseGrid grid) {
         return "ReleaseGrid[baseIndex=" + grid.baseIndex() + ", baseNs=" + grid.baseNs() + ", periodNs="

@@ -22,8 +22,9 @@ import org.objectweb.asm.Opcodes;
  * outside the methods that run before the first release, and each loaded inside them on a path
  * that ends in a throw (an argument check's message, built only when the check fails).
  *
- * <p>For the release-path tests of every module ({@code ReleasePathConstantsTest} in core, the
- * real-time layer's sleeper test); ASM is a test dependency of each.
+ * <p>For the release-path tests of every module ({@code ReleasePathConstantsTest} in core,
+ * {@code ClockNanosleepTest} in the real-time layer, {@code ReleaseStatsTest} in the bench); ASM is
+ * a test dependency of each.
  */
 public final class ReleasePathStrings {
 
