@@ -78,8 +78,8 @@ class QuietGateTest {
         // 2 CPUs over 1 s at 100 ticks/s: 200 ticks. The machine's tick-sampled busy time is 12
         // ticks (0.12 CPUs, busy by the old figure); the other processes' own counters grew by 8
         // ticks (0.08 CPUs), within the 0.05-CPU tick noise of it: that is the figure judged.
-        HostSample start = new HostSample(0, 0.4, 2, 1000, 100, 0, 0, 0, Map.of(7L, 50L, 9L, 10L));
-        HostSample end = new HostSample(1_000_000_000L, 0.5, 2, 1200, 112, 0, 0, 0, Map.of(7L, 55L, 9L, 13L));
+        HostSample start = new HostSample(0, 0.4, 2, 1000, 100, 0, 0, 0, Map.of(7L, 50L, 9L, 10L), Double.NaN);
+        HostSample end = new HostSample(1_000_000_000L, 0.5, 2, 1200, 112, 0, 0, 0, Map.of(7L, 55L, 9L, 13L), Double.NaN);
         MachineCheck.Reading r = MachineCheck.Reading.of(MeasuredConditions.between(start, end, null, Double.NaN));
         assertEquals(0.08, r.otherCpus(), 1e-12);
         assertEquals(0.0, r.stealPct());

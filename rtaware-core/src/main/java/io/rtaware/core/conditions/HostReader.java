@@ -38,7 +38,55 @@ public final class HostReader {
         Optional<String> selfStat = files.read("/proc/self/stat");
         long self = selfStat.map(HostReader::selfTicks).orElse(-1L);
         Map<Long, Long> others = selfStat.map(HostReader::pid).filter(pid -> pid > 0).map(this::otherTicks).orElse(null);
-        return new HostSample(now, load, (int) cpu[3], cpu[0], cpu[1], cpu[2], self, involuntarySwitches(), others);
+        return new HostSample(now, load, (int) cpu[3], cpu[0], cpu[1], cpu[2], self, involuntarySwitches(), others,
+                hugePagesPct());
+    }
+
+    /**
+     * The share of this process's resident memory mapped in huge pages ({@code
+     * /proc/self/smaps_rollup}: transparent huge pages of anonymous memory, of shared memory such
+     * as ZGC's heap and of files, and explicit ones from {@code hugetlbfs}). A drain of thousands
+     * of tasks reads each task's objects once a period, one 4 KiB page after another: with the
+     * heap in 2 MiB pages the processor's address translations of those reads hit its TLB instead
+     * of walking the page tables, which on a virtual machine costs two walks (docs/performance.md).
+     *
+     * @return percent, or NaN where the file cannot be read
+     */
+    private double hugePagesPct() {
+        return files.read("/proc/self/smaps_rollup").map(HostReader::hugePagesPct).orElse(Double.NaN);
+    }
+
+    /**
+     * The file sums each figure over the process's mappings, so memory mapped at several addresses
+     * counts once per mapping in both parts of the share (JDK 17's ZGC maps its heap three times:
+     * 512 MiB of heap in huge pages reads as 1536 MiB of {@code ShmemPmdMapped}); the share is
+     * still the share.
+     *
+     * @param smapsRollup the text of {@code /proc/PID/smaps_rollup}
+     * @return the sum of its {@code AnonHugePages}, {@code ShmemPmdMapped}, {@code FilePmdMapped},
+     *     {@code Shared_Hugetlb} and {@code Private_Hugetlb} lines (a line the kernel does not
+     *     write counts nothing) as a percentage of its {@code Rss} line, at most 100; NaN without
+     *     an {@code Rss} above 0 or without any of those lines
+     */
+    static double hugePagesPct(String smapsRollup) {
+        long rss = kibField(smapsRollup, "Rss");
+        long huge = 0;
+        boolean any = false;
+        for (String key : new String[] {"AnonHugePages", "ShmemPmdMapped", "FilePmdMapped", "Shared_Hugetlb",
+                "Private_Hugetlb"}) {
+            long kb = kibField(smapsRollup, key);
+            if (kb >= 0) {
+                huge += kb;
+                any = true;
+            }
+        }
+        return rss > 0 && any ? Math.min(100.0, 100.0 * huge / rss) : Double.NaN;
+    }
+
+    /** @return a {@code key: N kB} line's N, or -1 if there is no such line or it is not a count */
+    private static long kibField(String text, String key) {
+        return field(text, key).map(v -> v.endsWith("kB") ? v.substring(0, v.length() - 2) : v)
+                .map(HostReader::parseLongOrMinus).orElse(-1L);
     }
 
     /**

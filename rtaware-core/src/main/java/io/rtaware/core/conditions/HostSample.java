@@ -19,9 +19,11 @@ import java.util.Map;
  *     system, plus that of its children it has reaped) by its own counters, or null where the
  *     process table cannot be read whole (no per-process files, or {@code /proc} mounted with
  *     {@code hidepid})
+ * @param hugePagesPct the share of this process's resident memory mapped in huge pages, percent, or
+ *     NaN where not readable
  */
 public record HostSample(long nanoTime, double load1, int cpus, long totalTicks, long busyTicks, long stealTicks,
-                         long selfTicks, long involuntarySwitches, Map<Long, Long> otherTicks) {
+                         long selfTicks, long involuntarySwitches, Map<Long, Long> otherTicks, double hugePagesPct) {
 
     /**
      * Keeps an unmodifiable copy of the process table.
@@ -35,6 +37,7 @@ public record HostSample(long nanoTime, double load1, int cpus, long totalTicks,
      * @param selfTicks CPU time of this process, or -1
      * @param involuntarySwitches involuntary context switches of this process's live threads, or -1
      * @param otherTicks per process id, every other process's CPU time (copied), or null
+     * @param hugePagesPct the share of this process's resident memory in huge pages, percent, or NaN
      */
     public HostSample {
         otherTicks = otherTicks == null ? null : Map.copyOf(otherTicks);

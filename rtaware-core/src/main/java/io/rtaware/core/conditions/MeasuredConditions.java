@@ -37,12 +37,15 @@ import java.util.Map;
  * @param timerSlackNs the largest timer slack, ns, of the threads that ran the cycles, as each read
  *     it from {@code /proc} after its setup ({@link ThreadTimerSlack}): Linux's default is 50 000 ns,
  *     rtaware's real-time layer asks for 1; null where not known (no such threads, no {@code /proc})
+ * @param hugePagesPct the share of this process's resident memory mapped in huge pages at the
+ *     span's end, percent (with the launcher's defaults, on a kernel that gives shared memory huge
+ *     pages, the heap is: see docs/performance.md, "JVM choice"), or NaN where not measured
  */
 public record MeasuredConditions(double durationS, double loadStart, double loadEnd, int machineCpus,
                                  double otherCpus, double stealPct, long gcCount, double gcTotalMs,
                                  double gcMaxPauseMs, long safepoints, Double timeToSafepointMaxMs, String safepointNote,
                                  double longStopLimitMs, long longStops, long involuntarySwitches,
-                                 double longestStallMs, Long timerSlackNs) {
+                                 double longestStallMs, Long timerSlackNs, double hugePagesPct) {
 
     /**
      * How far, as a share of this process's own CPU, the machine's tick-sampled busy time minus
@@ -98,7 +101,8 @@ public record MeasuredConditions(double durationS, double loadStart, double load
                 pauses == null ? null : pauses.maxTimeToSafepointMs(),
                 pauses == null ? "not part of this span" : pauses.safepointNote(), longStopLimitMs,
                 pauses == null || Double.isNaN(longStopLimitMs) ? -1 : pauses.stopsLongerThan(longStopLimitMs), switches,
-                pauses == null ? Double.NaN : pauses.longestStallMs(), null);
+                pauses == null ? Double.NaN : pauses.longestStallMs(), null,
+                end.hugePagesPct());
     }
 
     /**
@@ -118,7 +122,7 @@ public record MeasuredConditions(double durationS, double loadStart, double load
         Long ns = slack.largestNs().isPresent() ? slack.largestNs().getAsLong() : null;
         return new MeasuredConditions(durationS, loadStart, loadEnd, machineCpus, otherCpus, stealPct, gcCount,
                 gcTotalMs, gcMaxPauseMs, safepoints, timeToSafepointMaxMs, safepointNote, longStopLimitMs, longStops,
-                involuntarySwitches, longestStallMs, ns);
+                involuntarySwitches, longestStallMs, ns, hugePagesPct);
     }
 
     static long othersTicks(Map<Long, Long> start, Map<Long, Long> end) {

@@ -40,6 +40,8 @@ class ConditionsMeterTest {
         assertEquals(14.2, m.loadStart(), 1e-12);
         assertEquals(15.0, m.loadEnd(), 1e-12);
         assertEquals(42, m.involuntarySwitches(), "52 at the end minus 10 at the start, over both threads");
+        assertEquals(100.0 * (12_288 + 524_288) / 633_868, m.hugePagesPct(), 1e-9,
+                "the end's smaps_rollup: 12 MiB of anonymous and 512 MiB of shared huge pages, of 619 MiB resident");
         assertEquals(3, m.gcCount());
         assertEquals(0.3, m.gcMaxPauseMs(), 1e-12);
         assertNull(m.timeToSafepointMaxMs(), "the fake JVM does not measure it");
@@ -150,30 +152,30 @@ class ConditionsMeterTest {
     @Test
     void theProcessTableIsHeldNearTheMachinesBusyTimeAndNeverAboveItsCpus() {
         // 2 CPUs, 10 s: 2000 ticks. This process used 200 ticks (0.2 CPU): noise 0.05 CPU.
-        HostSample start = new HostSample(0, 1, 2, 1_000, 100, 0, 50, 0, Map.of(7L, 10L));
+        HostSample start = new HostSample(0, 1, 2, 1_000, 100, 0, 50, 0, Map.of(7L, 10L), Double.NaN);
         // The machine was busy 1200 ticks, 1000 of them not this process's (1.0 CPU), the table saw 20.
-        HostSample unseen = new HostSample(10_000_000_000L, 1, 2, 3_000, 1_300, 0, 250, 0, Map.of(7L, 30L));
+        HostSample unseen = new HostSample(10_000_000_000L, 1, 2, 3_000, 1_300, 0, 250, 0, Map.of(7L, 30L), Double.NaN);
         assertEquals(1.0 - 0.05, MeasuredConditions.between(start, unseen, null, Double.NaN).otherCpus(), 1e-12,
                 "auto-reaped children: the machine's busy time less its noise");
         // A late reaper's cutime: 9 600 ticks in the table, the machine only 300 busy ticks beyond this process.
-        HostSample late = new HostSample(10_000_000_000L, 1, 2, 3_000, 600, 0, 250, 0, Map.of(7L, 9_610L));
+        HostSample late = new HostSample(10_000_000_000L, 1, 2, 3_000, 600, 0, 250, 0, Map.of(7L, 9_610L), Double.NaN);
         assertEquals(0.3 + 0.05, MeasuredConditions.between(start, late, null, Double.NaN).otherCpus(), 1e-12,
                 "a whole life reaped at once: the machine's busy time plus its noise");
         // Within the noise the exact counters stand.
-        HostSample agree = new HostSample(10_000_000_000L, 1, 2, 3_000, 600, 0, 250, 0, Map.of(7L, 290L));
+        HostSample agree = new HostSample(10_000_000_000L, 1, 2, 3_000, 600, 0, 250, 0, Map.of(7L, 290L), Double.NaN);
         assertEquals(0.28, MeasuredConditions.between(start, agree, null, Double.NaN).otherCpus(), 1e-12);
         // Impossible ticks (a machine counter that ran backwards into nonsense) never give more than the CPUs.
-        HostSample wild = new HostSample(10_000_000_000L, 1, 2, 3_000, 99_000, 0, 250, 0, null);
+        HostSample wild = new HostSample(10_000_000_000L, 1, 2, 3_000, 99_000, 0, 250, 0, null, Double.NaN);
         assertEquals(2.0, MeasuredConditions.between(start, wild, null, Double.NaN).otherCpus(), 1e-12);
     }
 
     @Test
     void withoutAProcessTableTheMachinesBusyTimeMinusThisProcessIsUsed() {
-        HostSample start = new HostSample(0, 1, 2, 1_000, 100, 0, 50, 0, null);
-        HostSample end = new HostSample(10_000_000_000L, 1, 2, 3_000, 700, 0, 250, 0, null);
+        HostSample start = new HostSample(0, 1, 2, 1_000, 100, 0, 50, 0, null, Double.NaN);
+        HostSample end = new HostSample(10_000_000_000L, 1, 2, 3_000, 700, 0, 250, 0, null, Double.NaN);
         // 600 busy ticks minus 200 of this process's, over 2000 ticks on 2 CPUs
         assertEquals(0.4, MeasuredConditions.between(start, end, null, Double.NaN).otherCpus(), 1e-12);
-        HostSample withTable = new HostSample(10_000_000_000L, 1, 2, 3_000, 700, 0, 250, 0, Map.of(7L, 20L));
+        HostSample withTable = new HostSample(10_000_000_000L, 1, 2, 3_000, 700, 0, 250, 0, Map.of(7L, 20L), Double.NaN);
         assertEquals(0.4, MeasuredConditions.between(start, withTable, null, Double.NaN).otherCpus(), 1e-12,
                 "a table at one end only is no table");
     }

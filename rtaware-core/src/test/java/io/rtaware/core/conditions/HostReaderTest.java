@@ -162,4 +162,17 @@ class HostReaderTest {
                 "only the proc at /proc counts");
         assertEquals("/a/b", HostReader.cgroupV2Path("1:cpu:/x\n0::/a/b\n"));
     }
+
+    @Test
+    void readsTheShareOfResidentMemoryInHugePagesFromSmapsRollup() {
+        assertEquals(100.0 * (12_288 + 524_288) / 633_868, reader("busy-end").sample().hugePagesPct(), 1e-9,
+                "transparent huge pages of anonymous memory and of ZGC's shared-memory heap, of the resident memory");
+        assertTrue(Double.isNaN(reader("busy-start").sample().hugePagesPct()), "no smaps_rollup: not known");
+        assertEquals(0.0, HostReader.hugePagesPct("Rss:  1728 kB\nAnonHugePages:  0 kB\nShmemPmdMapped:  0 kB\n"),
+                "read, none");
+        assertEquals(50.0, HostReader.hugePagesPct("Rss:  8192 kB\nPrivate_Hugetlb:  4096 kB\n"),
+                "explicit huge pages count");
+        assertTrue(Double.isNaN(HostReader.hugePagesPct("Rss:  1728 kB\n")), "none of the huge page lines: not known");
+        assertTrue(Double.isNaN(HostReader.hugePagesPct("AnonHugePages:  0 kB\n")), "no resident size: not known");
+    }
 }

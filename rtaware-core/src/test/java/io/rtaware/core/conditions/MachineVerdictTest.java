@@ -12,11 +12,11 @@ class MachineVerdictTest {
     private static MeasuredConditions measured(double otherCpus, double stealPct, double gcMaxMs, Double ttspMs,
                                                long longStops) {
         return new MeasuredConditions(10, 0.5, 0.6, 2, otherCpus, stealPct, gcMaxMs > 0 ? 1 : 0, gcMaxMs, gcMaxMs,
-                ttspMs == null ? -1 : 1, ttspMs, null, 1.0, longStops, 5, 0.5, null);
+                ttspMs == null ? -1 : 1, ttspMs, null, 1.0, longStops, 5, 0.5, null, Double.NaN);
     }
 
     private static MeasuredConditions stalled(double longestStallMs) {
-        return new MeasuredConditions(10, 0.5, 0.6, 2, 0.01, 0, 0, 0, 0, -1, null, null, 1.0, 0, 5, longestStallMs, null);
+        return new MeasuredConditions(10, 0.5, 0.6, 2, 0.01, 0, 0, 0, 0, -1, null, null, 1.0, 0, 5, longestStallMs, null, Double.NaN);
     }
 
     private static MeasuredConditions measured(double otherCpus, double stealPct, double gcMaxMs, Double ttspMs) {

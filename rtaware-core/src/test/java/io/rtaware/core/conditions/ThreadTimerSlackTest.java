@@ -50,7 +50,7 @@ class ThreadTimerSlackTest {
     @Test
     void theConditionsCarryTheLargestSlackOrNull() throws Exception {
         MeasuredConditions measured = new MeasuredConditions(10, 0.5, 0.6, 2, 0.01, 0, 0, 0, 0, -1, null, null, 1.0,
-                0, 5, 0.5, null);
+                0, 5, 0.5, null, Double.NaN);
         ThreadTimerSlack observed = new ThreadTimerSlack(proc);
         assertEquals(null, measured.withTimerSlack(observed).timerSlackNs(), "no thread observed: not known");
         thread("1");
