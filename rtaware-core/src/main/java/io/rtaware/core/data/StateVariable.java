@@ -1,5 +1,7 @@
 package io.rtaware.core.data;
 
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
 import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.StampedLock;
 
@@ -33,7 +35,21 @@ public final class StateVariable<T extends StateValue<T>> {
     /** Set by the producer while it waits for readers to leave (one producer per key). */
     private volatile boolean writerWaiting;
 
+    /**
+     * Read with volatile reads; written, under the write lock, with an ordered store: the write
+     * lock's release right after it is a volatile store, which makes both visible in order, so a
+     * volatile store here would only add a second full fence to every commit.
+     */
     private volatile long generation;
+    private static final VarHandle GENERATION;
+
+    static {
+        try {
+            GENERATION = MethodHandles.lookup().findVarHandle(StateVariable.class, "generation", long.class);
+        } catch (ReflectiveOperationException e) {
+            throw new ExceptionInInitializerError(e);
+        }
+    }
     private long commitTimeNs;
     private long firstCommitNs;
     private long minIntervalNs = Long.MAX_VALUE;
@@ -75,7 +91,7 @@ public final class StateVariable<T extends StateValue<T>> {
                 }
             }
             commitTimeNs = nowNs;
-            generation = gen + 1;
+            GENERATION.setRelease(this, gen + 1);
         } finally {
             lock.unlockWrite(stamp);
         }
