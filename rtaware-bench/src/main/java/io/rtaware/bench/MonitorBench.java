@@ -1,5 +1,7 @@
 package io.rtaware.bench;
 
+import io.rtaware.bench.load.BenchSample;
+import io.rtaware.bench.load.BenchTask;
 import io.rtaware.core.data.Input;
 import io.rtaware.core.data.Output;
 import io.rtaware.core.monitor.Monitor;
@@ -52,6 +54,30 @@ public class MonitorBench {
         @Override
         public void execute(long nowNs) {
             // Nothing: the benchmark measures the monitor around it.
+        }
+    }
+
+    /**
+     * Publishes a counter under its own key every cycle, as the tasks of {@code rtaware bench}
+     * do (their key, no work): a commit into the store per release.
+     */
+    static final class CounterPublisher implements Task {
+        private final String name;
+        private Output<BenchSample> out;
+
+        CounterPublisher(String name) {
+            this.name = name;
+        }
+
+        @Override
+        public void initialize(TaskSetup setup) {
+            out = setup.produce(BenchTask.outputKey(name));
+        }
+
+        @Override
+        public void execute(long nowNs) {
+            out.value().sequence++;
+            out.publish();
         }
     }
 
@@ -142,6 +168,12 @@ public class MonitorBench {
         /** Tasks, all with a 10 ms period and released together. */
         @Param({"1000", "10000"})
         public int tasks;
+        /**
+         * Whether each task publishes a value every cycle (as {@code rtaware bench}'s tasks do: a
+         * commit into the store under its write lock per release) or does nothing.
+         */
+        @Param({"false", "true"})
+        public boolean publishes;
         Monitor monitor;
         StepExecutor step;
 
@@ -150,7 +182,9 @@ public class MonitorBench {
         public void start() {
             Monitor.Builder builder = Monitor.builder(new ManualClock());
             for (int i = 0; i < tasks; i++) {
-                builder.task("t" + i, Schedule.periodic(10_000_000), new EmptyTask());
+                String name = "t" + i;
+                Task task = publishes ? new CounterPublisher(name) : new EmptyTask();
+                builder.task(name, Schedule.periodic(10_000_000), task);
             }
             monitor = builder.build();
             step = monitor.startStepped();
