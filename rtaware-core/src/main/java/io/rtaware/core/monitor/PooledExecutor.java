@@ -556,9 +556,9 @@ final class PooledExecutor implements Executor {
 
     private void runCycle(int worker, TaskRuntime runtime) {
         int slot = refSlot(worker);
-        // An ordered store, not a volatile one: the cycle's first step marks it running (or
-        // missed) in its deadline token with a volatile store, whose fence makes this one visible
-        // before it; a second fence here only waited for the same stores.
+        // An ordered store, not a volatile one: the cycle marks itself running (or missed) in its
+        // deadline token, before the task's code, with a volatile store whose fence makes this
+        // one visible before it; a second fence here only waited for the same stores.
         current.setRelease(slot, runtime);
         try {
             Executor.runCycle(runtime, clock, faults);
