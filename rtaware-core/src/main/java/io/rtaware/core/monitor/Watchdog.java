@@ -123,6 +123,13 @@ final class Watchdog {
      * until some later cycle woke the watchdog: a task that hung in it was reported only when
      * it returned).
      *
+     * <p>A wake already asked for and not yet taken (the watchdog has not begun its next scan,
+     * which clears the request first) is not sent again: that scan sees this cycle, whose mark
+     * came before this call read the request. Under {@code --realtime} a watchdog at normal
+     * priority beside SCHED_FIFO workers that keep both CPUs may not run for a whole drain, and
+     * each cycle of the drain woke it again: a fifth of the workers' CPU went to those wake-ups
+     * (docs/performance.md).
+     *
      * @param deadlineNs the deadline of the cycle that starts now
      */
     void wakeFor(long deadlineNs) {
@@ -139,7 +146,7 @@ final class Watchdog {
                 return;
             }
         }
-        if (deadlineNs < wake) {
+        if (deadlineNs < wake && !wakeRequested) {
             wakeRequested = true;
             party.wake();
         }

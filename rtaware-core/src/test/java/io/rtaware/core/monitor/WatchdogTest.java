@@ -72,6 +72,83 @@ class WatchdogTest {
         assertEquals(List.of(), faults);
     }
 
+    /**
+     * Cycles whose deadlines come before the watchdog's wake time each ask for a wake; while the
+     * first wake has not been taken (the watchdog's thread has not run yet, as a watchdog at
+     * normal priority beside real-time workers that keep every CPU), the others send none: its
+     * next scan sees them all. Once it has scanned, an earlier deadline wakes it again.
+     */
+    @Test
+    void aWakeNotYetTakenIsNotSentAgain() {
+        HeldWakes held = new HeldWakes(waiter);
+        Watchdog dog = startOverOneSlot(held, (watchdog, looksBefore, nowNs) -> ms(50) > nowNs ? ms(50) : Long.MAX_VALUE);
+        assertEquals(ms(50) + 1, waiter.awaitIdleNextWakeNs(), "the first scan: wake just after 50 ms");
+
+        dog.wakeFor(ms(20));
+        dog.wakeFor(ms(20));
+        dog.wakeFor(ms(30));
+        assertEquals(1, held.wakes.get(), "three cycles before the wake time, one wake while none is taken");
+
+        held.deliver();
+        assertEquals(ms(50) + 1, waiter.awaitIdleNextWakeNs(), "the woken watchdog scanned and sleeps again");
+        assertEquals(2, dog.scans());
+        dog.wakeFor(ms(20));
+        assertEquals(2, held.wakes.get(), "after its scan, an earlier deadline wakes it again");
+        dog.stopAndJoin();
+        assertEquals(List.of(), faults);
+    }
+
+    /**
+     * A waiter whose wakes are counted and held back until {@link #deliver}: the woken thread
+     * behaves as one that has not been given a CPU yet.
+     */
+    private static final class HeldWakes implements ClockWaiter {
+        private final ClockWaiter inner;
+        final AtomicInteger wakes = new AtomicInteger();
+        private volatile Party innerParty;
+
+        HeldWakes(ClockWaiter inner) {
+            this.inner = inner;
+        }
+
+        @Override
+        public Party register(Thread thread) {
+            Party party = inner.register(thread);
+            innerParty = party;
+            return new Party() {
+                @Override
+                public void park(long targetNs) {
+                    party.park(targetNs);
+                }
+
+                @Override
+                public void wake() {
+                    wakes.incrementAndGet();
+                }
+
+                @Override
+                public void done() {
+                    party.done();
+                }
+            };
+        }
+
+        /** Delivers the wakes held so far (one unpark). */
+        void deliver() {
+            innerParty.wake();
+        }
+
+        @Override
+        public long zeroCycleSpacingNs() {
+            return inner.zeroCycleSpacingNs();
+        }
+
+        @Override
+        public void close() {
+            inner.close();
+        }
+    }
+
     /** What a look at the one slot returns (and does), on the watchdog's thread. */
     private interface SlotLook {
         long nextDeadlineNs(Watchdog watchdog, int looksBefore, long nowNs);
@@ -79,6 +156,11 @@ class WatchdogTest {
 
     /** Starts a watchdog over one slot that never holds a task and whose deadline {@code look} gives. */
     private Watchdog startOverOneSlot(SlotLook look) {
+        return startOverOneSlot(waiter, look);
+    }
+
+    /** As {@link #startOverOneSlot(SlotLook)}, waiting with {@code through}. */
+    private Watchdog startOverOneSlot(ClockWaiter through, SlotLook look) {
         AtomicReference<Watchdog> self = new AtomicReference<>();
         AtomicInteger looks = new AtomicInteger();
         Watchdog.Slots slots = new Watchdog.Slots() {
@@ -97,7 +179,7 @@ class WatchdogTest {
                 return look.nextDeadlineNs(self.get(), looks.getAndIncrement(), nowNs);
             }
         };
-        Watchdog dog = new Watchdog(clock, waiter, new FrameworkFaults((source, error) -> faults.add(source)),
+        Watchdog dog = new Watchdog(clock, through, new FrameworkFaults((source, error) -> faults.add(source)),
                 "test watchdog", slots);
         self.set(dog);
         dog.prepare();
