@@ -1,7 +1,7 @@
 package io.rtaware.bench;
 
-import io.rtaware.bench.load.BenchSample;
 import io.rtaware.bench.load.BenchTask;
+import io.rtaware.bench.load.BusyWork;
 import io.rtaware.core.data.Input;
 import io.rtaware.core.data.Output;
 import io.rtaware.core.monitor.Monitor;
@@ -54,30 +54,6 @@ public class MonitorBench {
         @Override
         public void execute(long nowNs) {
             // Nothing: the benchmark measures the monitor around it.
-        }
-    }
-
-    /**
-     * Publishes a counter under its own key every cycle, as the tasks of {@code rtaware bench}
-     * do (their key, no work): a commit into the store per release.
-     */
-    static final class CounterPublisher implements Task {
-        private final String name;
-        private Output<BenchSample> out;
-
-        CounterPublisher(String name) {
-            this.name = name;
-        }
-
-        @Override
-        public void initialize(TaskSetup setup) {
-            out = setup.produce(BenchTask.outputKey(name));
-        }
-
-        @Override
-        public void execute(long nowNs) {
-            out.value().sequence++;
-            out.publish();
         }
     }
 
@@ -169,8 +145,9 @@ public class MonitorBench {
         @Param({"1000", "10000"})
         public int tasks;
         /**
-         * Whether each task publishes a value every cycle (as {@code rtaware bench}'s tasks do: a
-         * commit into the store under its write lock per release) or does nothing.
+         * Whether each task is one of {@code rtaware bench}'s with no work ({@link BenchTask}: it
+         * publishes a value every cycle, a commit into the store under its write lock per
+         * release) or does nothing.
          */
         @Param({"false", "true"})
         public boolean publishes;
@@ -181,9 +158,10 @@ public class MonitorBench {
         @Setup(Level.Trial)
         public void start() {
             Monitor.Builder builder = Monitor.builder(new ManualClock());
+            BusyWork noWork = publishes ? BusyWork.calibrate() : null;
             for (int i = 0; i < tasks; i++) {
                 String name = "t" + i;
-                Task task = publishes ? new CounterPublisher(name) : new EmptyTask();
+                Task task = publishes ? new BenchTask(name, 0, null, noWork) : new EmptyTask();
                 builder.task(name, Schedule.periodic(10_000_000), task);
             }
             monitor = builder.build();
