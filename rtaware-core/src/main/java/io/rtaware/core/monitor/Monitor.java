@@ -767,8 +767,10 @@ public final class Monitor {
             ListenerFanOut events = new ListenerFanOut(faults);
             List<TaskRuntime> runtimes = new ArrayList<>();
             StatisticsTable statistics = new StatisticsTable(declared.size());
+            ReleaseTable releases = new ReleaseTable(declared.size());
             for (DeclaringSetup declarations : declared) {
-                TaskRuntime runtime = new TaskRuntime(declarations.spec, runtimes.size(), statistics, clock, events,
+                TaskRuntime runtime = new TaskRuntime(declarations.spec, runtimes.size(), statistics, releases, clock,
+                        events,
                         declarations.inputs.toArray(NO_INPUTS), declarations.outputs.toArray(NO_OUTPUTS));
                 if (adaptivePolicy != null) {
                     runtime.adaptive(adaptivePolicy);

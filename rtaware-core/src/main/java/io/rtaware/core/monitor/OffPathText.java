@@ -92,10 +92,4 @@ final class OffPathText {
     static String consoleReporter() {
         return "console reporter";
     }
-
-    /** @return a release grid as text */
-    static String releaseGrid(ReleaseGrid grid) {
-        return "ReleaseGrid[baseIndex=" + grid.baseIndex() + ", baseNs=" + grid.baseNs() + ", periodNs="
-                + grid.periodNs() + ", deadlineNs=" + grid.deadlineNs() + "]";
-    }
 }

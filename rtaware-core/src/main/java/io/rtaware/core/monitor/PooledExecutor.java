@@ -90,6 +90,13 @@ final class PooledExecutor implements Executor {
     private final ThreadSetup threadSetup;
     /** The periodic tasks that do not block, by pool slot. */
     private final TaskRuntime[] pooled;
+    /**
+     * The release bookkeeping of every task (null without pooled tasks): workers read a batch's
+     * next releases and deadlines there, in its dense rows, without reaching the runtimes.
+     */
+    private final ReleaseTable releases;
+    /** Per pool slot: the task's index, its row in {@link #releases}. */
+    private final int[] taskOf;
     /** The tasks with a thread of their own; null if there are none. */
     private final ThreadedExecutor dedicated;
     private final Watchdog watchdog;
@@ -166,6 +173,11 @@ final class PooledExecutor implements Executor {
             (isPooled(runtime) ? inPool : own).add(runtime);
         }
         this.pooled = inPool.toArray(new TaskRuntime[0]);
+        this.releases = pooled.length == 0 ? null : pooled[0].releaseTable();
+        this.taskOf = new int[pooled.length];
+        for (int slot = 0; slot < pooled.length; slot++) {
+            taskOf[slot] = pooled[slot].index();
+        }
         this.dedicated = own.isEmpty() ? null
                 : new ThreadedExecutor(clock, waiter, own, stopAllRequest, threadSetup, faults);
         this.watchdog = new Watchdog(clock, waiter, faults, "pool watchdog", new WorkerSlots());
@@ -392,7 +404,7 @@ final class PooledExecutor implements Executor {
             wakeParkedWorker();
             long earliest = Long.MAX_VALUE;
             for (int i = claimed - 1; i >= 0; i--) {
-                earliest = Math.min(earliest, pooled[batch[i]].nextDeadlineNs());
+                earliest = Math.min(earliest, releases.nextDeadlineNs(taskOf[batch[i]]));
                 deadlinesFrom[i] = earliest;
             }
             int deadlineSlot = longSlot(index);
@@ -413,7 +425,7 @@ final class PooledExecutor implements Executor {
          */
         private void putBack(Shard shard) {
             for (int i = 0; i < claimed; i++) {
-                long next = pooled[batch[i]].nextReleaseNs();
+                long next = releases.nextReleaseNs(taskOf[batch[i]]);
                 if (next != TaskRuntime.NEVER) {
                     shard.waiting.push(batch[i], next);
                 }

@@ -40,8 +40,9 @@ import org.HdrHistogram.AbstractHistogram;
  * counters). Sized once, at construction; nothing is allocated afterwards.
  *
  * <p>The table builds every task's two histograms (27 KB a task) at construction, before the
- * monitor builds its tasks' runtimes: the few small objects a release touches (the runtime, its
- * release grid and deadline token) then lie next to those of the tasks before and after it in
+ * monitor builds its tasks' runtimes: the few small objects a release touches (the runtime and
+ * its input and output handles; the grid and token are in a {@link ReleaseTable}) then lie next
+ * to those of the tasks before and after it in
  * memory, rather than 27 KB apart, and a drain in index order reads memory forward, which the
  * processor's prefetcher follows (the pool's drain of 10 000 in-phase releases, measured before
  * and after: docs/performance.md, "The drain").

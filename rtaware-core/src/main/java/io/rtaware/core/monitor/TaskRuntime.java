@@ -7,8 +7,6 @@ import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.Task;
 import io.rtaware.core.task.TaskSpec;
 import io.rtaware.core.time.Clock;
-import java.lang.invoke.MethodHandles;
-import java.lang.invoke.VarHandle;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -22,10 +20,10 @@ import java.util.Map;
  * {@link #NEVER}; a watchdog calls {@link #checkDeadline(long)}. The rules:
  * <ul>
  *   <li>release k of a periodic task is at {@code base + k * period}, with
- *   {@code base = start + offset} ({@link ReleaseGrid});</li>
+ *   {@code base = start + offset} (the task's grid in the monitor's {@link ReleaseTable});</li>
  *   <li>a cycle that has not returned by {@code release + deadline} is a miss, reported by the
  *   watchdog at that moment ({@link #checkDeadline(long)}) or, failing that, when it returns
- *   ({@link CycleToken} makes it exactly one of the two);</li>
+ *   (the task's deadline token in the {@link ReleaseTable} makes it exactly one of the two);</li>
  *   <li>a cycle that returns after later releases came due skips to the first grid point at or
  *   after its end; every skipped release counts as a release and a miss, and is never run
  *   (no catch-up bursts);</li>
@@ -47,9 +45,10 @@ import java.util.Map;
  * <p>Thread-safety: {@link #runCycle()} is called by one thread at a time (the task's own
  * thread, or whichever worker an executor hands the task to, with a happens-before edge between
  * consecutive callers); {@link #checkDeadline(long)} by the watchdog, concurrently, coordinated
- * through the {@link CycleToken}. Counters are safe to read at any time; the distributions and
- * the period history only after the task's cycles have stopped. The grid is one immutable object
- * in a volatile field, replaced only between cycles, so the watchdog always sees a consistent one.
+ * through the deadline token. Counters are safe to read at any time; the distributions and
+ * the period history only after the task's cycles have stopped. The grid, the next release and
+ * the token are numbers in the monitor's {@link ReleaseTable}, which says how the watchdog reads
+ * them while the task runs.
  */
 final class TaskRuntime implements TaskInfo {
 
@@ -59,7 +58,7 @@ final class TaskRuntime implements TaskInfo {
     static final long CONTINUOUS_ERROR_PAUSE_NS = 20_000_000L;
 
     /**
-     * Bookkeeping besides the statistics: runtime, grid, token, spec, the builder's declarations,
+     * Bookkeeping besides the statistics: runtime, release table row, spec, the builder's declarations,
      * and the task's thread object under the threaded executor (about 1.3 KB and 0.8 KB measured
      * with the JVM's allocation counter, see {@code MonitorFootprintTest}).
      */
@@ -85,7 +84,7 @@ final class TaskRuntime implements TaskInfo {
     private enum Release { PERIODIC, CONTINUOUS, ONCE }
 
     private final TaskSpec spec;
-    /** {@code spec.task()}, kept here: one object less for a cycle to reach (see {@link CycleToken}). */
+    /** {@code spec.task()}, kept here: one object less for a cycle to reach (see {@link ReleaseTable}). */
     private final Task task;
     private final int index;
     private final Clock clock;
@@ -103,8 +102,8 @@ final class TaskRuntime implements TaskInfo {
      * there directly, and touches {@link #statistics} only when a batch goes into the histograms.
      */
     private final StatisticsTable statisticsTable;
-    private final CycleToken token = new CycleToken();
-    private volatile ReleaseGrid grid;
+    /** The table that holds this task's grid, next release and deadline token, at {@link #index}. */
+    private final ReleaseTable releases;
     /** Null unless adaptive periods are enabled on the monitor and the schedule has a range. */
     private AdaptivePeriodController adaptive;
     private final List<PeriodChange> periodHistory = new ArrayList<>();
@@ -117,31 +116,13 @@ final class TaskRuntime implements TaskInfo {
     /** Told on the cycle's thread once a periodic cycle is marked running; null if none. */
     private Watchdog watchdog;
 
-    // The next release, written by the cycle's thread between cycles.
-    private long nextIndex;
-    private long nextReleaseNs = NEVER;
-    /**
-     * {@link #nextIndex} for the threaded executor's watchdog; -1 before the start and once never
-     * released again. Published with an ordered store, not a volatile one (no fence per cycle): a
-     * watchdog that reads an older index wakes for an earlier deadline, which is only early.
-     */
-    private long pendingIndex = -1;
-    private static final VarHandle PENDING_INDEX;
-
-    static {
-        try {
-            PENDING_INDEX = MethodHandles.lookup().findVarHandle(TaskRuntime.class, "pendingIndex", long.class);
-        } catch (ReflectiveOperationException e) {
-            throw new ExceptionInInitializerError(e);
-        }
-    }
-
-    TaskRuntime(TaskSpec spec, int index, StatisticsTable statisticsTable, Clock clock, ListenerFanOut events,
-                InputHandle<?>[] inputs, OutputHandle<?>[] outputs) {
+    TaskRuntime(TaskSpec spec, int index, StatisticsTable statisticsTable, ReleaseTable releases, Clock clock,
+                ListenerFanOut events, InputHandle<?>[] inputs, OutputHandle<?>[] outputs) {
         this.spec = spec;
         this.task = spec.task();
         this.index = index;
         this.statisticsTable = statisticsTable;
+        this.releases = releases;
         this.statistics = new CycleStatistics(statisticsTable, index, CycleStatistics.flushPhaseOf(index));
         this.clock = clock;
         this.events = events;
@@ -157,11 +138,11 @@ final class TaskRuntime implements TaskInfo {
         if (schedule instanceof Schedule.Periodic p) {
             release = Release.PERIODIC;
             offsetNs = p.offsetNs();
-            grid = new ReleaseGrid(0, 0, p.periodNs(), p.deadlineNs());
+            releases.define(index, p.periodNs(), p.deadlineNs());
         } else {
             release = schedule instanceof Schedule.Once ? Release.ONCE : Release.CONTINUOUS;
             offsetNs = schedule instanceof Schedule.Once o ? o.offsetNs() : 0;
-            grid = new ReleaseGrid(0, 0, 0, 0);
+            releases.define(index, 0, 0);
         }
     }
 
@@ -173,6 +154,11 @@ final class TaskRuntime implements TaskInfo {
     @Override
     public int index() {
         return index;
+    }
+
+    /** @return the table of the monitor's release bookkeeping, where this task's row is {@link #index()} */
+    ReleaseTable releaseTable() {
+        return releases;
     }
 
     /** @return the table of the monitor's statistics, where this task's column is {@link #index()} */
@@ -255,9 +241,8 @@ final class TaskRuntime implements TaskInfo {
     /** Fixes the grid and the first release on {@code startNs}. */
     private void anchor(long startNs) {
         this.startNs = startNs;
-        grid = grid.anchoredAt(startNs + offsetNs);
-        nextIndex = 0;
-        nextReleaseNs = release == Release.PERIODIC ? grid.releaseNs(0) : startNs + offsetNs;
+        releases.anchor(index, startNs + offsetNs);
+        releases.next(index, 0, startNs + offsetNs);
     }
 
     /**
@@ -269,7 +254,7 @@ final class TaskRuntime implements TaskInfo {
      */
     void begin(long startNs) {
         anchor(startNs);
-        PENDING_INDEX.setRelease(this, release == Release.PERIODIC ? 0L : -1L);
+        releases.publishPendingIndex(index, release == Release.PERIODIC ? 0L : -1L);
         setState(TaskState.RUNNING, startNs);
     }
 
@@ -278,7 +263,7 @@ final class TaskRuntime implements TaskInfo {
      *     by the thread that runs the task's cycles
      */
     long nextReleaseNs() {
-        return nextReleaseNs;
+        return releases.nextReleaseNs(index);
     }
 
     /**
@@ -287,18 +272,17 @@ final class TaskRuntime implements TaskInfo {
      *     task's cycles (the pooled executor orders due releases by it)
      */
     long nextDeadlineNs() {
-        return release == Release.PERIODIC && nextReleaseNs != NEVER ? grid.deadlineOf(nextIndex) : NEVER;
+        return release == Release.PERIODIC ? releases.nextDeadlineNs(index) : NEVER;
     }
 
     /** @return the world time of release k (periodic), or of the single run (once/continuous) */
     long releaseTimeNs(long k) {
-        ReleaseGrid g = grid;
-        return release == Release.PERIODIC ? g.releaseNs(k) : g.baseNs();
+        return release == Release.PERIODIC ? releases.releaseNs(index, k) : releases.baseNs(index);
     }
 
     /** @return the absolute deadline of release k, or {@link Long#MAX_VALUE} if not periodic */
     long deadlineOf(long k) {
-        return release == Release.PERIODIC ? grid.deadlineOf(k) : Long.MAX_VALUE;
+        return release == Release.PERIODIC ? releases.deadlineOf(index, k) : Long.MAX_VALUE;
     }
 
     /**
@@ -306,12 +290,12 @@ final class TaskRuntime implements TaskInfo {
      *     else -1
      */
     long fixedDeadlineNs() {
-        return release == Release.PERIODIC && adaptive == null ? grid.deadlineNs() : -1;
+        return release == Release.PERIODIC && adaptive == null ? releases.deadlineNs(index) : -1;
     }
 
     /** @return the current period in world nanoseconds (0 unless periodic) */
     long periodNs() {
-        return grid.periodNs();
+        return releases.periodNs(index);
     }
 
     /** @return every period change so far; call only after the task's cycles have stopped */
@@ -331,7 +315,7 @@ final class TaskRuntime implements TaskInfo {
         if (running != Long.MAX_VALUE) {
             return running;
         }
-        long k = (long) PENDING_INDEX.getAcquire(this);
+        long k = releases.pendingIndex(index);
         return k < 0 ? Long.MAX_VALUE : deadlineOf(k);
     }
 
@@ -339,7 +323,7 @@ final class TaskRuntime implements TaskInfo {
      * @return the absolute deadline of the cycle running now, or {@link Long#MAX_VALUE} if none
      */
     long runningDeadlineNs() {
-        long k = token.running();
+        long k = releases.runningCycle(index);
         return k < 0 ? Long.MAX_VALUE : deadlineOf(k);
     }
 
@@ -349,8 +333,8 @@ final class TaskRuntime implements TaskInfo {
      * stop. Listener faults are contained; only a {@link VirtualMachineError} of the task escapes.
      */
     void runCycle() {
-        long k = nextIndex;
-        long releaseNs = nextReleaseNs;
+        long k = releases.nextIndex(index);
+        long releaseNs = releases.nextReleaseNs(index);
         long cycleStartNs = clock.nanos();
         if (statisticsTable.released(index, Math.max(0, cycleStartNs - releaseNs))) {
             statisticsTable.tryRecordWaiting(index);
@@ -362,11 +346,11 @@ final class TaskRuntime implements TaskInfo {
                 // Started after its deadline (it waited for a thread or a worker): the miss is
                 // certain and reported now, as the watchdog would at its next look; nothing for
                 // the watchdog to watch, so it is not woken (a backlog would wake it every cycle).
-                token.startAlreadyMissed(k);
+                releases.startCycleAlreadyMissed(index, k);
                 statistics.missed();
                 events.onDeadlineMiss(this, releaseNs, deadline, cycleStartNs, true);
             } else {
-                token.start(k);
+                releases.startCycle(index, k);
                 if (watchdog != null) {
                     watchdog.wakeFor(deadline);
                 }
@@ -415,7 +399,7 @@ final class TaskRuntime implements TaskInfo {
         }
 
         boolean missed = false;
-        if (periodic && token.finish(k)) {
+        if (periodic && releases.finishCycle(index, k)) {
             // The watchdog had not claimed this cycle: a late finish is reported now.
             long deadline = deadlineOf(k);
             if (endNs > deadline) {
@@ -473,10 +457,10 @@ final class TaskRuntime implements TaskInfo {
         if (release != Release.CONTINUOUS) {
             throw new IllegalStateException(OffPathText.notContinuous(name(), spec.schedule().kind()));
         }
-        if (nextReleaseNs == NEVER) {
+        if (releases.nextReleaseNs(index) == NEVER) {
             throw new IllegalStateException(OffPathText.willNotRunAgain(name(), state));
         }
-        nextReleaseNs = nowNs;
+        releases.next(index, releases.nextIndex(index), nowNs);
         runCycle();
     }
 
@@ -488,11 +472,11 @@ final class TaskRuntime implements TaskInfo {
      * @param nowNs world time
      */
     void recoverAfterFault(long nowNs) {
-        long k = nextIndex;
+        long k = releases.nextIndex(index);
         if (release == Release.PERIODIC) {
-            token.finish(k);
+            releases.finishCycle(index, k);
         }
-        scheduleNext(k, Math.min(nowNs, nextReleaseNs), nowNs, true);
+        scheduleNext(k, Math.min(nowNs, releases.nextReleaseNs(index)), nowNs, true);
     }
 
     /** The release rules after cycle k, which started at {@code cycleStartNs} and ended at {@code endNs}. */
@@ -500,19 +484,14 @@ final class TaskRuntime implements TaskInfo {
         switch (release) {
             case PERIODIC -> {
                 long next = nextAfter(k, endNs);
-                nextIndex = next;
-                nextReleaseNs = grid.releaseNs(next);
-                PENDING_INDEX.setRelease(this, next);
+                releases.next(index, next, releases.releaseNs(index, next));
+                releases.publishPendingIndex(index, next);
             }
             case CONTINUOUS -> {
-                nextIndex = k + 1;
-                if (failed) {
-                    nextReleaseNs = endNs + CONTINUOUS_ERROR_PAUSE_NS;
-                } else {
-                    // Compare with the start, not the release: a zero-duration cycle that started
-                    // late must still be spaced, or it would run twice at the same instant.
-                    nextReleaseNs = endNs > cycleStartNs ? endNs : cycleStartNs + zeroCycleSpacingNs;
-                }
+                // Compare with the start, not the release: a zero-duration cycle that started
+                // late must still be spaced, or it would run twice at the same instant.
+                releases.next(index, k + 1, failed ? endNs + CONTINUOUS_ERROR_PAUSE_NS
+                        : endNs > cycleStartNs ? endNs : cycleStartNs + zeroCycleSpacingNs);
             }
             case ONCE -> {
                 neverAgain();
@@ -522,8 +501,8 @@ final class TaskRuntime implements TaskInfo {
     }
 
     private void neverAgain() {
-        nextReleaseNs = NEVER;
-        PENDING_INDEX.setRelease(this, -1L);
+        releases.next(index, releases.nextIndex(index), NEVER);
+        releases.publishPendingIndex(index, -1L);
     }
 
     /**
@@ -533,12 +512,12 @@ final class TaskRuntime implements TaskInfo {
      * @param nowNs world time
      */
     void checkDeadline(long nowNs) {
-        long k = token.running();
+        long k = releases.runningCycle(index);
         if (k < 0) {
             return;
         }
         long deadline = deadlineOf(k);
-        if (nowNs <= deadline || !token.claim(k)) {
+        if (nowNs <= deadline || !releases.claimCycle(index, k)) {
             return;
         }
         statistics.missed();
@@ -547,23 +526,23 @@ final class TaskRuntime implements TaskInfo {
 
     /**
      * The release to run after release {@code k} whose cycle ended at {@code endNs}
-     * ({@link ReleaseGrid#nextAfter}); each grid point passed over is counted as a release, a
+     * ({@link ReleaseTable#nextAfter}); each grid point passed over is counted as a release, a
      * skipped release and a miss. With adaptive periods, this is also where an evaluation window
      * ends and the grid may be re-anchored.
      */
     private long nextAfter(long k, long endNs) {
-        ReleaseGrid g = grid;
-        long next = g.nextAfter(k, endNs);
+        long next = releases.nextAfter(index, k, endNs);
         long passed = next - (k + 1);
         if (passed > 0) {
             statistics.skipped(passed);
             events.onSkippedReleases(this, passed, endNs);
         }
         if (adaptive != null) {
-            PeriodChange change = adaptive.evaluate(name(), g.releaseNs(next) - startNs, g.periodNs(),
-                    statistics.releases(), statistics.misses(), statistics.runs(), statistics.staleRuns());
+            PeriodChange change = adaptive.evaluate(name(), releases.releaseNs(index, next) - startNs,
+                    releases.periodNs(index), statistics.releases(), statistics.misses(), statistics.runs(),
+                    statistics.staleRuns());
             if (change != null) {
-                grid = g.reanchoredAt(next, change.toPeriodNs(), adaptive.deadlineFor(change.toPeriodNs()));
+                releases.reanchor(index, next, change.toPeriodNs(), adaptive.deadlineFor(change.toPeriodNs()));
                 periodHistory.add(change);
                 events.onPeriodChange(this, change, endNs);
             }
@@ -589,10 +568,9 @@ final class TaskRuntime implements TaskInfo {
     TaskReport report() {
         long rel = statistics.releases();
         long miss = statistics.misses();
-        ReleaseGrid g = grid;
         boolean periodic = release == Release.PERIODIC;
-        Double period = periodic ? g.periodNs() / 1e6 : null;
-        Double deadline = periodic ? g.deadlineNs() / 1e6 : null;
+        Double period = periodic ? releases.periodNs(index) / 1e6 : null;
+        Double deadline = periodic ? releases.deadlineNs(index) / 1e6 : null;
         Double offset = periodic ? offsetNs / 1e6 : null;
         return new TaskReport(name(), spec.schedule().kind(), period, deadline, offset, rel, statistics.runs(), miss,
                 rel == 0 ? 0.0 : round2(100.0 * miss / rel), statistics.skippedReleases(), statistics.staleRuns(),

@@ -18,7 +18,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 class ReleasePathConstantsTest {
 
     @ParameterizedTest
-    @ValueSource(classes = {TaskRuntime.class, CycleToken.class, ReleaseGrid.class, CycleStatistics.class,
+    @ValueSource(classes = {TaskRuntime.class, ReleaseTable.class, CycleStatistics.class,
             StatisticsTable.class, StatisticsRecorder.class, PooledExecutor.class, ThreadedExecutor.class,
             Watchdog.class, ListenerFanOut.class, TaskHeap.class, ParkingClockWaiter.class, InputHandle.class,
             OutputHandle.class, AdaptivePeriodController.class, Executor.class, ConsoleReporter.class,
