@@ -7,7 +7,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * A {@link ThreadSetup} that asks the kernel for the smallest timer slack on every thread that
- * runs cycles ({@code prctl(PR_SET_TIMERSLACK, 1)}). Linux lets a timer of a normally scheduled
+ * runs cycles, and on the watchdogs ({@code prctl(PR_SET_TIMERSLACK, 1)}). Linux lets a timer of a normally scheduled
  * thread expire up to its slack late, 50 us by default, so that it can batch wake-ups: every
  * release of a task parked in {@code parkNanos} or {@code clock_nanosleep} would otherwise start
  * up to 50 us late for no reason of the task's own. Threads under SCHED_FIFO have no slack, so
@@ -55,6 +55,12 @@ public final class MinimalTimerSlack implements ThreadSetup {
 
     @Override
     public void onPoolWorkerStart(int worker, int rmRank, int taskCount) {
+        ask();
+    }
+
+    /** The watchdog too: it wakes at the deadlines it watches, and reports a miss that much later. */
+    @Override
+    public void onWatchdogStart(int taskCount) {
         ask();
     }
 

@@ -13,8 +13,12 @@ import java.util.concurrent.atomic.AtomicInteger;
  * rate-monotonic priority ({@code topPriority} for the shortest period, one less per rank, at
  * least 1; each worker of the pooled executor gets the priority of the fastest task it runs),
  * pins a task's thread to a CPU if asked, and sets its timer slack to 1 ns (which needs no
- * privilege and cuts the median wake-up lateness from ~70 to ~20 us). The JVM's own threads
- * stay SCHED_OTHER.
+ * privilege and cuts the median wake-up lateness from ~70 to ~20 us). The executors' watchdogs,
+ * which report misses at their deadlines, are SCHED_FIFO one above the top priority
+ * ({@link #watchdogPriority()}), with 1 ns slack: at a task's priority or below, a watchdog
+ * could not run while the task threads keep every CPU busy, and a miss would be reported only
+ * when its cycle returned. The JVM's own threads (the JIT compilers and the collector's among
+ * them) stay SCHED_OTHER.
  *
  * <p>{@link #configure} first probes on a short-lived thread whether the process may use
  * SCHED_FIFO (root, CAP_SYS_NICE or a large enough RLIMIT_RTPRIO); if it may not, or this is
@@ -112,7 +116,7 @@ public final class RealtimeThreads implements ThreadSetup {
         return fifo;
     }
 
-    /** @return how many task threads and pool workers are SCHED_FIFO so far */
+    /** @return how many task threads, pool workers and watchdogs are SCHED_FIFO so far */
     public int fifoThreads() {
         return fifoThreads.get();
     }
@@ -123,6 +127,15 @@ public final class RealtimeThreads implements ThreadSetup {
      */
     public int priorityOf(int rmRank) {
         return Math.max(1, topPriority - rmRank);
+    }
+
+    /**
+     * @return the SCHED_FIFO priority of the watchdogs: one above the top task priority, at most
+     *     99 (at 99 the watchdog shares the top tasks' priority, and runs when one of them yields
+     *     the CPU)
+     */
+    public int watchdogPriority() {
+        return Math.min(99, topPriority + 1);
     }
 
     @Override
@@ -158,6 +171,24 @@ public final class RealtimeThreads implements ThreadSetup {
                 fifoThreads.incrementAndGet();
             } else {
                 warnOnce("pool worker " + worker + " stays SCHED_OTHER (" + errno(e) + ")");
+            }
+        }
+    }
+
+    /**
+     * A watchdog runs a few microseconds at each deadline it watches: it gets the SCHED_FIFO
+     * priority above every task's ({@link #watchdogPriority()}) and 1 ns timer slack, so that it
+     * reports a miss at the deadline even while the tasks keep every CPU busy.
+     */
+    @Override
+    public void onWatchdogStart(int taskCount) {
+        sched.timerSlack(MinimalTimerSlack.SLACK_NS);
+        if (fifo) {
+            int e = sched.setFifo(watchdogPriority());
+            if (e == 0) {
+                fifoThreads.incrementAndGet();
+            } else {
+                warnOnce("the watchdog stays SCHED_OTHER (" + errno(e) + ")");
             }
         }
     }

@@ -21,12 +21,13 @@ import org.junit.jupiter.api.Test;
 class MinimalTimerSlackTest {
 
     @Test
-    void everyTaskThreadAndWorkerAsksForOneNanosecond() {
+    void everyTaskThreadWorkerAndWatchdogAsksForOneNanosecond() {
         RecordingSched sched = new RecordingSched(1, 0);
         MinimalTimerSlack setup = new MinimalTimerSlack(sched);
         setup.onTaskThreadStart(null, 0, 2);
         setup.onPoolWorkerStart(0, 1, 2);
-        assertEquals(List.of("slack 1", "slack 1"), sched.calls, "only the slack: no SCHED_FIFO, no pinning");
+        setup.onWatchdogStart(2);
+        assertEquals(List.of("slack 1", "slack 1", "slack 1"), sched.calls, "only the slack: no SCHED_FIFO, no pinning");
         assertEquals(0, setup.refused());
     }
 

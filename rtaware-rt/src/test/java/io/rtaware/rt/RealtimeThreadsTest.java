@@ -7,7 +7,9 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import io.rtaware.core.monitor.ExecutorKind;
 import io.rtaware.core.monitor.Monitor;
+import io.rtaware.core.agent.ThreadNames;
 import io.rtaware.core.monitor.TaskInfo;
+import io.rtaware.core.monitor.ThreadSetup;
 import io.rtaware.core.task.Schedule;
 import io.rtaware.core.task.Task;
 import io.rtaware.core.task.TaskSetup;
@@ -67,6 +69,23 @@ class RealtimeThreadsTest {
         assertEquals(80, rt.priorityOf(0));
         assertEquals(79, rt.priorityOf(1));
         assertEquals(1, rt.priorityOf(200));
+        assertEquals(81, rt.watchdogPriority(), "the watchdog above every task");
+        RealtimeThreads top = RealtimeThreads.configure(new RecordingSched(1, 0), 99, Map.of(),
+                new PrintStream(new ByteArrayOutputStream(), true, StandardCharsets.UTF_8));
+        assertEquals(99, top.watchdogPriority(), "at most 99");
+    }
+
+    @Test
+    void theWatchdogGetsOneAboveTheTopPriorityAndNoSlack() {
+        RecordingSched sched = new RecordingSched(0, 0); // SCHED_FIFO permitted
+        ByteArrayOutputStream buffer = new ByteArrayOutputStream();
+        RealtimeThreads rt = RealtimeThreads.configure(sched, 80, Map.of(),
+                new PrintStream(buffer, true, StandardCharsets.UTF_8));
+        sched.calls.clear();
+        rt.onWatchdogStart(3);
+        assertEquals(List.of("slack 1", "fifo 81"), sched.calls);
+        assertEquals(1, rt.fifoThreads());
+        assertEquals("", buffer.toString(StandardCharsets.UTF_8));
     }
 
     /** Where the machine permits it (root here), task threads really are SCHED_FIFO. */
@@ -104,7 +123,7 @@ class RealtimeThreadsTest {
         Waits.until(() -> !policies.isEmpty(), Duration.ofSeconds(10), "a cycle of the task");
         monitor.stop();
         assertEquals(List.of(LinuxSched.SCHED_FIFO), policies);
-        assertEquals(1, rt.fifoThreads());
+        assertEquals(2, rt.fifoThreads(), "the task's thread and the watchdog");
         assertEquals("", buffer.toString(StandardCharsets.UTF_8));
         // The test thread itself was never touched.
         assertEquals(LinuxSched.SCHED_OTHER, sched.scheduler());
@@ -131,7 +150,26 @@ class RealtimeThreadsTest {
 
         Set<String> seen = Collections.synchronizedSet(new TreeSet<>());
         LinuxSched probe = sched;
-        Monitor.Builder builder = Monitor.builder(new SystemClock()).threadSetup(rt)
+        List<String> watchdog = new CopyOnWriteArrayList<>();
+        ThreadSetup observed = new ThreadSetup() {
+            @Override
+            public void onTaskThreadStart(TaskInfo task, int rmRank, int taskCount) {
+                rt.onTaskThreadStart(task, rmRank, taskCount);
+            }
+
+            @Override
+            public void onPoolWorkerStart(int worker, int rmRank, int taskCount) {
+                rt.onPoolWorkerStart(worker, rmRank, taskCount);
+            }
+
+            @Override
+            public void onWatchdogStart(int taskCount) {
+                rt.onWatchdogStart(taskCount);
+                watchdog.add(Thread.currentThread().getName() + " policy " + probe.scheduler()
+                        + " priority " + probe.priority());
+            }
+        };
+        Monitor.Builder builder = Monitor.builder(new SystemClock()).threadSetup(observed)
                 .executor(ExecutorKind.pooled(2, ExecutorKind.PoolOrder.EARLIEST_DEADLINE_FIRST));
         for (int i = 0; i < 4; i++) {
             builder.task("t" + i, Schedule.periodic(Duration.ofMillis(2 + i)), new Task() {
@@ -155,7 +193,9 @@ class RealtimeThreadsTest {
             assertTrue(thread.matches("rtaware-pool-[01] policy 1 priority 70"),
                     "a cycle ran on a worker that is SCHED_FIFO (1) at the top priority: " + seen);
         }
-        assertEquals(2, rt.fifoThreads(), "both workers, no task thread");
+        assertEquals(List.of(ThreadNames.WATCHDOG + " policy 1 priority 71"), watchdog,
+                "the pool's watchdog is SCHED_FIFO one above the workers");
+        assertEquals(3, rt.fifoThreads(), "both workers and the watchdog, no task thread");
         assertEquals("", buffer.toString(StandardCharsets.UTF_8));
     }
 }

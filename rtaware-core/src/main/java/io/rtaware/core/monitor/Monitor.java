@@ -314,6 +314,14 @@ public final class Monitor {
             observeAfter(setup == null ? null : () -> setup.onPoolWorkerStart(worker, rmRank, taskCount));
         }
 
+        /** Forwarded only: the timer slack observed is that of the threads that run cycles. */
+        @Override
+        public void onWatchdogStart(int taskCount) {
+            if (setup != null) {
+                setup.onWatchdogStart(taskCount);
+            }
+        }
+
         private void observeAfter(Runnable setupOfThisThread) {
             try {
                 if (setupOfThisThread != null) {

@@ -36,6 +36,11 @@ final class OffPathText {
         return "thread setup of pool worker " + worker;
     }
 
+    /** @return the fault source of the thread setup of a watchdog */
+    static String watchdogSetup(String watchdog) {
+        return "thread setup of the " + watchdog;
+    }
+
     /** @return the fault source of a fatal VM error on a task's own thread */
     static String taskThreadFatal(String task) {
         return "task '" + task + "' (fatal VM error: stopping every task)";

@@ -180,7 +180,8 @@ final class PooledExecutor implements Executor {
         }
         this.dedicated = own.isEmpty() ? null
                 : new ThreadedExecutor(clock, waiter, own, stopAllRequest, threadSetup, faults);
-        this.watchdog = new Watchdog(clock, waiter, faults, "pool watchdog", new WorkerSlots());
+        this.watchdog = new Watchdog(clock, waiter, faults, "pool watchdog", new WorkerSlots(), threadSetup,
+                runtimes.size());
         this.recorder = pooled.length == 0 ? null : new StatisticsRecorder(pooled, faults);
         this.workers = new Thread[workerCount];
         this.workerParties = new ClockWaiter.Party[workerCount];

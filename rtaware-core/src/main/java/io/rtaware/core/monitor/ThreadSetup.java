@@ -3,7 +3,8 @@ package io.rtaware.core.monitor;
 /**
  * A hook called on each thread that runs cycles when it starts, before the first release: each
  * task thread of the threaded executor (and the pooled executor's tasks with a thread of their
- * own), and each worker of the pooled executor. The place to set a real-time scheduling policy,
+ * own), and each worker of the pooled executor; and on each executor's watchdog, the thread that
+ * reports misses at their deadlines. The place to set a real-time scheduling policy,
  * CPU affinity or timer slack for that thread (see the {@code rtaware-rt} module's {@code io.rtaware.rt.RealtimeThreads}). Not called by the step executor.
  *
  * <p>Implementations are called concurrently from every task thread and must be thread-safe.
@@ -30,4 +31,17 @@ public interface ThreadSetup {
      * @param taskCount the number of tasks
      */
     void onPoolWorkerStart(int worker, int rmRank, int taskCount);
+
+    /**
+     * Called on the watchdog thread of the threaded or pooled executor (the calling thread)
+     * before its first look at the tasks. The watchdog wakes at the deadlines of running cycles
+     * and reports a cycle still running past its deadline at that moment; it runs for a few
+     * microseconds each time. Left at normal priority beside real-time task threads that keep
+     * every CPU busy, it cannot run then, and a miss is reported only when the cycle returns: a
+     * real-time setup gives it a priority above every task's. Does nothing unless implemented.
+     *
+     * @param taskCount the number of tasks
+     */
+    default void onWatchdogStart(int taskCount) {
+    }
 }

@@ -56,7 +56,8 @@ final class ThreadedExecutor implements Executor {
         this.stopAllRequest = stopAllRequest;
         this.threadSetup = threadSetup;
         this.faults = faults;
-        this.watchdog = new Watchdog(clock, waiter, faults, "watchdog", new TaskSlots());
+        this.watchdog = new Watchdog(clock, waiter, faults, "watchdog", new TaskSlots(), threadSetup,
+                runtimes.size());
     }
 
     /** @return its watchdog */

@@ -50,6 +50,10 @@ final class Watchdog {
     private final FrameworkFaults faults;
     private final String faultSource;
     private final Slots slots;
+    /** Run on its thread before the first scan; null for none. */
+    private final ThreadSetup threadSetup;
+    /** The number of tasks of the monitor, for {@link ThreadSetup#onWatchdogStart}. */
+    private final int taskCount;
     /** Its handle in the waiter; set by {@link #prepare()}, before the thread starts. */
     private ClockWaiter.Party party;
     private volatile boolean running;
@@ -88,13 +92,19 @@ final class Watchdog {
      * @param faults where a fault of its scan goes
      * @param faultSource how such a fault names it
      * @param slots what it looks at each wake-up
+     * @param threadSetup run on its thread before the first scan ({@link ThreadSetup#onWatchdogStart};
+     *     a fault is reported and it watches on); null for none
+     * @param taskCount the number of tasks of the monitor
      */
-    Watchdog(Clock clock, ClockWaiter waiter, FrameworkFaults faults, String faultSource, Slots slots) {
+    Watchdog(Clock clock, ClockWaiter waiter, FrameworkFaults faults, String faultSource, Slots slots,
+             ThreadSetup threadSetup, int taskCount) {
         this.clock = clock;
         this.waiter = waiter;
         this.faults = faults;
         this.faultSource = faultSource;
         this.slots = slots;
+        this.threadSetup = threadSetup;
+        this.taskCount = taskCount;
     }
 
     /** Creates the thread and registers it with the waiter; before any {@link #wakeFor}. */
@@ -160,6 +170,13 @@ final class Watchdog {
      */
     private void watch() {
         try {
+            if (threadSetup != null) {
+                try {
+                    threadSetup.onWatchdogStart(taskCount);
+                } catch (Throwable t) {
+                    faults.report(OffPathText.watchdogSetup(faultSource), t);
+                }
+            }
             while (running) {
                 // Cleared before the scan: a request made from here on leads to another scan, or
                 // to an earlier wake (a request made during the scan; a cycle that started before

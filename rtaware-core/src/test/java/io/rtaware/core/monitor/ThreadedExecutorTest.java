@@ -222,6 +222,38 @@ class ThreadedExecutorTest {
                 "releases = runs + skipped");
     }
 
+    /**
+     * The builder's thread setup reaches the executor's watchdog, once, on the watchdog's own
+     * thread (where {@code --realtime} raises it above the tasks), with the monitor's task count.
+     */
+    @ParameterizedTest
+    @EnumSource(Kind.class)
+    void theThreadSetupRunsOnTheWatchdogOnce(Kind kind) throws InterruptedException {
+        java.util.List<String> watchdogs = new java.util.concurrent.CopyOnWriteArrayList<>();
+        ThreadSetup setup = new ThreadSetup() {
+            @Override
+            public void onTaskThreadStart(TaskInfo task, int rmRank, int taskCount) {
+            }
+
+            @Override
+            public void onPoolWorkerStart(int worker, int rmRank, int taskCount) {
+            }
+
+            @Override
+            public void onWatchdogStart(int taskCount) {
+                watchdogs.add(Thread.currentThread().getName() + " " + taskCount);
+            }
+        };
+        CountDownLatch oneRun = new CountDownLatch(1);
+        Monitor monitor = Monitor.builder(new SystemClock()).executor(kind.executor).threadSetup(setup)
+                .task("a", Schedule.periodic(ms(10)), FnTask.of(now -> oneRun.countDown()))
+                .task("b", Schedule.periodic(ms(20)), FnTask.of(now -> { })).build();
+        monitor.start();
+        assertTrue(oneRun.await(10, TimeUnit.SECONDS), "a cycle ran");
+        monitor.stop(); // joins the watchdog, which runs the setup before anything else
+        assertEquals(java.util.List.of(io.rtaware.core.agent.ThreadNames.WATCHDOG + " 2"), watchdogs);
+    }
+
     @Test
     void withASleeperTheTaskThreadsSleepWithItAndNothingElseDoes() throws InterruptedException {
         java.util.Set<String> sleepers = java.util.concurrent.ConcurrentHashMap.newKeySet();

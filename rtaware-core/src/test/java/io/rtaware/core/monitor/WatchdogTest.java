@@ -3,6 +3,7 @@ package io.rtaware.core.monitor;
 import static io.rtaware.core.Ms.ms;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import io.rtaware.core.agent.ThreadNames;
 import io.rtaware.core.time.ManualClock;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -99,6 +100,54 @@ class WatchdogTest {
     }
 
     /**
+     * The thread setup runs once, on the watchdog's own thread, before its first scan (where a
+     * real-time setup raises its priority above the tasks'), with the monitor's task count.
+     */
+    @Test
+    void theThreadSetupRunsOnTheWatchdogsThreadBeforeItsFirstScan() {
+        List<String> calls = new CopyOnWriteArrayList<>();
+        Watchdog dog = startOverOneSlot(waiter, (watchdog, looksBefore, nowNs) -> {
+            calls.add("scan " + watchdog.scans());
+            return Long.MAX_VALUE;
+        }, new SetupOnly() {
+            @Override
+            public void onWatchdogStart(int taskCount) {
+                calls.add("setup on " + Thread.currentThread().getName() + " for " + taskCount + " tasks");
+            }
+        });
+        assertEquals(Long.MAX_VALUE, waiter.awaitIdleNextWakeNs());
+        dog.stopAndJoin();
+        assertEquals(List.of("setup on " + ThreadNames.WATCHDOG + " for 7 tasks", "scan 1"), calls);
+        assertEquals(List.of(), faults);
+    }
+
+    /** A thread setup that throws is reported as a framework fault, and the watchdog watches on. */
+    @Test
+    void aFaultyThreadSetupIsReportedAndTheWatchdogWatchesOn() {
+        Watchdog dog = startOverOneSlot(waiter, (watchdog, looksBefore, nowNs) -> ms(40) > nowNs ? ms(40) : Long.MAX_VALUE,
+                new SetupOnly() {
+                    @Override
+                    public void onWatchdogStart(int taskCount) {
+                        throw new IllegalStateException("no priority for you");
+                    }
+                });
+        assertEquals(ms(40) + 1, waiter.awaitIdleNextWakeNs(), "it scanned after the fault");
+        dog.stopAndJoin();
+        assertEquals(List.of("thread setup of the test watchdog"), faults);
+    }
+
+    /** A thread setup that only overrides what a test asks of it. */
+    private abstract static class SetupOnly implements ThreadSetup {
+        @Override
+        public void onTaskThreadStart(TaskInfo task, int rmRank, int taskCount) {
+        }
+
+        @Override
+        public void onPoolWorkerStart(int worker, int rmRank, int taskCount) {
+        }
+    }
+
+    /**
      * A waiter whose wakes are counted and held back until {@link #deliver}: the woken thread
      * behaves as one that has not been given a CPU yet.
      */
@@ -161,6 +210,11 @@ class WatchdogTest {
 
     /** As {@link #startOverOneSlot(SlotLook)}, waiting with {@code through}. */
     private Watchdog startOverOneSlot(ClockWaiter through, SlotLook look) {
+        return startOverOneSlot(through, look, null);
+    }
+
+    /** As {@link #startOverOneSlot(ClockWaiter, SlotLook)}, with a thread setup. */
+    private Watchdog startOverOneSlot(ClockWaiter through, SlotLook look, ThreadSetup setup) {
         AtomicReference<Watchdog> self = new AtomicReference<>();
         AtomicInteger looks = new AtomicInteger();
         Watchdog.Slots slots = new Watchdog.Slots() {
@@ -180,7 +234,7 @@ class WatchdogTest {
             }
         };
         Watchdog dog = new Watchdog(clock, through, new FrameworkFaults((source, error) -> faults.add(source)),
-                "test watchdog", slots);
+                "test watchdog", slots, setup, 7);
         self.set(dog);
         dog.prepare();
         dog.start();
