@@ -148,14 +148,7 @@ public final class RealtimeThreads implements ThreadSetup {
                 warnOnce("could not pin task '" + task.name() + "' to CPU " + cpu + " (" + errno(e) + ")");
             }
         }
-        if (fifo) {
-            int e = sched.setFifo(priorityOf(rmRank));
-            if (e == 0) {
-                fifoThreads.incrementAndGet();
-            } else {
-                warnOnce("task '" + task.name() + "' stays SCHED_OTHER (" + errno(e) + ")");
-            }
-        }
+        fifoAt(priorityOf(rmRank), "task '" + task.name() + "'");
     }
 
     /**
@@ -165,14 +158,7 @@ public final class RealtimeThreads implements ThreadSetup {
     @Override
     public void onPoolWorkerStart(int worker, int rmRank, int taskCount) {
         sched.timerSlack(MinimalTimerSlack.SLACK_NS);
-        if (fifo) {
-            int e = sched.setFifo(priorityOf(rmRank));
-            if (e == 0) {
-                fifoThreads.incrementAndGet();
-            } else {
-                warnOnce("pool worker " + worker + " stays SCHED_OTHER (" + errno(e) + ")");
-            }
-        }
+        fifoAt(priorityOf(rmRank), "pool worker " + worker);
     }
 
     /**
@@ -183,13 +169,25 @@ public final class RealtimeThreads implements ThreadSetup {
     @Override
     public void onWatchdogStart(int taskCount) {
         sched.timerSlack(MinimalTimerSlack.SLACK_NS);
-        if (fifo) {
-            int e = sched.setFifo(watchdogPriority());
-            if (e == 0) {
-                fifoThreads.incrementAndGet();
-            } else {
-                warnOnce("the watchdog stays SCHED_OTHER (" + errno(e) + ")");
-            }
+        fifoAt(watchdogPriority(), "the watchdog");
+    }
+
+    /**
+     * Makes the calling thread SCHED_FIFO at {@code priority} if the probe found it permitted,
+     * and counts it; a refusal is warned about once.
+     *
+     * @param priority 1..99
+     * @param thread what the warning calls the thread
+     */
+    private void fifoAt(int priority, String thread) {
+        if (!fifo) {
+            return;
+        }
+        int e = sched.setFifo(priority);
+        if (e == 0) {
+            fifoThreads.incrementAndGet();
+        } else {
+            warnOnce(thread + " stays SCHED_OTHER (" + errno(e) + ")");
         }
     }
 
