@@ -1,5 +1,6 @@
 package io.rtaware.bench;
 
+import io.rtaware.bench.load.BenchSample;
 import io.rtaware.bench.load.BenchTask;
 import io.rtaware.bench.load.BusyWork;
 import io.rtaware.core.data.Input;
@@ -12,6 +13,8 @@ import io.rtaware.core.task.TaskSetup;
 import io.rtaware.core.time.ManualClock;
 import io.rtaware.robot.msg.Odometry;
 import io.rtaware.robot.msg.RobotKeys;
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
 import java.util.concurrent.TimeUnit;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
@@ -193,6 +196,73 @@ public class MonitorBench {
     @Benchmark
     public boolean poseProducerConsumerCycle(PosePair s) {
         return s.step.step();
+    }
+
+    /**
+     * The same in-phase tasks without a framework, as a user's own loop would release them: for
+     * each task in turn one clock read to see it is due, the task's code (the value {@link BenchTask} publishes,
+     * here written and published with a release store of its generation, so another thread that
+     * reads the generation first sees the value) and its next release time. No lateness, execution time, deadline or statistics:
+     * the difference to {@link #inPhaseRelease} is what rtaware's accounting of a release costs,
+     * with the same number of tasks' state out of the caches.
+     */
+    @State(Scope.Thread)
+    public static class HandWritten {
+        /** Tasks, all with a 10 ms period and released together. */
+        @Param({"1000", "10000"})
+        public int tasks;
+        HandTask[] all;
+        int next;
+
+        /** Builds the tasks, each with its own value, next to each other in memory. */
+        @Setup(Level.Trial)
+        public void start() {
+            all = new HandTask[tasks];
+            for (int i = 0; i < tasks; i++) {
+                all[i] = new HandTask();
+            }
+        }
+    }
+
+    /** A task of {@link HandWritten}: its next release, its value and the value's generation. */
+    static final class HandTask {
+        private static final VarHandle GENERATION;
+
+        static {
+            try {
+                GENERATION = MethodHandles.lookup().findVarHandle(HandTask.class, "generation", long.class);
+            } catch (ReflectiveOperationException e) {
+                throw new ExceptionInInitializerError(e);
+            }
+        }
+
+        /** Its next release; every release is due in the loop, as in an in-phase drain that runs late. */
+        long nextReleaseNs = Long.MIN_VALUE;
+        long generation;
+        final BenchSample value = new BenchSample();
+
+        /** Runs the task's code and moves its release on by a period. */
+        void release() {
+            value.sequence++;
+            GENERATION.setRelease(this, generation + 1);
+            nextReleaseNs += 10_000_000;
+        }
+    }
+
+    /**
+     * One release of {@link HandWritten}'s loop: the next task in order.
+     *
+     * @param s the tasks
+     * @return the released task's generation
+     */
+    @Benchmark
+    public long handWrittenRelease(HandWritten s) {
+        HandTask task = s.all[s.next];
+        s.next = s.next + 1 == s.tasks ? 0 : s.next + 1;
+        if (System.nanoTime() >= task.nextReleaseNs) {
+            task.release();
+        }
+        return task.generation;
     }
 
     /**
