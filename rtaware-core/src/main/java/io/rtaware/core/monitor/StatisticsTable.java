@@ -31,7 +31,7 @@ import org.HdrHistogram.AbstractHistogram;
  *
  * <p>The lateness values that wait are laid out by position in the ring first, then by task:
  * the n-th value of task i is at {@code (n % WAITING_CAPACITY) * size + i}, so tasks released
- * together write neighbouring words. Tasks flush their batches in groups of
+ * together write neighbouring words; the rings of recent execution times likewise. Tasks flush their batches in groups of
  * {@link #TASKS_PER_LINE} neighbours ({@link CycleStatistics#flushPhaseOf}), which then read
  * the same lines one after the other.
  *
@@ -99,7 +99,9 @@ final class StatisticsTable {
     final long[] execRecordedCount;
     /**
      * The latest execution times of each task, for the live p99 and waiting for the histogram:
-     * the n-th of task i at {@code i * RECENT_EXEC_CYCLES + n % RECENT_EXEC_CYCLES}.
+     * the n-th of task i at {@link #recentExecIndex}, by position like the waiting lateness values,
+     * so that tasks released together write neighbouring elements (one cache line per eight
+     * tasks rather than one per task).
      */
     final long[] recentExecNs;
     /**
@@ -201,8 +203,7 @@ final class StatisticsTable {
             recordWaiting(i);
             waiting = 0;
         }
-        int ring = i * CycleStatistics.RECENT_EXEC_CYCLES;
-        LONGS.setRelease(recentExecNs, ring + (int) (n % CycleStatistics.RECENT_EXEC_CYCLES), execNs);
+        LONGS.setRelease(recentExecNs, recentExecIndex(i, n), execNs);
         LONGS.setRelease(recentExecCount, i, n + 1);
         return (n + 1) % CycleStatistics.RECORD_BATCH == flushPhase[i] || waiting + 1 >= RECORD_WHEN_WAITING;
     }
@@ -280,13 +281,22 @@ final class StatisticsTable {
         LONGS.setRelease(latenessRecordedCount, i, count);
 
         count = (long) LONGS.getAcquire(recentExecCount, i);
-        int ring = i * CycleStatistics.RECENT_EXEC_CYCLES;
         target = execHistograms[i];
         for (long n = execRecordedCount[i]; n < count; n++) {
-            target = CycleStatistics.record(target, recentExecNs[ring + (int) (n % CycleStatistics.RECENT_EXEC_CYCLES)]);
+            target = CycleStatistics.record(target, recentExecNs[recentExecIndex(i, n)]);
         }
         execHistograms[i] = target;
         LONGS.setRelease(execRecordedCount, i, count);
+    }
+
+    /**
+     * @param i the task
+     * @param n the number of an execution time of the task (from 0)
+     * @return where it is in {@link #recentExecNs} while it is among the latest
+     *     {@link CycleStatistics#RECENT_EXEC_CYCLES}
+     */
+    int recentExecIndex(int i, long n) {
+        return (int) (n % CycleStatistics.RECENT_EXEC_CYCLES) * size + i;
     }
 
     /** @return heap bytes per task: one element of each array, its waiting lateness values and its ring */

@@ -160,4 +160,42 @@ class CycleStatisticsTest {
         assertSame(wide, CycleStatistics.record(wide, 7_000), "a 64-bit histogram stays");
         assertEquals(Integer.MAX_VALUE + 2L, wide.getTotalCount());
     }
+    /**
+     * Tasks of one table keep their execution times apart: each ring of recent ones (laid out by
+     * position, the tasks side by side) gives its task's exact live p99 and histogram, through
+     * more cycles than a ring holds, with the tasks' cycles interleaved as a drain runs them.
+     */
+    @Test
+    void tasksSharingATableKeepTheirOwnExecutionTimes() {
+        int tasks = 3;
+        StatisticsTable table = new StatisticsTable(tasks);
+        CycleStatistics[] statistics = new CycleStatistics[tasks];
+        Histogram[] reference = new Histogram[tasks];
+        long[][] latest = new long[tasks][CycleStatistics.RECENT_EXEC_CYCLES];
+        long[] maxNs = new long[tasks];
+        double[] sumNs = new double[tasks];
+        for (int t = 0; t < tasks; t++) {
+            statistics[t] = new CycleStatistics(table, t, t);
+            reference[t] = new Histogram(1, 3_600_000_000_000L, 2);
+        }
+        int cycles = 2 * CycleStatistics.RECENT_EXEC_CYCLES + 5;
+        for (int n = 0; n < cycles; n++) {
+            for (int t = 0; t < tasks; t++) {
+                long ns = (t + 1) * 100_000L + 13L * ((n * 7919L + t) % 1000);
+                statistics[t].cycleEnded(ns);
+                reference[t].recordValue(ns);
+                latest[t][n % CycleStatistics.RECENT_EXEC_CYCLES] = ns;
+                maxNs[t] = Math.max(maxNs[t], ns);
+                sumNs[t] += ns;
+            }
+        }
+        for (int t = 0; t < tasks; t++) {
+            long[] sorted = latest[t].clone();
+            java.util.Arrays.sort(sorted);
+            assertEquals(sorted[(int) Math.ceil(0.99 * sorted.length) - 1], statistics[t].counters().recentExecP99Ns(),
+                    "task " + t + ": the exact p99 of its own latest " + CycleStatistics.RECENT_EXEC_CYCLES);
+            assertEquals(Percentiles.ofNanos(reference[t], maxNs[t], sumNs[t]), statistics[t].execUs(),
+                    "task " + t + ": every execution time of its own, and only those");
+        }
+    }
 }
