@@ -200,11 +200,11 @@ public class MonitorBench {
 
     /**
      * The same in-phase tasks without a framework, as a user's own loop would release them: for
-     * each task in turn one clock read to see it is due, the task's code (the value {@link BenchTask} publishes,
-     * here written and published with a release store of its generation, so another thread that
-     * reads the generation first sees the value) and its next release time. No lateness, execution time, deadline or statistics:
-     * the difference to {@link #inPhaseRelease} is what rtaware's accounting of a release costs,
-     * with the same number of tasks' state out of the caches.
+     * each task in turn one clock read to see it is due, the task's code (the value
+     * {@link BenchTask} publishes, here written and published with a release store of its
+     * generation, so another thread that reads the generation first sees the value) and its next
+     * release time. No lateness, execution time, deadline or statistics: the difference to
+     * {@link #inPhaseRelease} is what rtaware's accounting of a release costs, over as many tasks.
      */
     @State(Scope.Thread)
     public static class HandWritten {

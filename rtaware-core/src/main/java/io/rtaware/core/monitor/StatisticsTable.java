@@ -31,9 +31,10 @@ import org.HdrHistogram.AbstractHistogram;
  *
  * <p>The lateness values that wait are laid out by position in the ring first, then by task:
  * the n-th value of task i is at {@code (n % WAITING_CAPACITY) * size + i}, so tasks released
- * together write neighbouring words; the rings of recent execution times likewise. Tasks flush their batches in groups of
- * {@link #TASKS_PER_LINE} neighbours ({@link CycleStatistics#flushPhaseOf}), which then read
- * the same lines one after the other.
+ * together write neighbouring words; the rings of recent execution times likewise
+ * ({@link #recentExecIndex}). Tasks flush their batches in groups of {@link #TASKS_PER_LINE}
+ * neighbours ({@link CycleStatistics#flushPhaseOf}), which then read the same lines one after
+ * the other.
  *
  * <p>Everything else reads and writes through {@link CycleStatistics}, under the threading rules
  * stated there (one writer per task for most, ordered stores and acquiring reads for the live

@@ -8,6 +8,7 @@ import io.rtaware.core.report.Percentiles;
 import org.HdrHistogram.AbstractHistogram;
 import org.HdrHistogram.Histogram;
 import org.HdrHistogram.IntCountsHistogram;
+import java.util.Arrays;
 import java.util.function.Function;
 import java.util.function.ObjLongConsumer;
 import java.util.stream.Stream;
@@ -160,6 +161,7 @@ class CycleStatisticsTest {
         assertSame(wide, CycleStatistics.record(wide, 7_000), "a 64-bit histogram stays");
         assertEquals(Integer.MAX_VALUE + 2L, wide.getTotalCount());
     }
+
     /**
      * Tasks of one table keep their execution times apart: each ring of recent ones (laid out by
      * position, the tasks side by side) gives its task's exact live p99 and histogram, through
@@ -191,7 +193,7 @@ class CycleStatisticsTest {
         }
         for (int t = 0; t < tasks; t++) {
             long[] sorted = latest[t].clone();
-            java.util.Arrays.sort(sorted);
+            Arrays.sort(sorted);
             assertEquals(sorted[(int) Math.ceil(0.99 * sorted.length) - 1], statistics[t].counters().recentExecP99Ns(),
                     "task " + t + ": the exact p99 of its own latest " + CycleStatistics.RECENT_EXEC_CYCLES);
             assertEquals(Percentiles.ofNanos(reference[t], maxNs[t], sumNs[t]), statistics[t].execUs(),
