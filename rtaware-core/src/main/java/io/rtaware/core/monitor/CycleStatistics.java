@@ -257,7 +257,7 @@ final class CycleStatistics {
         }
         long[] latest = new long[n];
         for (int i = 0; i < n; i++) {
-            latest[i] = (long) LONGS.getAcquire(table.recentExecNs, table.recentExecIndex(slot, i));
+            latest[i] = (long) LONGS.getAcquire(table.recentExecNs, table.ringIndex(slot, i, RECENT_EXEC_CYCLES));
         }
         Arrays.sort(latest);
         return latest[(int) Math.ceil(0.99 * n) - 1];

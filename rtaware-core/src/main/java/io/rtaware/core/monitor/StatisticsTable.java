@@ -32,7 +32,7 @@ import org.HdrHistogram.AbstractHistogram;
  * <p>The lateness values that wait are laid out by position in the ring first, then by task:
  * the n-th value of task i is at {@code (n % WAITING_CAPACITY) * size + i}, so tasks released
  * together write neighbouring words; the rings of recent execution times likewise
- * ({@link #recentExecIndex}). Tasks flush their batches in groups of {@link #TASKS_PER_LINE}
+ * ({@link #ringIndex}). Tasks flush their batches in groups of {@link #TASKS_PER_LINE}
  * neighbours ({@link CycleStatistics#flushPhaseOf}), which then read the same lines one after
  * the other.
  *
@@ -90,7 +90,10 @@ final class StatisticsTable {
     final long[] latenessCount;
     /** Lateness values recorded into the task's histogram so far (the rest wait in {@link #pendingLatenessNs}). */
     final long[] latenessRecordedCount;
-    /** Lateness values not yet in their histogram: the n-th of task i at {@code (n % WAITING_CAPACITY) * size + i}. */
+    /**
+     * Lateness values not yet in their histogram: the n-th of task i at {@link #ringIndex}
+     * (capacity {@link CycleStatistics#WAITING_CAPACITY}).
+     */
     final long[] pendingLatenessNs;
     final long[] execMaxNs;
     final double[] execSumNs;
@@ -100,7 +103,8 @@ final class StatisticsTable {
     final long[] execRecordedCount;
     /**
      * The latest execution times of each task, for the live p99 and waiting for the histogram:
-     * the n-th of task i at {@link #recentExecIndex}, by position like the waiting lateness values,
+     * the n-th of task i at {@link #ringIndex} (capacity {@link CycleStatistics#RECENT_EXEC_CYCLES}),
+     * by position like the waiting lateness values,
      * so that tasks released together write neighbouring elements (one cache line per eight
      * tasks rather than one per task).
      */
@@ -179,7 +183,7 @@ final class StatisticsTable {
             recordWaiting(i);
             waiting = 0;
         }
-        pendingLatenessNs[(int) (n % CycleStatistics.WAITING_CAPACITY) * size + i] = latenessNs;
+        pendingLatenessNs[ringIndex(i, n, CycleStatistics.WAITING_CAPACITY)] = latenessNs;
         LONGS.setRelease(latenessCount, i, n + 1);
         return waiting + 1 >= RECORD_WHEN_WAITING;
     }
@@ -204,7 +208,7 @@ final class StatisticsTable {
             recordWaiting(i);
             waiting = 0;
         }
-        LONGS.setRelease(recentExecNs, recentExecIndex(i, n), execNs);
+        LONGS.setRelease(recentExecNs, ringIndex(i, n, CycleStatistics.RECENT_EXEC_CYCLES), execNs);
         LONGS.setRelease(recentExecCount, i, n + 1);
         return (n + 1) % CycleStatistics.RECORD_BATCH == flushPhase[i] || waiting + 1 >= RECORD_WHEN_WAITING;
     }
@@ -276,7 +280,7 @@ final class StatisticsTable {
         long count = (long) LONGS.getAcquire(latenessCount, i);
         AbstractHistogram target = latenessHistograms[i];
         for (long n = latenessRecordedCount[i]; n < count; n++) {
-            target = CycleStatistics.record(target, pendingLatenessNs[(int) (n % CycleStatistics.WAITING_CAPACITY) * size + i]);
+            target = CycleStatistics.record(target, pendingLatenessNs[ringIndex(i, n, CycleStatistics.WAITING_CAPACITY)]);
         }
         latenessHistograms[i] = target;
         LONGS.setRelease(latenessRecordedCount, i, count);
@@ -284,20 +288,23 @@ final class StatisticsTable {
         count = (long) LONGS.getAcquire(recentExecCount, i);
         target = execHistograms[i];
         for (long n = execRecordedCount[i]; n < count; n++) {
-            target = CycleStatistics.record(target, recentExecNs[recentExecIndex(i, n)]);
+            target = CycleStatistics.record(target, recentExecNs[ringIndex(i, n, CycleStatistics.RECENT_EXEC_CYCLES)]);
         }
         execHistograms[i] = target;
         LONGS.setRelease(execRecordedCount, i, count);
     }
 
     /**
+     * The layout of the per-task rings ({@link #pendingLatenessNs}, {@link #recentExecNs}): by
+     * position in the ring first, then by task.
+     *
      * @param i the task
-     * @param n the number of an execution time of the task (from 0)
-     * @return where it is in {@link #recentExecNs} while it is among the latest
-     *     {@link CycleStatistics#RECENT_EXEC_CYCLES}
+     * @param n the number of a value of the task (from 0)
+     * @param capacity the values a task's ring holds
+     * @return where the value is while it is among the task's latest {@code capacity}
      */
-    int recentExecIndex(int i, long n) {
-        return (int) (n % CycleStatistics.RECENT_EXEC_CYCLES) * size + i;
+    int ringIndex(int i, long n, int capacity) {
+        return (int) (n % capacity) * size + i;
     }
 
     /** @return heap bytes per task: one element of each array, its waiting lateness values and its ring */
